@@ -1,0 +1,193 @@
+#include "cli/commands.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <toml++/toml.h>
+
+#include "io/hdf5.hpp"
+#include "runner/checks.hpp"
+#include "runner/compare.hpp"
+#include "runner/experiment.hpp"
+#include "runner/store.hpp"
+
+namespace creaturelab::cli {
+namespace fs = std::filesystem;
+
+namespace {
+
+// A user error: printed as one message, exit code 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+void parseSlice(const std::string& text, runner::RunOptions& o) {
+  if (text.empty()) return;
+  int i = 0, n = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%d/%d%c", &i, &n, &tail) != 2 || n < 1 || i < 0 || i >= n)
+    throw UsageError("--points " + text + ": expected i/N with 0 <= i < N, e.g. --points 0/4");
+  o.slice_index = i;
+  o.slice_count = n;
+}
+
+runner::Baseline loadBaseline(const std::string& path, double rtol, double atol) {
+  if (fs::is_directory(path)) {
+    const runner::StoredRun stored = runner::readIndex(path);
+    runner::Baseline b{stored.experiment_path, stored.overrides, {{"default", {rtol, atol}}}, stored.table};
+    return b;
+  }
+  std::ifstream in(path);
+  if (!in) throw UsageError(path + ": no such baseline file or run folder");
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const nlohmann::json::exception& e) {
+    throw UsageError(path + ": malformed JSON: " + e.what());
+  }
+  return runner::baselineFromJson(j, path);
+}
+
+}  // namespace
+
+Commands::Commands(const runner::Cluster& cluster) : cluster_(cluster), registry_(kinds::defaultRegistry()) {}
+
+int Commands::guard(const std::function<int()>& verb) const {
+  try {
+    return verb();
+  } catch (const runner::ExperimentError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const io::Hdf5Error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+  }
+  return 2;
+}
+
+void Commands::printReport(const runner::RunReport& r) const {
+  std::printf("%s: %d point(s), %d ran, %d reused, %d failed%s\n", r.out_dir.c_str(), r.total, r.ran, r.skipped,
+              r.failed, r.missing ? (", " + std::to_string(r.missing) + " not yet run").c_str() : "");
+  if (r.checks_evaluated && !r.checks.empty()) std::printf("%s", runner::formatCheckTable(r.checks).c_str());
+  if (!r.checks_evaluated) std::printf("checks: not evaluated until every point has run (use --resume)\n");
+}
+
+int Commands::run(const RunArgs& args) const {
+  runner::RunOptions o = args.options;
+  parseSlice(args.slice, o);
+  const runner::RunReport report = runner::runExperiment(o, registry_, cluster_);
+  if (o.dry_run) {
+    std::printf("%s", runner::describeExperiment(o.experiment_path, o.overrides, registry_).c_str());
+    std::printf("\nwould write %d point file(s) to %s\n", report.total, report.out_dir.c_str());
+    return 0;
+  }
+  if (!primary()) return 0;
+  printReport(report);
+  return report.exitCode();
+}
+
+int Commands::list(const std::string& kind_name) const {
+  if (!kind_name.empty() && !registry_.find(kind_name))
+    throw UsageError("unknown kind '" + kind_name + "'");
+  for (const auto& kind : registry_.all()) {
+    if (!kind_name.empty() && kind->name() != kind_name) continue;
+    std::printf("%s: %s\n", kind->name().c_str(), kind->doc().c_str());
+    for (const auto& p : kind->params())
+      std::printf("  %-26s %-8s default %-14s range %-34s %s\n", p.name.c_str(), p.unit.empty() ? "-" : p.unit.c_str(),
+                  kinds::describeValue(p.default_value).c_str(), kinds::describeRange(p).c_str(), p.doc.c_str());
+    std::printf("  metrics:\n");
+    for (const auto& m : kind->metrics())
+      std::printf("  %-26s %-8s %s\n", m.name.c_str(), m.unit.empty() ? "-" : m.unit.c_str(), m.doc.c_str());
+    std::printf("\n");
+  }
+  return 0;
+}
+
+int Commands::show(const std::string& file, const std::vector<std::string>& overrides) const {
+  std::printf("%s", runner::describeExperiment(file, overrides, registry_).c_str());
+  return 0;
+}
+
+int Commands::check(const std::string& run_dir) const {
+  const runner::StoredRun stored = runner::readIndex(run_dir);
+  const auto e = runner::loadExperimentText(stored.experiment_text, stored.experiment_path, stored.overrides, registry_);
+  const auto outcomes = runner::evaluateChecks(e.checks, stored.table);
+  std::printf("%s", runner::formatCheckTable(outcomes).c_str());
+  for (const auto& o : outcomes)
+    if (!o.passed) return 1;
+  return 0;
+}
+
+int Commands::compare(const CompareArgs& args) const {
+  const runner::StoredRun run = runner::readIndex(args.run);
+  const runner::Baseline baseline = loadBaseline(args.baseline, args.rtol, args.atol);
+  const runner::Comparison c = runner::compareTables(run.table, baseline);
+  std::printf("%s", runner::formatComparison(c, !args.all).c_str());
+  std::printf("%s: %s\n", args.run.c_str(), c.passed() ? "within tolerance of the baseline" : "OUTSIDE the baseline");
+  return c.passed() ? 0 : 1;
+}
+
+int Commands::baseline(const BaselineArgs& args) const {
+  const runner::StoredRun run = runner::readIndex(args.run);
+  runner::Baseline b{run.experiment_path, run.overrides, {{"default", {args.rtol, args.atol}}}, run.table};
+  const std::string text = runner::baselineToJson(b).dump(2) + "\n";
+  if (args.output.empty()) {
+    std::fputs(text.c_str(), stdout);
+  } else {
+    std::ofstream out(args.output);
+    out << text;
+    if (!out) throw UsageError(args.output + ": cannot write");
+  }
+  return 0;
+}
+
+int Commands::digest(const std::string& run_dir) const {
+  if (!fs::is_directory(run_dir)) throw UsageError(run_dir + ": no such run folder");
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(run_dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("point_", 0) == 0 && entry.path().extension() == ".h5") files.push_back(name);
+  }
+  std::sort(files.begin(), files.end());
+  const std::vector<std::string>& skip = runner::provenanceAttributeNames();
+  for (const auto& f : files) std::printf("%s  %s\n", io::contentDigest(run_dir + "/" + f, skip).c_str(), f.c_str());
+  std::printf("%s  index.h5\n", io::contentDigest(run_dir + "/index.h5", skip).c_str());
+  return 0;
+}
+
+int Commands::reproduce(const ReproduceArgs& args) const {
+  toml::table list;
+  try {
+    list = toml::parse_file(args.list);
+  } catch (const toml::parse_error& e) {
+    throw UsageError(args.list + ": " + std::string(e.description()));
+  }
+  const auto* files = list["experiments"].as_array();
+  if (!files) throw UsageError(args.list + ": expected experiments = [\"experiments/...toml\", ...]");
+  std::vector<runner::CheckOutcome> all;
+  int code = 0;
+  for (auto&& f : *files) {
+    runner::RunOptions o;
+    o.experiment_path = f.value_or(std::string());
+    o.out_dir = "results/runs/reproduce/" + fs::path(o.experiment_path).stem().string();
+    o.force = true;
+    o.jobs = args.jobs;
+    if (primary()) std::fprintf(stderr, "== %s\n", o.experiment_path.c_str());
+    const runner::RunReport r = runner::runExperiment(o, registry_, cluster_);
+    if (!primary()) continue;
+    printReport(r);
+    for (auto c : r.checks) {
+      c.name = fs::path(o.experiment_path).stem().string() + ": " + c.name;
+      all.push_back(c);
+    }
+    code = std::max(code, r.exitCode());
+  }
+  if (primary()) std::printf("\n== checks of every experiment\n%s", runner::formatCheckTable(all).c_str());
+  return code;
+}
+
+}  // namespace creaturelab::cli

@@ -1,0 +1,19 @@
+#include "kinds/kind.hpp"
+#include "kinds/oscillator.hpp"
+#include "kinds/strand.hpp"
+
+namespace creaturelab::kinds {
+
+Registry defaultRegistry() {
+  Registry r;
+  r.add(std::make_unique<OscillatorKind>());
+  r.add(std::make_unique<StrandKind>());
+  return r;
+}
+
+Params withDefaults(const Kind& kind, Params params) {
+  for (const auto& spec : kind.params()) params.emplace(spec.name, spec.default_value);
+  return params;
+}
+
+}  // namespace creaturelab::kinds

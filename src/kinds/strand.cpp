@@ -1,0 +1,161 @@
+#include "kinds/strand.hpp"
+
+#include <cmath>
+
+#include "kinds/spring_run.hpp"
+#include "springs/equilibrium.hpp"
+#include "springs/network.hpp"
+#include "springs/provot.hpp"
+#include "springs/simulate.hpp"
+
+namespace creaturelab::kinds {
+namespace {
+
+const char* kThesis = "../shared/seeds/orb-webs-mehla-2005.txt";
+
+// The strand's geometry, derived once from the parameters (see the span_m / n_springs docs).
+struct Layout {
+  int n_springs;
+  double placement_m;  // distance between neighbours as laid
+  double span_m;       // anchor to anchor
+};
+
+Layout layoutOf(const ParamReader& r) {
+  const double rest = r.real("rest_length_m");
+  const double nominal = r.text("layout") == "overextended" ? rest * (1.0 + r.real("overextension")) : rest;
+  const auto n = r.integer("n_springs");
+  const double span = r.real("span_m");
+  if (span > 0) {
+    const int count = std::max(2, int(std::lround(span / nominal)));
+    return {count, span / count, span};
+  }
+  const int count = n > 0 ? int(n) : 50;
+  return {count, nominal, nominal * count};
+}
+
+}  // namespace
+
+StrandKind::StrandKind() {
+  params_ = {
+      real("span_m", 0.0, "m", 0, 100,
+           "anchor separation; 0 = n_springs x placement length. When set, n_springs is derived from it"),
+      integer("n_springs", 0, 0, 100000, "springs in the chain; 0 = 50, or derived from span_m when span_m > 0"),
+      real("mass_kg", 1e-8, "kg", 1e-15, 1, "particle mass: 10 ug (thesis §5.1 and §5.2.1 table)"),
+      real("spring_k_n_per_m", 0.01, "N/m", 1e-9, 1e6, "spring constant (thesis §5.2.1: 0.01 N/m)"),
+      real("spring_damping_ns_per_m", 0.0, "N*s/m", 0, 1, "spring damping k_d of Eq. 4.14 (thesis gives none: 0)"),
+      real("rest_length_m", 0.003, "m", 1e-6, 10, "spring rest length (thesis §5.2.1: 3 mm)"),
+      choice("layout", "overextended", {"rest", "overextended"},
+             "lay springs at rest length (Fig. 5.1) or over-extended (§5.1)"),
+      real("overextension", 1.5, "", 0, 5,
+           "over-extension of the layout: placement = rest x (1 + this); thesis §5.1 uses 0.75-2.5"),
+      boolean("provot", false, "apply Provot's strain constraint after every step (thesis §5.1, Fig. 5.2)"),
+      real("provot_max_strain", 0.1, "", 1e-6, 10, "Provot's maximum strain (Provot 1995 used 10%; thesis gives none)"),
+      integer("provot_passes", 10, 1, 1000, "Provot sweeps over the springs per step (thesis: 'run multiple times')"),
+      real("drag_ns_per_m", 1e-8, "N*s/m", 0, 1, "air friction (thesis §5.2.1: 0.00000001 Ns/m)"),
+      real("gravity_m_per_s2", 9.81, "m/s^2", 0, 1000, "gravity, pulling along -y (thesis Eq. 4.6)"),
+      choice("integrator", "rk4", {"euler", "symplectic_euler", "rk4", "implicit_euler"},
+             "time integrator (thesis uses rk4, Eq. 4.16-4.19)"),
+      realOrAuto("dt_s", "s", 1e-9, 1, "substep; \"auto\" = half the stability limit from the springs' omega_max"),
+      real("frame_interval_s", 0.02, "s", 1e-6, 10, "output frame (the thesis's 0.02 s 'time step', §5.2.1)"),
+      real("end_time_s", 15.0, "s", 1e-3, 1e5, "simulated time"),
+      real("settling_fraction", 1e-4, "", 1e-12, 1,
+           "settled when kinetic energy stays below this fraction of its peak (1e-4 = 1% amplitude)"),
+      real("lagrangian_interval_s", 0.5, "s", 1e-6, 1e5, "interval between stored particle positions"),
+  };
+  metrics_ = {
+      {"particles", "", "particles in the strand, anchors included"},
+      {"span_m", "m", "anchor separation"},
+      {"mid_sag_m", "m", "depth of the middle of the strand below the anchors at the end"},
+      {"static_mid_sag_m", "m", "the same from the static Newton equilibrium (no Provot)"},
+      {"static_sag_rel_diff", "", "|mid_sag_m - static_mid_sag_m| / static_mid_sag_m"},
+      {"max_strain", "", "largest (length - rest) / rest at the end"},
+      {"settling_time_s", "s", "earliest time after which kinetic energy stays below settling_fraction of its peak"},
+      {"final_kinetic_energy_j", "J", "kinetic energy at the end"},
+      {"dt_used_s", "s", "the substep used"},
+  };
+}
+
+std::string StrandKind::doc() const {
+  return std::string("a web strand between two anchors under gravity and drag (") + kThesis + " §5.1)";
+}
+
+std::string StrandKind::validate(const Params& p) const {
+  ParamReader r(p);
+  if (r.real("span_m") > 0 && r.integer("n_springs") > 0)
+    return "set span_m or n_springs, not both (the other follows from the placement length)";
+  if (!r.isAuto("dt_s") && r.real("dt_s") > r.real("frame_interval_s"))
+    return "dt_s is longer than frame_interval_s; the frame is split into whole substeps";
+  return "";
+}
+
+Result StrandKind::run(const Params& p) const {
+  ParamReader r(p);
+  const Layout lay = layoutOf(r);
+  const double rest = r.real("rest_length_m"), mass = r.real("mass_kg");
+
+  springs::Network<2> net;
+  for (int i = 0; i <= lay.n_springs; ++i) net.addParticle(mass, i == 0 || i == lay.n_springs);
+  for (int i = 0; i < lay.n_springs; ++i)
+    net.addSpring(i, i + 1, rest, r.real("spring_k_n_per_m"), r.real("spring_damping_ns_per_m"));
+  net.gravity_m_per_s2 = springs::Vec<2>(0.0, -r.real("gravity_m_per_s2"));
+  net.drag_ns_per_m = r.real("drag_ns_per_m");
+
+  const int n = lay.n_springs + 1;
+  springs::State<2> state{springs::Points<2>::Zero(2, n), springs::Points<2>::Zero(2, n)};
+  for (int i = 0; i < n; ++i) state.x_m(0, i) = lay.placement_m * i;
+
+  // The middle of the strand: the middle particle, or the mean of the two middle ones.
+  auto midSag = [n](const springs::State<2>& s) {
+    const double y = (n % 2) ? s.x_m(1, n / 2) : 0.5 * (s.x_m(1, n / 2 - 1) + s.x_m(1, n / 2));
+    return -y;
+  };
+
+  springs::SimulationOptions opt;
+  opt.integrator = parseIntegratorOrThrow(r.text("integrator"));
+  opt.frame_interval_s = r.real("frame_interval_s");
+  opt.dt_s = r.isAuto("dt_s") ? 0.0 : r.real("dt_s");
+  opt.end_time_s = r.real("end_time_s");
+  opt.settling_fraction = r.real("settling_fraction");
+  opt.provot = {r.boolean("provot"), r.real("provot_max_strain"), int(r.integer("provot_passes"))};
+
+  Result result;
+  auto& sag = result.timeseries["mid_sag_m"] = {{}, "m"};
+  Tracks& tracks = result.lagrangian["positions_m"];
+  tracks.points = n;
+  tracks.dim = 2;
+  const int frames_per_track = std::max(1, int(std::lround(r.real("lagrangian_interval_s") / opt.frame_interval_s)));
+  auto record = [&](int frame, double t, const springs::State<2>& s) {
+    sag.values.push_back(midSag(s));
+    if (frame % frames_per_track == 0) {
+      tracks.time_s.push_back(t);
+      tracks.data.insert(tracks.data.end(), s.x_m.data(), s.x_m.data() + s.x_m.size());
+    }
+  };
+
+  springs::System<2> system(std::move(net));
+  springs::State<2> settled = state;  // the static solve starts from the same layout
+  auto summary = runOrFail(system, state, opt, record, result);
+  if (tracks.time_s.empty() || tracks.time_s.back() < summary.time_s.back()) {  // always keep the last frame
+    tracks.time_s.push_back(summary.time_s.back());
+    tracks.data.insert(tracks.data.end(), state.x_m.data(), state.x_m.data() + state.x_m.size());
+  }
+  result.timeseries["time_s"] = {summary.time_s, "s"};
+  result.timeseries["kinetic_energy_j"] = {summary.kinetic_energy_j, "J"};
+
+  const auto eq = springs::solveStaticEquilibrium(system, settled);
+
+  const double nan = std::nan("");
+  result.metrics["particles"] = {double(n), ""};
+  result.metrics["span_m"] = {lay.span_m, "m"};
+  result.metrics["mid_sag_m"] = {midSag(state), "m"};
+  result.metrics["static_mid_sag_m"] = {eq.converged ? midSag(settled) : nan, "m"};
+  result.metrics["static_sag_rel_diff"] = {
+      std::fabs(midSag(state) - result.metrics["static_mid_sag_m"].value) / result.metrics["static_mid_sag_m"].value, ""};
+  result.metrics["max_strain"] = {springs::maxStrain(system.network(), state), ""};
+  result.metrics["settling_time_s"] = {summary.settling_time_s.value_or(nan), "s"};
+  result.metrics["final_kinetic_energy_j"] = {summary.kinetic_energy_j.back(), "J"};
+  result.metrics["dt_used_s"] = {summary.dt_used_s, "s"};
+  return result;
+}
+
+}  // namespace creaturelab::kinds

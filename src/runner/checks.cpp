@@ -1,0 +1,165 @@
+#include "runner/checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "core/text.hpp"
+
+namespace creaturelab::runner {
+namespace {
+
+// Six significant digits: enough to read a check, short enough for a table.
+std::string formatNumber(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+bool matches(const Row& row, const Where& where) {
+  for (const auto& [key, value] : where) {
+    if (key == "label") {
+      if (!sameValue(kinds::Value(row.label), value)) return false;
+      continue;
+    }
+    auto it = row.columns.find(key);
+    if (it == row.columns.end() || !sameValue(it->second, value)) return false;
+  }
+  return true;
+}
+
+std::string range(double lo, double hi) { return "[" + formatNumber(lo) + ", " + formatNumber(hi) + "]"; }
+
+std::string describeWhere(const Where& where) {
+  std::string out;
+  for (const auto& [k, v] : where) out += (out.empty() ? "" : ", ") + k + "=" + kinds::describeValue(v);
+  return out;
+}
+
+// The selected rows, or the reason they cannot be used (a failed or missing point, no match).
+std::vector<const Row*> select(const Table& table, const Where& where, const std::string& metric, std::string& problem) {
+  std::vector<const Row*> rows;
+  for (const auto& row : table.rows) {
+    if (!matches(row, where)) continue;
+    if (row.status != "ok") {
+      problem = "point " + std::to_string(row.index) + " " + row.status + (row.message.empty() ? "" : ": " + row.message);
+      return {};
+    }
+    auto it = row.metrics.find(metric);
+    if (it == row.metrics.end() || !std::isfinite(it->second)) {
+      problem = "point " + std::to_string(row.index) + " has no finite " + metric;
+      return {};
+    }
+    rows.push_back(&row);
+  }
+  if (rows.empty() && problem.empty()) problem = "no point matches " + (where.empty() ? "" : describeWhere(where));
+  return rows;
+}
+
+CheckOutcome extremum(const CheckSpec& c, const std::vector<const Row*>& rows, bool is_max) {
+  CheckOutcome out{c.name, c.type, "", "", false};
+  const Row* best = rows.front();
+  for (const Row* r : rows) {
+    double v = r->metrics.at(c.metric), b = best->metrics.at(c.metric);
+    if (is_max ? v > b : v < b) best = r;
+  }
+  const kinds::Value& at = best->columns.at(c.axis);
+  out.got = c.axis + "=" + kinds::describeValue(at) + " (" + c.metric + "=" + formatNumber(best->metrics.at(c.metric)) + ")";
+  if (c.expect_choice) {
+    out.expected = c.axis + "=\"" + *c.expect_choice + "\"";
+    out.passed = sameValue(at, kinds::Value(*c.expect_choice));
+  } else {
+    out.expected = c.axis + " in " + range(c.expect_lo, c.expect_hi);
+    const double x = numericValue(at);
+    out.passed = x >= c.expect_lo && x <= c.expect_hi;
+  }
+  return out;
+}
+
+CheckOutcome inRange(const CheckSpec& c, const std::vector<const Row*>& rows) {
+  double lo = rows.front()->metrics.at(c.metric), hi = lo;
+  for (const Row* r : rows) {
+    lo = std::min(lo, r->metrics.at(c.metric));
+    hi = std::max(hi, r->metrics.at(c.metric));
+  }
+  CheckOutcome out{c.name, c.type, c.metric + " in " + range(c.expect_lo, c.expect_hi), "", false};
+  out.got = rows.size() == 1 ? formatNumber(lo) : range(lo, hi) + " over " + std::to_string(rows.size()) + " points";
+  out.passed = lo >= c.expect_lo && hi <= c.expect_hi;
+  return out;
+}
+
+CheckOutcome monotonic(const CheckSpec& c, std::vector<const Row*> rows) {
+  std::stable_sort(rows.begin(), rows.end(), [&](const Row* a, const Row* b) {
+    return numericValue(a->columns.at(c.axis)) < numericValue(b->columns.at(c.axis));
+  });
+  CheckOutcome out{c.name, c.type, c.metric + (c.strict ? " strictly " : " ") + c.direction + " in " + c.axis, "", true};
+  std::ostringstream got;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const double v = rows[i]->metrics.at(c.metric);
+    got << (i ? ", " : "") << formatNumber(v);
+    if (i == 0) continue;
+    const double prev = rows[i - 1]->metrics.at(c.metric);
+    const bool up = c.strict ? v > prev : v >= prev, down = c.strict ? v < prev : v <= prev;
+    if (c.direction == "increasing" ? !up : !down) out.passed = false;
+  }
+  out.got = got.str();
+  if (rows.size() < 2) {
+    out.passed = false;
+    out.got = "fewer than 2 points";
+  }
+  return out;
+}
+
+}  // namespace
+
+CheckOutcome evaluateCheck(const CheckSpec& c, const Table& table) {
+  std::string problem;
+  if (c.type == "ratio") {
+    CheckOutcome out{c.name, c.type, c.metric + " ratio in " + range(c.expect_lo, c.expect_hi), "", false};
+    auto num = select(table, c.numerator, c.metric, problem);
+    auto den = problem.empty() ? select(table, c.denominator, c.metric, problem) : std::vector<const Row*>{};
+    if (!problem.empty()) {
+      out.got = problem;
+      return out;
+    }
+    if (num.size() != 1 || den.size() != 1) {
+      out.got = "numerator and denominator must each select one point (got " + std::to_string(num.size()) + " and " +
+                std::to_string(den.size()) + ")";
+      return out;
+    }
+    const double r = num[0]->metrics.at(c.metric) / den[0]->metrics.at(c.metric);
+    out.got = formatNumber(r);
+    out.passed = std::isfinite(r) && r >= c.expect_lo && r <= c.expect_hi;
+    return out;
+  }
+  auto rows = select(table, c.where, c.metric, problem);
+  if (!problem.empty()) return CheckOutcome{c.name, c.type, "", problem, false};
+  if (c.type == "argmax") return extremum(c, rows, true);
+  if (c.type == "argmin") return extremum(c, rows, false);
+  if (c.type == "range") return inRange(c, rows);
+  return monotonic(c, rows);
+}
+
+std::vector<CheckOutcome> evaluateChecks(const std::vector<CheckSpec>& checks, const Table& table) {
+  std::vector<CheckOutcome> out;
+  for (const auto& c : checks) out.push_back(evaluateCheck(c, table));
+  return out;
+}
+
+std::string formatCheckTable(const std::vector<CheckOutcome>& outcomes) {
+  size_t w_name = 5, w_exp = 8;
+  for (const auto& o : outcomes) {
+    w_name = std::max(w_name, o.name.size());
+    w_exp = std::max(w_exp, o.expected.size());
+  }
+  std::ostringstream s;
+  auto pad = [](const std::string& t, size_t w) { return t + std::string(w > t.size() ? w - t.size() : 0, ' '); };
+  s << pad("check", w_name) << "  " << "pass  " << pad("expected", w_exp) << "  got\n";
+  for (const auto& o : outcomes)
+    s << pad(o.name, w_name) << "  " << (o.passed ? "ok    " : "FAIL  ") << pad(o.expected, w_exp) << "  " << o.got << "\n";
+  return s.str();
+}
+
+}  // namespace creaturelab::runner
+

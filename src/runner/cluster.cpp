@@ -1,0 +1,49 @@
+#include "runner/cluster.hpp"
+
+#include <cstdlib>
+
+#ifdef CREATURELAB_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace creaturelab::runner {
+
+namespace {
+bool launchedByMpirun() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE"); }
+}  // namespace
+
+Cluster::Cluster(int* argc, char*** argv) {
+#ifdef CREATURELAB_HAVE_MPI
+  if (!launchedByMpirun()) return;
+  MPI_Init(argc, argv);
+  initialised_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+#else
+  (void)argc;
+  (void)argv;
+  (void)launchedByMpirun;
+#endif
+}
+
+Cluster::~Cluster() {
+#ifdef CREATURELAB_HAVE_MPI
+  if (initialised_) MPI_Finalize();
+#endif
+}
+
+void Cluster::barrier() const {
+#ifdef CREATURELAB_HAVE_MPI
+  if (initialised_) MPI_Barrier(MPI_COMM_WORLD);
+#endif
+}
+
+bool Cluster::builtWithMpi() {
+#ifdef CREATURELAB_HAVE_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+}  // namespace creaturelab::runner

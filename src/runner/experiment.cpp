@@ -1,0 +1,390 @@
+#include "runner/experiment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <set>
+#include <toml++/toml.h>
+
+#include "core/text.hpp"
+#include "runner/value_json.hpp"
+
+namespace creaturelab::runner {
+namespace {
+
+using kinds::ParamSpec;
+using kinds::ParamType;
+
+// Error context: the file and, when known, the line of the offending node.
+struct Context {
+  std::string file;
+  [[noreturn]] void fail(const std::string& key, const std::string& msg, const toml::node* node = nullptr) const {
+    std::string where = file;
+    if (node && node->source().begin.line > 0) where += ":" + std::to_string(node->source().begin.line);
+    throw ExperimentError(where + ": " + (key.empty() ? "" : key + ": ") + msg);
+  }
+};
+
+std::string suggestion(const std::string& name, const std::vector<std::string>& known) {
+  std::string near = core::closestMatch(name, known);
+  return near.empty() ? "" : " (did you mean '" + near + "'?)";
+}
+
+std::optional<Value> scalarValue(const toml::node& node) {
+  if (auto v = node.as_integer()) return Value(std::int64_t(v->get()));
+  if (auto v = node.as_floating_point()) return Value(v->get());
+  if (auto v = node.as_boolean()) return Value(v->get());
+  if (auto v = node.as_string()) return Value(v->get());
+  return std::nullopt;
+}
+
+// Converts to the parameter's type (an integer literal is a fine real) and checks the range.
+Value coerce(const ParamSpec& spec, Value v, const Context& ctx, const std::string& key, const toml::node* node) {
+  if (auto i = std::get_if<std::int64_t>(&v); i && (spec.type == ParamType::Real || spec.type == ParamType::RealOrAuto))
+    v = double(*i);
+  if (auto d = std::get_if<double>(&v); d && spec.type == ParamType::Integer && std::floor(*d) == *d && std::fabs(*d) < 9e15)
+    v = std::int64_t(*d);
+  std::string expected = kinds::checkValue(spec, v);
+  if (!expected.empty())
+    ctx.fail(key, "got " + kinds::describeValue(v) + ", expected " + expected + " (" + spec.doc + ")", node);
+  return v;
+}
+
+const ParamSpec& specFor(const kinds::Kind& kind, const std::string& name, const Context& ctx, const std::string& key,
+                         const toml::node* node) {
+  std::vector<std::string> names;
+  for (const auto& s : kind.params()) {
+    if (s.name == name) return s;
+    names.push_back(s.name);
+  }
+  ctx.fail(key, "unknown parameter '" + name + "' for kind '" + kind.name() + "'" + suggestion(name, names) +
+                    "; `creaturelab list` shows every parameter",
+           node);
+}
+
+// "start:stop:step", inclusive of stop up to rounding; values are start + i*step rounded to 12
+// significant digits so 0.1 steps print as 0.3, not 0.30000000000000004.
+std::vector<Value> expandRange(const std::string& text, const ParamSpec& spec, const Context& ctx,
+                               const std::string& key, const toml::node* node) {
+  double a = 0, b = 0, step = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%lf:%lf:%lf%c", &a, &b, &step, &tail) != 3)
+    ctx.fail(key, "range \"" + text + "\" is not start:stop:step", node);
+  if (!(step > 0) || b < a) ctx.fail(key, "range \"" + text + "\" is empty (needs step > 0 and stop >= start)", node);
+  const long n = long(std::floor((b - a) / step + 1e-9)) + 1;
+  if (n > 100000) ctx.fail(key, "range \"" + text + "\" has " + std::to_string(n) + " values; at most 100000", node);
+  std::vector<Value> values;
+  for (long i = 0; i < n; ++i) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.12g", a + double(i) * step);
+    values.push_back(coerce(spec, Value(std::strtod(buf, nullptr)), ctx, key, node));
+  }
+  return values;
+}
+
+void applyOverride(toml::table& root, const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw ExperimentError("override '" + text + "': expected dotted.key=value, e.g. params.dt_s=0.001");
+  const std::string path = text.substr(0, eq), rhs = text.substr(eq + 1);
+  toml::node_view<toml::node> parsed;
+  toml::table holder;
+  try {
+    holder = toml::parse("v = " + rhs);
+  } catch (const toml::parse_error&) {
+    holder.insert_or_assign("v", rhs);  // bare words: params.integrator=rk4
+  }
+  std::vector<std::string> parts;
+  for (size_t start = 0;;) {
+    size_t dot = path.find('.', start);
+    parts.push_back(path.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  toml::table* t = &root;
+  for (size_t i = 0; i + 1 < parts.size(); ++i) {
+    auto* next = (*t)[parts[i]].as_table();
+    if (!next) {
+      if ((*t).contains(parts[i]))
+        throw ExperimentError("override '" + text + "': '" + parts[i] + "' is not a table");
+      t->insert_or_assign(parts[i], toml::table{});
+      next = (*t)[parts[i]].as_table();
+    }
+    t = next;
+  }
+  t->insert_or_assign(parts.back(), *holder.get("v"));
+}
+
+std::string expectText(const toml::node* node) {
+  if (!node) return "";
+  std::ostringstream s;
+  s << toml::json_formatter{*node};
+  return s.str();
+}
+
+Where parseWhere(const toml::node* node, const Context& ctx, const std::string& key) {
+  Where where;
+  if (!node) return where;
+  auto* t = node->as_table();
+  if (!t) ctx.fail(key, "expected a table such as { layout = \"overextended\" }", node);
+  for (auto&& [k, v] : *t) {
+    auto value = scalarValue(v);
+    if (!value) ctx.fail(key + "." + std::string(k.str()), "expected a number, string or boolean", &v);
+    where.emplace_back(std::string(k.str()), *value);
+  }
+  return where;
+}
+
+CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const Context& ctx) {
+  const std::string key = "check[" + std::to_string(n) + "]";
+  static const std::vector<std::string> known = {"name", "type", "metric", "axis", "expect", "direction",
+                                                 "strict", "where", "numerator", "denominator"};
+  for (auto&& [k, v] : t) {
+    std::string ks(k.str());
+    if (std::find(known.begin(), known.end(), ks) == known.end())
+      ctx.fail(key, "unknown key '" + ks + "'" + suggestion(ks, known), &v);
+  }
+  CheckSpec c;
+  c.name = t["name"].value_or(std::string());
+  c.type = t["type"].value_or(std::string());
+  c.metric = t["metric"].value_or(std::string());
+  c.axis = t["axis"].value_or(std::string());
+  c.direction = t["direction"].value_or(std::string("increasing"));
+  c.strict = t["strict"].value_or(true);
+  if (c.name.empty()) ctx.fail(key, "needs a name", &t);
+  static const std::vector<std::string> types = {"argmax", "argmin", "range", "ratio", "monotonic"};
+  if (std::find(types.begin(), types.end(), c.type) == types.end())
+    ctx.fail(key + ".type", "'" + c.type + "' is not one of argmax | argmin | range | ratio | monotonic" +
+                                suggestion(c.type, types), t.get("type"));
+  std::vector<std::string> metric_names;
+  for (const auto& m : kind.metrics()) metric_names.push_back(m.name);
+  if (std::find(metric_names.begin(), metric_names.end(), c.metric) == metric_names.end())
+    ctx.fail(key + ".metric", "'" + c.metric + "' is not a metric of kind '" + kind.name() + "'" +
+                                  suggestion(c.metric, metric_names), t.get("metric"));
+  const bool needs_axis = c.type == "argmax" || c.type == "argmin" || c.type == "monotonic";
+  if (needs_axis && c.axis.empty()) ctx.fail(key, "a " + c.type + " check needs an axis", &t);
+  if (c.type == "monotonic" && c.direction != "increasing" && c.direction != "decreasing")
+    ctx.fail(key + ".direction", "expected \"increasing\" or \"decreasing\"", t.get("direction"));
+  if (c.type != "monotonic") {
+    const toml::node* e = t.get("expect");
+    if (!e) ctx.fail(key, "needs expect = [low, high]", &t);
+    if (auto s = e->as_string()) {
+      if (c.type != "argmax" && c.type != "argmin") ctx.fail(key + ".expect", "expected [low, high]", e);
+      c.expect_choice = s->get();
+    } else if (auto a = e->as_array(); a && a->size() == 2 && (*a)[0].is_number() && (*a)[1].is_number()) {
+      c.expect_lo = (*a)[0].value<double>().value();
+      c.expect_hi = (*a)[1].value<double>().value();
+      if (c.expect_hi < c.expect_lo) ctx.fail(key + ".expect", "low is above high", e);
+    } else {
+      ctx.fail(key + ".expect", "expected [low, high], got " + expectText(e), e);
+    }
+  }
+  c.where = parseWhere(t.get("where"), ctx, key + ".where");
+  c.numerator = parseWhere(t.get("numerator"), ctx, key + ".numerator");
+  c.denominator = parseWhere(t.get("denominator"), ctx, key + ".denominator");
+  if (c.type == "ratio" && (c.numerator.empty() || c.denominator.empty()))
+    ctx.fail(key, "a ratio check needs numerator = {...} and denominator = {...} point selections", &t);
+  return c;
+}
+
+nlohmann::json resolvedJson(const Experiment& e) {
+  nlohmann::json j;
+  j["kind"] = e.kind;
+  j["title"] = e.title;
+  j["params"] = toJson(e.params);
+  j["sweep"] = nlohmann::json::array();
+  for (const auto& a : e.axes) {
+    nlohmann::json values = nlohmann::json::array();
+    for (const auto& v : a.values) values.push_back(toJson(v));
+    j["sweep"].push_back({{"name", a.name}, {"values", values}});
+  }
+  j["cases"] = nlohmann::json::array();
+  for (const auto& c : e.cases) j["cases"].push_back({{"label", c.label}, {"values", toJson(c.values)}});
+  return j;
+}
+
+}  // namespace
+
+Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides,
+                          const kinds::Registry& registry) {
+  if (!std::filesystem::is_regular_file(path)) throw ExperimentError(path + ": no such experiment file");
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!in) throw ExperimentError(path + ": cannot read the file");
+  return loadExperimentText(text.str(), path, overrides, registry);
+}
+
+Experiment loadExperimentText(const std::string& text, const std::string& path,
+                              const std::vector<std::string>& overrides, const kinds::Registry& registry) {
+  Context ctx{path};
+  toml::table root;
+  try {
+    root = toml::parse(text, path);
+  } catch (const toml::parse_error& err) {
+    throw ExperimentError(path + ":" + std::to_string(err.source().begin.line) + ":" +
+                          std::to_string(err.source().begin.column) + ": malformed TOML: " +
+                          std::string(err.description()));
+  }
+  for (const auto& o : overrides) applyOverride(root, o);
+
+  static const std::vector<std::string> top = {"kind", "title", "description", "params", "sweep", "case", "check", "output"};
+  for (auto&& [k, v] : root) {
+    std::string ks(k.str());
+    if (std::find(top.begin(), top.end(), ks) == top.end())
+      ctx.fail("", "unknown key '" + ks + "'" + suggestion(ks, top), &v);
+  }
+
+  Experiment e;
+  e.path = path;
+  e.source_text = text;
+  e.overrides = overrides;
+  e.stem = std::filesystem::path(path).stem().string();
+  auto kind_name = root["kind"].value<std::string>();
+  if (!kind_name) ctx.fail("kind", "missing: every experiment names its kind, e.g. kind = \"strand\"");
+  e.kind = *kind_name;
+  const kinds::Kind* kind = registry.find(e.kind);
+  if (!kind) ctx.fail("kind", "unknown kind '" + e.kind + "'" + suggestion(e.kind, registry.names()), root.get("kind"));
+  e.title = root["title"].value_or(e.stem);
+
+  if (const toml::node* p = root.get("params")) {
+    auto* t = p->as_table();
+    if (!t) ctx.fail("params", "expected a table [params]", p);
+    for (auto&& [k, v] : *t) {
+      const std::string name(k.str()), key = "params." + name;
+      const ParamSpec& spec = specFor(*kind, name, ctx, key, &v);
+      auto value = scalarValue(v);
+      if (!value) ctx.fail(key, "expected " + kinds::typeName(spec.type), &v);
+      e.params[name] = coerce(spec, *value, ctx, key, &v);
+    }
+  }
+
+  if (const toml::node* s = root.get("sweep")) {
+    auto* t = s->as_table();
+    if (!t) ctx.fail("sweep", "expected a table [sweep]", s);
+    for (auto&& [k, v] : *t) {
+      const std::string name(k.str()), key = "sweep." + name;
+      const ParamSpec& spec = specFor(*kind, name, ctx, key, &v);
+      SweepAxis axis{name, {}};
+      if (auto str = v.as_string(); str && std::count(str->get().begin(), str->get().end(), ':') == 2) {
+        axis.values = expandRange(str->get(), spec, ctx, key, &v);
+      } else if (auto arr = v.as_array()) {
+        for (auto&& item : *arr) {
+          auto value = scalarValue(item);
+          if (!value) ctx.fail(key, "list items must be numbers, strings or booleans", &item);
+          axis.values.push_back(coerce(spec, *value, ctx, key, &item));
+        }
+      } else {
+        ctx.fail(key, "expected a list [a, b, ...] or a range \"start:stop:step\"", &v);
+      }
+      if (axis.values.empty()) ctx.fail(key, "empty sweep axis", &v);
+      e.axes.push_back(std::move(axis));
+    }
+  }
+
+  if (const toml::node* c = root.get("case")) {
+    auto* arr = c->as_array();
+    if (!arr || !arr->is_array_of_tables()) ctx.fail("case", "expected [[case]] tables", c);
+    int n = 0;
+    for (auto&& item : *arr) {
+      Case cs;
+      const std::string key = "case[" + std::to_string(n++) + "]";
+      for (auto&& [k, v] : *item.as_table()) {
+        const std::string name(k.str());
+        if (name == "label") {
+          cs.label = v.value_or(std::string());
+          continue;
+        }
+        for (const auto& a : e.axes)
+          if (a.name == name) ctx.fail(key + "." + name, "is also a [sweep] axis; set it in one place", &v);
+        const ParamSpec& spec = specFor(*kind, name, ctx, key + "." + name, &v);
+        auto value = scalarValue(v);
+        if (!value) ctx.fail(key + "." + name, "expected " + kinds::typeName(spec.type), &v);
+        cs.values[name] = coerce(spec, *value, ctx, key + "." + name, &v);
+        cs.keys.push_back(name);
+      }
+      if (cs.label.empty()) cs.label = "case " + std::to_string(n - 1);
+      e.cases.push_back(std::move(cs));
+    }
+  }
+
+  if (const toml::node* c = root.get("check")) {
+    auto* arr = c->as_array();
+    if (!arr || !arr->is_array_of_tables()) ctx.fail("check", "expected [[check]] tables", c);
+    int n = 0;
+    for (auto&& item : *arr) e.checks.push_back(parseCheck(*item.as_table(), n++, *kind, ctx));
+  }
+
+  if (const toml::node* o = root.get("output")) {
+    auto* t = o->as_table();
+    if (!t) ctx.fail("output", "expected a table [output]", o);
+    static const std::vector<std::string> known = {"dir", "lagrangian"};
+    for (auto&& [k, v] : *t) {
+      std::string ks(k.str());
+      if (std::find(known.begin(), known.end(), ks) == known.end())
+        ctx.fail("output", "unknown key '" + ks + "'" + suggestion(ks, known), &v);
+    }
+    e.output.dir = (*t)["dir"].value_or(std::string());
+    e.output.lagrangian = (*t)["lagrangian"].value_or(true);
+  }
+
+  // Check axes and selections name columns that exist.
+  const auto columns = sweepColumns(e);
+  for (const auto& chk : e.checks) {
+    const std::string key = "check '" + chk.name + "'";
+    if (!chk.axis.empty() && std::find(columns.begin(), columns.end(), chk.axis) == columns.end())
+      ctx.fail(key, "axis '" + chk.axis + "' is not swept" + suggestion(chk.axis, columns));
+    for (const Where* w : {&chk.where, &chk.numerator, &chk.denominator})
+      for (const auto& [k, v] : *w)
+        if (k != "label" && std::find(columns.begin(), columns.end(), k) == columns.end())
+          ctx.fail(key, "selection key '" + k + "' is not a swept column" + suggestion(k, columns));
+  }
+
+  e.resolved_json = resolvedJson(e).dump();
+  return e;
+}
+
+std::vector<std::string> sweepColumns(const Experiment& experiment) {
+  std::vector<std::string> cols;
+  for (const auto& c : experiment.cases)
+    for (const auto& k : c.keys)
+      if (std::find(cols.begin(), cols.end(), k) == cols.end()) cols.push_back(k);
+  for (const auto& a : experiment.axes) cols.push_back(a.name);
+  return cols;
+}
+
+std::vector<Point> expandPoints(const Experiment& experiment, const kinds::Kind& kind) {
+  std::vector<Case> cases = experiment.cases;
+  if (cases.empty()) cases.push_back(Case{});
+  size_t grid = 1;
+  for (const auto& a : experiment.axes) grid *= a.values.size();
+  if (grid * cases.size() > 1000000) throw ExperimentError(experiment.path + ": sweep has over a million points");
+
+  std::vector<Point> points;
+  for (const auto& cs : cases) {
+    for (size_t g = 0; g < grid; ++g) {
+      Point p;
+      p.index = int(points.size());
+      p.label = cs.label;
+      p.params = experiment.params;
+      for (const auto& [k, v] : cs.values) p.params[k] = v;
+      size_t rem = g;
+      for (size_t a = experiment.axes.size(); a-- > 0;) {
+        const auto& axis = experiment.axes[a];
+        p.params[axis.name] = axis.values[rem % axis.values.size()];
+        rem /= axis.values.size();
+      }
+      p.params = kinds::withDefaults(kind, std::move(p.params));
+      if (std::string err = kind.validate(p.params); !err.empty())
+        throw ExperimentError(experiment.path + ": point " + std::to_string(p.index) +
+                              (p.label.empty() ? "" : " (" + p.label + ")") + ": " + err);
+      points.push_back(std::move(p));
+    }
+  }
+  return points;
+}
+
+}  // namespace creaturelab::runner

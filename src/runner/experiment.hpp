@@ -1,0 +1,88 @@
+#pragma once
+// An experiment file (DESIGN.md "Experiment files"), parsed and checked against its kind's schema.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "kinds/kind.hpp"
+
+namespace creaturelab::runner {
+
+using kinds::Params;
+using kinds::Value;
+
+// A user error in an experiment file or an override: the message names the file, the key
+// (with a close match) and what was expected. The CLI prints it and exits with code 2.
+class ExperimentError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct SweepAxis {
+  std::string name;
+  std::vector<Value> values;
+};
+
+struct Case {
+  std::string label;
+  Params values;  // in file order is not kept: std::map sorts, which keeps /sweep columns stable
+  std::vector<std::string> keys;  // file order, for the /sweep columns
+};
+
+using Where = std::vector<std::pair<std::string, Value>>;
+
+struct CheckSpec {
+  std::string name;
+  std::string type;    // argmax | argmin | range | ratio | monotonic
+  std::string metric;
+  std::string axis;    // argmax, argmin, monotonic
+  double expect_lo = 0, expect_hi = 0;        // numeric expectations
+  std::optional<std::string> expect_choice;  // argmax/argmin over a string axis
+  std::string direction = "increasing";     // monotonic
+  bool strict = true;                        // monotonic
+  Where where, numerator, denominator;       // point selections
+};
+
+struct OutputOptions {
+  std::string dir;          // "" = results/runs/<file stem>
+  bool lagrangian = true;   // write /lagrangian tracks
+};
+
+struct Experiment {
+  std::string path;   // as given
+  std::string stem;   // file name without .toml
+  std::string kind;
+  std::string title;
+  Params params;      // [params] overrides only
+  std::vector<SweepAxis> axes;
+  std::vector<Case> cases;
+  std::vector<CheckSpec> checks;
+  OutputOptions output;
+  std::string resolved_json;  // the experiment after overrides, as JSON (provenance)
+  std::string source_text;    // the file as read, so a run folder can re-check itself
+  std::vector<std::string> overrides;
+};
+
+// Parses `path`, applies command-line overrides ("params.x=3", "sweep.y=[1,2]"), and checks every
+// key and value against the kind. Throws ExperimentError.
+Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides,
+                          const kinds::Registry& registry);
+// The same from the file's text (`path` is used in messages and for the stem).
+Experiment loadExperimentText(const std::string& text, const std::string& path,
+                              const std::vector<std::string>& overrides, const kinds::Registry& registry);
+
+// One point of the sweep: cases (outer) × sweep axes (last axis fastest).
+struct Point {
+  int index = 0;
+  std::string label;   // the case label, "" without cases
+  Params params;       // every parameter of the kind, resolved
+};
+
+// The /sweep columns: case keys (first appearance order), then sweep axes.
+std::vector<std::string> sweepColumns(const Experiment& experiment);
+
+// Expands and validates every point (ranges, the kind's cross checks). Throws ExperimentError.
+std::vector<Point> expandPoints(const Experiment& experiment, const kinds::Kind& kind);
+
+}  // namespace creaturelab::runner

@@ -1,0 +1,51 @@
+// Provenance attributes of result files (DESIGN.md): version, commit, compiler, libraries, host.
+#include <hdf5.h>
+#include <unistd.h>
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdio>
+#include <toml++/toml.h>
+
+#include "runner/store.hpp"
+
+namespace creaturelab::runner {
+namespace {
+
+std::string gitCommit() {
+  std::array<char, 128> buf{};
+  std::string out;
+  if (FILE* p = popen("git -C '" CREATURELAB_SOURCE_DIR "' rev-parse HEAD 2>/dev/null", "r")) {
+    while (std::fgets(buf.data(), int(buf.size()), p)) out += buf.data();
+    pclose(p);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out.empty() ? "unknown" : out;
+}
+
+}  // namespace
+
+Provenance collectProvenance() {
+  unsigned h5_major = 0, h5_minor = 0, h5_release = 0;
+  H5get_libversion(&h5_major, &h5_minor, &h5_release);
+  char host[256] = "unknown";
+  gethostname(host, sizeof host - 1);
+  const std::string libraries = "hdf5 " + std::to_string(h5_major) + "." + std::to_string(h5_minor) + "." +
+                                std::to_string(h5_release) + ", eigen " + std::to_string(EIGEN_WORLD_VERSION) + "." +
+                                std::to_string(EIGEN_MAJOR_VERSION) + "." + std::to_string(EIGEN_MINOR_VERSION) +
+                                ", toml++ " + std::to_string(TOML_LIB_MAJOR) + "." + std::to_string(TOML_LIB_MINOR) +
+                                "." + std::to_string(TOML_LIB_PATCH);
+  return {{"creaturelab_version", CREATURELAB_VERSION},
+          {"git_commit", gitCommit()},
+          {"compiler", std::string("gcc ") + __VERSION__},
+          {"libraries", libraries},
+          {"host", host}};
+}
+
+const std::vector<std::string>& provenanceAttributeNames() {
+  static const std::vector<std::string> names = {"creaturelab_version", "git_commit", "compiler", "libraries",
+                                                 "host", "started", "finished", "wall_time_s"};
+  return names;
+}
+
+}  // namespace creaturelab::runner

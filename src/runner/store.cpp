@@ -1,0 +1,276 @@
+#include "runner/store.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/sha256.hpp"
+#include "io/hdf5.hpp"
+#include "runner/value_json.hpp"
+
+namespace creaturelab::runner {
+namespace fs = std::filesystem;
+
+namespace {
+
+void writeProvenance(const io::Group& root, const Provenance& p) {
+  for (const auto& [k, v] : p) io::setAttr(root, k, v);
+}
+
+void writeParameters(const io::Group& root, const kinds::Kind& kind, const kinds::Params& params) {
+  for (const auto& spec : kind.params()) {
+    io::setAttr(root, spec.name, params.at(spec.name));
+    io::setAttr(root, spec.name + ".unit", spec.unit);
+  }
+}
+
+void writeResult(const io::Group& root, const kinds::Result& r, bool lagrangian) {
+  const io::Group series = root.requireGroup("timeseries");
+  for (const auto& [name, s] : r.timeseries) io::setAttr(io::writeVector(series, name, s.values), "unit", s.unit);
+  const io::Group metrics = root.requireGroup("metrics");
+  for (const auto& [name, m] : r.metrics) io::setAttr(io::writeScalar(metrics, name, m.value), "unit", m.unit);
+  if (!lagrangian || r.lagrangian.empty()) return;
+  const io::Group tracks = root.requireGroup("lagrangian");
+  bool wrote_time = false;
+  for (const auto& [name, t] : r.lagrangian) {
+    if (t.frames() == 0) continue;
+    const hsize_t nt = hsize_t(t.frames()), np = hsize_t(t.points), dim = hsize_t(t.dim);
+    io::setAttr(io::writeArray(tracks, name, t.data.data(), {nt, np, dim}, std::vector<hsize_t>{1, np, dim}), "unit",
+                t.unit);
+    if (!wrote_time) io::setAttr(io::writeVector(tracks, "time_s", t.time_s), "unit", "s");
+    wrote_time = true;
+  }
+}
+
+// Index columns take the narrowest type that holds every value: int64, double, bool, else text.
+struct Column {
+  std::string type;  // "int64" | "double" | "bool" | "string"
+};
+
+Column columnType(const Table& table, const std::string& name) {
+  bool all_int = true, all_num = true, all_bool = true;
+  for (const auto& row : table.rows) {
+    auto it = row.columns.find(name);
+    if (it == row.columns.end()) continue;
+    const auto& v = it->second;
+    all_int &= std::holds_alternative<std::int64_t>(v);
+    all_num &= std::holds_alternative<std::int64_t>(v) || std::holds_alternative<double>(v);
+    all_bool &= std::holds_alternative<bool>(v);
+  }
+  return {all_bool ? "bool" : all_int ? "int64" : all_num ? "double" : "string"};
+}
+
+void writeColumn(const io::Group& sweep, const Table& table, const std::string& name, const std::string& type) {
+  std::vector<double> d;
+  std::vector<std::int64_t> i;
+  std::vector<std::int8_t> b;
+  std::vector<std::string> s;
+  for (const auto& row : table.rows) {
+    const kinds::Value v = row.columns.at(name);
+    if (type == "int64") i.push_back(std::get<std::int64_t>(v));
+    else if (type == "double") d.push_back(numericValue(v));
+    else if (type == "bool") b.push_back(std::get<bool>(v) ? 1 : 0);
+    else s.push_back(std::holds_alternative<std::string>(v) ? std::get<std::string>(v) : kinds::describeValue(v));
+  }
+  if (type == "int64") io::writeVector(sweep, name, i);
+  else if (type == "double") io::writeVector(sweep, name, d);
+  else if (type == "bool") io::writeVector(sweep, name, b);
+  else io::writeVector(sweep, name, s);
+}
+
+kinds::Value readColumnValue(const io::Group& sweep, const std::string& name, const std::string& type, size_t row) {
+  if (type == "int64") return io::readVectorInt64(sweep, name).at(row);
+  if (type == "double") return io::readVectorDouble(sweep, name).at(row);
+  if (type == "bool") return io::readVectorInt8(sweep, name).at(row) != 0;
+  return io::readVectorString(sweep, name).at(row);
+}
+
+}  // namespace
+
+void writePointContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Point& point,
+                        const PointOutcome& outcome, Provenance provenance);
+void writeIndexContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Table& table,
+                        const std::vector<CheckOutcome>& checks, Provenance provenance);
+
+std::string pointFileName(int index) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "point_%06d.h5", index);
+  return buf;
+}
+
+std::string pointConfigJson(const std::string& kind, const Point& point) {
+  return nlohmann::json{{"kind", kind}, {"params", toJson(point.params)}}.dump();
+}
+
+std::string pointConfigSha(const std::string& kind, const Point& point) {
+  return core::sha256Hex(pointConfigJson(kind, point));
+}
+
+void writePointFile(const std::string& dir, const Experiment& e, const kinds::Kind& kind, const Point& point,
+                    const PointOutcome& outcome, Provenance provenance) {
+  const std::string final_path = dir + "/" + pointFileName(point.index), tmp_path = final_path + ".tmp";
+  {
+    io::File file = io::File::create(tmp_path);
+    writePointContents(file.root(), e, kind, point, outcome, std::move(provenance));
+    file.close();
+  }
+  fs::rename(tmp_path, final_path);  // a point file that exists is whole
+}
+
+void writePointContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Point& point,
+                        const PointOutcome& outcome, Provenance provenance) {
+  {
+    io::setAttr(root, "kind", e.kind);
+    io::setAttr(root, "title", e.title);
+    io::setAttr(root, "experiment", e.path);
+    io::setAttr(root, "point_index", std::int64_t(point.index));
+    io::setAttr(root, "label", point.label);
+    io::setAttr(root, "status", outcome.ok ? "ok" : "failed");
+    io::setAttr(root, "message", outcome.message);
+    io::setAttr(root, "config_json", pointConfigJson(e.kind, point));
+    io::setAttr(root, "config_sha256", pointConfigSha(e.kind, point));
+    writeParameters(root, kind, point.params);
+    provenance["started"] = outcome.started;
+    provenance["finished"] = outcome.finished;
+    writeProvenance(root, provenance);
+    io::setAttr(root, "wall_time_s", outcome.wall_s);
+    writeResult(root, outcome.result, e.output.lagrangian);
+  }
+}
+
+std::string readPointConfigSha(const std::string& path) {
+  try {
+    const io::File file = io::File::openReadOnly(path);
+    return io::getAttrString(file.root(), "config_sha256");
+  } catch (const io::Hdf5Error&) {
+    return "";
+  }
+}
+
+Row readPointRow(const std::string& dir, const Point& point, const std::vector<std::string>& columns,
+                 const kinds::Kind& kind) {
+  Row row;
+  row.index = point.index;
+  row.label = point.label;
+  for (const auto& c : columns) row.columns[c] = point.params.at(c);
+  for (const auto& m : kind.metrics()) row.metrics[m.name] = std::nan("");
+  const std::string path = dir + "/" + pointFileName(point.index);
+  if (!fs::exists(path)) return row;
+  const io::File file = io::File::openReadOnly(path);
+  const io::Group root = file.root();
+  row.status = io::getAttrString(root, "status");
+  row.message = io::getAttrString(root, "message");
+  if (root.isGroup("metrics")) {
+    const io::Group metrics = root.openGroup("metrics");
+    for (auto& [name, value] : row.metrics)
+      if (metrics.isDataset(name)) value = io::readScalarDouble(metrics, name);
+  }
+  return row;
+}
+
+void writeIndex(const std::string& dir, const Experiment& e, const kinds::Kind& kind, const Table& table,
+                const std::vector<CheckOutcome>& checks, Provenance provenance) {
+  const std::string final_path = dir + "/index.h5", tmp_path = final_path + ".tmp";
+  {
+    io::File file = io::File::create(tmp_path);
+    writeIndexContents(file.root(), e, kind, table, checks, std::move(provenance));
+    file.close();
+  }
+  fs::rename(tmp_path, final_path);
+}
+
+void writeIndexContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Table& table,
+                        const std::vector<CheckOutcome>& checks, Provenance provenance) {
+  {
+    io::setAttr(root, "kind", e.kind);
+    io::setAttr(root, "title", e.title);
+    io::setAttr(root, "experiment", e.path);
+    io::setAttr(root, "experiment_toml", e.source_text);
+    io::setAttr(root, "overrides_json", nlohmann::json(e.overrides).dump());
+    io::setAttr(root, "config_json", e.resolved_json);
+    io::setAttr(root, "config_sha256", core::sha256Hex(e.resolved_json));
+    writeProvenance(root, provenance);
+
+    const io::Group sweep = root.requireGroup("sweep");
+    std::vector<std::int64_t> index;
+    std::vector<std::string> label, status, message;
+    for (const auto& row : table.rows) {
+      index.push_back(row.index);
+      label.push_back(row.label);
+      status.push_back(row.status);
+      message.push_back(row.message);
+    }
+    io::writeVector(sweep, "point_index", index);
+    io::writeVector(sweep, "label", label);
+    io::writeVector(sweep, "status", status);
+    io::writeVector(sweep, "message", message);
+    nlohmann::json types = nlohmann::json::object();
+    for (const auto& c : table.columns) {
+      const std::string type = columnType(table, c).type;
+      writeColumn(sweep, table, c, type);
+      types[c] = type;
+      for (const auto& spec : kind.params())
+        if (spec.name == c) io::setAttr(sweep.openDataset(c), "unit", spec.unit);
+    }
+    for (const auto& m : kind.metrics()) {
+      std::vector<double> values;
+      for (const auto& row : table.rows) values.push_back(row.metrics.at(m.name));
+      io::setAttr(io::writeVector(sweep, m.name, values), "unit", m.unit);
+    }
+    io::setAttr(sweep, "columns_json", nlohmann::json(table.columns).dump());
+    io::setAttr(sweep, "column_types_json", types.dump());
+    io::setAttr(sweep, "metrics_json", nlohmann::json(table.metrics).dump());
+
+    const io::Group chk = root.requireGroup("checks");
+    std::vector<std::string> name, type, expected, got;
+    std::vector<std::int8_t> passed;
+    for (const auto& c : checks) {
+      name.push_back(c.name);
+      type.push_back(c.type);
+      expected.push_back(c.expected);
+      got.push_back(c.got);
+      passed.push_back(c.passed ? 1 : 0);
+    }
+    io::writeVector(chk, "name", name);
+    io::writeVector(chk, "type", type);
+    io::writeVector(chk, "expected", expected);
+    io::writeVector(chk, "got", got);
+    io::writeVector(chk, "passed", passed);
+
+    const io::Group links = root.requireGroup("points");
+    for (const auto& row : table.rows)
+      if (row.status != "missing")
+        io::createExternalLink(links, fs::path(pointFileName(row.index)).stem().string(), pointFileName(row.index), "/");
+  }
+}
+
+StoredRun readIndex(const std::string& dir) {
+  const std::string path = dir + "/index.h5";
+  if (!fs::exists(path))
+    throw std::runtime_error(path + ": no index (not a run folder, or the run has not finished: use --resume)");
+  const io::File file = io::File::openReadOnly(path);
+  const io::Group root = file.root();
+  StoredRun out;
+  out.experiment_path = io::getAttrString(root, "experiment");
+  out.experiment_text = io::getAttrString(root, "experiment_toml");
+  out.overrides = nlohmann::json::parse(io::getAttrString(root, "overrides_json")).get<std::vector<std::string>>();
+  const io::Group sweep = root.openGroup("sweep");
+  out.table.columns = nlohmann::json::parse(io::getAttrString(sweep, "columns_json")).get<std::vector<std::string>>();
+  out.table.metrics = nlohmann::json::parse(io::getAttrString(sweep, "metrics_json")).get<std::vector<std::string>>();
+  const auto types = nlohmann::json::parse(io::getAttrString(sweep, "column_types_json"));
+  const auto index = io::readVectorInt64(sweep, "point_index");
+  const auto label = io::readVectorString(sweep, "label");
+  const auto status = io::readVectorString(sweep, "status");
+  const auto message = io::readVectorString(sweep, "message");
+  std::map<std::string, std::vector<double>> metric_values;
+  for (const auto& m : out.table.metrics) metric_values[m] = io::readVectorDouble(sweep, m);
+  for (size_t r = 0; r < index.size(); ++r) {
+    Row row{int(index[r]), label[r], status[r], message[r], {}, {}};
+    for (const auto& c : out.table.columns) row.columns[c] = readColumnValue(sweep, c, types.at(c), r);
+    for (const auto& m : out.table.metrics) row.metrics[m] = metric_values[m][r];
+    out.table.rows.push_back(std::move(row));
+  }
+  return out;
+}
+
+}  // namespace creaturelab::runner

@@ -1,0 +1,55 @@
+#pragma once
+// The run folder on disk (DESIGN.md "Results (HDF5)"): one HDF5 file per point, written as
+// NAME.h5.tmp and renamed when whole, and index.h5 with the sweep table, the checks and external
+// links to every point. The HDF5 library here is not thread-safe: callers serialise these calls.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinds/kind.hpp"
+#include "runner/checks.hpp"
+#include "runner/experiment.hpp"
+#include "runner/table.hpp"
+
+namespace creaturelab::runner {
+
+// Attributes that record where a result came from; they may differ between two runs.
+using Provenance = std::map<std::string, std::string>;
+Provenance collectProvenance();
+// Attribute names that are provenance (excluded from content digests).
+const std::vector<std::string>& provenanceAttributeNames();
+
+struct PointOutcome {
+  bool ok = true;
+  std::string message;  // why it failed
+  kinds::Result result; // whole, or what was computed before the failure
+  std::string started, finished;
+  double wall_s = 0;
+};
+
+std::string pointFileName(int index);
+// The resolved configuration of one point (kind + every parameter) and its SHA-256: resume
+// only reuses a point file whose hash matches.
+std::string pointConfigJson(const std::string& kind, const Point& point);
+std::string pointConfigSha(const std::string& kind, const Point& point);
+
+void writePointFile(const std::string& dir, const Experiment& experiment, const kinds::Kind& kind, const Point& point,
+                    const PointOutcome& outcome, Provenance provenance);
+// "" when the file is missing or unreadable.
+std::string readPointConfigSha(const std::string& path);
+// The table row of a point file; status "missing" when there is none.
+Row readPointRow(const std::string& dir, const Point& point, const std::vector<std::string>& columns,
+                 const kinds::Kind& kind);
+
+void writeIndex(const std::string& dir, const Experiment& experiment, const kinds::Kind& kind, const Table& table,
+                const std::vector<CheckOutcome>& checks, Provenance provenance);
+
+struct StoredRun {
+  std::string experiment_path, experiment_text;
+  std::vector<std::string> overrides;
+  Table table;
+};
+StoredRun readIndex(const std::string& dir);  // throws std::runtime_error naming the file
+
+}  // namespace creaturelab::runner
