@@ -27,10 +27,26 @@ struct Tracks {
   int frames() const { return time_s.empty() ? 0 : int(time_s.size()); }
 };
 
+// Cell-centred scalar fields on a uniform 2D grid at output times: frames × ny × nx, row-major.
+struct Field {
+  std::vector<double> data;
+  std::string unit;
+};
+
+struct FieldFrames {
+  std::vector<double> time_s;  // one per frame
+  int nx = 0, ny = 0;
+  double dx_m = 0, dy_m = 0;             // cell size
+  double origin_x_m = 0, origin_y_m = 0; // lower-left corner of the domain
+  std::map<std::string, Field> fields;   // each frames × ny × nx
+  int frames() const { return int(time_s.size()); }
+};
+
 struct Result {
   std::map<std::string, Series> timeseries;  // includes "time_s"; all the same length
   std::map<std::string, Metric> metrics;
   std::map<std::string, Tracks> lagrangian;
+  FieldFrames fields;  // empty unless the kind has a grid
 };
 
 }  // namespace creaturelab::kinds

@@ -3,9 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "core/sha256.hpp"
 #include "io/hdf5.hpp"
+#include "io/xdmf.hpp"
 #include "runner/value_json.hpp"
 
 namespace creaturelab::runner {
@@ -24,11 +26,35 @@ void writeParameters(const io::Group& root, const kinds::Kind& kind, const kinds
   }
 }
 
+// /fields/<name>: (frames, ny, nx), one frame per chunk, so a viewer reads a frame at a time.
+void writeFields(const io::Group& root, const kinds::FieldFrames& f) {
+  if (f.frames() == 0 || f.fields.empty()) return;
+  const io::Group group = root.requireGroup("fields");
+  const hsize_t nt = hsize_t(f.frames()), ny = hsize_t(f.ny), nx = hsize_t(f.nx);
+  for (const auto& [name, field] : f.fields)
+    io::setAttr(io::writeArray(group, name, field.data.data(), {nt, ny, nx}, std::vector<hsize_t>{1, ny, nx}), "unit",
+                field.unit);
+  io::setAttr(io::writeVector(group, "time_s", f.time_s), "unit", "s");
+  io::setAttr(group, "dx_m", f.dx_m);
+  io::setAttr(group, "dy_m", f.dy_m);
+  io::setAttr(group, "origin_x_m", f.origin_x_m);
+  io::setAttr(group, "origin_y_m", f.origin_y_m);
+}
+
+void writeXdmfSidecar(const std::string& dir, int index, const kinds::FieldFrames& f) {
+  if (f.frames() == 0 || f.fields.empty()) return;
+  io::XdmfGrid g{pointFileName(index), f.time_s, f.nx, f.ny, f.dx_m, f.dy_m, f.origin_x_m, f.origin_y_m, {}};
+  for (const auto& [name, field] : f.fields) g.fields.push_back(name);
+  std::ofstream out(dir + "/" + fs::path(pointFileName(index)).stem().string() + ".xdmf");
+  out << io::xdmfText(g);
+}
+
 void writeResult(const io::Group& root, const kinds::Result& r, bool lagrangian) {
   const io::Group series = root.requireGroup("timeseries");
   for (const auto& [name, s] : r.timeseries) io::setAttr(io::writeVector(series, name, s.values), "unit", s.unit);
   const io::Group metrics = root.requireGroup("metrics");
   for (const auto& [name, m] : r.metrics) io::setAttr(io::writeScalar(metrics, name, m.value), "unit", m.unit);
+  writeFields(root, r.fields);
   if (!lagrangian || r.lagrangian.empty()) return;
   const io::Group tracks = root.requireGroup("lagrangian");
   bool wrote_time = false;
@@ -115,6 +141,7 @@ void writePointFile(const std::string& dir, const Experiment& e, const kinds::Ki
     file.close();
   }
   fs::rename(tmp_path, final_path);  // a point file that exists is whole
+  writeXdmfSidecar(dir, point.index, outcome.result.fields);
 }
 
 void writePointContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Point& point,
