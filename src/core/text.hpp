@@ -1,0 +1,26 @@
+#pragma once
+// Small text helpers for messages and provenance: "did you mean" suggestions,
+// round-trip number formatting, UTC timestamps.
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace creaturelab::core {
+
+// Levenshtein distance (insertions, deletions, substitutions each cost 1), on bytes.
+std::size_t editDistance(std::string_view a, std::string_view b);
+
+// The candidate closest to `word` by editDistance, if that distance is at most
+// max(2, word.size() / 3); otherwise "". Ties go to the earlier candidate.
+std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates);
+
+// Shortest text that parses back to exactly `value` (std::to_chars), e.g. "0.1", "1e-07",
+// "3", "nan", "inf", "-inf".
+std::string formatNumber(double value);
+
+// Current UTC time as ISO 8601 with seconds: "2024-05-01T12:34:56Z".
+std::string isoTimeUtcNow();
+
+}  // namespace creaturelab::core
