@@ -55,16 +55,11 @@ runner::Baseline loadBaseline(const std::string& path, double rtol, double atol)
 Commands::Commands(const runner::Cluster& cluster) : cluster_(cluster), registry_(kinds::defaultRegistry()) {}
 
 int Commands::guard(const std::function<int()>& verb) const {
+  // Under MPI every rank reads the same files and meets the same user error: rank 0 says it.
   try {
     return verb();
-  } catch (const runner::ExperimentError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-  } catch (const io::Hdf5Error& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
   } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
+    if (primary()) std::fprintf(stderr, "error: %s\n", e.what());
   }
   return 2;
 }

@@ -64,7 +64,7 @@ StrandKind::StrandKind() {
   };
   metrics_ = {
       {"particles", "", "particles in the strand, anchors included"},
-      {"span_m", "m", "anchor separation"},
+      {"anchor_span_m", "m", "anchor separation, as set or derived"},
       {"mid_sag_m", "m", "depth of the middle of the strand below the anchors at the end"},
       {"static_mid_sag_m", "m", "the same from the static Newton equilibrium (no Provot)"},
       {"static_sag_rel_diff", "", "|mid_sag_m - static_mid_sag_m| / static_mid_sag_m"},
@@ -146,7 +146,7 @@ Result StrandKind::run(const Params& p) const {
 
   const double nan = std::nan("");
   result.metrics["particles"] = {double(n), ""};
-  result.metrics["span_m"] = {lay.span_m, "m"};
+  result.metrics["anchor_span_m"] = {lay.span_m, "m"};
   result.metrics["mid_sag_m"] = {midSag(state), "m"};
   result.metrics["static_mid_sag_m"] = {eq.converged ? midSag(settled) : nan, "m"};
   result.metrics["static_sag_rel_diff"] = {

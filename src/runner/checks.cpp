@@ -111,6 +111,31 @@ CheckOutcome monotonic(const CheckSpec& c, std::vector<const Row*> rows) {
   return out;
 }
 
+// Observed order of convergence: p in metric ~ C * axis^-p (e.g. an error against cells per
+// side), the least-squares slope of log(metric) against log(axis), negated.
+CheckOutcome order(const CheckSpec& c, const std::vector<const Row*>& rows) {
+  CheckOutcome out{c.name, c.type, "order of " + c.metric + " in " + c.axis + " in " + range(c.expect_lo, c.expect_hi),
+                   "", false};
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double n = double(rows.size());
+  for (const Row* r : rows) {
+    const double x = std::log(numericValue(r->columns.at(c.axis))), y = std::log(r->metrics.at(c.metric));
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double denom = n * sxx - sx * sx;
+  if (rows.size() < 2 || !(denom > 0)) {
+    out.got = "needs two or more distinct positive axis values";
+    return out;
+  }
+  const double p = -(n * sxy - sx * sy) / denom;
+  out.got = formatNumber(p) + " over " + std::to_string(rows.size()) + " points";
+  out.passed = std::isfinite(p) && p >= c.expect_lo && p <= c.expect_hi;
+  return out;
+}
+
 }  // namespace
 
 CheckOutcome evaluateCheck(const CheckSpec& c, const Table& table) {
@@ -138,6 +163,7 @@ CheckOutcome evaluateCheck(const CheckSpec& c, const Table& table) {
   if (c.type == "argmax") return extremum(c, rows, true);
   if (c.type == "argmin") return extremum(c, rows, false);
   if (c.type == "range") return inRange(c, rows);
+  if (c.type == "order") return order(c, rows);
   return monotonic(c, rows);
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// [[check]] evaluation over the sweep table (DESIGN.md): argmax, argmin, range, ratio, monotonic.
+// [[check]] evaluation over the sweep table (DESIGN.md): argmax, argmin, range, ratio, monotonic,
+// and order (observed order of convergence: log-log slope of a metric against an axis).
 #include <string>
 #include <vector>
 

@@ -38,6 +38,24 @@ void Cluster::barrier() const {
 #endif
 }
 
+int Cluster::sumOnRoot(int value) const {
+#ifdef CREATURELAB_HAVE_MPI
+  if (initialised_) {
+    int sum = 0;
+    MPI_Reduce(&value, &sum, 1, MPI_INT, MPI_SUM, 0, MPI_COMM_WORLD);
+    return rank_ == 0 ? sum : value;
+  }
+#endif
+  return value;
+}
+
+void Cluster::abort(int code) const {
+#ifdef CREATURELAB_HAVE_MPI
+  if (initialised_) MPI_Abort(MPI_COMM_WORLD, code);
+#endif
+  std::exit(code);
+}
+
 bool Cluster::builtWithMpi() {
 #ifdef CREATURELAB_HAVE_MPI
   return true;

@@ -14,6 +14,11 @@ class Cluster {
   int rank() const { return rank_; }
   int size() const { return size_; }
   void barrier() const;
+  // Sum of `value` over the ranks, on rank 0 (other ranks get their own value back).
+  int sumOnRoot(int value) const;
+  // Ends every rank with `code`: an error after the ranks split the work, where waiting at the
+  // next barrier would hang the others.
+  [[noreturn]] void abort(int code) const;
   static bool builtWithMpi();
 
  private:

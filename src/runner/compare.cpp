@@ -15,8 +15,24 @@ Tolerance Baseline::toleranceFor(const std::string& metric) const {
 }
 
 namespace {
-// NaN cannot be written in JSON: a NaN metric (e.g. a strand that never settled) is stored as null.
-nlohmann::json number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+// JSON has no NaN or infinity: those are stored as the strings "nan", "inf", "-inf" (a strand
+// that never settled has a NaN settling time).
+nlohmann::json number(double x) {
+  if (std::isfinite(x)) return x;
+  return std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf");
+}
+
+double numberFrom(const nlohmann::json& v) {
+  if (v.is_null()) return std::nan("");
+  if (v.is_string()) {
+    const std::string s = v.get<std::string>();
+    if (s == "inf") return HUGE_VAL;
+    if (s == "-inf") return -HUGE_VAL;
+    if (s == "nan") return std::nan("");
+    throw std::runtime_error("metric value \"" + s + "\" is not a number, \"nan\", \"inf\" or \"-inf\"");
+  }
+  return v.get<double>();
+}
 }  // namespace
 
 nlohmann::json baselineToJson(const Baseline& b) {
@@ -48,11 +64,11 @@ Baseline baselineFromJson(const nlohmann::json& j, const std::string& source) {
       row.label = p.value("label", "");
       row.status = p.value("status", "ok");
       for (const auto& [name, v] : p.at("metrics").items())
-        row.metrics[name] = v.is_null() ? std::nan("") : v.get<double>();
+        row.metrics[name] = numberFrom(v);
       b.table.rows.push_back(std::move(row));
     }
     return b;
-  } catch (const nlohmann::json::exception& e) {
+  } catch (const std::exception& e) {
     throw std::runtime_error(source + ": not a creaturelab baseline: " + e.what());
   }
 }
@@ -76,8 +92,8 @@ Comparison compareTables(const Table& run, const Baseline& baseline) {
       else if (auto it = got->metrics.find(metric); it == got->metrics.end()) d.note = "metric missing from the run";
       else {
         d.got = it->second;
-        if (std::isnan(expected) || std::isnan(d.got)) {
-          d.within = std::isnan(expected) && std::isnan(d.got);
+        if (!std::isfinite(expected) || !std::isfinite(d.got)) {
+          d.within = (std::isnan(expected) && std::isnan(d.got)) || d.got == expected;
         } else {
           d.within = std::fabs(d.got - expected) <= d.tolerance.atol + d.tolerance.rtol * std::fabs(expected);
         }

@@ -28,8 +28,16 @@ struct Context {
   }
 };
 
+// The nearest known name by edit distance, else the first that starts with what was typed
+// (units are spelled out in names, so "spring_k" is a prefix of "spring_k_n_per_m").
 std::string suggestion(const std::string& name, const std::vector<std::string>& known) {
   std::string near = core::closestMatch(name, known);
+  if (near.empty() && name.size() >= 3)
+    for (const auto& k : known)
+      if (k.rfind(name, 0) == 0) {
+        near = k;
+        break;
+      }
   return near.empty() ? "" : " (did you mean '" + near + "'?)";
 }
 
@@ -122,7 +130,15 @@ std::string expectText(const toml::node* node) {
   if (!node) return "";
   std::ostringstream s;
   s << toml::json_formatter{*node};
-  return s.str();
+  // One line, single spaces: errors are one line each.
+  std::string text;
+  for (char ch : s.str()) {
+    if (ch == '\n') ch = ' ';
+    if (ch == ' ' && (text.empty() || text.back() == ' ' || text.back() == '[')) continue;
+    if (ch == ']' && !text.empty() && text.back() == ' ') text.pop_back();
+    text += ch;
+  }
+  return text;
 }
 
 Where parseWhere(const toml::node* node, const Context& ctx, const std::string& key) {
@@ -155,16 +171,16 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   c.direction = t["direction"].value_or(std::string("increasing"));
   c.strict = t["strict"].value_or(true);
   if (c.name.empty()) ctx.fail(key, "needs a name", &t);
-  static const std::vector<std::string> types = {"argmax", "argmin", "range", "ratio", "monotonic"};
+  static const std::vector<std::string> types = {"argmax", "argmin", "range", "ratio", "monotonic", "order"};
   if (std::find(types.begin(), types.end(), c.type) == types.end())
-    ctx.fail(key + ".type", "'" + c.type + "' is not one of argmax | argmin | range | ratio | monotonic" +
+    ctx.fail(key + ".type", "'" + c.type + "' is not one of argmax | argmin | range | ratio | monotonic | order" +
                                 suggestion(c.type, types), t.get("type"));
   std::vector<std::string> metric_names;
   for (const auto& m : kind.metrics()) metric_names.push_back(m.name);
   if (std::find(metric_names.begin(), metric_names.end(), c.metric) == metric_names.end())
     ctx.fail(key + ".metric", "'" + c.metric + "' is not a metric of kind '" + kind.name() + "'" +
                                   suggestion(c.metric, metric_names), t.get("metric"));
-  const bool needs_axis = c.type == "argmax" || c.type == "argmin" || c.type == "monotonic";
+  const bool needs_axis = c.type == "argmax" || c.type == "argmin" || c.type == "monotonic" || c.type == "order";
   if (needs_axis && c.axis.empty()) ctx.fail(key, "a " + c.type + " check needs an axis", &t);
   if (c.type == "monotonic" && c.direction != "increasing" && c.direction != "decreasing")
     ctx.fail(key + ".direction", "expected \"increasing\" or \"decreasing\"", t.get("direction"));

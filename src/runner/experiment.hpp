@@ -34,9 +34,9 @@ using Where = std::vector<std::pair<std::string, Value>>;
 
 struct CheckSpec {
   std::string name;
-  std::string type;    // argmax | argmin | range | ratio | monotonic
+  std::string type;    // argmax | argmin | range | ratio | monotonic | order
   std::string metric;
-  std::string axis;    // argmax, argmin, monotonic
+  std::string axis;    // argmax, argmin, monotonic, order
   double expect_lo = 0, expect_hi = 0;        // numeric expectations
   std::optional<std::string> expect_choice;  // argmax/argmin over a string axis
   std::string direction = "increasing";     // monotonic

@@ -43,8 +43,9 @@ Provenance collectProvenance() {
 }
 
 const std::vector<std::string>& provenanceAttributeNames() {
+  // "experiment" is the path as typed (./x.toml and x.toml are the same experiment).
   static const std::vector<std::string> names = {"creaturelab_version", "git_commit", "compiler", "libraries",
-                                                 "host", "started", "finished", "wall_time_s"};
+                                                 "host", "started", "finished", "wall_time_s", "experiment"};
   return names;
 }
 

@@ -89,6 +89,9 @@ PointOutcome runPoint(const kinds::Kind& kind, const Point& point) {
   return out;
 }
 
+RunReport runShare(const RunOptions& o, const Experiment& e, const kinds::Kind& kind, const std::vector<Point>& points,
+                   const std::vector<std::string>& columns, RunReport report, const Cluster& cluster);
+
 }  // namespace
 
 RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, const Cluster& cluster) {
@@ -101,13 +104,28 @@ RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, co
   report.out_dir = outputDir(o, e);
   report.total = int(points.size());
   if (o.dry_run) return report;
+  // Every rank checks (read-only), so a user error stops every rank here alike, before any
+  // rank waits for another.
+  prepareOutputDir(report.out_dir, o);
   if (cluster.rank() == 0) {
-    prepareOutputDir(report.out_dir, o);
     if (o.force) clearRun(report.out_dir);
     fs::create_directories(report.out_dir);
   }
   cluster.barrier();
+  if (cluster.size() == 1) return runShare(o, e, kind, points, columns, report, cluster);
+  // Past this point an error on one rank would leave the others waiting: it ends them all.
+  try {
+    return runShare(o, e, kind, points, columns, report, cluster);
+  } catch (const std::exception& err) {
+    std::fprintf(stderr, "error (rank %d): %s\n", cluster.rank(), err.what());
+    cluster.abort(2);
+  }
+}
 
+namespace {
+
+RunReport runShare(const RunOptions& o, const Experiment& e, const kinds::Kind& kind, const std::vector<Point>& points,
+                   const std::vector<std::string>& columns, RunReport report, const Cluster& cluster) {
   // This process's share: a --points slice and/or an MPI rank.
   const int share_count = o.slice_count * cluster.size();
   const int share_index = o.slice_index * cluster.size() + cluster.rank();
@@ -164,7 +182,8 @@ RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, co
   for (auto& t : pool) t.join();
   if (write_error) std::rethrow_exception(write_error);
   progress.finish();
-  report.ran = int(todo.size());
+  report.ran = cluster.sumOnRoot(int(todo.size()));
+  report.skipped = cluster.sumOnRoot(report.skipped);
 
   cluster.barrier();
   if (cluster.rank() != 0) return report;
@@ -184,6 +203,8 @@ RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, co
   writeIndex(report.out_dir, e, kind, table, report.checks, provenance);
   return report;
 }
+
+}  // namespace
 
 std::string describeExperiment(const std::string& path, const std::vector<std::string>& overrides,
                                const kinds::Registry& registry) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -108,7 +109,13 @@ kinds::Value readColumnValue(const io::Group& sweep, const std::string& name, co
   if (type == "int64") return io::readVectorInt64(sweep, name).at(row);
   if (type == "double") return io::readVectorDouble(sweep, name).at(row);
   if (type == "bool") return io::readVectorInt8(sweep, name).at(row) != 0;
-  return io::readVectorString(sweep, name).at(row);
+  // A column mixing text and numbers (dt_s = ["auto", 0.01]) is stored as text; numbers come
+  // back as numbers so selections such as where = { dt_s = 0.01 } still match.
+  const std::string text = io::readVectorString(sweep, name).at(row);
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (!text.empty() && end && *end == '\0') return x;
+  return text;
 }
 
 }  // namespace

@@ -1,0 +1,155 @@
+#!/usr/bin/env bash
+# Bad input (issue 2 §3): malformed TOML, unknown key, wrong type, out of range, unknown kind, empty
+# sweep or range, an output folder that cannot be created, a folder that already holds a run, bad
+# overrides. Each: exit code 2, exactly one "error:" line on stderr naming the problem, nothing on
+# stdout, and nothing written.
+# usage: bad_input.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
+set -euo pipefail
+bin=$1 src=$2 scratch=$3
+cd "$src"
+rm -rf "$scratch"
+mkdir -p "$scratch"
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# expect_bad NAME PATTERN FILE [ARGS...]: `run FILE ARGS --out OUT` must be refused, where OUT is
+# $bad_out if set, else scratch/out_NAME.
+expect_bad() {
+  local name=$1 pattern=$2 file=$3
+  shift 3
+  local out=${bad_out:-$scratch/out_$name} err=$scratch/$name.stderr std=$scratch/$name.stdout rc=0
+  "$bin" run "$file" "$@" --out "$out" --jobs 1 >"$std" 2>"$err" || rc=$?
+  [[ $rc == 2 ]] || { cat "$err" >&2; fail "$name: exit code $rc, expected 2"; }
+  [[ $(wc -l <"$err") == 1 ]] || { cat "$err" >&2; fail "$name: expected one line on stderr"; }
+  grep -q '^error: ' "$err" || fail "$name: stderr does not start with 'error: ': $(cat "$err")"
+  grep -qF -- "$pattern" "$err" || fail "$name: stderr does not name the problem ('$pattern'): $(cat "$err")"
+  [[ ! -s $std ]] || fail "$name: wrote to stdout: $(cat "$std")"
+  [[ ! -e $out ]] || fail "$name: created $out"
+  echo "ok   $name: $(cat "$err")"
+}
+
+# write NAME: the experiment text on stdin, to scratch/NAME.toml
+write() { cat >"$scratch/$1.toml"; }
+
+write malformed <<'EOF'
+kind = "strand"
+[params
+n_springs = 3
+EOF
+expect_bad malformed "$scratch/malformed.toml:2:" "$scratch/malformed.toml"
+grep -q "malformed TOML" "$scratch/malformed.stderr" || fail "malformed: no 'malformed TOML'"
+
+write unknown_key <<'EOF'
+kind = "strand"
+[params]
+n_sprngs = 3
+EOF
+expect_bad unknown_key "unknown parameter 'n_sprngs'" "$scratch/unknown_key.toml"
+grep -qF "did you mean 'n_springs'" "$scratch/unknown_key.stderr" || fail "unknown_key: no suggestion"
+grep -qF "$scratch/unknown_key.toml:3" "$scratch/unknown_key.stderr" || fail "unknown_key: no file:line"
+
+write unknown_top <<'EOF'
+kind = "strand"
+[sweeps]
+n_springs = [3]
+EOF
+expect_bad unknown_top "unknown key 'sweeps'" "$scratch/unknown_top.toml"
+grep -qF "did you mean 'sweep'" "$scratch/unknown_top.stderr" || fail "unknown_top: no suggestion"
+
+write wrong_type <<'EOF'
+kind = "strand"
+[params]
+n_springs = "ten"
+EOF
+expect_bad wrong_type 'params.n_springs: got "ten", expected an integer' "$scratch/wrong_type.toml"
+
+write out_of_range <<'EOF'
+kind = "strand"
+[params]
+mass_kg = 5.0
+EOF
+expect_bad out_of_range "params.mass_kg: got 5, expected a value in [1e-15, 1]" "$scratch/out_of_range.toml"
+
+write unknown_kind <<'EOF'
+kind = "jelyfish_xyz"
+EOF
+expect_bad unknown_kind "unknown kind 'jelyfish_xyz'" "$scratch/unknown_kind.toml"
+
+write empty_sweep <<'EOF'
+kind = "oscillator"
+[sweep]
+dt_s = []
+EOF
+expect_bad empty_sweep "sweep.dt_s: empty sweep axis" "$scratch/empty_sweep.toml"
+
+write empty_range <<'EOF'
+kind = "oscillator"
+[sweep]
+dt_s = "0.5:0.1:0.1"
+EOF
+expect_bad empty_range 'range "0.5:0.1:0.1" is empty' "$scratch/empty_range.toml"
+
+write bad_check <<'EOF'
+kind = "oscillator"
+[sweep]
+dt_s = [0.01, 0.02]
+[[check]]
+name = "c"
+type = "argmin"
+metric = "max_abs_error_m"
+axis = "integrator"
+expect = "rk4"
+EOF
+expect_bad bad_check "axis 'integrator' is not swept" "$scratch/bad_check.toml"
+
+write both_span <<'EOF'
+kind = "strand"
+[params]
+span_m = 0.2
+n_springs = 10
+EOF
+expect_bad both_span "set span_m or n_springs, not both" "$scratch/both_span.toml"
+
+# A good file, refused for its overrides.
+write good <<'EOF'
+kind = "oscillator"
+[params]
+end_time_s = 0.5
+[sweep]
+dt_s = [0.01, 0.02]
+EOF
+expect_bad bad_override_key "unknown parameter 'dt'" "$scratch/good.toml" params.dt=0.1
+expect_bad bad_override_value "sweep.dt_s: got -1" "$scratch/good.toml" "sweep.dt_s=[-1]"
+expect_bad bad_override_syntax "expected dotted.key=value" "$scratch/good.toml" params.dt_s
+expect_bad missing_file "$scratch/nope.toml: no such experiment file" "$scratch/nope.toml"
+
+# An output folder that cannot be created: its parent is a regular file. (Tests run as root, so a
+# chmod 555 folder would still be writable.)
+echo "a file" >"$scratch/afile"
+bad_out=$scratch/afile/run expect_bad unwritable "$scratch/afile is not a folder" "$scratch/good.toml"
+bad_out=$scratch/afile/deeper/run expect_bad unwritable_deep "$scratch/afile is not a folder" "$scratch/good.toml"
+[[ $(cat "$scratch/afile") == "a file" ]] || fail "unwritable: the file was changed"
+
+# A folder that already holds a run is neither replaced nor mixed without --resume/--force.
+"$bin" run "$scratch/good.toml" --out "$scratch/done" --jobs 1 >/dev/null 2>&1 || fail "good run failed"
+before=$(cd "$scratch/done" && ls -l --time-style=+%s.%N && sha256sum ./*)
+rc=0
+"$bin" run "$scratch/good.toml" --out "$scratch/done" --jobs 1 >"$scratch/again.stdout" 2>"$scratch/again.stderr" || rc=$?
+[[ $rc == 2 ]] || fail "existing run: exit code $rc, expected 2"
+[[ $(wc -l <"$scratch/again.stderr") == 1 ]] || fail "existing run: expected one stderr line"
+grep -qF "already holds a run" "$scratch/again.stderr" || fail "existing run: $(cat "$scratch/again.stderr")"
+[[ $before == "$(cd "$scratch/done" && ls -l --time-style=+%s.%N && sha256sum ./*)" ]] || fail "existing run: files changed"
+echo "ok   existing run: $(cat "$scratch/again.stderr")"
+
+# The same errors from `show` (nothing to write, but the same message and exit code).
+rc=0
+"$bin" show "$scratch/wrong_type.toml" >"$scratch/show.stdout" 2>"$scratch/show.stderr" || rc=$?
+[[ $rc == 2 ]] || fail "show: exit code $rc"
+grep -qF 'expected an integer' "$scratch/show.stderr" || fail "show: $(cat "$scratch/show.stderr")"
+
+# An unknown option is a usage error: exit code 2.
+rc=0
+"$bin" run "$scratch/good.toml" --no-such-option >/dev/null 2>&1 || rc=$?
+[[ $rc == 2 ]] || fail "unknown option: exit code $rc"
+
+echo "all bad-input cases refused"

@@ -1,0 +1,22 @@
+# tests for cli/cli: end-to-end runs of the creaturelab executable (label "cli"). Each script is
+# self-contained: it cds to the source folder, cleans its scratch folder under the build tree and
+# takes well under a minute on 2 cores.
+function(creaturelab_cli_test name)
+  add_test(NAME cli_${name}
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/${name}.sh $<TARGET_FILE:creaturelab> ${PROJECT_SOURCE_DIR}
+                   ${CMAKE_BINARY_DIR}/cli/${name})
+  set_tests_properties(cli_${name} PROPERTIES LABELS cli TIMEOUT 300 ${ARGN})
+endfunction()
+
+creaturelab_cli_test(bad_input)      # exit 2, one "error:" line, nothing written
+creaturelab_cli_test(determinism)    # --jobs 1 == --jobs 2, bitwise (creaturelab digest)
+creaturelab_cli_test(resume_kill)    # kill -9 mid-sweep, --resume, equal to an uninterrupted run
+creaturelab_cli_test(divergence)     # a diverging point: exit 3, recorded as failed
+creaturelab_cli_test(check_compare)  # check, baseline, compare (exit 1 and OUTSIDE on a 1% change)
+creaturelab_cli_test(h5py)           # /usr/bin/python3 + h5py reads index, columns, strings, links
+creaturelab_cli_test(show_list)      # --dry-run writes nothing; show; list
+creaturelab_cli_test(run_folder)     # --points shares, --force, --resume with another configuration
+# MPI: skipped (exit 77) without mpirun or an MPI build. RESOURCE_LOCK: 3 ranks on 2 cores.
+creaturelab_cli_test(mpi SKIP_RETURN_CODE 77 RESOURCE_LOCK mpi)
+# User errors under MPI end every rank once (no rank left waiting in a barrier).
+creaturelab_cli_test(mpi_errors SKIP_RETURN_CODE 77 RESOURCE_LOCK mpi)

@@ -1,0 +1,428 @@
+// [[check]] evaluation over hand-built sweep tables: argmax, argmin, range, ratio, monotonic,
+// point selections, failed and missing points.
+#include "runner/checks.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace {
+
+using namespace creaturelab;
+using runner::CheckOutcome;
+using runner::CheckSpec;
+using runner::Row;
+using runner::Table;
+using kinds::Value;
+
+Row row(int index, std::map<std::string, Value> columns, std::map<std::string, double> metrics,
+        std::string status = "ok", std::string message = "", std::string label = "") {
+  Row r;
+  r.index = index;
+  r.label = std::move(label);
+  r.status = std::move(status);
+  r.message = std::move(message);
+  r.columns = std::move(columns);
+  r.metrics = std::move(metrics);
+  return r;
+}
+
+// distance_m over contraction_hz, peaked at 0.7 Hz.
+Table frequencyTable() {
+  Table t{{"contraction_hz"}, {"distance_m"}, {}};
+  const double hz[] = {0.5, 0.6, 0.7, 0.8, 0.9};
+  const double d[] = {1.0, 1.5, 2.0, 1.8, 1.2};
+  for (int i = 0; i < 5; ++i) t.rows.push_back(row(i, {{"contraction_hz", hz[i]}}, {{"distance_m", d[i]}}));
+  return t;
+}
+
+// max_abs_error_m over integrator x dt_s.
+Table integratorTable() {
+  Table t{{"dt_s", "integrator"}, {"max_abs_error_m"}, {}};
+  const char* names[] = {"euler", "rk4", "implicit_euler"};
+  const double err[] = {1e-1, 1e-8, 1e-2};
+  int i = 0;
+  for (double dt : {0.01, 0.02})
+    for (int n = 0; n < 3; ++n) {
+      const double scale = dt == 0.01 ? 1.0 : (n == 1 ? 16.0 : 2.0);
+      t.rows.push_back(row(i++, {{"dt_s", dt}, {"integrator", std::string(names[n])}},
+                           {{"max_abs_error_m", err[n] * scale}}));
+    }
+  return t;
+}
+
+CheckSpec spec(std::string type, std::string metric, std::string axis = "") {
+  CheckSpec c;
+  c.name = type + " check";
+  c.type = std::move(type);
+  c.metric = std::move(metric);
+  c.axis = std::move(axis);
+  return c;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// ---- argmax / argmin ----
+
+TEST(RunnerChecks, ArgmaxOnANumericAxis) {
+  CheckSpec c = spec("argmax", "distance_m", "contraction_hz");
+  c.expect_lo = 0.6;
+  c.expect_hi = 0.8;
+  const CheckOutcome o = runner::evaluateCheck(c, frequencyTable());
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.name, "argmax check");
+  EXPECT_EQ(o.type, "argmax");
+  EXPECT_EQ(o.got, "contraction_hz=0.7 (distance_m=2)");
+  EXPECT_EQ(o.expected, "contraction_hz in [0.6, 0.8]");
+}
+
+TEST(RunnerChecks, ArgmaxBoundsAreInclusiveAndAWrongExpectationFails) {
+  CheckSpec c = spec("argmax", "distance_m", "contraction_hz");
+  c.expect_lo = 0.7;
+  c.expect_hi = 0.7;
+  EXPECT_TRUE(runner::evaluateCheck(c, frequencyTable()).passed);
+  c.expect_lo = 0.8;
+  c.expect_hi = 1.0;
+  const CheckOutcome o = runner::evaluateCheck(c, frequencyTable());
+  EXPECT_FALSE(o.passed);
+  EXPECT_TRUE(contains(o.got, "contraction_hz=0.7")) << o.got;
+}
+
+TEST(RunnerChecks, ArgminOnANumericAxis) {
+  CheckSpec c = spec("argmin", "distance_m", "contraction_hz");
+  c.expect_lo = 0.45;
+  c.expect_hi = 0.55;
+  const CheckOutcome o = runner::evaluateCheck(c, frequencyTable());
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.got, "contraction_hz=0.5 (distance_m=1)");
+}
+
+TEST(RunnerChecks, ArgminOnAStringAxis) {
+  CheckSpec c = spec("argmin", "max_abs_error_m", "integrator");
+  c.expect_choice = "rk4";
+  CheckOutcome o = runner::evaluateCheck(c, integratorTable());
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.expected, "integrator=\"rk4\"");
+  EXPECT_TRUE(contains(o.got, "integrator=\"rk4\"")) << o.got;
+  c.expect_choice = "euler";
+  o = runner::evaluateCheck(c, integratorTable());
+  EXPECT_FALSE(o.passed);
+}
+
+TEST(RunnerChecks, ArgmaxOnAStringAxis) {
+  CheckSpec c = spec("argmax", "max_abs_error_m", "integrator");
+  c.expect_choice = "euler";
+  EXPECT_TRUE(runner::evaluateCheck(c, integratorTable()).passed);
+  c.where = {{"dt_s", 0.02}};
+  c.expect_choice = "euler";
+  EXPECT_TRUE(runner::evaluateCheck(c, integratorTable()).passed);
+}
+
+TEST(RunnerChecks, NumericExpectationOnAStringAxisFailsCleanly) {
+  CheckSpec c = spec("argmin", "max_abs_error_m", "integrator");
+  c.expect_lo = 0;
+  c.expect_hi = 1;
+  EXPECT_FALSE(runner::evaluateCheck(c, integratorTable()).passed);
+}
+
+TEST(RunnerChecks, ArgminWithAWhereFilter) {
+  CheckSpec c = spec("argmin", "max_abs_error_m", "dt_s");
+  c.where = {{"integrator", std::string("rk4")}};
+  c.expect_lo = 0.01;
+  c.expect_hi = 0.01;
+  EXPECT_TRUE(runner::evaluateCheck(c, integratorTable()).passed);
+}
+
+// ---- range ----
+
+TEST(RunnerChecks, RangeOverEverySelectedPoint) {
+  CheckSpec c = spec("range", "distance_m");
+  c.expect_lo = 1.0;  // inclusive at both ends
+  c.expect_hi = 2.0;
+  CheckOutcome o = runner::evaluateCheck(c, frequencyTable());
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.expected, "distance_m in [1, 2]");
+  EXPECT_EQ(o.got, "[1, 2] over 5 points");
+  c.expect_hi = 1.9;
+  o = runner::evaluateCheck(c, frequencyTable());
+  EXPECT_FALSE(o.passed);
+}
+
+TEST(RunnerChecks, RangeWithAWhereFilterOnOnePoint) {
+  CheckSpec c = spec("range", "distance_m");
+  c.where = {{"contraction_hz", 0.9}};
+  c.expect_lo = 1.1;
+  c.expect_hi = 1.3;
+  const CheckOutcome o = runner::evaluateCheck(c, frequencyTable());
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.got, "1.2");
+}
+
+TEST(RunnerChecks, WhereMatchesNumbersWhateverTheirStoredType) {
+  Table t{{"n_springs"}, {"m"}, {}};
+  t.rows.push_back(row(0, {{"n_springs", std::int64_t(10)}}, {{"m", 1.0}}));
+  t.rows.push_back(row(1, {{"n_springs", std::int64_t(20)}}, {{"m", 5.0}}));
+  CheckSpec c = spec("range", "m");
+  c.where = {{"n_springs", 10.0}};  // a TOML float selecting an integer column
+  c.expect_lo = 0;
+  c.expect_hi = 2;
+  EXPECT_TRUE(runner::evaluateCheck(c, t).passed);
+}
+
+TEST(RunnerChecks, WhereSelectsByBooleanAndLabel) {
+  Table t{{"provot"}, {"m"}, {}};
+  t.rows.push_back(row(0, {{"provot", false}}, {{"m", 1.0}}, "ok", "", "rest"));
+  t.rows.push_back(row(1, {{"provot", true}}, {{"m", 9.0}}, "ok", "", "provot"));
+  CheckSpec c = spec("range", "m");
+  c.expect_lo = 0;
+  c.expect_hi = 2;
+  c.where = {{"provot", false}};
+  EXPECT_TRUE(runner::evaluateCheck(c, t).passed);
+  c.where = {{"label", std::string("provot")}};
+  EXPECT_FALSE(runner::evaluateCheck(c, t).passed);
+  c.where = {{"label", std::string("rest")}};
+  EXPECT_TRUE(runner::evaluateCheck(c, t).passed);
+}
+
+TEST(RunnerChecks, NoMatchingPointFails) {
+  CheckSpec c = spec("range", "distance_m");
+  c.where = {{"contraction_hz", 5.0}};
+  c.expect_lo = 0;
+  c.expect_hi = 10;
+  const CheckOutcome o = runner::evaluateCheck(c, frequencyTable());
+  EXPECT_FALSE(o.passed);
+  EXPECT_TRUE(contains(o.got, "no point matches contraction_hz=5")) << o.got;
+}
+
+// ---- ratio ----
+
+TEST(RunnerChecks, RatioOfTwoSelectedPoints) {
+  CheckSpec c = spec("ratio", "max_abs_error_m");
+  c.numerator = {{"integrator", std::string("rk4")}, {"dt_s", 0.02}};
+  c.denominator = {{"integrator", std::string("rk4")}, {"dt_s", 0.01}};
+  c.expect_lo = 12;
+  c.expect_hi = 20;
+  CheckOutcome o = runner::evaluateCheck(c, integratorTable());
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.got, "16");
+  EXPECT_EQ(o.expected, "max_abs_error_m ratio in [12, 20]");
+  c.expect_lo = 1;
+  c.expect_hi = 3;
+  o = runner::evaluateCheck(c, integratorTable());
+  EXPECT_FALSE(o.passed);
+  EXPECT_EQ(o.got, "16");
+}
+
+TEST(RunnerChecks, RatioSelectionsMustEachPickOnePoint) {
+  CheckSpec c = spec("ratio", "max_abs_error_m");
+  c.numerator = {{"integrator", std::string("rk4")}};  // two points
+  c.denominator = {{"integrator", std::string("rk4")}, {"dt_s", 0.01}};
+  c.expect_lo = 0;
+  c.expect_hi = 100;
+  const CheckOutcome o = runner::evaluateCheck(c, integratorTable());
+  EXPECT_FALSE(o.passed);
+  EXPECT_TRUE(contains(o.got, "must each select one point (got 2 and 1)")) << o.got;
+}
+
+TEST(RunnerChecks, RatioOverZeroFails) {
+  Table t{{"x"}, {"m"}, {}};
+  t.rows.push_back(row(0, {{"x", 1.0}}, {{"m", 1.0}}));
+  t.rows.push_back(row(1, {{"x", 2.0}}, {{"m", 0.0}}));
+  CheckSpec c = spec("ratio", "m");
+  c.numerator = {{"x", 1.0}};
+  c.denominator = {{"x", 2.0}};
+  c.expect_lo = 0;
+  c.expect_hi = std::numeric_limits<double>::max();
+  EXPECT_FALSE(runner::evaluateCheck(c, t).passed);
+}
+
+// ---- monotonic ----
+
+Table series(const std::vector<double>& axis, const std::vector<double>& values) {
+  Table t{{"x"}, {"m"}, {}};
+  for (size_t i = 0; i < axis.size(); ++i) t.rows.push_back(row(int(i), {{"x", axis[i]}}, {{"m", values[i]}}));
+  return t;
+}
+
+CheckSpec monotonic(std::string direction, bool strict) {
+  CheckSpec c = spec("monotonic", "m", "x");
+  c.direction = std::move(direction);
+  c.strict = strict;
+  return c;
+}
+
+TEST(RunnerChecks, MonotonicIncreasingStrict) {
+  const CheckOutcome o = runner::evaluateCheck(monotonic("increasing", true), series({1, 2, 3}, {1, 2, 4}));
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.expected, "m strictly increasing in x");
+  EXPECT_EQ(o.got, "1, 2, 4");
+  EXPECT_FALSE(runner::evaluateCheck(monotonic("increasing", true), series({1, 2, 3}, {1, 3, 2})).passed);
+  EXPECT_FALSE(runner::evaluateCheck(monotonic("decreasing", true), series({1, 2, 3}, {1, 2, 4})).passed);
+}
+
+TEST(RunnerChecks, MonotonicTiesPassOnlyWhenNotStrict) {
+  const Table flat = series({1, 2, 3}, {1, 1, 2});
+  EXPECT_FALSE(runner::evaluateCheck(monotonic("increasing", true), flat).passed);
+  const CheckOutcome o = runner::evaluateCheck(monotonic("increasing", false), flat);
+  EXPECT_TRUE(o.passed);
+  EXPECT_EQ(o.expected, "m increasing in x");
+  const Table down = series({1, 2, 3}, {3, 3, 1});
+  EXPECT_FALSE(runner::evaluateCheck(monotonic("decreasing", true), down).passed);
+  EXPECT_TRUE(runner::evaluateCheck(monotonic("decreasing", false), down).passed);
+}
+
+TEST(RunnerChecks, MonotonicDecreasing) {
+  EXPECT_TRUE(runner::evaluateCheck(monotonic("decreasing", true), series({0, 0.75, 1.5, 2.5}, {9, 4, 2, 1})).passed);
+  EXPECT_FALSE(runner::evaluateCheck(monotonic("decreasing", true), series({0, 0.75, 1.5, 2.5}, {9, 4, 5, 1})).passed);
+}
+
+TEST(RunnerChecks, MonotonicSortsByTheAxisNotTheRowOrder) {
+  // Rows in the order cases listed them; the axis decides.
+  const Table t = series({2.5, 0.75, 1.5}, {1, 4, 2});
+  const CheckOutcome o = runner::evaluateCheck(monotonic("decreasing", true), t);
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.got, "4, 2, 1");
+  EXPECT_FALSE(runner::evaluateCheck(monotonic("increasing", true), t).passed);
+}
+
+TEST(RunnerChecks, MonotonicWithWhereFilters) {
+  // rk4 rises with dt; implicit Euler does not (in this made-up table), so only a filter passes.
+  Table t = integratorTable();
+  t.rows[5].metrics["max_abs_error_m"] = 1e-3;  // implicit_euler at dt 0.02 below its dt 0.01 value
+  CheckSpec c = spec("monotonic", "max_abs_error_m", "dt_s");
+  c.where = {{"integrator", std::string("rk4")}};
+  EXPECT_TRUE(runner::evaluateCheck(c, t).passed);
+  c.where = {{"integrator", std::string("implicit_euler")}};
+  EXPECT_FALSE(runner::evaluateCheck(c, t).passed);
+}
+
+TEST(RunnerChecks, MonotonicNeedsTwoPoints) {
+  const CheckOutcome o = runner::evaluateCheck(monotonic("increasing", true), series({1}, {1}));
+  EXPECT_FALSE(o.passed);
+  EXPECT_EQ(o.got, "fewer than 2 points");
+}
+
+TEST(RunnerChecks, MonotonicOnAnIntegerAxis) {
+  Table t{{"n"}, {"m"}, {}};
+  for (int i = 0; i < 4; ++i) t.rows.push_back(row(i, {{"n", std::int64_t(10 * (4 - i))}}, {{"m", double(i)}}));
+  CheckSpec c = spec("monotonic", "m", "n");
+  c.direction = "decreasing";
+  EXPECT_TRUE(runner::evaluateCheck(c, t).passed);
+}
+
+// ---- order (observed order of convergence: -slope of log metric against log axis) ----
+
+TEST(RunnerChecks, OrderOfAPowerLaw) {
+  // error = 3 * cells^-2 exactly: order 2.
+  Table t{{"cells"}, {"error"}, {}};
+  int i = 0;
+  for (std::int64_t n : {16, 32, 64, 128})
+    t.rows.push_back(row(i++, {{"cells", n}}, {{"error", 3.0 / double(n * n)}}));
+  CheckSpec c = spec("order", "error", "cells");
+  c.expect_lo = 1.9;
+  c.expect_hi = 2.1;
+  CheckOutcome o = runner::evaluateCheck(c, t);
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.got, "2 over 4 points");
+  c.expect_lo = 0.9;
+  c.expect_hi = 1.1;  // first order expected, second order found
+  o = runner::evaluateCheck(c, t);
+  EXPECT_FALSE(o.passed);
+}
+
+TEST(RunnerChecks, OrderNeedsTwoDistinctPositiveAxisValues) {
+  CheckSpec c = spec("order", "m", "x");
+  c.expect_lo = -10;
+  c.expect_hi = 10;
+  EXPECT_FALSE(runner::evaluateCheck(c, series({4}, {1})).passed);
+  EXPECT_FALSE(runner::evaluateCheck(c, series({4, 4}, {1, 2})).passed);
+  EXPECT_FALSE(runner::evaluateCheck(c, series({0, 4}, {1, 2})).passed);
+  EXPECT_FALSE(runner::evaluateCheck(c, series({1, 4}, {0, 2})).passed);  // log(0)
+}
+
+// ---- failed, missing and non-finite points ----
+
+TEST(RunnerChecks, AFailedPointFailsTheCheckWithItsMessage) {
+  Table t = frequencyTable();
+  t.rows[3].status = "failed";
+  t.rows[3].message = "simulation diverged at step 16 (t = 8 s)";
+  t.rows[3].metrics["distance_m"] = std::nan("");
+  for (const std::string type : {"argmax", "argmin", "range", "monotonic"}) {
+    CheckSpec c = spec(type, "distance_m", type == "range" ? "" : "contraction_hz");
+    c.expect_lo = 0;
+    c.expect_hi = 10;
+    const CheckOutcome o = runner::evaluateCheck(c, t);
+    EXPECT_FALSE(o.passed) << type;
+    EXPECT_EQ(o.got, "point 3 failed: simulation diverged at step 16 (t = 8 s)") << type;
+  }
+  CheckSpec r = spec("ratio", "distance_m");
+  r.numerator = {{"contraction_hz", 0.8}};
+  r.denominator = {{"contraction_hz", 0.5}};
+  r.expect_lo = 0;
+  r.expect_hi = 10;
+  const CheckOutcome o = runner::evaluateCheck(r, t);
+  EXPECT_FALSE(o.passed);
+  EXPECT_TRUE(contains(o.got, "point 3 failed: simulation diverged")) << o.got;
+}
+
+TEST(RunnerChecks, AFailedPointOutsideTheSelectionDoesNotMatter) {
+  Table t = frequencyTable();
+  t.rows[4].status = "failed";
+  t.rows[4].message = "diverged";
+  CheckSpec c = spec("range", "distance_m");
+  c.where = {{"contraction_hz", 0.7}};
+  c.expect_lo = 1.9;
+  c.expect_hi = 2.1;
+  EXPECT_TRUE(runner::evaluateCheck(c, t).passed);
+}
+
+TEST(RunnerChecks, AMissingPointFailsTheCheck) {
+  Table t = frequencyTable();
+  t.rows[1].status = "missing";
+  CheckSpec c = spec("argmax", "distance_m", "contraction_hz");
+  c.expect_lo = 0.6;
+  c.expect_hi = 0.8;
+  const CheckOutcome o = runner::evaluateCheck(c, t);
+  EXPECT_FALSE(o.passed);
+  EXPECT_EQ(o.got, "point 1 missing");
+}
+
+TEST(RunnerChecks, ANonFiniteMetricFailsTheCheck) {
+  Table t = frequencyTable();
+  t.rows[2].metrics["distance_m"] = std::nan("");  // e.g. a strand that never settled
+  CheckSpec c = spec("range", "distance_m");
+  c.expect_lo = 0;
+  c.expect_hi = 10;
+  const CheckOutcome o = runner::evaluateCheck(c, t);
+  EXPECT_FALSE(o.passed);
+  EXPECT_EQ(o.got, "point 2 has no finite distance_m");
+  t.rows[2].metrics.erase("distance_m");
+  EXPECT_FALSE(runner::evaluateCheck(c, t).passed);
+}
+
+// ---- several checks, the console table ----
+
+TEST(RunnerChecks, EvaluateChecksKeepsOrderAndTheTableMarksFailures) {
+  CheckSpec pass = spec("argmax", "distance_m", "contraction_hz");
+  pass.name = "peak near 0.7 Hz";
+  pass.expect_lo = 0.6;
+  pass.expect_hi = 0.8;
+  CheckSpec fail = monotonic("increasing", true);  // must fail: distance rises then falls
+  fail.name = "distance rises";
+  fail.metric = "distance_m";
+  fail.axis = "contraction_hz";
+  const auto outcomes = runner::evaluateChecks({pass, fail}, frequencyTable());
+  ASSERT_EQ(outcomes.size(), 2u);
+  EXPECT_TRUE(outcomes[0].passed);
+  EXPECT_FALSE(outcomes[1].passed);
+  EXPECT_EQ(outcomes[1].got, "1, 1.5, 2, 1.8, 1.2");
+  const std::string table = runner::formatCheckTable(outcomes);
+  EXPECT_TRUE(contains(table, "peak near 0.7 Hz")) << table;
+  EXPECT_TRUE(contains(table, "ok")) << table;
+  const auto line = table.substr(table.find("distance rises"));
+  EXPECT_TRUE(contains(line.substr(0, line.find('\n')), "FAIL")) << table;
+}
+
+}  // namespace
