@@ -1,0 +1,131 @@
+#pragma once
+// Parameters of the orb-web construction (thesis seeds/orb-webs-mehla-2005.txt §5.2, pseudo-code
+// Figs. 5.5, 5.10, 5.15, 5.16; values of §5.2.1 and the tables of §5.3).
+//
+// Units. The pseudo-code gives lengths in 'units' (Fig. 5.5: "each mass is laid at a distance of 20
+// units"), while the tables of §5.3.4-5.3.5 give the same values in mm (frame placement 20 mm, rest
+// 15 mm; spoke placement 7 mm, rest 3 mm) and §5.2.1 gives the rest length as 3 mm. So 1 unit = 1 mm,
+// converted once here: every field below is SI (metres, kilograms, newtons, seconds).
+//
+// How a strand is laid (all strand types). A strand between two masses a distance d apart is a chain
+// of n = max(1, round(d / placement)) springs, its masses evenly spaced at s = d / n. Each spring's
+// rest length is s * rest / placement, so every spring of a type starts at the same over-extension
+// placement / rest - 1 (thesis §5.1: "laying the springs out at length which is 75% to 250% more than
+// their rest lengths") and none starts compressed, whatever the strand's length. Where d is a
+// multiple of the placement this is exactly the thesis's rest length.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "web/geometry2.hpp"
+
+namespace creaturelab::web {
+
+// The default frame: seven anchor points of an irregular, slightly taller-than-wide heptagon
+// 1.07 m wide and 1.05 m tall (the issue asks for "a natural 6-8 point frame about 1 m across";
+// thesis §5.2.1: "diameter of the orb web up to 1 meter"; the anchors of Fig. 5.6 are irregular).
+std::vector<Point2> defaultAttachmentPointsM();
+
+// Where a primary spoke ends (thesis §5.2, Fig. 5.10 steps 1-2).
+enum class PrimarySpokeEnd {
+  // The inner-frame mass nearest the ray from the segment's middle mass through the centre, beyond the
+  // centre: the text's "a section of the inner frame opposite it". Every primary spoke then passes
+  // through the centre and the hub forms there.
+  opposite,
+  // The literal pseudo-code: the mass of the other segments farthest from the middle mass. On most
+  // frames that is a corner, and on even-sided frames (square, hexagon) the spokes then miss each
+  // other by several centimetres, so no single intersection exists for the hub.
+  farthest,
+};
+
+struct WebParams {
+  // --- frame (Fig. 5.5) -----------------------------------------------------------------------
+  // Anchor points in order around the frame, metres, in the vertical x-y plane (y up). 3 to 10
+  // points (§5.2: "the user can choose up to ten attachment points"), no two closer than 1 mm, no
+  // three consecutive ones collinear, a simple polygon containing the centre of its bounding box.
+  std::vector<Point2> attachment_points_m = defaultAttachmentPointsM();
+  // MOVE_OUTER (Fig. 5.5 step 5): how far each anchor moves toward the centre to give its
+  // inner-frame corner, metres. The thesis gives no value; 50 mm (5% of the web) keeps the outer
+  // frame "short" (§5.2) yet long enough for ten springs at the outer-frame placement.
+  double move_outer_m = 0.05;
+
+  // Outer frame: anchor -> inner-frame corner. Fig. 5.5 step 7: masses 5 units apart, rest length 2.
+  double outer_frame_placement_m = 0.005;
+  double outer_frame_rest_length_m = 0.002;
+  // §5.2 calls these strands "short stiff"; Fig. 5.5 and §5.3.3 say 0.001 N/m. Chosen 0.08 N/m: see
+  // web_params.cpp.
+  double outer_frame_k_n_per_m = 0.08;
+
+  // Inner frame: between consecutive corners. Fig. 5.5 step 10 and the Fig. 5.33 table (preset):
+  // placement 20 mm, rest 15 mm. The thesis's k is 0.001 N/m; 0.05 N/m chosen: see web_params.cpp.
+  double frame_placement_m = 0.020;
+  double frame_rest_length_m = 0.015;
+  double frame_k_n_per_m = 0.05;
+  // Inward radial force on the inner frame (Fig. 5.8; Fig. 5.10 step 8: "apply inward radial force
+  // on inner frame segments"), newtons per metre of frame, pointing at the centre. Each inner-frame
+  // mass gets this times half the length of its two frame springs as laid. The thesis gives no value;
+  // see web_params.cpp for the choice.
+  double inner_frame_inward_force_n_per_m = 5e-5;
+
+  // --- spokes and hub (Fig. 5.10) ----------------------------------------------------------------
+  // Primary and secondary spokes and the hub strands. Fig. 5.10 step 3 and the Fig. 5.28 table.
+  double spoke_placement_m = 0.007;
+  double spoke_rest_length_m = 0.003;
+  double spoke_k_n_per_m = 0.01;
+  PrimarySpokeEnd primary_spoke_end = PrimarySpokeEnd::opposite;  // see PrimarySpokeEnd above
+  // A primary spoke whose line is within this angle of an earlier primary spoke is not laid (with an
+  // even number of sides the middle of side j and the middle of the opposite side pick each other,
+  // Fig. 5.10 steps 1-2, which would lay the same strand twice). Radians.
+  double primary_spoke_min_angle_rad = 0.2;
+  // The hub (Fig. 5.10 steps 4-7) joins, on each arm of each primary spoke, the mass nearest this
+  // distance from the primary spokes' intersection, metres. Fig. 5.11 shows a small polygon.
+  double hub_radius_m = 0.03;
+  // Secondary spokes start at every stride-th inner-frame mass (§5.2: "repeated for all the masses
+  // in the inner frame"). Every mass (stride 1) gives 125 radii on the default frame (the angle rule
+  // below drops the rest), 1.5 mm apart on the hub ring, with 17,700 springs; stride 4 gives 43 radii,
+  // which look like the thesis's webs (Figs. 5.12, 5.29) and keep ~6,100 particles (ch. 3: 5,000-7,000).
+  int secondary_spoke_stride = 4;
+  // A secondary spoke is skipped when its frame end is within this angle (seen from the hub) of a
+  // radius already laid, so no two radii run nearly on top of each other. Radians.
+  double secondary_spoke_min_angle_rad = 0.04;
+  // §5.2: secondary spokes "are connected randomly to the masses in the hub": each goes to one of
+  // the hub_attach_choices hub masses closest to its frame end (leaving out any whose spoke would cross
+  // a radius already laid), drawn from the seeded generator (1 = the closest, Fig. 5.10 step 10).
+  int hub_attach_choices = 3;
+
+  // --- spiral (Figs. 5.15, 5.16) -------------------------------------------------------------------
+  // Spiral strands join masses of neighbouring spokes. The thesis gives no spiral values of its own
+  // (§5.2.1 lists one spring constant, 0.01 N/m, and one rest length, 3 mm, for the whole web).
+  // Chosen: placement 21 mm, rest 12 mm (75% over-extension, the low end of §5.1), k = 2.5e-4 N/m;
+  // see web_params.cpp.
+  double spiral_placement_m = 0.021;
+  double spiral_rest_length_m = 0.012;
+  double spiral_k_n_per_m = 2.5e-4;
+  // SPIRAL_DENSITY (Fig. 5.16 step 3): the processed spiral is repeated while some spoke has more
+  // than this many masses outside the free zone that no spiral strand touches.
+  int spiral_density = 5;
+  // No spiral particle or strand comes closer than this to the hub centre (§5.2: "we end this process
+  // a little distance away from the hub of the web so that a distinct hub is still visible"), metres.
+  double free_zone_radius_m = 0.07;
+  // §5.2: "the spiral has to have a small amount of randomness in it". Probability that a step of a
+  // spiral goes to a neighbour (along the spoke) of the closest mass instead of the closest mass.
+  double spiral_jitter = 0.1;
+
+  // Optional override of every rest length: rest = placement / (1 + overextension) for all six strand
+  // types (thesis §5.1 lays strands 75% to 250% over rest, i.e. 0.75 to 2.5). Unset: the per-type
+  // rest lengths above (over-extensions: outer 1.5, frame 0.33, spokes 1.33, spiral 0.75).
+  std::optional<double> overextension;
+
+  // --- physics (§5.2.1, ch. 3) ---------------------------------------------------------------------
+  double particle_mass_kg = 1e-8;     // 10 ug (§5.2.1; Fig. 5.5: mass = 0.00000001)
+  double air_drag_ns_per_m = 1e-8;    // air friction 0.00000001 Ns/m (§5.2.1), Eq. 4.7
+  double gravity_m_per_s2 = 9.81;     // along -y: the web hangs in the vertical x-y plane
+  std::uint64_t seed = 1;             // every random choice: core::rng keyed by (seed, purpose, index)
+
+  // "" when the web can be built; otherwise one sentence naming the first problem, e.g.
+  // "attachment points 2, 3 and 4 are collinear; move one of them off the line".
+  std::string validate() const;
+};
+
+}  // namespace creaturelab::web

@@ -1,0 +1,83 @@
+// The default orb web (thesis seeds/orb-webs-mehla-2005.txt §5.2; ~6,100 particles, ~9,400 springs).
+// Goals (issue 3; Release, one core):
+//   BM_BuildDefaultWeb              build the web                                  <= 50 ms
+//   BM_Settle10sRK4Auto             10 simulated seconds, RK4 at its auto substep   <= 3 s
+//   BM_StaticEquilibrium            Newton static equilibrium from the laid web     <= 0.2 s
+// BM_Settle10sRK4AtLimit runs RK4 at the full stability limit (auto_safety = 1) for comparison: the
+// omega_max it divides is a Gershgorin upper bound, so that step is still stable.
+#include <benchmark/benchmark.h>
+
+#include "springs/equilibrium.hpp"
+#include "springs/simulate.hpp"
+#include "web/build.hpp"
+
+namespace sp = creaturelab::springs;
+namespace web = creaturelab::web;
+
+namespace {
+
+const web::WebModel& defaultWeb() {
+  static const web::WebModel m = web::build(web::WebParams{});
+  return m;
+}
+
+void sizeCounters(benchmark::State& st, const web::WebModel& m) {
+  st.counters["particles"] = m.counts.particles;
+  st.counters["springs"] = m.counts.springs;
+}
+
+void BM_BuildDefaultWeb(benchmark::State& st) {
+  const web::WebParams params;
+  web::WebCounts counts;
+  for (auto _ : st) {
+    auto m = web::build(params);
+    counts = m.counts;
+    benchmark::DoNotOptimize(m.state.x_m.data());
+  }
+  st.counters["particles"] = counts.particles;
+  st.counters["springs"] = counts.springs;
+}
+BENCHMARK(BM_BuildDefaultWeb)->Unit(benchmark::kMillisecond);
+
+void settle(benchmark::State& st, double auto_safety) {
+  const auto& m = defaultWeb();
+  sp::System<3> system(m.network);
+  system.setExternalForce(web::constantForce(m.external_force_n));
+  sp::SimulationSummary summary;
+  for (auto _ : st) {
+    sp::State<3> s = m.state;
+    sp::SimulationOptions opt;  // RK4, 0.02 s frames, dt = 0 (auto)
+    opt.end_time_s = 10;
+    opt.auto_safety = auto_safety;
+    summary = sp::simulate(system, s, opt);
+    benchmark::DoNotOptimize(s.x_m.data());
+  }
+  sizeCounters(st, m);
+  st.counters["steps"] = static_cast<double>(summary.steps);
+  st.counters["dt_us"] = summary.dt_used_s * 1e6;
+  st.counters["omega_max"] = summary.omega_max_rad_per_s;
+  st.counters["settling_s"] = summary.settling_time_s.value_or(-1);
+}
+
+void BM_Settle10sRK4Auto(benchmark::State& st) { settle(st, 0.5); }
+BENCHMARK(BM_Settle10sRK4Auto)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+void BM_Settle10sRK4AtLimit(benchmark::State& st) { settle(st, 1.0); }
+BENCHMARK(BM_Settle10sRK4AtLimit)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+void BM_StaticEquilibrium(benchmark::State& st) {
+  const auto& m = defaultWeb();
+  const sp::System<3> system(m.network);
+  sp::EquilibriumResult r;
+  for (auto _ : st) {
+    sp::State<3> s = m.state;
+    r = sp::solveStaticEquilibrium(system, s);
+    benchmark::DoNotOptimize(s.x_m.data());
+  }
+  sizeCounters(st, m);
+  st.counters["iterations"] = r.iterations;
+  st.counters["converged"] = r.converged;
+}
+BENCHMARK(BM_StaticEquilibrium)->Unit(benchmark::kMillisecond);
+
+}  // namespace
