@@ -1,0 +1,151 @@
+#pragma once
+// Dense 2-D array of doubles used for every field of the fluid solver.
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace creaturelab::fluid {
+
+/// A dense nx × ny array of doubles with the x index fastest: element (i, j) lives at
+/// data()[j * nx + i]. Rows of constant j are contiguous, which the solvers rely on to
+/// vectorise loops over i.
+class Array2 {
+ public:
+  Array2() = default;
+  Array2(int nx, int ny, double value = 0.0)
+      : nx_(nx), ny_(ny), data_(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), value) {}
+
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  std::size_t size() const { return data_.size(); }
+
+  double& operator()(int i, int j) { return data_[index(i, j)]; }
+  double operator()(int i, int j) const { return data_[index(i, j)]; }
+
+  double* data() { return data_.data(); }
+  const double* data() const { return data_.data(); }
+  double* row(int j) { return data_.data() + index(0, j); }
+  const double* row(int j) const { return data_.data() + index(0, j); }
+
+  void fill(double value) { std::fill(data_.begin(), data_.end(), value); }
+  /// Reshapes (and zeroes) only when the shape changes, so scratch arrays are allocated once.
+  void resize(int nx, int ny) {
+    if (nx == nx_ && ny == ny_) return;
+    nx_ = nx;
+    ny_ = ny;
+    data_.assign(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny), 0.0);
+  }
+  /// Exact comparison of shape and values (== on doubles: no tolerance; NaN never equal).
+  bool operator==(const Array2& other) const = default;
+
+ private:
+  std::size_t index(int i, int j) const {
+    return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) + static_cast<std::size_t>(i);
+  }
+  int nx_ = 0;
+  int ny_ = 0;
+  std::vector<double> data_;
+};
+
+// Reductions. A single running sum (or maximum) is a chain of dependent additions, bound by
+// their latency; these keep four independent partial results (plain locals, so that they
+// stay in registers) in a fixed pattern and combine them in a fixed order: several times
+// faster and still bitwise reproducible on every machine. The maxima also watch for NaN
+// (v − v is NaN for NaN and ±inf), which a comparison would silently skip.
+
+/// Σ a[k] b[k].
+inline double dot(const double* a, const double* b, std::size_t n) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    s0 += a[k] * b[k];
+    s1 += a[k + 1] * b[k + 1];
+    s2 += a[k + 2] * b[k + 2];
+    s3 += a[k + 3] * b[k + 3];
+  }
+  for (; k < n; ++k) s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
+/// Σ p[k].
+inline double sum(const double* p, std::size_t n) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    s0 += p[k];
+    s1 += p[k + 1];
+    s2 += p[k + 2];
+    s3 += p[k + 3];
+  }
+  for (; k < n; ++k) s0 += p[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
+/// Running maximum of |values| in four lanes, with NaN detection.
+struct MaxAbsAccumulator {
+  double m0 = 0.0, m1 = 0.0, m2 = 0.0, m3 = 0.0;  // maxima
+  double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;  // Σ (v − v): NaN once a NaN or inf was seen
+  void add4(double v0, double v1, double v2, double v3) {
+    v0 = std::abs(v0), v1 = std::abs(v1), v2 = std::abs(v2), v3 = std::abs(v3);
+    m0 = v0 > m0 ? v0 : m0;
+    m1 = v1 > m1 ? v1 : m1;
+    m2 = v2 > m2 ? v2 : m2;
+    m3 = v3 > m3 ? v3 : m3;
+    z0 += v0 - v0;
+    z1 += v1 - v1;
+    z2 += v2 - v2;
+    z3 += v3 - v3;
+  }
+  void add(double v) {
+    v = std::abs(v);
+    m0 = v > m0 ? v : m0;
+    z0 += v - v;
+  }
+  /// The maximum; +infinity if an infinity was seen, NaN if a NaN was seen.
+  double result() const {
+    const double z = (z0 + z1) + (z2 + z3);
+    const double m = std::max(std::max(m0, m1), std::max(m2, m3));
+    if (z != z) return m > std::numeric_limits<double>::max() ? m : std::numeric_limits<double>::quiet_NaN();
+    return m;
+  }
+};
+
+/// max |p[k]| (0 when n = 0); NaN if a value is NaN (unless an infinity is also present).
+inline double max_abs(const double* p, std::size_t n) {
+  MaxAbsAccumulator acc;
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4) acc.add4(p[k], p[k + 1], p[k + 2], p[k + 3]);
+  for (; k < n; ++k) acc.add(p[k]);
+  return acc.result();
+}
+
+/// max |a[k] − b[k]|, with the NaN rule of max_abs.
+inline double max_abs_difference(const double* a, const double* b, std::size_t n) {
+  MaxAbsAccumulator acc;
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4) acc.add4(a[k] - b[k], a[k + 1] - b[k + 1], a[k + 2] - b[k + 2], a[k + 3] - b[k + 3]);
+  for (; k < n; ++k) acc.add(a[k] - b[k]);
+  return acc.result();
+}
+
+inline double max_abs(const Array2& a) { return max_abs(a.data(), a.size()); }
+inline double dot(const Array2& a, const Array2& b) { return dot(a.data(), b.data(), a.size()); }
+
+/// Subtracts the mean value.
+inline void remove_mean(Array2& a) {
+  double* p = a.data();
+  const std::size_t n = a.size();
+  const double mean = sum(p, n) / static_cast<double>(n);
+  for (std::size_t k = 0; k < n; ++k) p[k] -= mean;
+}
+
+/// A point or vector in the plane, SI units given by the name of the variable holding it.
+struct Vec2 {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+}  // namespace creaturelab::fluid

@@ -1,0 +1,54 @@
+#pragma once
+// Wall boundary conditions on the MAC grid, by ghost values (Griebel et al. 1998, ch. 3).
+//
+// Normal velocity: a solid wall (free-slip, no-slip, moving) holds u·n = 0 on its faces; an
+// open wall's faces are unknowns like interior faces.
+// Tangential velocity: the tangential component's samples sit half a cell from the wall, so a
+// ghost sample half a cell outside, mirrored across the wall, sets the wall value:
+//   free-slip and open  ghost = interior            (∂u_t/∂n = 0)
+//   no-slip             ghost = −interior           (u_t = 0 on the wall)
+//   moving              ghost = 2 U_wall − interior  (u_t = U_wall on the wall)
+// Pressure: solid walls are Neumann (∂p/∂n = 0, no flux); an open wall is Dirichlet p = 0 on
+// the wall itself, i.e. ghost pressure = −interior pressure.
+
+#include "fluid/fluid_params.hpp"
+#include "fluid/mac_grid2.hpp"
+
+namespace creaturelab::fluid {
+
+inline bool is_solid(const Wall& wall) { return wall.type != WallType::open; }
+
+/// Ghost value of a tangential velocity component half a cell outside `wall`.
+inline double tangential_ghost(const Wall& wall, double interior) {
+  switch (wall.type) {
+    case WallType::free_slip:
+    case WallType::open:
+      return interior;
+    case WallType::no_slip:
+      return -interior;
+    case WallType::moving:
+      return 2.0 * wall.tangential_velocity_m_per_s - interior;
+  }
+  return interior;
+}
+
+/// Range [begin, end) of the face indices normal to a pair of walls that are unknowns:
+/// for u faces the i range (walls left/right), for v faces the j range (walls bottom/top).
+struct FaceRange {
+  int begin = 0;
+  int end = 0;
+};
+inline FaceRange unknown_faces(const Wall& low_wall, const Wall& high_wall, int cells) {
+  return {is_solid(low_wall) ? 1 : 0, is_solid(high_wall) ? cells : cells + 1};
+}
+inline FaceRange unknown_u_columns(const MacGrid2& grid, const Walls& walls) {
+  return unknown_faces(walls.left, walls.right, grid.nx);
+}
+inline FaceRange unknown_v_rows(const MacGrid2& grid, const Walls& walls) {
+  return unknown_faces(walls.bottom, walls.top, grid.ny);
+}
+
+/// Sets the normal velocity on solid walls to zero (u·n = 0).
+void enforce_wall_normal_velocity(MacGrid2& grid, const Walls& walls);
+
+}  // namespace creaturelab::fluid

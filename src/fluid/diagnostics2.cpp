@@ -1,0 +1,132 @@
+#include "fluid/diagnostics2.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "fluid/boundary2.hpp"
+
+namespace creaturelab::fluid {
+
+double max_divergence_per_s(const MacGrid2& grid) { return max_abs_flux_sum_m_per_s(grid) / grid.dx_m; }
+
+double max_abs_flux_sum_m_per_s(const MacGrid2& grid) {
+  MaxAbsAccumulator acc;
+  for (int j = 0; j < grid.ny; ++j) {
+    const double* u = grid.u_m_per_s.row(j);
+    const double* v_s = grid.v_m_per_s.row(j);
+    const double* v_n = grid.v_m_per_s.row(j + 1);
+    auto flux = [&](int i) { return (u[i + 1] - u[i]) + (v_n[i] - v_s[i]); };
+    int i = 0;
+    for (; i + 4 <= grid.nx; i += 4) acc.add4(flux(i), flux(i + 1), flux(i + 2), flux(i + 3));
+    for (; i < grid.nx; ++i) acc.add(flux(i));
+  }
+  const double m = acc.result();
+  return m == m ? m : std::numeric_limits<double>::infinity();
+}
+
+double kinetic_energy_joule_per_m(const MacGrid2& grid, double density_kg_per_m3) {
+  // Trapezoidal weights: ½ on the faces lying on walls.
+  double sum_u = 0.0;
+  for (int j = 0; j < grid.ny; ++j) {
+    const double* u = grid.u_m_per_s.row(j);
+    sum_u += dot(u, u, grid.nx + 1) - 0.5 * (u[0] * u[0] + u[grid.nx] * u[grid.nx]);
+  }
+  double sum_v = 0.0;
+  for (int j = 0; j <= grid.ny; ++j) {
+    const double* v = grid.v_m_per_s.row(j);
+    const double row = dot(v, v, grid.nx);
+    sum_v += (j == 0 || j == grid.ny) ? 0.5 * row : row;
+  }
+  return 0.5 * density_kg_per_m3 * grid.dx_m * grid.dx_m * (sum_u + sum_v);
+}
+
+double max_velocity_component_m_per_s(const MacGrid2& grid) {
+  const double mu = max_abs(grid.u_m_per_s);
+  const double mv = max_abs(grid.v_m_per_s);
+  const double big = std::numeric_limits<double>::max();
+  return (mu <= big && mv <= big) ? std::max(mu, mv) : std::numeric_limits<double>::infinity();
+}
+
+FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3) {
+  const int nx = grid.nx;
+  const int ny = grid.ny;
+  MaxAbsAccumulator speed, flux;
+  double sum_u = 0.0, sum_v = 0.0;
+  auto add_row = [](MaxAbsAccumulator& acc, const double* p, int n) {
+    int i = 0;
+    for (; i + 4 <= n; i += 4) acc.add4(p[i], p[i + 1], p[i + 2], p[i + 3]);
+    for (; i < n; ++i) acc.add(p[i]);
+  };
+  {
+    const double* v = grid.v_m_per_s.row(0);
+    add_row(speed, v, nx);
+    sum_v += 0.5 * dot(v, v, nx);
+  }
+  for (int j = 0; j < ny; ++j) {
+    const double* u = grid.u_m_per_s.row(j);
+    const double* v_s = grid.v_m_per_s.row(j);
+    const double* v_n = grid.v_m_per_s.row(j + 1);
+    add_row(speed, u, nx + 1);
+    add_row(speed, v_n, nx);
+    sum_u += dot(u, u, nx + 1) - 0.5 * (u[0] * u[0] + u[nx] * u[nx]);
+    sum_v += (j + 1 == ny ? 0.5 : 1.0) * dot(v_n, v_n, nx);
+    auto cell_flux = [&](int i) { return (u[i + 1] - u[i]) + (v_n[i] - v_s[i]); };
+    int i = 0;
+    for (; i + 4 <= nx; i += 4) flux.add4(cell_flux(i), cell_flux(i + 1), cell_flux(i + 2), cell_flux(i + 3));
+    for (; i < nx; ++i) flux.add(cell_flux(i));
+  }
+  const double infinity = std::numeric_limits<double>::infinity();
+  const double big = std::numeric_limits<double>::max();
+  const double max_speed = speed.result();
+  const double max_flux = flux.result();
+  FlowSummary summary;
+  summary.max_velocity_component_m_per_s = max_speed <= big ? max_speed : infinity;
+  summary.max_divergence_per_s = max_flux <= big ? max_flux / grid.dx_m : infinity;
+  summary.kinetic_energy_joule_per_m = 0.5 * density_kg_per_m3 * grid.dx_m * grid.dx_m * (sum_u + sum_v);
+  return summary;
+}
+
+double cfl_number(const MacGrid2& grid, double dt_s) { return max_velocity_component_m_per_s(grid) * dt_s / grid.dx_m; }
+
+void vorticity_at_corners(const MacGrid2& grid, const Walls& walls, Array2& omega_per_s) {
+  const int nx = grid.nx;
+  const int ny = grid.ny;
+  const Array2& u = grid.u_m_per_s;
+  const Array2& v = grid.v_m_per_s;
+  const double inv_dx = 1.0 / grid.dx_m;
+  omega_per_s.resize(nx + 1, ny + 1);
+  for (int j = 0; j <= ny; ++j) {
+    for (int i = 0; i <= nx; ++i) {
+      const double v_right = i < nx ? v(i, j) : tangential_ghost(walls.right, v(nx - 1, j));
+      const double v_left = i > 0 ? v(i - 1, j) : tangential_ghost(walls.left, v(0, j));
+      const double u_above = j < ny ? u(i, j) : tangential_ghost(walls.top, u(i, ny - 1));
+      const double u_below = j > 0 ? u(i, j - 1) : tangential_ghost(walls.bottom, u(i, 0));
+      omega_per_s(i, j) = ((v_right - v_left) - (u_above - u_below)) * inv_dx;
+    }
+  }
+}
+
+void vorticity_at_centres(const MacGrid2& grid, const Walls& walls, Array2& omega_per_s) {
+  Array2 corners;
+  vorticity_at_corners(grid, walls, corners);
+  omega_per_s.resize(grid.nx, grid.ny);
+  for (int j = 0; j < grid.ny; ++j) {
+    for (int i = 0; i < grid.nx; ++i) {
+      omega_per_s(i, j) = 0.25 * ((corners(i, j) + corners(i + 1, j)) + (corners(i, j + 1) + corners(i + 1, j + 1)));
+    }
+  }
+}
+
+void velocity_at_centres(const MacGrid2& grid, Array2& u_m_per_s, Array2& v_m_per_s) {
+  u_m_per_s.resize(grid.nx, grid.ny);
+  v_m_per_s.resize(grid.nx, grid.ny);
+  for (int j = 0; j < grid.ny; ++j) {
+    for (int i = 0; i < grid.nx; ++i) {
+      u_m_per_s(i, j) = 0.5 * (grid.u_m_per_s(i, j) + grid.u_m_per_s(i + 1, j));
+      v_m_per_s(i, j) = 0.5 * (grid.v_m_per_s(i, j) + grid.v_m_per_s(i, j + 1));
+    }
+  }
+}
+
+}  // namespace creaturelab::fluid

@@ -1,0 +1,44 @@
+#pragma once
+// Observables of a MAC velocity field: divergence, kinetic energy, CFL number, vorticity.
+// Stateless functions of the grid (and walls where ghost values matter).
+
+#include "fluid/fluid_params.hpp"
+#include "fluid/mac_grid2.hpp"
+
+namespace creaturelab::fluid {
+
+/// max over cells of |∇·u| = |u_E − u_W + v_N − v_S| / dx, 1/s.
+double max_divergence_per_s(const MacGrid2& grid);
+
+/// max over cells of |u_E − u_W + v_N − v_S| (= dx |∇·u|), m/s; +infinity if not finite.
+double max_abs_flux_sum_m_per_s(const MacGrid2& grid);
+
+/// Kinetic energy per metre of depth, ½ ρ ∫ |u|² dA, J/m: each component summed over its faces
+/// with trapezoidal weights (½ on faces lying on a wall).
+double kinetic_energy_joule_per_m(const MacGrid2& grid, double density_kg_per_m3);
+
+/// max(|u|, |v|) over all faces, m/s; +infinity if any value is NaN or infinite.
+double max_velocity_component_m_per_s(const MacGrid2& grid);
+
+/// CFL number max(|u|, |v|) dt / dx (Griebel et al. 1998, ch. 3 time-step control).
+double cfl_number(const MacGrid2& grid, double dt_s);
+
+/// The per-step observables in one pass over the faces.
+struct FlowSummary {
+  double max_velocity_component_m_per_s = 0.0;  ///< as max_velocity_component_m_per_s()
+  double max_divergence_per_s = 0.0;            ///< as max_divergence_per_s() (+inf if not finite)
+  double kinetic_energy_joule_per_m = 0.0;      ///< as kinetic_energy_joule_per_m()
+};
+FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3);
+
+/// Vorticity ω = ∂v/∂x − ∂u/∂y at the (nx + 1) × (ny + 1) cell corners, 1/s, with wall ghost
+/// values from the walls (so ω = 0 on free-slip walls).
+void vorticity_at_corners(const MacGrid2& grid, const Walls& walls, Array2& omega_per_s);
+
+/// Vorticity at cell centres (mean of the four corners), nx × ny, 1/s.
+void vorticity_at_centres(const MacGrid2& grid, const Walls& walls, Array2& omega_per_s);
+
+/// Velocity interpolated to cell centres (mean of the two faces), nx × ny each, m/s.
+void velocity_at_centres(const MacGrid2& grid, Array2& u_m_per_s, Array2& v_m_per_s);
+
+}  // namespace creaturelab::fluid

@@ -1,0 +1,465 @@
+#include "fluid/fast_pressure_solver2.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "fluid/boundary2.hpp"
+
+namespace creaturelab::fluid {
+namespace {
+
+// Radices of the FFT of length h = n/2 used by the DCT of length n, or empty when n is odd or
+// h has a prime factor above 7 (the dense transform is used then). (A radix-4 butterfly was
+// tried: with SSE2's sixteen registers it spilled and ran 15 % slower than two radix-2 stages.)
+std::vector<int> fft_radices(int n) {
+  if (n < 2 || n % 2 != 0) return {};
+  int h = n / 2;
+  std::vector<int> radices;
+  for (int r : {2, 3, 5, 7}) {
+    while (h % r == 0) radices.push_back(r), h /= r;
+  }
+  if (h != 1) return {};
+  return radices;
+}
+bool fft_applies(int n) { return n == 2 || !fft_radices(n).empty(); }
+
+bool same_wall_types(const Walls& a, const Walls& b) {
+  return a.left.type == b.left.type && a.right.type == b.right.type && a.bottom.type == b.bottom.type &&
+         a.top.type == b.top.type;
+}
+
+// Eigenpairs of the 1-D operator along `lines` with the given ends (see the header).
+double eigenvalue(bool low_neumann, bool high_neumann, int n, int k) {
+  const double pi = std::numbers::pi;
+  double theta = 0.0;
+  if (low_neumann && high_neumann)
+    theta = pi * k / n;
+  else if (!low_neumann && !high_neumann)
+    theta = pi * (k + 1) / n;
+  else
+    theta = pi * (k + 0.5) / n;
+  const double s = std::sin(0.5 * theta);
+  return 4.0 * s * s;  // = 2 − 2 cos θ without cancellation for small θ
+}
+
+double eigenvector(bool low_neumann, bool high_neumann, int n, int k, int j) {
+  const double pi = std::numbers::pi;
+  const double x = j + 0.5;
+  if (low_neumann && high_neumann) return std::cos(pi * k * x / n);
+  if (!low_neumann && !high_neumann) return std::sin(pi * (k + 1) * x / n);
+  if (low_neumann) return std::cos(pi * (k + 0.5) * x / n);
+  return std::sin(pi * (k + 0.5) * x / n);
+}
+
+// Radix-2 Stockham butterfly over one block: b0 = a0 + a1, b1 = w (a0 − a1).
+void radix2(long block, const double* __restrict__ a0r, const double* __restrict__ a0i, const double* __restrict__ a1r,
+            const double* __restrict__ a1i, double* __restrict__ b0r, double* __restrict__ b0i,
+            double* __restrict__ b1r, double* __restrict__ b1i, double wc, double ws) {
+  for (long l = 0; l < block; ++l) {
+    const double dr = a0r[l] - a1r[l], di = a0i[l] - a1i[l];
+    b0r[l] = a0r[l] + a1r[l];
+    b0i[l] = a0i[l] + a1i[l];
+    b1r[l] = wc * dr - ws * di;
+    b1i[l] = wc * di + ws * dr;
+  }
+}
+
+}  // namespace
+
+void FastPressureSolver2::setup(const Walls& walls, int nx, int ny, bool prefer_dense) {
+  if (ready_ && nx == nx_ && ny == ny_ && prefer_dense == prefer_dense_ && same_wall_types(walls, walls_)) return;
+  ready_ = true;
+  walls_ = walls;
+  nx_ = nx;
+  ny_ = ny;
+  prefer_dense_ = prefer_dense;
+
+  const bool x_neumann = is_solid(walls.left) && is_solid(walls.right);
+  const bool y_neumann = is_solid(walls.bottom) && is_solid(walls.top);
+  if (!prefer_dense && y_neumann && fft_applies(ny))
+    method_ = Method::fft_along_y;
+  else if (!prefer_dense && x_neumann && fft_applies(nx))
+    method_ = Method::fft_along_x;
+  else
+    method_ = Method::dense_along_y;
+
+  const bool transposed = method_ == Method::fft_along_x;
+  lines_ = transposed ? nx : ny;
+  lanes_ = transposed ? ny : nx;
+  const Wall& line_low = transposed ? walls.left : walls.bottom;
+  const Wall& line_high = transposed ? walls.right : walls.top;
+  const Wall& lane_low = transposed ? walls.bottom : walls.left;
+  const Wall& lane_high = transposed ? walls.top : walls.right;
+  const bool line_low_n = is_solid(line_low), line_high_n = is_solid(line_high);
+  const bool lane_low_n = is_solid(lane_low), lane_high_n = is_solid(lane_high);
+  const int n = lines_;
+  const int m = lanes_;
+  singular_ = line_low_n && line_high_n && lane_low_n && lane_high_n;
+
+  // Thomas pivots of (T_lanes + λ_k I) for every mode k: forward elimination of
+  // tridiag(−1, d_l, −1) gives pivots π_0 = d_0, π_l = d_l − 1/π_{l−1}; we store 1/π_l.
+  pivots_.resize(m, n);
+  for (int k = 0; k < n; ++k) {
+    const double lambda = eigenvalue(line_low_n, line_high_n, n, k);
+    double* inv = pivots_.row(k);
+    for (int l = 0; l < m; ++l) {
+      double d = 2.0 + lambda;
+      if (l == 0) d -= lane_low_n ? 1.0 : -1.0;
+      if (l == m - 1) d -= lane_high_n ? 1.0 : -1.0;
+      const double pivot = l == 0 ? d : d - inv[l - 1];
+      inv[l] = 1.0 / pivot;  // the singular mode's last pivot is 0: never used (see solve_modes)
+    }
+  }
+
+  work_.resize(m, n);
+  re_.resize(0, 0);
+  im_.resize(0, 0);
+  basis_.resize(0, 0);
+  basis_t_.resize(0, 0);
+  if (method_ == Method::dense_along_y) {
+    basis_.resize(n, n);
+    basis_t_.resize(n, n);
+    for (int k = 0; k < n; ++k) {
+      double norm2 = 0.0;
+      for (int j = 0; j < n; ++j) {
+        const double phi = eigenvector(line_low_n, line_high_n, n, k, j);
+        norm2 += phi * phi;
+      }
+      const double inv_norm = 1.0 / std::sqrt(norm2);
+      for (int j = 0; j < n; ++j) {
+        const double phi = eigenvector(line_low_n, line_high_n, n, k, j) * inv_norm;
+        basis_(j, k) = phi;
+        basis_t_(k, j) = phi;
+      }
+    }
+  } else {
+    const int h = n / 2;  // the real transforms run as complex FFTs of half length
+    re_.resize(m, h);
+    im_.resize(m, h);
+    re2_.resize(m, h);
+    im2_.resize(m, h);
+    radices_ = fft_radices(n);
+    fft_cos_.assign(h, 0.0);
+    fft_sin_.assign(h, 0.0);
+    for (int t = 0; t < h; ++t) {
+      const double angle = 2.0 * std::numbers::pi * t / h;
+      fft_cos_[t] = std::cos(angle);
+      fft_sin_[t] = std::sin(angle);
+    }
+    twiddle_cos_.assign(h, 0.0);
+    twiddle_sin_.assign(h, 0.0);
+    for (int t = 0; t < h; ++t) {
+      const double angle = 2.0 * std::numbers::pi * t / n;
+      twiddle_cos_[t] = std::cos(angle);
+      twiddle_sin_[t] = std::sin(angle);
+    }
+    shift_cos_.assign(n + 1, 0.0);
+    shift_sin_.assign(n + 1, 0.0);
+    for (int k = 0; k <= n; ++k) {
+      const double angle = std::numbers::pi * k / (2.0 * n);
+      shift_cos_[k] = std::cos(angle);
+      shift_sin_[k] = std::sin(angle);
+    }
+  }
+}
+
+// Mixed-radix (2, 3, 5, 7) Stockham FFT of length h = n/2 of every lane at once, on
+// (re_, im_) in natural order, result in natural order (Van Loan 1992, "Computational
+// Frameworks for the FFT", §1.7 and ch. 2). Stage with radix r, current length L, stride s:
+//   y[q + s (r p + u)] = e^{∓2πi p u / L} Σ_t x[q + s (p + t L/r)] e^{∓2πi t u / r}
+// for p < L/r, q < s. Forward: e^{−…}; inverse: e^{+…}, no 1/h. Rows q = 0..s−1 are adjacent,
+// so every (p, t) is one contiguous vector of s·m lanes and the inner loops vectorise.
+void FastPressureSolver2::fft(bool inverse) {
+  const int h = lines_ / 2;
+  const long m = lanes_;
+  const double sgn = inverse ? 1.0 : -1.0;
+  int length = h;
+  long stride = 1;
+  for (int r : radices_) {
+    const int mm = length / r;
+    const long block = stride * m;  // one contiguous vector per (p, t)
+    const int twiddle_scale = h / length;
+    double dft_cos[7][7], dft_sin[7][7];  // e^{sgn 2πi ut/r} of the odd radices
+    if (r % 2 == 1) {
+      for (int u = 0; u < r; ++u) {
+        for (int t = 0; t < r; ++t) {
+          const double angle = 2.0 * std::numbers::pi * ((u * t) % r) / r;
+          dft_cos[u][t] = std::cos(angle);
+          dft_sin[u][t] = sgn * std::sin(angle);
+        }
+      }
+    }
+    const double* __restrict__ xr = re_.data();
+    const double* __restrict__ xi = im_.data();
+    double* __restrict__ yr = re2_.data();
+    double* __restrict__ yi = im2_.data();
+    for (int p = 0; p < mm; ++p) {
+      const double* ar[7];
+      const double* ai[7];
+      double* br[7];
+      double* bi[7];
+      double wc[7], ws[7];
+      for (int t = 0; t < r; ++t) {
+        ar[t] = xr + (p + static_cast<long>(t) * mm) * block;
+        ai[t] = xi + (p + static_cast<long>(t) * mm) * block;
+        br[t] = yr + (static_cast<long>(r) * p + t) * block;
+        bi[t] = yi + (static_cast<long>(r) * p + t) * block;
+        const int index = (p * t * twiddle_scale) % h;
+        wc[t] = fft_cos_[index];
+        ws[t] = sgn * fft_sin_[index];
+      }
+      if (r == 2) {
+        radix2(block, ar[0], ai[0], ar[1], ai[1], br[0], bi[0], br[1], bi[1], wc[1], ws[1]);
+      } else {
+        // Odd radix 3, 5, 7: the small DFT by its definition, b_u = Σ_t a_t e^{sgn 2πi ut/r}.
+        for (int u = 0; u < r; ++u) {
+          const double* cu = dft_cos[u];
+          const double* su = dft_sin[u];
+          for (long l = 0; l < block; ++l) {
+            double sr = ar[0][l], si = ai[0][l];
+            for (int t = 1; t < r; ++t) {
+              sr += cu[t] * ar[t][l] - su[t] * ai[t][l];
+              si += cu[t] * ai[t][l] + su[t] * ar[t][l];
+            }
+            br[u][l] = wc[u] * sr - ws[u] * si;
+            bi[u][l] = wc[u] * si + ws[u] * sr;
+          }
+        }
+      }
+    }
+    std::swap(re_, re2_);
+    std::swap(im_, im2_);
+    length = mm;
+    stride *= r;
+  }
+}
+
+// work_ (lines × lanes) ← its transform along lines.
+void FastPressureSolver2::forward_transform() {
+  const int n = lines_;
+  const int m = lanes_;
+  if (method_ == Method::dense_along_y) {
+    // out_k = Σ_j φ_k(j) in_j, four modes at a time; j ascending for every output.
+    im_.resize(m, n);
+    for (int k0 = 0; k0 < n; k0 += 4) {
+      const int kb = std::min(4, n - k0);
+      for (int kk = 0; kk < kb; ++kk) std::fill(im_.row(k0 + kk), im_.row(k0 + kk) + m, 0.0);
+      for (int j = 0; j < n; ++j) {
+        const double* __restrict__ in = work_.row(j);
+        for (int kk = 0; kk < kb; ++kk) {
+          const double c = basis_(j, k0 + kk);
+          double* __restrict__ out = im_.row(k0 + kk);
+          for (int l = 0; l < m; ++l) out[l] += c * in[l];
+        }
+      }
+    }
+    std::swap(work_, im_);
+    return;
+  }
+  // DCT-II by Makhoul's reordering, v_t = x_{2t} and v_{n−1−t} = x_{2t+1} (t < n/2), so that
+  // X_k = Re(e^{−iπk/2n} V_k) with V = FFT_n(v). v is real: pack z_j = v_{2j} + i v_{2j+1},
+  // Z = FFT_{n/2}(z), and unpack E_k = (Z_k + conj Z_{h−k})/2, O_k = (Z_k − conj Z_{h−k})/2i,
+  // V_k = E_k + e^{−2πik/n} O_k for k ≤ n/2, V_{n−k} = conj V_k.
+  const int h = n / 2;
+  auto source_row = [n, h](int t) { return t < h ? 2 * t : 2 * (n - 1 - t) + 1; };  // x row of v_t
+  for (int j = 0; j < h; ++j) {
+    std::copy(work_.row(source_row(2 * j)), work_.row(source_row(2 * j)) + m, re_.row(j));
+    std::copy(work_.row(source_row(2 * j + 1)), work_.row(source_row(2 * j + 1)) + m, im_.row(j));
+  }
+  fft(false);
+  for (int k = 0; k <= h / 2; ++k) {
+    // Rows k and h − k of Z give V_k, V_{h−k} and their mirrors V_{n−k}, V_{n−h+k}.
+    const int k2 = (h - k) % h;  // Z_h = Z_0
+    const double* __restrict__ zr_a = re_.row(k % h);
+    const double* __restrict__ zi_a = im_.row(k % h);
+    const double* __restrict__ zr_b = re_.row(k2);
+    const double* __restrict__ zi_b = im_.row(k2);
+    const int ka = k, kb = h - k;  // the two V indices produced
+    const double wa_c = twiddle_cos_[ka % h], wa_s = ka == h ? 0.0 : twiddle_sin_[ka % h];
+    const double wb_c = kb == h ? -1.0 : twiddle_cos_[kb], wb_s = kb == h ? 0.0 : twiddle_sin_[kb];
+    const double ca = shift_cos_[ka], sa = shift_sin_[ka], cna = shift_cos_[n - ka], sna = shift_sin_[n - ka];
+    const double cb = shift_cos_[kb], sb = shift_sin_[kb], cnb = shift_cos_[n - kb], snb = shift_sin_[n - kb];
+    double* xa = work_.row(ka);  // rows kb and n − kb coincide when kb = h: no __restrict__
+    double* xna = ka == 0 ? nullptr : work_.row(n - ka);
+    double* xb = work_.row(kb);
+    double* xnb = work_.row(n - kb);
+    const bool do_b = kb != ka;
+    for (int l = 0; l < m; ++l) {
+      // E_a = (Z_a + conj Z_b)/2, O_a = (Z_a − conj Z_b)/(2i); E_b, O_b likewise with a ↔ b.
+      const double ar = zr_a[l], ai = zi_a[l], br = zr_b[l], bi = zi_b[l];
+      const double ea_r = 0.5 * (ar + br), ea_i = 0.5 * (ai - bi);
+      const double oa_r = 0.5 * (ai + bi), oa_i = -0.5 * (ar - br);
+      // V_a = E_a + e^{−2πi a/n} O_a, with e^{−iθ} = (cos θ, −sin θ).
+      const double va_r = ea_r + (wa_c * oa_r + wa_s * oa_i);
+      const double va_i = ea_i + (wa_c * oa_i - wa_s * oa_r);
+      xa[l] = ca * va_r + sa * va_i;
+      if (xna != nullptr) xna[l] = cna * va_r - sna * va_i;  // V_{n−a} = conj V_a
+      if (do_b) {
+        const double eb_r = 0.5 * (br + ar), eb_i = 0.5 * (bi - ai);
+        const double ob_r = 0.5 * (bi + ai), ob_i = -0.5 * (br - ar);
+        const double vb_r = eb_r + (wb_c * ob_r + wb_s * ob_i);
+        const double vb_i = eb_i + (wb_c * ob_i - wb_s * ob_r);
+        xb[l] = cb * vb_r + sb * vb_i;
+        xnb[l] = cnb * vb_r - snb * vb_i;
+      }
+    }
+  }
+}
+
+// work_ ← inverse transform along lines of work_.
+void FastPressureSolver2::inverse_transform() {
+  const int n = lines_;
+  const int m = lanes_;
+  if (method_ == Method::dense_along_y) {
+    // out_j = Σ_k φ_k(j) in_k, k ascending.
+    im_.resize(m, n);
+    for (int j0 = 0; j0 < n; j0 += 4) {
+      const int jb = std::min(4, n - j0);
+      for (int jj = 0; jj < jb; ++jj) std::fill(im_.row(j0 + jj), im_.row(j0 + jj) + m, 0.0);
+      for (int k = 0; k < n; ++k) {
+        const double* __restrict__ in = work_.row(k);
+        for (int jj = 0; jj < jb; ++jj) {
+          const double c = basis_t_(k, j0 + jj);
+          double* __restrict__ out = im_.row(j0 + jj);
+          for (int l = 0; l < m; ++l) out[l] += c * in[l];
+        }
+      }
+    }
+    std::swap(work_, im_);
+    return;
+  }
+  // Inverse of the forward DCT-II: V_t = e^{iπt/2n} (X_t − i X_{n−t}) (X_n = 0) is the FFT of
+  // the real v, so E_k = (V_k + conj V_{h−k})/2 and O_k = (V_k − conj V_{h−k}) e^{2πik/n}/2 are
+  // the FFTs of its even and odd samples, and z = IFFT_h(E + iO)/h = v_{2j} + i v_{2j+1}.
+  // Then x_{2t} = v_t, x_{2t+1} = v_{n−1−t}.
+  const int h = n / 2;
+  for (int k = 0; k < h; ++k) {
+    const double cw = twiddle_cos_[k], sw = twiddle_sin_[k];
+    double* __restrict__ zr = re_.row(k);
+    double* __restrict__ zi = im_.row(k);
+    const double ca = shift_cos_[k], sa = shift_sin_[k];
+    const double cb = shift_cos_[h - k], sb = shift_sin_[h - k];
+    const double* __restrict__ xa = work_.row(k);
+    const double* __restrict__ xna = k == 0 ? nullptr : work_.row(n - k);
+    const double* __restrict__ xb = work_.row(h - k);
+    const double* __restrict__ xnb = work_.row(n - (h - k));
+    for (int l = 0; l < m; ++l) {
+      const double a_x = xa[l], a_nx = xna != nullptr ? xna[l] : 0.0;
+      const double ar = a_x * ca + a_nx * sa;  // V_k
+      const double ai = a_x * sa - a_nx * ca;
+      const double b_x = xb[l], b_nx = xnb[l];
+      const double br = b_x * cb + b_nx * sb;  // conj V_{h−k}
+      const double bi = -(b_x * sb - b_nx * cb);
+      const double er = 0.5 * (ar + br), ei = 0.5 * (ai + bi);
+      const double dr = 0.5 * (ar - br), di = 0.5 * (ai - bi);
+      const double or_ = cw * dr - sw * di, oi = cw * di + sw * dr;  // × e^{2πik/n}
+      zr[l] = er - oi;
+      zi[l] = ei + or_;
+    }
+  }
+  fft(true);
+  const double inv_h = 1.0 / h;
+  auto target_row = [n, h](int t) { return t < h ? 2 * t : 2 * (n - 1 - t) + 1; };  // x row of v_t
+  for (int j = 0; j < h; ++j) {
+    const double* zr = re_.row(j);
+    const double* zi = im_.row(j);
+    double* even = work_.row(target_row(2 * j));
+    double* odd = work_.row(target_row(2 * j + 1));
+    for (int l = 0; l < m; ++l) {
+      even[l] = zr[l] * inv_h;
+      odd[l] = zi[l] * inv_h;
+    }
+  }
+}
+
+// For each mode k (row k of work_), solves (T_lanes + λ_k I) x = f in place. Eight modes are
+// swept together so that their independent recurrences overlap in the pipeline.
+void FastPressureSolver2::solve_modes() {
+  const int n = lines_;
+  const int m = lanes_;
+  constexpr int kBlock = 8;
+  const int first = singular_ ? 1 : 0;
+  for (int k0 = first; k0 < n; k0 += kBlock) {
+    const int kb = std::min(kBlock, n - k0);
+    double* x[kBlock];
+    const double* inv[kBlock];
+    for (int kk = 0; kk < kb; ++kk) {
+      x[kk] = work_.row(k0 + kk);
+      inv[kk] = pivots_.row(k0 + kk);
+    }
+    for (int kk = 0; kk < kb; ++kk) x[kk][0] *= inv[kk][0];
+    for (int l = 1; l < m; ++l) {
+      for (int kk = 0; kk < kb; ++kk) x[kk][l] = (x[kk][l] + x[kk][l - 1]) * inv[kk][l];
+    }
+    for (int l = m - 2; l >= 0; --l) {
+      for (int kk = 0; kk < kb; ++kk) x[kk][l] += inv[kk][l] * x[kk][l + 1];
+    }
+  }
+  if (singular_) {
+    // Mode 0 of a closed box: T x = f with T the Neumann Laplacian (singular, f sums to 0).
+    // With g_l = x_l − x_{l+1}: g_0 = f_0, g_l = g_{l−1} + f_l; x_0 = 0, x_{l+1} = x_l − g_l;
+    // then mean zero.
+    double* x = work_.row(0);
+    // Mode 0 is constant along the lines, so removing the mean of b is removing the mean of
+    // this lane vector (O(m) instead of a pass over b).
+    const double f_mean = sum(x, static_cast<std::size_t>(m)) / m;
+    for (int l = 0; l < m; ++l) x[l] -= f_mean;
+    double g = 0.0;
+    double previous = 0.0;
+    double sum = 0.0;
+    for (int l = 0; l < m; ++l) {
+      g += x[l];
+      x[l] = previous;
+      sum += previous;
+      previous -= g;
+    }
+    const double mean = sum / m;
+    for (int l = 0; l < m; ++l) x[l] -= mean;
+  }
+}
+
+void FastPressureSolver2::solve(const Walls& walls, const Array2& b, Array2& q, bool prefer_dense,
+                                double output_scale) {
+  const int nx = b.nx();
+  const int ny = b.ny();
+  setup(walls, nx, ny, prefer_dense);
+  q.resize(nx, ny);
+  // The transform is linear: scaling its input scales the solution. In a closed box the mean of
+  // b (round-off only, the fluxes telescope) is ignored by the singular mode's recurrence.
+  if (method_ == Method::fft_along_x) {
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) work_(j, i) = b(i, j) * output_scale;
+    }
+  } else if (output_scale == 1.0) {
+    work_ = b;
+  } else {
+    const double* src = b.data();
+    double* dst = work_.data();
+    for (std::size_t k = 0; k < b.size(); ++k) dst[k] = src[k] * output_scale;
+  }
+  forward_transform();
+  solve_modes();
+  inverse_transform();
+  if (method_ == Method::fft_along_x) {
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) q(i, j) = work_(j, i);
+    }
+  } else {
+    std::swap(q, work_);  // same shape: O(1)
+  }
+}
+
+LinearSolveReport FastPressureSolver2::project(MacGrid2& grid, const Walls& walls, double density_kg_per_m3,
+                                               double dt_s) {
+  projection_rhs(grid, rhs_);
+  // Solve for p = q ρ / dt directly and subtract (dt/ρ) ∇p.
+  solve(walls, rhs_, grid.pressure_pa, false, density_kg_per_m3 / dt_s);
+  subtract_gradient(grid, walls, grid.pressure_pa, dt_s / (density_kg_per_m3 * grid.dx_m));
+  const double b_norm = max_abs(rhs_);
+  LinearSolveReport report;
+  report.relative_residual = b_norm > 0.0 ? max_abs_cell_flux_m2_per_s(grid) / b_norm : 0.0;
+  return report;
+}
+
+}  // namespace creaturelab::fluid

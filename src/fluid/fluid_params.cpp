@@ -1,0 +1,180 @@
+#include "fluid/fluid_params.hpp"
+
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace creaturelab::fluid {
+namespace {
+
+constexpr int kMaxCellsPerSide = 16384;
+
+std::string show(double value) {
+  std::ostringstream out;
+  out.precision(6);
+  out << value;
+  return out.str();
+}
+
+class Problems {
+ public:
+  void add(std::string sentence) { list_.push_back(std::move(sentence)); }
+  void require_positive(double value, std::string_view name, std::string_view unit) {
+    if (!(std::isfinite(value) && value > 0.0)) {
+      add(std::string(name) + " must be a positive number of " + std::string(unit) + " (got " + show(value) + ")");
+    }
+  }
+  void require_finite(double value, std::string_view name, std::string_view unit) {
+    if (!std::isfinite(value)) {
+      add(std::string(name) + " must be a finite number of " + std::string(unit) + " (got " + show(value) + ")");
+    }
+  }
+  std::string joined() const {
+    std::string out;
+    for (const std::string& sentence : list_) {
+      if (!out.empty()) out += "; ";
+      out += sentence;
+    }
+    return out;
+  }
+
+ private:
+  std::vector<std::string> list_;
+};
+
+template <typename Enum, std::size_t N>
+std::optional<Enum> parse(std::string_view name, const std::array<Enum, N>& values) {
+  for (Enum value : values) {
+    if (to_string(value) == name) return value;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string FluidParams::validate() const {
+  Problems problems;
+  problems.require_positive(domain_width_m, "domain_width_m", "metres");
+  problems.require_positive(domain_height_m, "domain_height_m", "metres");
+  const bool cells_ok = cells_x >= 2 && cells_y >= 2 && cells_x <= kMaxCellsPerSide && cells_y <= kMaxCellsPerSide;
+  if (cells_x < 2 || cells_x > kMaxCellsPerSide) {
+    problems.add("cells_x must be between 2 and " + std::to_string(kMaxCellsPerSide) + " (got " +
+                 std::to_string(cells_x) + ")");
+  }
+  if (cells_y < 2 || cells_y > kMaxCellsPerSide) {
+    problems.add("cells_y must be between 2 and " + std::to_string(kMaxCellsPerSide) + " (got " +
+                 std::to_string(cells_y) + ")");
+  }
+  if (cells_ok && std::isfinite(domain_width_m) && std::isfinite(domain_height_m) && domain_width_m > 0.0 &&
+      domain_height_m > 0.0) {
+    const double dx = domain_width_m / cells_x;
+    const double dy = domain_height_m / cells_y;
+    if (std::abs(dx - dy) > 1e-9 * dx) {
+      const long suggested_cells_y = std::lround(domain_height_m / dx);
+      problems.add("cells must be square, but domain_width_m / cells_x = " + show(dx) +
+                   " m and domain_height_m / cells_y = " + show(dy) + " m; for example set cells_y = " +
+                   std::to_string(suggested_cells_y) + " or domain_height_m = " + show(dx * cells_y));
+    }
+  }
+  problems.require_positive(density_kg_per_m3, "density_kg_per_m3", "kg/m^3");
+  if (!(std::isfinite(kinematic_viscosity_m2_per_s) && kinematic_viscosity_m2_per_s >= 0.0)) {
+    problems.add("kinematic_viscosity_m2_per_s must be zero or a positive number of m^2/s (got " +
+                 show(kinematic_viscosity_m2_per_s) + "; water at 20 °C is 1.0e-6)");
+  }
+  const std::array<std::pair<const Wall*, std::string_view>, 4> walls_named{
+      {{&walls.left, "left"}, {&walls.right, "right"}, {&walls.bottom, "bottom"}, {&walls.top, "top"}}};
+  for (const auto& [wall, name] : walls_named) {
+    const std::string key = "walls." + std::string(name) + ".tangential_velocity_m_per_s";
+    problems.require_finite(wall->tangential_velocity_m_per_s, key, "m/s");
+    if (wall->type != WallType::moving && wall->tangential_velocity_m_per_s != 0.0 &&
+        std::isfinite(wall->tangential_velocity_m_per_s)) {
+      problems.add(key + " = " + show(wall->tangential_velocity_m_per_s) + " has no effect on a " +
+                   std::string(to_string(wall->type)) + " wall; set walls." + std::string(name) +
+                   ".type = moving or the velocity to 0");
+    }
+  }
+  if (!(std::isfinite(pressure_tolerance) && pressure_tolerance > 0.0 && pressure_tolerance < 1.0)) {
+    problems.add("pressure_tolerance must lie between 0 and 1, exclusive (got " + show(pressure_tolerance) +
+                 "; 1e-10 makes the projection exact for practical purposes)");
+  }
+  if (pressure_max_iterations < 1) {
+    problems.add("pressure_max_iterations must be at least 1 (got " + std::to_string(pressure_max_iterations) + ")");
+  }
+  if (!(std::isfinite(viscosity_tolerance) && viscosity_tolerance > 0.0 && viscosity_tolerance < 1.0)) {
+    problems.add("viscosity_tolerance must lie between 0 and 1, exclusive (got " + show(viscosity_tolerance) + ")");
+  }
+  if (viscosity_max_iterations < 1) {
+    problems.add("viscosity_max_iterations must be at least 1 (got " + std::to_string(viscosity_max_iterations) + ")");
+  }
+  if (!(std::isfinite(cfl_safety_factor) && cfl_safety_factor > 0.0 && cfl_safety_factor <= 10.0)) {
+    problems.add("cfl_safety_factor must be above 0 and at most 10 (got " + show(cfl_safety_factor) +
+                 "; 0.5 is a good default, the paper used 0.001 with the elastic body)");
+  }
+  problems.require_positive(max_step_s, "max_step_s", "seconds");
+  problems.require_positive(fixed_step_s, "fixed_step_s", "seconds");
+  problems.require_finite(body_acceleration_x_m_per_s2, "body_acceleration_x_m_per_s2", "m/s^2");
+  problems.require_finite(body_acceleration_y_m_per_s2, "body_acceleration_y_m_per_s2", "m/s^2");
+  problems.require_positive(blowup_speed_m_per_s, "blowup_speed_m_per_s", "m/s");
+  return problems.joined();
+}
+
+std::string_view to_string(WallType type) {
+  switch (type) {
+    case WallType::free_slip:
+      return "free_slip";
+    case WallType::no_slip:
+      return "no_slip";
+    case WallType::moving:
+      return "moving";
+    case WallType::open:
+      return "open";
+  }
+  return "unknown";
+}
+
+std::string_view to_string(AdvectionScheme scheme) {
+  switch (scheme) {
+    case AdvectionScheme::semi_lagrangian:
+      return "semi_lagrangian";
+    case AdvectionScheme::maccormack:
+      return "maccormack";
+  }
+  return "unknown";
+}
+
+std::string_view to_string(PressureSolverType type) {
+  switch (type) {
+    case PressureSolverType::fast_direct:
+      return "fast_direct";
+    case PressureSolverType::pcg:
+      return "pcg";
+  }
+  return "unknown";
+}
+
+std::string_view to_string(TimeStepPolicy policy) {
+  switch (policy) {
+    case TimeStepPolicy::cfl_adaptive:
+      return "cfl_adaptive";
+    case TimeStepPolicy::fixed:
+      return "fixed";
+  }
+  return "unknown";
+}
+
+std::optional<WallType> parse_wall_type(std::string_view name) {
+  return parse(name, std::array{WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open});
+}
+std::optional<AdvectionScheme> parse_advection_scheme(std::string_view name) {
+  return parse(name, std::array{AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack});
+}
+std::optional<PressureSolverType> parse_pressure_solver_type(std::string_view name) {
+  return parse(name, std::array{PressureSolverType::fast_direct, PressureSolverType::pcg});
+}
+std::optional<TimeStepPolicy> parse_time_step_policy(std::string_view name) {
+  return parse(name, std::array{TimeStepPolicy::cfl_adaptive, TimeStepPolicy::fixed});
+}
+
+}  // namespace creaturelab::fluid

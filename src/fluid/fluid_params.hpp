@@ -1,0 +1,119 @@
+#pragma once
+// Parameters of the 2-D incompressible fluid solver (Rudolf & Mould 2009, seeds/jellyfish-rudolf-mould-2009.txt,
+// §3.2, Eq. 1: ∂u/∂t = ν ∇²u − u·∇u − ∇p/ρ + F,   ∇·u = 0).
+// Plain struct with in-class defaults; validate() says in words what is wrong.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace creaturelab::fluid {
+
+/// Boundary condition on one wall of the rectangular domain (Griebel et al. 1998, ch. 2
+/// "initial and boundary conditions"; implemented with ghost values, ch. 3).
+enum class WallType {
+  free_slip,  ///< no flow through, no shear: u·n = 0, ∂u_t/∂n = 0 (the jellyfish paper's, §3.2)
+  no_slip,    ///< no flow through, fluid sticks: u = 0
+  moving,     ///< no flow through, fluid moves with the wall: u·n = 0, u_t = tangential velocity
+  open        ///< p = 0 on the wall, ∂u/∂n = 0; fluid may leave or enter (outflow condition)
+};
+
+/// One wall. The tangential direction is +x for the bottom and top walls and +y for the left
+/// and right walls.
+struct Wall {
+  WallType type = WallType::free_slip;
+  double tangential_velocity_m_per_s = 0.0;  ///< used only by WallType::moving
+};
+
+/// The four walls of the domain [0, width] × [0, height].
+struct Walls {
+  Wall left{};
+  Wall right{};
+  Wall bottom{};
+  Wall top{};
+  /// True when no wall is open: the pressure is then defined up to a constant only.
+  bool closed() const {
+    return left.type != WallType::open && right.type != WallType::open && bottom.type != WallType::open &&
+           top.type != WallType::open;
+  }
+};
+
+/// Velocity advection scheme.
+enum class AdvectionScheme {
+  semi_lagrangian,  ///< Stam 1999 §2.2: RK2 backtrace, bilinear interpolation (first order, diffusive)
+  maccormack        ///< Selle et al. 2008: forward + backward semi-Lagrangian, clamped (second order)
+};
+
+/// Pressure (projection) solver. Both give the same answer to round-off / tolerance.
+enum class PressureSolverType {
+  fast_direct,  ///< transform along one axis + tridiagonal solves along the other (exact, O(N log N))
+  pcg           ///< MIC(0)-preconditioned conjugate gradients, to pressure_tolerance
+};
+
+/// How the time step is chosen.
+enum class TimeStepPolicy {
+  cfl_adaptive,  ///< dt = min(max_step_s, cfl_safety_factor · dx / max|u_component|)
+  fixed          ///< dt = fixed_step_s
+};
+
+struct FluidParams {
+  // --- domain: [0, width] × [0, height], square cells of side width / cells_x = height / cells_y
+  double domain_width_m = 0.4;  ///< ten jellyfish diameters of 40 mm (paper §3.2, Fig. 12)
+  double domain_height_m = 0.4;
+  int cells_x = 100;  ///< paper Fig. 12: fluid grid n = 100
+  int cells_y = 100;
+
+  // --- fluid. Paper Fig. 12 lists ν = 1.304e-3 and ρ = 1 without units; 1.304e-3 Pa·s is the
+  // dynamic viscosity of water at 10 °C, i.e. ν = 1.304e-6 m²/s at ρ = 1000 kg/m³ (ρ = 1 g/cm³).
+  double density_kg_per_m3 = 1000.0;
+  double kinematic_viscosity_m2_per_s = 1.304e-6;
+
+  Walls walls{};  ///< all free-slip, as in the paper (§3.2)
+
+  AdvectionScheme advection = AdvectionScheme::semi_lagrangian;
+
+  // --- pressure projection
+  PressureSolverType pressure_solver = PressureSolverType::fast_direct;
+  /// PCG stops when both the relative residual of the Poisson equation ‖b − A p‖∞ / ‖b‖∞ and
+  /// max|∇·u| dx / max|u| are ≤ pressure_tolerance, or the divergence is at round-off
+  /// (1e-14 max|u| / dx); see pcg_pressure_solver2.hpp. The fast direct solver is exact.
+  double pressure_tolerance = 1e-10;
+  int pressure_max_iterations = 5000;
+
+  // --- implicit viscosity (backward Euler, Stam 1999 §2.2), solved by CG
+  double viscosity_tolerance = 1e-10;  ///< ‖b − A u‖∞ ≤ tol · ‖b‖∞
+  int viscosity_max_iterations = 1000;
+
+  // --- time step (Griebel et al. 1998, ch. 3: the CFL condition dt < dx / |u|max)
+  TimeStepPolicy time_step_policy = TimeStepPolicy::cfl_adaptive;
+  /// Fraction of the CFL limit. Semi-Lagrangian advection is stable beyond 1; accuracy is not.
+  /// (The paper used 0.001 with the elastic jellyfish, §3.2; the fluid alone does not need it.)
+  double cfl_safety_factor = 0.5;
+  double max_step_s = 0.01;    ///< upper bound of the adaptive step (paper §4: 0.01 s is the edge)
+  double fixed_step_s = 0.01;  ///< step of the fixed policy
+
+  // --- uniform body force per unit mass (gravity: body_acceleration_y_m_per_s2 = -9.81).
+  // In a closed box of uniform density it is balanced exactly by a hydrostatic pressure.
+  double body_acceleration_x_m_per_s2 = 0.0;
+  double body_acceleration_y_m_per_s2 = 0.0;
+
+  /// A step whose velocity is not finite or exceeds this speed throws FluidBlowUpError.
+  double blowup_speed_m_per_s = 100.0;
+
+  double cell_size_m() const { return domain_width_m / cells_x; }
+
+  /// Empty when the parameters are usable; otherwise one sentence per problem, joined by "; ".
+  std::string validate() const;
+};
+
+std::string_view to_string(WallType type);
+std::string_view to_string(AdvectionScheme scheme);
+std::string_view to_string(PressureSolverType type);
+std::string_view to_string(TimeStepPolicy policy);
+/// Inverses of to_string (the names are the enumerator names); std::nullopt for unknown names.
+std::optional<WallType> parse_wall_type(std::string_view name);
+std::optional<AdvectionScheme> parse_advection_scheme(std::string_view name);
+std::optional<PressureSolverType> parse_pressure_solver_type(std::string_view name);
+std::optional<TimeStepPolicy> parse_time_step_policy(std::string_view name);
+
+}  // namespace creaturelab::fluid

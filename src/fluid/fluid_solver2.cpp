@@ -1,0 +1,151 @@
+#include "fluid/fluid_solver2.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+#include "fluid/boundary2.hpp"
+#include "fluid/diagnostics2.hpp"
+#include "fluid/tracers2.hpp"
+
+namespace creaturelab::fluid {
+namespace {
+
+std::string blow_up_message(long step, double time_s, double dt_s, double max_speed, double limit, double cfl) {
+  std::ostringstream out;
+  out << "fluid solver blew up at step " << step << " (t = " << time_s << " s, dt = " << dt_s
+      << " s): the largest velocity component is " << max_speed << " m/s";
+  if (std::isfinite(max_speed)) out << ", above blowup_speed_m_per_s = " << limit;
+  out << "; CFL number " << cfl
+      << ". Reduce the time step (max_step_s, cfl_safety_factor) or the forcing, or refine the grid.";
+  return out.str();
+}
+
+FluidParams checked(const FluidParams& params) {
+  const std::string problems = params.validate();
+  if (!problems.empty()) throw std::invalid_argument("invalid fluid parameters: " + problems);
+  return params;
+}
+
+}  // namespace
+
+FluidBlowUpError::FluidBlowUpError(long step, double time_s, double dt_s, double max_speed_m_per_s,
+                                   double limit_m_per_s, double cfl_number)
+    : std::runtime_error(blow_up_message(step, time_s, dt_s, max_speed_m_per_s, limit_m_per_s, cfl_number)),
+      step_(step),
+      time_s_(time_s),
+      cfl_number_(cfl_number) {}
+
+FluidSolver2::FluidSolver2(const FluidParams& params)
+    : params_(checked(params)),
+      grid_(params_.cells_x, params_.cells_y, params_.cell_size_m()),
+      force_density_(params_.cells_x, params_.cells_y),
+      advection_(make_advection_solver(params_.advection)),
+      diffusion_(std::make_unique<ImplicitDiffusion2>(params_.viscosity_tolerance, params_.viscosity_max_iterations)),
+      pressure_(make_pressure_solver(params_)) {}
+
+double FluidSolver2::next_time_step_s() const { return time_step_for(max_velocity_component_m_per_s(grid_)); }
+
+double FluidSolver2::time_step_for(double max_velocity_component_m_per_s) const {
+  if (params_.time_step_policy == TimeStepPolicy::fixed) return params_.fixed_step_s;
+  if (!(max_velocity_component_m_per_s > 0.0)) return params_.max_step_s;
+  return std::min(params_.max_step_s, params_.cfl_safety_factor * grid_.dx_m / max_velocity_component_m_per_s);
+}
+
+FluidStepReport FluidSolver2::step() {
+  const double speed = max_velocity_component_m_per_s(grid_);
+  return run_step(time_step_for(speed), speed);
+}
+
+FluidStepReport FluidSolver2::step(double dt_s) { return run_step(dt_s, max_velocity_component_m_per_s(grid_)); }
+
+FluidStepReport FluidSolver2::run_step(double dt_s, double start_speed_m_per_s) {
+  if (!(std::isfinite(dt_s) && dt_s > 0.0)) {
+    throw std::invalid_argument("fluid time step must be a positive number of seconds (got " + std::to_string(dt_s) +
+                                ")");
+  }
+  const StepContext context{steps_done_, time_s_, dt_s};
+  FluidStepReport report;
+  report.dt_s = dt_s;
+  report.cfl_number = start_speed_m_per_s * dt_s / grid_.dx_m;
+
+  if (stages_.external_forces) apply_external_forces(context);
+  if (stages_.advection) advect_velocity(context);
+  if (stages_.viscosity) report.viscosity = apply_viscosity(context);
+  if (stages_.pressure) report.pressure = project(context);
+  if (stages_.tracers) advect_tracers(context);
+
+  time_s_ += dt_s;
+  ++steps_done_;
+  report.steps_done = steps_done_;
+  report.time_s = time_s_;
+  const FlowSummary summary = summarize_flow(grid_, params_.density_kg_per_m3);
+  report.max_velocity_component_m_per_s = summary.max_velocity_component_m_per_s;
+  report.max_divergence_per_s = summary.max_divergence_per_s;
+  report.kinetic_energy_joule_per_m = summary.kinetic_energy_joule_per_m;
+  if (!(report.max_velocity_component_m_per_s <= params_.blowup_speed_m_per_s)) {
+    throw FluidBlowUpError(steps_done_, time_s_, dt_s, report.max_velocity_component_m_per_s,
+                           params_.blowup_speed_m_per_s, report.max_velocity_component_m_per_s * dt_s / grid_.dx_m);
+  }
+  return report;
+}
+
+void FluidSolver2::apply_external_forces(const StepContext& context) {
+  const double dt = context.dt_s;
+  const double inv_rho = 1.0 / params_.density_kg_per_m3;
+  const double gx = params_.body_acceleration_x_m_per_s2;
+  const double gy = params_.body_acceleration_y_m_per_s2;
+  const FaceRange u_cols = unknown_u_columns(grid_, walls());
+  const FaceRange v_rows = unknown_v_rows(grid_, walls());
+  for (int j = 0; j < grid_.ny; ++j) {
+    double* u = grid_.u_m_per_s.row(j);
+    const double* f = force_density_.x.row(j);
+    for (int i = u_cols.begin; i < u_cols.end; ++i) u[i] += dt * (gx + f[i] * inv_rho);
+  }
+  for (int j = v_rows.begin; j < v_rows.end; ++j) {
+    double* v = grid_.v_m_per_s.row(j);
+    const double* f = force_density_.y.row(j);
+    for (int i = 0; i < grid_.nx; ++i) v[i] += dt * (gy + f[i] * inv_rho);
+  }
+}
+
+void FluidSolver2::advect_velocity(const StepContext& context) {
+  advection_->advect_velocity(grid_, walls(), context.dt_s, u_scratch_, v_scratch_);
+  std::swap(grid_.u_m_per_s, u_scratch_);
+  std::swap(grid_.v_m_per_s, v_scratch_);
+}
+
+LinearSolveReport FluidSolver2::apply_viscosity(const StepContext& context) {
+  if (params_.kinematic_viscosity_m2_per_s == 0.0) return {};
+  return diffusion_->diffuse_velocity(grid_, walls(), params_.kinematic_viscosity_m2_per_s, context.dt_s);
+}
+
+LinearSolveReport FluidSolver2::project(const StepContext& context) {
+  return pressure_->project(grid_, walls(), params_.density_kg_per_m3, context.dt_s);
+}
+
+void FluidSolver2::advect_tracers(const StepContext& context) {
+  if (tracers_.empty()) return;
+  sampler_.assign(grid_, walls());
+  advect_tracers_rk2(tracers_, sampler_, context.dt_s, grid_.width_m(), grid_.height_m());
+}
+
+LinearSolveReport FluidSolver2::make_divergence_free() {
+  enforce_wall_normal_velocity(grid_, walls());
+  grid_.pressure_pa.fill(0.0);
+  // The projected velocity does not depend on dt or ρ; only the pressure does, and it is reset.
+  const LinearSolveReport report = pressure_->project(grid_, walls(), 1.0, 1.0);
+  grid_.pressure_pa.fill(0.0);
+  return report;
+}
+
+double FluidSolver2::kinetic_energy_joule_per_m() const {
+  return fluid::kinetic_energy_joule_per_m(grid_, params_.density_kg_per_m3);
+}
+
+double FluidSolver2::max_divergence_per_s() const { return fluid::max_divergence_per_s(grid_); }
+
+double FluidSolver2::cfl_number(double dt_s) const { return fluid::cfl_number(grid_, dt_s); }
+
+}  // namespace creaturelab::fluid

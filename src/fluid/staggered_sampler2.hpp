@@ -1,0 +1,165 @@
+#pragma once
+// Bilinear interpolation of face-centred (staggered) fields with wall ghost values.
+//
+// Each component is copied once into an array padded with one ghost layer across the two
+// walls it is tangential to (see boundary2.hpp), so that sampling anywhere in the closed
+// domain is a branch-free bilinear interpolation. Positions outside the domain are clamped to
+// it. Interpolation is written as a + t (b − a), so a uniform field is reproduced exactly.
+
+#include <algorithm>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+#include "fluid/array2.hpp"
+#include "fluid/boundary2.hpp"
+#include "fluid/fluid_params.hpp"
+#include "fluid/mac_grid2.hpp"
+
+namespace creaturelab::fluid {
+
+/// Which faces a component lives on: x = u faces (normal along x), y = v faces.
+enum class FaceAxis { x, y };
+
+/// Plain-data view of a padded component, for tight sampling loops (kept in registers).
+struct SampleView {
+  const double* data = nullptr;
+  long stride = 0;
+  double offset_x = 0.0, offset_y = 0.0;  // cell units → padded index space
+  double x_max = 0.0, y_max = 0.0;        // domain, cell units
+  int i_max = 0, j_max = 0;               // largest lower-left index of a stencil
+
+  // Lower-left stencil value and fractions for (X, Y) in cell units, clamped to the domain.
+  // Each clamp is one max and one min written so that NaN lands on 0 (maxsd semantics)
+  // instead of producing an out-of-range index.
+  const double* locate(double X, double Y, double& tx, double& ty) const {
+    X = X > 0.0 ? X : 0.0;
+    X = X < x_max ? X : x_max;
+    Y = Y > 0.0 ? Y : 0.0;
+    Y = Y < y_max ? Y : y_max;
+    const double fx = X + offset_x;
+    const double fy = Y + offset_y;
+    const int i0 = std::min(static_cast<int>(fx), i_max);
+    const int j0 = std::min(static_cast<int>(fy), j_max);
+    tx = fx - i0;
+    ty = fy - j0;
+    return data + static_cast<long>(j0) * stride + i0;
+  }
+
+  /// Bilinear interpolation a + t (b − a): along y on both columns at once (one SSE2 pair
+  /// per row), then along x.
+  double sample(double X, double Y) const {
+    double tx = 0.0, ty = 0.0;
+    const double* r0 = locate(X, Y, tx, ty);
+#if defined(__SSE2__)
+    const __m128d low = _mm_loadu_pd(r0);
+    const __m128d high = _mm_loadu_pd(r0 + stride);
+    const __m128d column = _mm_add_pd(low, _mm_mul_pd(_mm_set1_pd(ty), _mm_sub_pd(high, low)));
+    const double left = _mm_cvtsd_f64(column);
+    const double right = _mm_cvtsd_f64(_mm_unpackhi_pd(column, column));
+#else
+    const double* r1 = r0 + stride;
+    const double left = r0[0] + ty * (r1[0] - r0[0]);
+    const double right = r0[1] + ty * (r1[1] - r0[1]);
+#endif
+    return left + tx * (right - left);
+  }
+
+#if defined(__SSE2__)
+  /// Two samples at once, (X0, Y0) and (X1, Y1) in the lanes of X, Y, with exactly the
+  /// arithmetic of sample() in each lane (so results do not depend on the pairing).
+  /// With lo and hi, also the stencils' ranges as in the bounded sample().
+  __m128d sample2(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
+    const __m128d zero = _mm_setzero_pd();
+    X = _mm_min_pd(_mm_max_pd(X, zero), _mm_set1_pd(x_max));  // maxpd returns 0 for NaN
+    Y = _mm_min_pd(_mm_max_pd(Y, zero), _mm_set1_pd(y_max));
+    const __m128d fx = _mm_add_pd(X, _mm_set1_pd(offset_x));
+    const __m128d fy = _mm_add_pd(Y, _mm_set1_pd(offset_y));
+    // Truncation of non-negative values, then the upper index limit, all in doubles.
+    const __m128d i0 = _mm_min_pd(_mm_cvtepi32_pd(_mm_cvttpd_epi32(fx)), _mm_set1_pd(i_max));
+    const __m128d j0 = _mm_min_pd(_mm_cvtepi32_pd(_mm_cvttpd_epi32(fy)), _mm_set1_pd(j_max));
+    const __m128d tx = _mm_sub_pd(fx, i0);
+    const __m128d ty = _mm_sub_pd(fy, j0);
+    const __m128i ii = _mm_cvttpd_epi32(i0);
+    const __m128i jj = _mm_cvttpd_epi32(j0);
+    const long i_a = _mm_cvtsi128_si32(ii), i_b = _mm_cvtsi128_si32(_mm_shuffle_epi32(ii, 1));
+    const long j_a = _mm_cvtsi128_si32(jj), j_b = _mm_cvtsi128_si32(_mm_shuffle_epi32(jj, 1));
+    const double* ra = data + j_a * stride + i_a;
+    const double* rb = data + j_b * stride + i_b;
+    const __m128d low_a = _mm_loadu_pd(ra), high_a = _mm_loadu_pd(ra + stride);
+    const __m128d low_b = _mm_loadu_pd(rb), high_b = _mm_loadu_pd(rb + stride);
+    const __m128d col_a = _mm_add_pd(low_a, _mm_mul_pd(_mm_unpacklo_pd(ty, ty), _mm_sub_pd(high_a, low_a)));
+    const __m128d col_b = _mm_add_pd(low_b, _mm_mul_pd(_mm_unpackhi_pd(ty, ty), _mm_sub_pd(high_b, low_b)));
+    const __m128d left = _mm_unpacklo_pd(col_a, col_b);
+    const __m128d right = _mm_unpackhi_pd(col_a, col_b);
+    if (lo != nullptr) {
+      // Range of the four values of each stencil (the MacCormack limiter's bounds).
+      const __m128d min_a = _mm_min_pd(low_a, high_a), min_b = _mm_min_pd(low_b, high_b);
+      const __m128d max_a = _mm_max_pd(low_a, high_a), max_b = _mm_max_pd(low_b, high_b);
+      *lo = _mm_min_pd(_mm_unpacklo_pd(min_a, min_b), _mm_unpackhi_pd(min_a, min_b));
+      *hi = _mm_max_pd(_mm_unpacklo_pd(max_a, max_b), _mm_unpackhi_pd(max_a, max_b));
+    }
+    return _mm_add_pd(left, _mm_mul_pd(tx, _mm_sub_pd(right, left)));
+  }
+#endif
+
+  /// As sample(), also returning the smallest and largest of the four values interpolated
+  /// (the clamping bounds of the MacCormack limiter, Selle et al. 2008).
+  double sample(double X, double Y, double& lo, double& hi) const {
+    double tx = 0.0, ty = 0.0;
+    const double* r0 = locate(X, Y, tx, ty);
+    const double* r1 = r0 + stride;
+    lo = std::min(std::min(r0[0], r0[1]), std::min(r1[0], r1[1]));
+    hi = std::max(std::max(r0[0], r0[1]), std::max(r1[0], r1[1]));
+    const double left = r0[0] + ty * (r1[0] - r0[0]);  // same arithmetic as sample()
+    const double right = r0[1] + ty * (r1[1] - r0[1]);
+    return left + tx * (right - left);
+  }
+};
+
+/// One staggered component padded with ghosts; samples in cell units (X, Y) = (x, y) / dx.
+class StaggeredComponent2 {
+ public:
+  /// Copies `values` ((nx+1) × ny for FaceAxis::x, nx × (ny+1) for FaceAxis::y) and fills the
+  /// ghost layer from the walls. Reuses its storage between calls.
+  void assign(FaceAxis axis, const Array2& values, const Walls& walls);
+
+  /// Bilinear interpolation at (X, Y) in cell units, clamped to [0, nx] × [0, ny].
+  double sample(double X, double Y) const { return view_.sample(X, Y); }
+  double sample(double X, double Y, double& lo, double& hi) const { return view_.sample(X, Y, lo, hi); }
+
+  /// The padded copy: for FaceAxis::x, padded(i, j + 1) = values(i, j) with ghost rows 0 and
+  /// ny + 1; for FaceAxis::y, padded(i + 1, j) = values(i, j) with ghost columns 0 and nx + 1.
+  const Array2& padded() const { return padded_; }
+  const SampleView& view() const { return view_; }
+
+ private:
+  Array2 padded_;
+  SampleView view_;
+};
+
+/// The velocity of a MAC grid, interpolated anywhere in the domain (positions in metres).
+/// Used for advection backtraces, passive tracers and, later, immersed-boundary markers.
+class VelocitySampler2 {
+ public:
+  void assign(const MacGrid2& grid, const Walls& walls) {
+    u_.assign(FaceAxis::x, grid.u_m_per_s, walls);
+    v_.assign(FaceAxis::y, grid.v_m_per_s, walls);
+    inv_dx_per_m_ = 1.0 / grid.dx_m;
+  }
+  Vec2 velocity_at_m_per_s(Vec2 position_m) const {
+    const double X = position_m.x * inv_dx_per_m_;
+    const double Y = position_m.y * inv_dx_per_m_;
+    return {u_.sample(X, Y), v_.sample(X, Y)};
+  }
+  const StaggeredComponent2& u() const { return u_; }
+  const StaggeredComponent2& v() const { return v_; }
+
+ private:
+  StaggeredComponent2 u_;
+  StaggeredComponent2 v_;
+  double inv_dx_per_m_ = 0.0;
+};
+
+}  // namespace creaturelab::fluid

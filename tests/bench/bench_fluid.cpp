@@ -1,0 +1,122 @@
+// Speed of the fluid solver (issue 4): one full step and the pressure solve alone at 64²..512²,
+// reported as ns per cell per step ("ns_per_cell"). Goal: a full step at 128² in ≤ 0.5 ms on
+// one core. The scene is the paper's: water in a free-slip box, a vortex pair moving through it.
+// Times are the thread's CPU time (manual timing), so that other processes on a shared machine
+// do not inflate them; the solver is single-threaded, so CPU time is its run time.
+#include <benchmark/benchmark.h>
+#include <time.h>
+
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+#include "fluid/fast_pressure_solver2.hpp"
+#include "fluid/fluid_solver2.hpp"
+#include "fluid/initial_conditions2.hpp"
+#include "fluid/pcg_pressure_solver2.hpp"
+
+namespace creaturelab::fluid {
+namespace {
+
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+FluidParams scene(int cells, AdvectionScheme scheme, PressureSolverType pressure) {
+  FluidParams params;  // defaults: 0.4 m free-slip box of water
+  params.cells_x = params.cells_y = cells;
+  params.advection = scheme;
+  params.pressure_solver = pressure;
+  return params;
+}
+
+std::unique_ptr<FluidSolver2> warmed_up(const FluidParams& params) {
+  auto solver = std::make_unique<FluidSolver2>(params);
+  VortexPair pair;
+  pair.circulation_m2_per_s = 2e-3;
+  set_vortex_pair(solver->grid(), pair);
+  solver->make_divergence_free();
+  for (int s = 0; s < 3; ++s) solver->step();
+  return solver;
+}
+
+void report(benchmark::State& state, int cells, double seconds_total) {
+  const double cell_count = static_cast<double>(cells) * cells;
+  state.counters["ns_per_cell"] = seconds_total * 1e9 / (cell_count * static_cast<double>(state.iterations()));
+  state.counters["cells"] = cell_count;
+}
+
+void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverType pressure) {
+  const int cells = static_cast<int>(state.range(0));
+  auto solver = warmed_up(scene(cells, scheme, pressure));
+  double total = 0.0;
+  for (auto _ : state) {
+    const double start = thread_cpu_seconds();
+    FluidStepReport r = solver->step();
+    benchmark::DoNotOptimize(r);
+    const double seconds = thread_cpu_seconds() - start;
+    state.SetIterationTime(seconds);
+    total += seconds;
+  }
+  report(state, cells, total);
+}
+
+// The projection alone on a realistic right-hand side: the velocity of the next step just
+// before its projection, with the previous pressure as warm start (restored every iteration).
+void pressure_only(benchmark::State& state, PressureSolverType pressure) {
+  const int cells = static_cast<int>(state.range(0));
+  auto solver = warmed_up(scene(cells, AdvectionScheme::semi_lagrangian, pressure));
+  const StepContext context{solver->steps_done(), solver->time_s(), solver->next_time_step_s()};
+  solver->apply_external_forces(context);
+  solver->advect_velocity(context);
+  solver->apply_viscosity(context);
+  const MacGrid2 before = solver->grid();
+  double total = 0.0;
+  int iterations = 0;
+  for (auto _ : state) {
+    solver->grid() = before;  // untimed: manual time covers the solve only
+    const double start = thread_cpu_seconds();
+    const LinearSolveReport r = solver->project(context);
+    const double seconds = thread_cpu_seconds() - start;
+    state.SetIterationTime(seconds);
+    total += seconds;
+    iterations = r.iterations;
+  }
+  report(state, cells, total);
+  state.counters["cg_iterations"] = iterations;
+}
+
+void BM_FluidStep_SemiLagrangian_FastPressure(benchmark::State& state) {
+  full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::fast_direct);
+}
+void BM_FluidStep_MacCormack_FastPressure(benchmark::State& state) {
+  full_step(state, AdvectionScheme::maccormack, PressureSolverType::fast_direct);
+}
+void BM_FluidStep_SemiLagrangian_Pcg(benchmark::State& state) {
+  full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::pcg);
+}
+void BM_Pressure_FastDirect(benchmark::State& state) { pressure_only(state, PressureSolverType::fast_direct); }
+void BM_Pressure_Pcg(benchmark::State& state) { pressure_only(state, PressureSolverType::pcg); }
+
+// Besides mean and median, the minimum over repetitions: the least disturbed measurement.
+double minimum(const std::vector<double>& values) { return *std::min_element(values.begin(), values.end()); }
+// Sizes 64² … 512², plus 100², the paper's grid (Fig. 12), whose transform uses radix 5.
+#define CL_FLUID_BENCH(name)          \
+  BENCHMARK(name)                     \
+      ->Arg(100)                      \
+      ->RangeMultiplier(2)            \
+      ->Range(64, 512)                \
+      ->UseManualTime()               \
+      ->Unit(benchmark::kMicrosecond) \
+      ->ComputeStatistics("min", minimum)
+
+CL_FLUID_BENCH(BM_FluidStep_SemiLagrangian_FastPressure);
+CL_FLUID_BENCH(BM_FluidStep_MacCormack_FastPressure);
+CL_FLUID_BENCH(BM_FluidStep_SemiLagrangian_Pcg);
+CL_FLUID_BENCH(BM_Pressure_FastDirect);
+CL_FLUID_BENCH(BM_Pressure_Pcg);
+
+}  // namespace
+}  // namespace creaturelab::fluid

@@ -1,0 +1,266 @@
+// Each stage of the fluid step alone against an analytic answer (Jet's habit).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "fluid/advection2.hpp"
+#include "fluid/boundary2.hpp"
+#include "fluid/diagnostics2.hpp"
+#include "fluid/diffusion2.hpp"
+#include "fluid/fluid_solver2.hpp"
+#include "fluid/initial_conditions2.hpp"
+#include "fluid/staggered_sampler2.hpp"
+#include "fluid/tracers2.hpp"
+
+namespace creaturelab::fluid {
+namespace {
+
+FluidParams box(int n, double size_m) {
+  FluidParams params;
+  params.cells_x = params.cells_y = n;
+  params.domain_width_m = params.domain_height_m = size_m;
+  return params;
+}
+
+void only(FluidSolver2& solver, bool forces, bool advection, bool viscosity, bool pressure) {
+  solver.stages() = FluidStages{forces, advection, viscosity, pressure, false};
+}
+
+// Jet (GridFluidSolver2 tests): with advection, viscosity and pressure off, one 0.01 s step
+// under g = −10 m/s² gives v = −0.1 m/s.
+TEST(ExternalForces, GravityOnlyStepGivesTheAnalyticVelocity) {
+  FluidParams params = box(8, 1.0);
+  params.body_acceleration_y_m_per_s2 = -10.0;
+  FluidSolver2 solver(params);
+  only(solver, true, false, false, false);
+  solver.step(0.01);
+  const MacGrid2& g = solver.grid();
+  for (int j = 1; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) EXPECT_DOUBLE_EQ(g.v_m_per_s(i, j), -0.1);
+  }
+  for (int i = 0; i < g.nx; ++i) {
+    EXPECT_EQ(g.v_m_per_s(i, 0), 0.0);  // solid walls: no flow through
+    EXPECT_EQ(g.v_m_per_s(i, g.ny), 0.0);
+  }
+  EXPECT_EQ(max_abs(g.u_m_per_s), 0.0);
+  EXPECT_DOUBLE_EQ(solver.time_s(), 0.01);
+}
+
+// With the projection on, gravity in a closed box is balanced by a hydrostatic pressure.
+TEST(ExternalForces, GravityInAClosedBoxIsHydrostatic) {
+  FluidParams params = box(16, 1.0);
+  params.body_acceleration_y_m_per_s2 = -9.81;
+  FluidSolver2 solver(params);
+  only(solver, true, false, false, true);
+  solver.step(0.01);
+  const MacGrid2& g = solver.grid();
+  EXPECT_LT(max_velocity_component_m_per_s(g), 1e-14);
+  for (int j = 0; j + 1 < g.ny; ++j) {
+    const double dp_dy = (g.pressure_pa(5, j + 1) - g.pressure_pa(5, j)) / g.dx_m;
+    EXPECT_NEAR(dp_dy, -params.density_kg_per_m3 * 9.81, 1e-9);  // ∂p/∂y = ρ g
+  }
+}
+
+TEST(ExternalForces, ForceDensityIsDividedByDensity) {
+  FluidParams params = box(8, 1.0);
+  params.density_kg_per_m3 = 1000.0;
+  FluidSolver2 solver(params);
+  solver.force_density_n_per_m3().x.fill(2.0);  // N/m³
+  solver.force_density_n_per_m3().y.fill(-4.0);
+  only(solver, true, false, false, false);
+  solver.step(0.5);
+  EXPECT_DOUBLE_EQ(solver.grid().u_m_per_s(3, 3), 0.5 * 2.0 / 1000.0);
+  EXPECT_DOUBLE_EQ(solver.grid().v_m_per_s(3, 3), -0.5 * 4.0 / 1000.0);
+  EXPECT_EQ(solver.grid().u_m_per_s(0, 3), 0.0);  // solid wall face ignored
+}
+
+// Issue 4: uniform flow is preserved exactly by advection (both schemes).
+TEST(Advection, PreservesUniformFlowExactly) {
+  for (AdvectionScheme scheme : {AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack}) {
+    for (bool fully_open : {false, true}) {
+      Walls walls;
+      walls.left.type = walls.right.type = WallType::open;  // a channel
+      if (fully_open) walls.bottom.type = walls.top.type = WallType::open;
+      MacGrid2 grid(16, 12, 0.05);
+      grid.u_m_per_s.fill(0.3);
+      grid.v_m_per_s.fill(fully_open ? -0.2 : 0.0);
+      enforce_wall_normal_velocity(grid, walls);
+      auto advection = make_advection_solver(scheme);
+      Array2 u, v;
+      advection->advect_velocity(grid, walls, 0.37, u, v);  // CFL > 2
+      EXPECT_EQ(u, grid.u_m_per_s) << to_string(scheme);
+      EXPECT_EQ(v, grid.v_m_per_s) << to_string(scheme);
+    }
+  }
+}
+
+TEST(Step, PreservesUniformChannelFlowExactlyWithEveryStage) {
+  for (AdvectionScheme scheme : {AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack}) {
+    for (PressureSolverType pressure : {PressureSolverType::fast_direct, PressureSolverType::pcg}) {
+      FluidParams params = box(16, 1.0);
+      params.walls.left.type = params.walls.right.type = WallType::open;
+      params.kinematic_viscosity_m2_per_s = 1e-3;
+      params.advection = scheme;
+      params.pressure_solver = pressure;
+      FluidSolver2 solver(params);
+      solver.grid().u_m_per_s.fill(0.25);
+      const Array2 initial = solver.grid().u_m_per_s;
+      for (int s = 0; s < 3; ++s) solver.step();
+      EXPECT_EQ(solver.grid().u_m_per_s, initial) << to_string(scheme) << ", " << to_string(pressure);
+      EXPECT_EQ(max_abs(solver.grid().v_m_per_s), 0.0);
+    }
+  }
+}
+
+TEST(Advection, FluidAtRestStaysAtRest) {
+  MacGrid2 grid(10, 10, 0.1);
+  Walls walls;
+  walls.top.type = WallType::moving;
+  walls.top.tangential_velocity_m_per_s = 0.0;
+  MacCormackAdvection2 advection;
+  Array2 u, v;
+  advection.advect_velocity(grid, walls, 0.1, u, v);
+  EXPECT_EQ(max_abs(u), 0.0);
+  EXPECT_EQ(max_abs(v), 0.0);
+}
+
+// A discrete eigenmode of the free-slip box's viscous operator decays by exactly
+// 1 / (1 + ν dt λ) in one backward-Euler step.
+TEST(Viscosity, EigenmodeDecaysByTheBackwardEulerFactor) {
+  const int n = 16;
+  const double dx = 0.1, nu = 0.02, dt = 0.3;
+  MacGrid2 grid(n, n, dx);
+  const double pi = std::numbers::pi;
+  // v on faces (i + ½, j): cos(π (i + ½) / n) in x (Neumann: free-slip left/right ghosts) and
+  // sin(π j / n) in y (zero on the solid bottom/top faces).
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = std::cos(pi * (i + 0.5) / n) * std::sin(pi * j / n);
+  grid.v_m_per_s(0, 0) = 0.0;
+  const MacGrid2 initial = grid;
+  ImplicitDiffusion2 diffusion(1e-13, 100);
+  const LinearSolveReport report = diffusion.diffuse_velocity(grid, Walls{}, nu, dt);
+  EXPECT_TRUE(report.converged);
+  const double lambda =
+      (4.0 * std::pow(std::sin(pi / (2.0 * n)), 2) + 4.0 * std::pow(std::sin(pi / (2.0 * n)), 2)) / (dx * dx);
+  const double factor = 1.0 / (1.0 + nu * dt * lambda);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i < n; ++i) EXPECT_NEAR(grid.v_m_per_s(i, j), factor * initial.v_m_per_s(i, j), 1e-12);
+  EXPECT_EQ(max_abs(grid.u_m_per_s), 0.0);
+}
+
+// Couette flow: a moving top wall over a no-slip bottom, open at both ends. A backward-Euler
+// step with a very long dt reaches the steady profile u = U y / H, which the ghost values
+// represent exactly.
+TEST(Viscosity, LongImplicitStepGivesCouetteProfile) {
+  const int nx = 8, ny = 10;
+  const double dx = 0.1, top_speed = 0.7;
+  Walls walls;
+  walls.left.type = walls.right.type = WallType::open;
+  walls.bottom.type = WallType::no_slip;
+  walls.top.type = WallType::moving;
+  walls.top.tangential_velocity_m_per_s = top_speed;
+  MacGrid2 grid(nx, ny, dx);
+  ImplicitDiffusion2 diffusion(1e-14, 2000);
+  diffusion.diffuse_velocity(grid, walls, 1.0, 1e9);
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i <= nx; ++i) EXPECT_NEAR(grid.u_m_per_s(i, j), top_speed * (j + 0.5) / ny, 1e-6);
+  }
+  Array2 omega;
+  vorticity_at_corners(grid, walls, omega);
+  EXPECT_NEAR(omega(3, 0), -top_speed / (ny * dx), 1e-5);  // ω = −∂u/∂y
+}
+
+TEST(Sampler, GhostsSetTheWallValue) {
+  MacGrid2 grid(4, 4, 1.0);
+  grid.u_m_per_s.fill(2.0);
+  for (WallType type : {WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open}) {
+    Walls walls;
+    walls.bottom.type = type;
+    if (type == WallType::moving) walls.bottom.tangential_velocity_m_per_s = -1.5;
+    StaggeredComponent2 u;
+    u.assign(FaceAxis::x, grid.u_m_per_s, walls);
+    const double at_wall = u.sample(2.0, 0.0);
+    const double expected = type == WallType::no_slip ? 0.0 : type == WallType::moving ? -1.5 : 2.0;
+    EXPECT_DOUBLE_EQ(at_wall, expected) << to_string(type);
+    EXPECT_DOUBLE_EQ(u.sample(2.0, 0.5), 2.0);  // the first sample row
+  }
+}
+
+// A linear velocity field (solid-body rotation) is interpolated exactly, its vorticity is 2Ω
+// and RK2 tracers keep their radius.
+TEST(Tracers, SolidBodyRotation) {
+  const int n = 32;
+  const double size = 1.0, omega = 2.0;
+  MacGrid2 grid(n, n, size / n);
+  const double c = 0.5 * size;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i <= n; ++i) grid.u_m_per_s(i, j) = -omega * (grid.u_position_m(i, j).y - c);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = omega * (grid.v_position_m(i, j).x - c);
+  Walls walls;
+  for (Wall* w : {&walls.left, &walls.right, &walls.bottom, &walls.top}) w->type = WallType::open;
+  VelocitySampler2 sampler;
+  sampler.assign(grid, walls);
+  const Vec2 u = sampler.velocity_at_m_per_s({0.3, 0.7});
+  EXPECT_NEAR(u.x, -omega * 0.2, 1e-14);
+  EXPECT_NEAR(u.y, omega * -0.2, 1e-14);
+
+  Array2 vorticity;
+  vorticity_at_corners(grid, walls, vorticity);
+  EXPECT_NEAR(vorticity(10, 20), 2.0 * omega, 1e-12);
+
+  std::vector<Vec2> tracers{{0.8, 0.5}, {0.5, 0.3}};
+  const int steps = 200;
+  const double dt = 2.0 * std::numbers::pi / omega / steps;
+  for (int s = 0; s < steps; ++s) advect_tracers_rk2(tracers, sampler, dt, size, size);
+  EXPECT_NEAR(tracers[0].x, 0.8, 1e-3);
+  EXPECT_NEAR(tracers[0].y, 0.5, 1e-3);
+  EXPECT_NEAR(std::hypot(tracers[1].x - c, tracers[1].y - c), 0.2, 1e-4);
+}
+
+TEST(Tracers, MoveExactlyWithUniformFlowAndStayInside) {
+  FluidParams params = box(8, 1.0);
+  for (Wall* w : {&params.walls.left, &params.walls.right, &params.walls.bottom, &params.walls.top}) {
+    w->type = WallType::open;
+  }
+  FluidSolver2 solver(params);
+  solver.grid().u_m_per_s.fill(0.5);
+  solver.grid().v_m_per_s.fill(-0.25);
+  solver.tracers_m() = {{0.25, 0.5}, {0.99, 0.01}};
+  solver.stages() = FluidStages{false, false, false, false, true};
+  solver.step(0.1);
+  EXPECT_DOUBLE_EQ(solver.tracers_m()[0].x, 0.3);
+  EXPECT_DOUBLE_EQ(solver.tracers_m()[0].y, 0.475);
+  EXPECT_EQ(solver.tracers_m()[1].x, 1.0);  // clamped to the domain
+  EXPECT_EQ(solver.tracers_m()[1].y, 0.0);
+}
+
+TEST(Diagnostics, KineticEnergyDivergenceAndCfl) {
+  MacGrid2 grid(10, 5, 0.2);
+  grid.u_m_per_s.fill(3.0);
+  EXPECT_NEAR(kinetic_energy_joule_per_m(grid, 1000.0), 0.5 * 1000.0 * 9.0 * (2.0 * 1.0), 1e-9);
+  EXPECT_EQ(max_divergence_per_s(grid), 0.0);
+  EXPECT_DOUBLE_EQ(cfl_number(grid, 0.1), 3.0 * 0.1 / 0.2);
+  grid.v_m_per_s(4, 2) = 1.0;
+  EXPECT_DOUBLE_EQ(max_divergence_per_s(grid), 1.0 / 0.2);
+  grid.u_m_per_s(3, 3) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(std::isinf(max_velocity_component_m_per_s(grid)));
+  EXPECT_TRUE(std::isinf(summarize_flow(grid, 1.0).max_velocity_component_m_per_s));
+}
+
+// The one-pass summary that step() reports equals the separate observables.
+TEST(Diagnostics, SummaryAgreesWithTheSeparateFunctions) {
+  MacGrid2 grid(13, 9, 0.05);
+  set_vortex_pair(grid, VortexPair{});
+  grid.v_m_per_s(4, 0) = 0.3;  // some divergence and a wall face
+  const FlowSummary summary = summarize_flow(grid, 998.0);
+  EXPECT_EQ(summary.max_velocity_component_m_per_s, max_velocity_component_m_per_s(grid));
+  EXPECT_EQ(summary.max_divergence_per_s, max_divergence_per_s(grid));
+  EXPECT_NEAR(summary.kinetic_energy_joule_per_m, kinetic_energy_joule_per_m(grid, 998.0),
+              1e-14 * kinetic_energy_joule_per_m(grid, 998.0));
+}
+
+}  // namespace
+}  // namespace creaturelab::fluid
