@@ -27,6 +27,10 @@ ParamSpec realOrAuto(std::string name, std::string unit, double min, double max,
   return {std::move(name), ParamType::RealOrAuto, std::string("auto"), std::move(unit), std::move(doc), min, max, {}};
 }
 
+ParamSpec text(std::string name, std::string def, std::string unit, std::string doc) {
+  return {std::move(name), ParamType::Text, std::move(def), std::move(unit), std::move(doc), 0, 0, {}};
+}
+
 std::string typeName(ParamType type) {
   switch (type) {
     case ParamType::Real: return "a number";
@@ -34,6 +38,7 @@ std::string typeName(ParamType type) {
     case ParamType::Boolean: return "true or false";
     case ParamType::Choice: return "one of the listed strings";
     case ParamType::RealOrAuto: return "a number or \"auto\"";
+    case ParamType::Text: return "a string";
   }
   return "?";
 }
@@ -48,6 +53,7 @@ std::string describeValue(const Value& v) {
 std::string describeRange(const ParamSpec& spec) {
   switch (spec.type) {
     case ParamType::Boolean: return "true | false";
+    case ParamType::Text: return "text";
     case ParamType::Choice: {
       std::string out;
       for (const auto& c : spec.choices) out += (out.empty() ? "\"" : " | \"") + c + "\"";
@@ -90,6 +96,8 @@ std::string checkValue(const ParamSpec& spec, const Value& v) {
       if (auto d = std::get_if<double>(&v)) return checkNumber(spec, *d);
       if (auto s = std::get_if<std::string>(&v); s && *s == "auto") return "";
       return typeName(spec.type) + " in " + describeRange(spec);
+    case ParamType::Text:
+      return std::holds_alternative<std::string>(v) ? "" : typeName(spec.type);
   }
   return "a valid value";
 }

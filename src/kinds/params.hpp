@@ -13,7 +13,7 @@ namespace creaturelab::kinds {
 using Value = std::variant<double, std::int64_t, bool, std::string>;
 using Params = std::map<std::string, Value>;  // every declared parameter, resolved
 
-enum class ParamType { Real, Integer, Boolean, Choice, RealOrAuto };
+enum class ParamType { Real, Integer, Boolean, Choice, RealOrAuto, Text };
 
 struct ParamSpec {
   std::string name;
@@ -32,6 +32,8 @@ ParamSpec boolean(std::string name, bool def, std::string doc);
 ParamSpec choice(std::string name, std::string def, std::vector<std::string> choices, std::string doc);
 // A positive real or the string "auto" (e.g. dt_s = "auto" picks a stable step).
 ParamSpec realOrAuto(std::string name, std::string unit, double min, double max, std::string doc);
+// Free text the kind parses itself (its validate() reports what is wrong with it).
+ParamSpec text(std::string name, std::string def, std::string unit, std::string doc);
 
 std::string typeName(ParamType type);
 std::string describeValue(const Value& v);  // "0.5", "true", "\"rk4\""

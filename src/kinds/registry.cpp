@@ -1,6 +1,8 @@
+#include "kinds/fluid.hpp"
 #include "kinds/kind.hpp"
 #include "kinds/oscillator.hpp"
 #include "kinds/strand.hpp"
+#include "kinds/web.hpp"
 
 namespace creaturelab::kinds {
 
@@ -8,6 +10,8 @@ Registry defaultRegistry() {
   Registry r;
   r.add(std::make_unique<OscillatorKind>());
   r.add(std::make_unique<StrandKind>());
+  r.add(std::make_unique<FluidKind>());
+  r.add(std::make_unique<WebKind>());
   return r;
 }
 

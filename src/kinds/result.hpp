@@ -1,6 +1,7 @@
 #pragma once
 // What one sweep point returns: named time series, scalar metrics and Lagrangian tracks.
 // Kinds fill it; the runner writes it (DESIGN.md "Results (HDF5)").
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -47,6 +48,9 @@ struct Result {
   std::map<std::string, Metric> metrics;
   std::map<std::string, Tracks> lagrangian;
   FieldFrames fields;  // empty unless the kind has a grid
+  // Integer tables that describe the model rather than its motion (which particles a spring
+  // joins, its strand type, ...): /topology/<name>.
+  std::map<std::string, std::vector<std::int64_t>> topology;
 };
 
 }  // namespace creaturelab::kinds

@@ -141,9 +141,14 @@ CheckOutcome order(const CheckSpec& c, const std::vector<const Row*>& rows) {
 CheckOutcome evaluateCheck(const CheckSpec& c, const Table& table) {
   std::string problem;
   if (c.type == "ratio") {
-    CheckOutcome out{c.name, c.type, c.metric + " ratio in " + range(c.expect_lo, c.expect_hi), "", false};
-    auto num = select(table, c.numerator, c.metric, problem);
-    auto den = problem.empty() ? select(table, c.denominator, c.metric, problem) : std::vector<const Row*>{};
+    const std::string& num_metric = c.numerator_metric.empty() ? c.metric : c.numerator_metric;
+    const std::string& den_metric = c.denominator_metric.empty() ? c.metric : c.denominator_metric;
+    const std::string what = num_metric == den_metric
+                                 ? c.metric + " ratio"
+                                 : num_metric + " / " + den_metric;
+    CheckOutcome out{c.name, c.type, what + " in " + range(c.expect_lo, c.expect_hi), "", false};
+    auto num = select(table, c.numerator, num_metric, problem);
+    auto den = problem.empty() ? select(table, c.denominator, den_metric, problem) : std::vector<const Row*>{};
     if (!problem.empty()) {
       out.got = problem;
       return out;
@@ -153,7 +158,7 @@ CheckOutcome evaluateCheck(const CheckSpec& c, const Table& table) {
                 std::to_string(den.size()) + ")";
       return out;
     }
-    const double r = num[0]->metrics.at(c.metric) / den[0]->metrics.at(c.metric);
+    const double r = num[0]->metrics.at(num_metric) / den[0]->metrics.at(den_metric);
     out.got = formatNumber(r);
     out.passed = std::isfinite(r) && r >= c.expect_lo && r <= c.expect_hi;
     return out;

@@ -156,8 +156,9 @@ Where parseWhere(const toml::node* node, const Context& ctx, const std::string& 
 
 CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const Context& ctx) {
   const std::string key = "check[" + std::to_string(n) + "]";
-  static const std::vector<std::string> known = {"name", "type", "metric", "axis", "expect", "direction",
-                                                 "strict", "where", "numerator", "denominator"};
+  static const std::vector<std::string> known = {"name",      "type",        "metric",           "axis",
+                                                 "expect",    "direction",   "strict",           "where",
+                                                 "numerator", "denominator", "numerator_metric", "denominator_metric"};
   for (auto&& [k, v] : t) {
     std::string ks(k.str());
     if (std::find(known.begin(), known.end(), ks) == known.end())
@@ -170,6 +171,8 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   c.axis = t["axis"].value_or(std::string());
   c.direction = t["direction"].value_or(std::string("increasing"));
   c.strict = t["strict"].value_or(true);
+  c.numerator_metric = t["numerator_metric"].value_or(c.metric);
+  c.denominator_metric = t["denominator_metric"].value_or(c.metric);
   if (c.name.empty()) ctx.fail(key, "needs a name", &t);
   static const std::vector<std::string> types = {"argmax", "argmin", "range", "ratio", "monotonic", "order"};
   if (std::find(types.begin(), types.end(), c.type) == types.end())
@@ -177,9 +180,11 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
                                 suggestion(c.type, types), t.get("type"));
   std::vector<std::string> metric_names;
   for (const auto& m : kind.metrics()) metric_names.push_back(m.name);
-  if (std::find(metric_names.begin(), metric_names.end(), c.metric) == metric_names.end())
-    ctx.fail(key + ".metric", "'" + c.metric + "' is not a metric of kind '" + kind.name() + "'" +
-                                  suggestion(c.metric, metric_names), t.get("metric"));
+  for (const auto& [field, name] : {std::pair{"metric", c.metric}, std::pair{"numerator_metric", c.numerator_metric},
+                                    std::pair{"denominator_metric", c.denominator_metric}})
+    if (std::find(metric_names.begin(), metric_names.end(), name) == metric_names.end())
+      ctx.fail(key + "." + field, "'" + name + "' is not a metric of kind '" + kind.name() + "'" +
+                                      suggestion(name, metric_names), t.get(field));
   const bool needs_axis = c.type == "argmax" || c.type == "argmin" || c.type == "monotonic" || c.type == "order";
   if (needs_axis && c.axis.empty()) ctx.fail(key, "a " + c.type + " check needs an axis", &t);
   if (c.type == "monotonic" && c.direction != "increasing" && c.direction != "decreasing")

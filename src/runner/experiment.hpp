@@ -42,6 +42,7 @@ struct CheckSpec {
   std::string direction = "increasing";     // monotonic
   bool strict = true;                        // monotonic
   Where where, numerator, denominator;       // point selections
+  std::string numerator_metric, denominator_metric;  // ratio: "" = metric
 };
 
 struct OutputOptions {

@@ -56,6 +56,10 @@ void writeResult(const io::Group& root, const kinds::Result& r, bool lagrangian)
   const io::Group metrics = root.requireGroup("metrics");
   for (const auto& [name, m] : r.metrics) io::setAttr(io::writeScalar(metrics, name, m.value), "unit", m.unit);
   writeFields(root, r.fields);
+  if (!r.topology.empty()) {
+    const io::Group topology = root.requireGroup("topology");
+    for (const auto& [name, values] : r.topology) io::writeVector(topology, name, values);
+  }
   if (!lagrangian || r.lagrangian.empty()) return;
   const io::Group tracks = root.requireGroup("lagrangian");
   bool wrote_time = false;
