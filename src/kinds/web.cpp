@@ -161,6 +161,7 @@ WebKind::WebKind() {
       {"web_mass_kg", "kg", "sum of particle masses"},
       {"hub_sag_m", "m", "hub drop from the laid web at the end of the run"},
       {"static_hub_sag_m", "m", "hub drop in the static Newton equilibrium"},
+      {"static_sag_rel_diff", "", "|hub_sag_m - static_hub_sag_m| / static_hub_sag_m"},
       {"static_iterations", "", "Newton iterations of the static solve (NaN: did not converge)"},
       {"max_strain", "", "largest (length - rest) / rest at the end"},
       {"settling_time_s", "s", "earliest time after which kinetic energy stays below settling_fraction of its peak"},
@@ -267,6 +268,10 @@ Result WebKind::run(const Params& p) const {
   result.metrics["web_mass_kg"] = {c.web_mass_kg, "kg"};
   result.metrics["hub_sag_m"] = {web::hubSagM(model, state), "m"};
   result.metrics["static_hub_sag_m"] = {eq.converged ? web::hubSagM(model, statics) : nan, "m"};
+  result.metrics["static_sag_rel_diff"] = {
+      std::fabs(result.metrics["hub_sag_m"].value - result.metrics["static_hub_sag_m"].value) /
+          result.metrics["static_hub_sag_m"].value,
+      ""};
   result.metrics["static_iterations"] = {eq.converged ? double(eq.iterations) : nan, ""};
   result.metrics["max_strain"] = {springs::maxStrain(system.network(), state), ""};
   result.metrics["settling_time_s"] = {settling.value_or(nan), "s"};

@@ -143,9 +143,8 @@ CheckOutcome evaluateCheck(const CheckSpec& c, const Table& table) {
   if (c.type == "ratio") {
     const std::string& num_metric = c.numerator_metric.empty() ? c.metric : c.numerator_metric;
     const std::string& den_metric = c.denominator_metric.empty() ? c.metric : c.denominator_metric;
-    const std::string what = num_metric == den_metric
-                                 ? c.metric + " ratio"
-                                 : num_metric + " / " + den_metric;
+    const std::string what = (num_metric == den_metric ? c.metric + " ratio" : num_metric + " / " + den_metric) +
+                             (c.numerator_base.empty() && c.denominator_base.empty() ? "" : " (each relative to its base)");
     CheckOutcome out{c.name, c.type, what + " in " + range(c.expect_lo, c.expect_hi), "", false};
     auto num = select(table, c.numerator, num_metric, problem);
     auto den = problem.empty() ? select(table, c.denominator, den_metric, problem) : std::vector<const Row*>{};
@@ -158,7 +157,22 @@ CheckOutcome evaluateCheck(const CheckSpec& c, const Table& table) {
                 std::to_string(den.size()) + ")";
       return out;
     }
-    const double r = num[0]->metrics.at(num_metric) / den[0]->metrics.at(den_metric);
+    // With a base selection a side is relative to another point: metric(side) / metric(base).
+    auto side = [&](const Row* row, const std::string& metric, const Where& base) {
+      const double v = row->metrics.at(metric);
+      if (base.empty()) return v;
+      auto b = select(table, base, metric, problem);
+      if (b.size() != 1) {
+        if (problem.empty()) problem = "a base selection must select one point";
+        return std::nan("");
+      }
+      return v / b[0]->metrics.at(metric);
+    };
+    const double r = side(num[0], num_metric, c.numerator_base) / side(den[0], den_metric, c.denominator_base);
+    if (!problem.empty()) {
+      out.got = problem;
+      return out;
+    }
     out.got = formatNumber(r);
     out.passed = std::isfinite(r) && r >= c.expect_lo && r <= c.expect_hi;
     return out;

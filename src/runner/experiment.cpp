@@ -158,7 +158,8 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   const std::string key = "check[" + std::to_string(n) + "]";
   static const std::vector<std::string> known = {"name",      "type",        "metric",           "axis",
                                                  "expect",    "direction",   "strict",           "where",
-                                                 "numerator", "denominator", "numerator_metric", "denominator_metric"};
+                                                 "numerator", "denominator", "numerator_metric", "denominator_metric",
+                                                 "numerator_base", "denominator_base"};
   for (auto&& [k, v] : t) {
     std::string ks(k.str());
     if (std::find(known.begin(), known.end(), ks) == known.end())
@@ -206,6 +207,8 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   c.where = parseWhere(t.get("where"), ctx, key + ".where");
   c.numerator = parseWhere(t.get("numerator"), ctx, key + ".numerator");
   c.denominator = parseWhere(t.get("denominator"), ctx, key + ".denominator");
+  c.numerator_base = parseWhere(t.get("numerator_base"), ctx, key + ".numerator_base");
+  c.denominator_base = parseWhere(t.get("denominator_base"), ctx, key + ".denominator_base");
   if (c.type == "ratio" && (c.numerator.empty() || c.denominator.empty()))
     ctx.fail(key, "a ratio check needs numerator = {...} and denominator = {...} point selections", &t);
   return c;
@@ -358,7 +361,7 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
     const std::string key = "check '" + chk.name + "'";
     if (!chk.axis.empty() && std::find(columns.begin(), columns.end(), chk.axis) == columns.end())
       ctx.fail(key, "axis '" + chk.axis + "' is not swept" + suggestion(chk.axis, columns));
-    for (const Where* w : {&chk.where, &chk.numerator, &chk.denominator})
+    for (const Where* w : {&chk.where, &chk.numerator, &chk.denominator, &chk.numerator_base, &chk.denominator_base})
       for (const auto& [k, v] : *w)
         if (k != "label" && std::find(columns.begin(), columns.end(), k) == columns.end())
           ctx.fail(key, "selection key '" + k + "' is not a swept column" + suggestion(k, columns));

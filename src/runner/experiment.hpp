@@ -43,6 +43,7 @@ struct CheckSpec {
   bool strict = true;                        // monotonic
   Where where, numerator, denominator;       // point selections
   std::string numerator_metric, denominator_metric;  // ratio: "" = metric
+  Where numerator_base, denominator_base;  // ratio: each side divided by its metric at this point
 };
 
 struct OutputOptions {

@@ -215,6 +215,31 @@ TEST(RunnerChecks, RatioOfTwoSelectedPoints) {
   EXPECT_EQ(o.got, "16");
 }
 
+TEST(RunnerChecks, RatioAcrossMetricsEachRelativeToItsBase) {
+  // Spring-constant experiment: each family's elongation when its own k is cut, relative to the
+  // original web; outer grows x3, inner x2, so the ratio of the relative growths is 1.5.
+  Table t{{"case"}, {"outer", "inner"}, {}};
+  t.rows.push_back(row(0, {{"case", std::string("original")}}, {{"outer", 2.0}, {"inner", 5.0}}));
+  t.rows.push_back(row(1, {{"case", std::string("cut outer")}}, {{"outer", 6.0}, {"inner", 5.0}}));
+  t.rows.push_back(row(2, {{"case", std::string("cut inner")}}, {{"outer", 2.0}, {"inner", 10.0}}));
+  CheckSpec c = spec("ratio", "outer");
+  c.numerator_metric = "outer";
+  c.denominator_metric = "inner";
+  c.numerator = {{"case", std::string("cut outer")}};
+  c.denominator = {{"case", std::string("cut inner")}};
+  c.expect_lo = 1.4;
+  c.expect_hi = 1.6;
+  EXPECT_FALSE(runner::evaluateCheck(c, t).passed);  // absolute: 6 / 10 = 0.6
+  EXPECT_EQ(runner::evaluateCheck(c, t).got, "0.6");
+  c.numerator_base = {{"case", std::string("original")}};
+  c.denominator_base = {{"case", std::string("original")}};
+  const CheckOutcome o = runner::evaluateCheck(c, t);  // (6 / 2) / (10 / 5) = 1.5
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.got, "1.5");
+  c.numerator_base = {{"case", std::string("nowhere")}};
+  EXPECT_FALSE(runner::evaluateCheck(c, t).passed);
+}
+
 TEST(RunnerChecks, RatioSelectionsMustEachPickOnePoint) {
   CheckSpec c = spec("ratio", "max_abs_error_m");
   c.numerator = {{"integrator", std::string("rk4")}};  // two points
