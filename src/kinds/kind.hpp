@@ -41,6 +41,17 @@ class Kind {
   virtual Result run(const Params& params) const = 0;
 };
 
+// A kind whose schema is fixed when it is constructed: the constructor fills params_ and metrics_.
+class SchemaKind : public Kind {
+ public:
+  const std::vector<ParamSpec>& params() const override { return params_; }
+  const std::vector<MetricSpec>& metrics() const override { return metrics_; }
+
+ protected:
+  std::vector<ParamSpec> params_;
+  std::vector<MetricSpec> metrics_;
+};
+
 class Registry {
  public:
   void add(std::unique_ptr<Kind> kind) { kinds_.push_back(std::move(kind)); }

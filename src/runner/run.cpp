@@ -153,7 +153,7 @@ RunReport runShare(const RunOptions& o, const Experiment& e, const kinds::Kind& 
   if (report.skipped > 0)
     std::fprintf(stderr, "resume: %d point file(s) already complete, %zu to run\n", report.skipped, todo.size());
   Progress progress(int(todo.size()) + report.skipped, report.skipped);
-  std::mutex hdf5;  // the HDF5 library is not thread-safe
+  std::mutex write_mutex;  // one point file written at a time; guards write_error
   std::atomic<size_t> next{0};
   std::atomic<int> failed{0};
   // A write error (disk full, folder removed) stops every worker; points already written stay.
@@ -163,7 +163,7 @@ RunReport runShare(const RunOptions& o, const Experiment& e, const kinds::Kind& 
       const Point& p = *todo[i];
       PointOutcome outcome = runPoint(kind, p);
       try {
-        std::lock_guard lock(hdf5);
+        std::lock_guard lock(write_mutex);
         if (write_error) return;
         writePointFile(report.out_dir, e, kind, p, outcome, provenance);
       } catch (...) {

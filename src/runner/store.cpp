@@ -124,10 +124,12 @@ kinds::Value readColumnValue(const io::Group& sweep, const std::string& name, co
 
 }  // namespace
 
-void writePointContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Point& point,
-                        const PointOutcome& outcome, Provenance provenance);
-void writeIndexContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Table& table,
-                        const std::vector<CheckOutcome>& checks, Provenance provenance);
+// The contents of a point file and of the index, written while the file is open (File::close
+// needs every group handle closed first, so these run in their own scope).
+static void writePointContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Point& point,
+                               const PointOutcome& outcome, Provenance provenance);
+static void writeIndexContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Table& table,
+                               const std::vector<CheckOutcome>& checks, Provenance provenance);
 
 std::string pointFileName(int index) {
   char buf[32];
@@ -155,25 +157,23 @@ void writePointFile(const std::string& dir, const Experiment& e, const kinds::Ki
   writeXdmfSidecar(dir, point.index, outcome.result.fields);
 }
 
-void writePointContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Point& point,
-                        const PointOutcome& outcome, Provenance provenance) {
-  {
-    io::setAttr(root, "kind", e.kind);
-    io::setAttr(root, "title", e.title);
-    io::setAttr(root, "experiment", e.path);
-    io::setAttr(root, "point_index", std::int64_t(point.index));
-    io::setAttr(root, "label", point.label);
-    io::setAttr(root, "status", outcome.ok ? "ok" : "failed");
-    io::setAttr(root, "message", outcome.message);
-    io::setAttr(root, "config_json", pointConfigJson(e.kind, point));
-    io::setAttr(root, "config_sha256", pointConfigSha(e.kind, point));
-    writeParameters(root, kind, point.params);
-    provenance["started"] = outcome.started;
-    provenance["finished"] = outcome.finished;
-    writeProvenance(root, provenance);
-    io::setAttr(root, "wall_time_s", outcome.wall_s);
-    writeResult(root, outcome.result, e.output.lagrangian);
-  }
+static void writePointContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Point& point,
+                               const PointOutcome& outcome, Provenance provenance) {
+  io::setAttr(root, "kind", e.kind);
+  io::setAttr(root, "title", e.title);
+  io::setAttr(root, "experiment", e.path);
+  io::setAttr(root, "point_index", std::int64_t(point.index));
+  io::setAttr(root, "label", point.label);
+  io::setAttr(root, "status", outcome.ok ? "ok" : "failed");
+  io::setAttr(root, "message", outcome.message);
+  io::setAttr(root, "config_json", pointConfigJson(e.kind, point));
+  io::setAttr(root, "config_sha256", pointConfigSha(e.kind, point));
+  writeParameters(root, kind, point.params);
+  provenance["started"] = outcome.started;
+  provenance["finished"] = outcome.finished;
+  writeProvenance(root, provenance);
+  io::setAttr(root, "wall_time_s", outcome.wall_s);
+  writeResult(root, outcome.result, e.output.lagrangian);
 }
 
 std::string readPointConfigSha(const std::string& path) {
@@ -217,69 +217,67 @@ void writeIndex(const std::string& dir, const Experiment& e, const kinds::Kind& 
   fs::rename(tmp_path, final_path);
 }
 
-void writeIndexContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Table& table,
-                        const std::vector<CheckOutcome>& checks, Provenance provenance) {
-  {
-    io::setAttr(root, "kind", e.kind);
-    io::setAttr(root, "title", e.title);
-    io::setAttr(root, "experiment", e.path);
-    io::setAttr(root, "experiment_toml", e.source_text);
-    io::setAttr(root, "overrides_json", nlohmann::json(e.overrides).dump());
-    io::setAttr(root, "config_json", e.resolved_json);
-    io::setAttr(root, "config_sha256", core::sha256Hex(e.resolved_json));
-    writeProvenance(root, provenance);
+static void writeIndexContents(const io::Group& root, const Experiment& e, const kinds::Kind& kind, const Table& table,
+                               const std::vector<CheckOutcome>& checks, Provenance provenance) {
+  io::setAttr(root, "kind", e.kind);
+  io::setAttr(root, "title", e.title);
+  io::setAttr(root, "experiment", e.path);
+  io::setAttr(root, "experiment_toml", e.source_text);
+  io::setAttr(root, "overrides_json", nlohmann::json(e.overrides).dump());
+  io::setAttr(root, "config_json", e.resolved_json);
+  io::setAttr(root, "config_sha256", core::sha256Hex(e.resolved_json));
+  writeProvenance(root, provenance);
 
-    const io::Group sweep = root.requireGroup("sweep");
-    std::vector<std::int64_t> index;
-    std::vector<std::string> label, status, message;
-    for (const auto& row : table.rows) {
-      index.push_back(row.index);
-      label.push_back(row.label);
-      status.push_back(row.status);
-      message.push_back(row.message);
-    }
-    io::writeVector(sweep, "point_index", index);
-    io::writeVector(sweep, "label", label);
-    io::writeVector(sweep, "status", status);
-    io::writeVector(sweep, "message", message);
-    nlohmann::json types = nlohmann::json::object();
-    for (const auto& c : table.columns) {
-      const std::string type = columnType(table, c).type;
-      writeColumn(sweep, table, c, type);
-      types[c] = type;
-      for (const auto& spec : kind.params())
-        if (spec.name == c) io::setAttr(sweep.openDataset(c), "unit", spec.unit);
-    }
-    for (const auto& m : kind.metrics()) {
-      std::vector<double> values;
-      for (const auto& row : table.rows) values.push_back(row.metrics.at(m.name));
-      io::setAttr(io::writeVector(sweep, m.name, values), "unit", m.unit);
-    }
-    io::setAttr(sweep, "columns_json", nlohmann::json(table.columns).dump());
-    io::setAttr(sweep, "column_types_json", types.dump());
-    io::setAttr(sweep, "metrics_json", nlohmann::json(table.metrics).dump());
-
-    const io::Group chk = root.requireGroup("checks");
-    std::vector<std::string> name, type, expected, got;
-    std::vector<std::int8_t> passed;
-    for (const auto& c : checks) {
-      name.push_back(c.name);
-      type.push_back(c.type);
-      expected.push_back(c.expected);
-      got.push_back(c.got);
-      passed.push_back(c.passed ? 1 : 0);
-    }
-    io::writeVector(chk, "name", name);
-    io::writeVector(chk, "type", type);
-    io::writeVector(chk, "expected", expected);
-    io::writeVector(chk, "got", got);
-    io::writeVector(chk, "passed", passed);
-
-    const io::Group links = root.requireGroup("points");
-    for (const auto& row : table.rows)
-      if (row.status != "missing")
-        io::createExternalLink(links, fs::path(pointFileName(row.index)).stem().string(), pointFileName(row.index), "/");
+  const io::Group sweep = root.requireGroup("sweep");
+  std::vector<std::int64_t> index;
+  std::vector<std::string> label, status, message;
+  for (const auto& row : table.rows) {
+    index.push_back(row.index);
+    label.push_back(row.label);
+    status.push_back(row.status);
+    message.push_back(row.message);
   }
+  io::writeVector(sweep, "point_index", index);
+  io::writeVector(sweep, "label", label);
+  io::writeVector(sweep, "status", status);
+  io::writeVector(sweep, "message", message);
+  nlohmann::json types = nlohmann::json::object();
+  for (const auto& c : table.columns) {
+    const std::string type = columnType(table, c).type;
+    writeColumn(sweep, table, c, type);
+    types[c] = type;
+    for (const auto& spec : kind.params())
+      if (spec.name == c) io::setAttr(sweep.openDataset(c), "unit", spec.unit);
+  }
+  for (const auto& m : kind.metrics()) {
+    std::vector<double> values;
+    for (const auto& row : table.rows) values.push_back(row.metrics.at(m.name));
+    io::setAttr(io::writeVector(sweep, m.name, values), "unit", m.unit);
+  }
+  io::setAttr(sweep, "columns_json", nlohmann::json(table.columns).dump());
+  io::setAttr(sweep, "column_types_json", types.dump());
+  io::setAttr(sweep, "metrics_json", nlohmann::json(table.metrics).dump());
+
+  const io::Group chk = root.requireGroup("checks");
+  std::vector<std::string> name, type, expected, got;
+  std::vector<std::int8_t> passed;
+  for (const auto& c : checks) {
+    name.push_back(c.name);
+    type.push_back(c.type);
+    expected.push_back(c.expected);
+    got.push_back(c.got);
+    passed.push_back(c.passed ? 1 : 0);
+  }
+  io::writeVector(chk, "name", name);
+  io::writeVector(chk, "type", type);
+  io::writeVector(chk, "expected", expected);
+  io::writeVector(chk, "got", got);
+  io::writeVector(chk, "passed", passed);
+
+  const io::Group links = root.requireGroup("points");
+  for (const auto& row : table.rows)
+    if (row.status != "missing")
+      io::createExternalLink(links, fs::path(pointFileName(row.index)).stem().string(), pointFileName(row.index), "/");
 }
 
 StoredRun readIndex(const std::string& dir) {
