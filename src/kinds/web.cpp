@@ -103,6 +103,24 @@ double meanElongation(const web::WebModel& m, const springs::State<3>& s, std::i
   return n ? sum / n : std::nan("");
 }
 
+// How much of the web the spiral spans, as laid: the annulus between the spiral's innermost and
+// outermost particles (about the hub) over the disc of the inner frame's mean radius. The thesis
+// describes its spiral variants by how much of the web they cover (§5.3.4, Figs. 5.24-5.27).
+double spiralCoverage(const web::WebModel& m) {
+  const Eigen::Vector2d hub(m.hub_centre_m.x(), m.hub_centre_m.y());
+  auto radius = [&](int i) { return (m.state.x_m.col(i).head<2>() - hub).norm(); };
+  double r_min = HUGE_VAL, r_max = 0, frame = 0;
+  for (int s = 0; s < m.network.springCount(); ++s) {
+    if (m.spring_type[s] != StrandType::spiral) continue;
+    for (int i : {m.network.spring_a[s], m.network.spring_b[s]}) {
+      r_min = std::min(r_min, radius(i));
+      r_max = std::max(r_max, radius(i));
+    }
+  }
+  for (int i : m.inner_frame_particles) frame += radius(i) / double(m.inner_frame_particles.size());
+  return r_max > 0 ? (r_max * r_max - r_min * r_min) / (frame * frame) : 0.0;
+}
+
 }  // namespace
 
 WebKind::WebKind() {
@@ -157,6 +175,7 @@ WebKind::WebKind() {
       {"springs", "", "springs"},
       {"spokes", "", "radii (a primary spoke counts twice)"},
       {"spiral_segments", "", "spiral strands"},
+      {"spiral_coverage", "", "spiral annulus area over the inner frame's disc, as laid (§5.3.4)"},
       {"silk_length_m", "m", "sum of rest lengths (thesis ch. 3: 20-60 m)"},
       {"web_mass_kg", "kg", "sum of particle masses"},
       {"hub_sag_m", "m", "hub drop from the laid web at the end of the run"},
@@ -264,6 +283,7 @@ Result WebKind::run(const Params& p) const {
   result.metrics["springs"] = {double(c.springs), ""};
   result.metrics["spokes"] = {double(c.spokes), ""};
   result.metrics["spiral_segments"] = {double(c.spiral_segments), ""};
+  result.metrics["spiral_coverage"] = {spiralCoverage(model), ""};
   result.metrics["silk_length_m"] = {c.silk_length_m, "m"};
   result.metrics["web_mass_kg"] = {c.web_mass_kg, "kg"};
   result.metrics["hub_sag_m"] = {web::hubSagM(model, state), "m"};
