@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/text.hpp"
 #include "kinds/damped_oscillator.hpp"
 #include "kinds/spring_run.hpp"
 #include "springs/network.hpp"
@@ -38,7 +39,8 @@ std::string OscillatorKind::doc() const {
 std::string OscillatorKind::validate(const Params& p) const {
   ParamReader r(p);
   if (!r.isAuto("dt_s") && r.real("dt_s") > r.real("end_time_s"))
-    return "dt_s (" + std::to_string(r.real("dt_s")) + ") is longer than end_time_s";
+    return "dt_s (" + core::formatNumber(r.real("dt_s")) + " s) is longer than end_time_s (" +
+           core::formatNumber(r.real("end_time_s")) + " s)";
   return "";
 }
 
