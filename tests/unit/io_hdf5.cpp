@@ -1,4 +1,5 @@
 // HDF5 wrapper: files, groups, datasets, links, errors.
+#include "scratch_dir_test.hpp"
 #include "io/hdf5.hpp"
 
 #include <gtest/gtest.h>
@@ -19,19 +20,9 @@ namespace fs = std::filesystem;
 namespace {
 
 // A fresh directory per test (ctest runs tests as parallel processes).
-class Hdf5Test : public ::testing::Test {
-protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("creaturelab_io_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-            std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path file(const std::string& name) const { return dir_ / name; }
-
-  fs::path dir_;
+class Hdf5Test : public creaturelab::testing::ScratchDirTest {
+ protected:
+  Hdf5Test() : ScratchDirTest("creaturelab_io") {}
 };
 
 std::string readBytes(const fs::path& path) {

@@ -1,4 +1,5 @@
 // HDF5 wrapper: typed scalar attributes on the root, groups and datasets.
+#include "scratch_dir_test.hpp"
 #include "io/hdf5.hpp"
 
 #include <gtest/gtest.h>
@@ -13,19 +14,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class Hdf5AttributeTest : public ::testing::Test {
-protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("creaturelab_io_attr_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-            "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path file(const std::string& name) const { return dir_ / name; }
-
-  fs::path dir_;
+class Hdf5AttributeTest : public creaturelab::testing::ScratchDirTest {
+ protected:
+  Hdf5AttributeTest() : ScratchDirTest("creaturelab_io_attr") {}
 };
 
 }  // namespace

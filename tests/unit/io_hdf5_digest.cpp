@@ -1,4 +1,5 @@
 // contentDigest: equal data hash equal, whenever and however it was written.
+#include "scratch_dir_test.hpp"
 #include "io/hdf5.hpp"
 
 #include "core/text.hpp"
@@ -16,19 +17,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-class Hdf5DigestTest : public ::testing::Test {
-protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("creaturelab_io_digest_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-            "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path file(const std::string& name) const { return dir_ / name; }
-
-  fs::path dir_;
+class Hdf5DigestTest : public creaturelab::testing::ScratchDirTest {
+ protected:
+  Hdf5DigestTest() : ScratchDirTest("creaturelab_io_digest") {}
 };
 
 const std::vector<std::string> kProvenance = {"started", "finished", "git_commit"};

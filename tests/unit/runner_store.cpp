@@ -1,5 +1,6 @@
 // The run folder on disk: point files (written whole, config hash for resume), the index and its
 // typed /sweep columns, read back as a Table the way `check` and `compare` see it.
+#include "scratch_dir_test.hpp"
 #include "runner/store.hpp"
 
 #include <gtest/gtest.h>
@@ -26,16 +27,9 @@ const kinds::Registry& registry() {
   return r;
 }
 
-class RunnerStore : public ::testing::Test {
+class RunnerStore : public creaturelab::testing::ScratchDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("creaturelab_runner_store_" + std::to_string(getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  RunnerStore() : ScratchDirTest("creaturelab_runner_store") {}
   std::string dir() const { return dir_.string(); }
 
   // Loads `text`, writes every point with made-up metrics (metric i of point p = p + i/10), the
@@ -64,9 +58,6 @@ class RunnerStore : public ::testing::Test {
     return o;
   }
   static runner::Provenance provenance() { return {{"host", "test"}, {"git_commit", "abc"}}; }
-
- private:
-  fs::path dir_;
 };
 
 TEST_F(RunnerStore, PointFileNames) {
