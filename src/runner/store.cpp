@@ -109,17 +109,26 @@ void writeColumn(const io::Group& sweep, const Table& table, const std::string& 
   else io::writeVector(sweep, name, s);
 }
 
-kinds::Value readColumnValue(const io::Group& sweep, const std::string& name, const std::string& type, size_t row) {
-  if (type == "int64") return io::readVectorInt64(sweep, name).at(row);
-  if (type == "double") return io::readVectorDouble(sweep, name).at(row);
-  if (type == "bool") return io::readVectorInt8(sweep, name).at(row) != 0;
-  // A column mixing text and numbers (dt_s = ["auto", 0.01]) is stored as text; numbers come
-  // back as numbers so selections such as where = { dt_s = 0.01 } still match.
-  const std::string text = io::readVectorString(sweep, name).at(row);
-  char* end = nullptr;
-  const double x = std::strtod(text.c_str(), &end);
-  if (!text.empty() && end && *end == '\0') return x;
-  return text;
+// One /sweep column, read once, as parameter values.
+std::vector<kinds::Value> readColumn(const io::Group& sweep, const std::string& name, const std::string& type) {
+  std::vector<kinds::Value> out;
+  if (type == "int64") {
+    for (auto v : io::readVectorInt64(sweep, name)) out.emplace_back(v);
+  } else if (type == "double") {
+    for (auto v : io::readVectorDouble(sweep, name)) out.emplace_back(v);
+  } else if (type == "bool") {
+    for (auto v : io::readVectorInt8(sweep, name)) out.emplace_back(v != 0);
+  } else {
+    // A column mixing text and numbers (dt_s = ["auto", 0.01]) is stored as text; numbers come
+    // back as numbers so selections such as where = { dt_s = 0.01 } still match.
+    for (const auto& text : io::readVectorString(sweep, name)) {
+      char* end = nullptr;
+      const double x = std::strtod(text.c_str(), &end);
+      if (!text.empty() && end && *end == '\0') out.emplace_back(x);
+      else out.emplace_back(text);
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -300,9 +309,11 @@ StoredRun readIndex(const std::string& dir) {
   const auto message = io::readVectorString(sweep, "message");
   std::map<std::string, std::vector<double>> metric_values;
   for (const auto& m : out.table.metrics) metric_values[m] = io::readVectorDouble(sweep, m);
+  std::map<std::string, std::vector<kinds::Value>> column_values;
+  for (const auto& c : out.table.columns) column_values[c] = readColumn(sweep, c, types.at(c));
   for (size_t r = 0; r < index.size(); ++r) {
     Row row{int(index[r]), label[r], status[r], message[r], {}, {}};
-    for (const auto& c : out.table.columns) row.columns[c] = readColumnValue(sweep, c, types.at(c), r);
+    for (const auto& c : out.table.columns) row.columns[c] = column_values[c].at(r);
     for (const auto& m : out.table.metrics) row.metrics[m] = metric_values[m][r];
     out.table.rows.push_back(std::move(row));
   }
