@@ -1,0 +1,59 @@
+#pragma once
+// One-dimensional kernels phi of the immersed-boundary (IB) method. The discrete delta
+// function of the 2-D method is their tensor product (Peskin 2002, Acta Numerica 11, §6):
+//
+//     delta_h(x, y) = phi(x / dx) phi(y / dx) / dx^2,
+//
+// so a marker force is spread onto, and the fluid velocity is interpolated from, the
+// support x support faces nearest to the marker (see transfer.hpp).
+//
+// Two kernels:
+//  - bilinear: phi(r) = max(0, 1 − |r|). The "four closest grid cells with bilinear
+//    interpolation" of Rudolf & Mould 2009 (seeds/jellyfish-rudolf-mould-2009.txt, §3.2),
+//    chosen there over Peskin's kernel because a wider kernel makes a coarse (50² or 100²)
+//    grid look artificially viscous.
+//  - peskin4: Peskin's 4-point function (Peskin 2002, §6: the one built from his postulates
+//    without cosines),
+//        phi(r) = (3 − 2|r| + sqrt(1 + 4|r| − 4r²)) / 8    for 0 ≤ |r| ≤ 1,
+//                 (5 − 2|r| − sqrt(−7 + 12|r| − 4r²)) / 8   for 1 ≤ |r| ≤ 2,
+//                 0                                         for 2 ≤ |r|.
+//    For every real r it satisfies (ibid.) Σ_j phi(r − j) = 1, Σ_j (r − j) phi(r − j) = 0,
+//    Σ_{j even} phi(r − j) = Σ_{j odd} phi(r − j) = 1/2 (no checkerboard), and
+//    Σ_j phi(r − j)² = 3/8 (approximate translation invariance of the spread-interpolate pair).
+//    The bilinear kernel shares the first two (partition of unity, zero first moment), which
+//    is what makes interpolation of a linear field exact; it has neither of the last two.
+
+#include <optional>
+#include <string_view>
+
+namespace creaturelab::ib {
+
+enum class Kernel {
+  bilinear,  ///< 2-point hat, phi(r) = max(0, 1 − |r|) (Rudolf & Mould 2009, §3.2)
+  peskin4    ///< Peskin's 4-point function (Peskin 2002, §6)
+};
+
+/// "bilinear" or "peskin4" (the enumerator names).
+std::string_view to_string(Kernel kernel);
+/// Inverse of to_string (exact, case-sensitive match); std::nullopt for an unknown name.
+std::optional<Kernel> parse_kernel(std::string_view name);
+
+/// Width of the kernel's support in cells: phi(r) = 0 for |r| ≥ support / 2. Also the number of
+/// faces per axis a marker's stencil covers: 2 (bilinear) or 4 (peskin4).
+int kernel_support_cells(Kernel kernel);
+
+/// The largest kernel_support_cells() of any kernel (fixed-size stencil storage).
+inline constexpr int kMaxKernelSupportCells = 4;
+
+/// phi(r) with r = distance / dx in cells (dimensionless; symmetric in r). NaN for a NaN r.
+double kernel_weight_1d(Kernel kernel, double r_cells);
+
+/// The weights of a whole stencil. A point at xs (in face-index units) has the stencil
+/// faces f − s/2 + 1 + a, a = 0..s−1, with f = floor(xs), t = xs − f in [0, 1) and
+/// s = kernel_support_cells(kernel); weights[a] = phi(t + s/2 − 1 − a), unused entries 0.
+/// Equal to s calls of kernel_weight_1d to round-off, but with one square root (peskin4) and
+/// written so that the weights sum to 1 (and, for peskin4, the even and odd ones to 1/2) up
+/// to a few roundings.
+void kernel_weights_1d(Kernel kernel, double t, double (&weights)[kMaxKernelSupportCells]);
+
+}  // namespace creaturelab::ib

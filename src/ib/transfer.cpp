@@ -1,0 +1,171 @@
+#include "ib/transfer.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace creaturelab::ib {
+namespace {
+
+std::string show(double value) {
+  std::ostringstream out;
+  out.precision(6);
+  out << value;
+  return out.str();
+}
+
+std::string marker_name(std::size_t k, fluid::Vec2 p) {
+  return "immersed-boundary marker " + std::to_string(k) + " at (" + show(p.x) + ", " + show(p.y) + ") m";
+}
+
+// One axis of a stencil. xs is the position in face-index units (x / dx for u faces along x,
+// x / dx − 1/2 for v faces along x, and alike along y). The stencil starts at face
+// floor(xs) − s/2 + 1 (kernel_weights_1d); it must lie within the faces first_face..last_face.
+// Bounds are compared as doubles before any conversion to int, so that a huge position cannot
+// overflow the cast. False if the stencil does not fit.
+bool axis_stencil(Kernel kernel, int support, double xs, int first_face, int last_face, int& start,
+                  double (&weights)[kMaxKernelSupportCells]) {
+  const double f = std::floor(xs);
+  const double first = f - static_cast<double>(support / 2 - 1);
+  if (!(first >= first_face && first + static_cast<double>(support - 1) <= last_face)) return false;
+  start = static_cast<int>(first);
+  kernel_weights_1d(kernel, xs - f, weights);
+  return true;
+}
+
+// Σ_k (F_k / dx²) wx[a] wy[b] into face (i0 + a, j0 + b), for one component (S = support).
+template <int S, double fluid::Vec2::*component>
+void spread_component(const std::vector<FaceStencil>& stencils, std::span<const fluid::Vec2> forces,
+                      double inv_area, fluid::Array2& field) {
+  for (std::size_t k = 0; k < stencils.size(); ++k) {
+    const FaceStencil& s = stencils[k];
+    const double density = forces[k].*component * inv_area;
+    for (int b = 0; b < S; ++b) {
+      double* row = field.row(s.j0 + b) + s.i0;
+      const double row_density = density * s.wy[b];
+      for (int a = 0; a < S; ++a) row[a] += row_density * s.wx[a];
+    }
+  }
+}
+
+// U_k = Σ_b wy[b] Σ_a wx[a] u(i0 + a, j0 + b), for one component (S = support).
+template <int S, double fluid::Vec2::*component>
+void interpolate_component(const std::vector<FaceStencil>& stencils, const fluid::Array2& field,
+                           std::span<fluid::Vec2> velocities) {
+  for (std::size_t k = 0; k < stencils.size(); ++k) {
+    const FaceStencil& s = stencils[k];
+    double sum = 0.0;
+    for (int b = 0; b < S; ++b) {
+      const double* row = field.row(s.j0 + b) + s.i0;
+      double row_sum = 0.0;
+      for (int a = 0; a < S; ++a) row_sum += s.wx[a] * row[a];
+      sum += s.wy[b] * row_sum;
+    }
+    velocities[k].*component = sum;
+  }
+}
+
+void require_shape(const fluid::Array2& a, int nx, int ny, const char* what) {
+  if (a.nx() != nx || a.ny() != ny) {
+    throw std::invalid_argument(std::string("immersed-boundary transfer: ") + what + " is " + std::to_string(a.nx()) +
+                                " x " + std::to_string(a.ny()) + " faces, but the located grid has " +
+                                std::to_string(nx) + " x " + std::to_string(ny));
+  }
+}
+
+void require_count(std::size_t got, int markers, const char* what) {
+  if (got != static_cast<std::size_t>(markers)) {
+    throw std::invalid_argument(std::string("immersed-boundary transfer: ") + std::to_string(got) + " " + what +
+                                " for " + std::to_string(markers) + " located markers");
+  }
+}
+
+}  // namespace
+
+void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<const fluid::Vec2> positions_m) {
+  u_stencils_.clear();  // keeps the capacity: no allocation once the largest marker count was seen
+  v_stencils_.clear();
+  if (grid.nx < 1 || grid.ny < 1 || !(std::isfinite(grid.dx_m) && grid.dx_m > 0.0)) {
+    throw std::invalid_argument("immersed-boundary transfer: the fluid grid must have cells of positive size (got " +
+                                std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " cells of " +
+                                show(grid.dx_m) + " m)");
+  }
+  kernel_ = kernel;
+  support_ = kernel_support_cells(kernel);
+  nx_ = grid.nx;
+  ny_ = grid.ny;
+  dx_m_ = grid.dx_m;
+  inv_cell_area_per_m2_ = 1.0 / (grid.dx_m * grid.dx_m);
+
+  u_stencils_.resize(positions_m.size());
+  v_stencils_.resize(positions_m.size());
+  for (std::size_t k = 0; k < positions_m.size(); ++k) {
+    const fluid::Vec2 p = positions_m[k];
+    if (!(std::isfinite(p.x) && std::isfinite(p.y))) {
+      u_stencils_.clear();
+      v_stencils_.clear();
+      throw std::invalid_argument(marker_name(k, p) + " is not finite");
+    }
+    const double xs = p.x / grid.dx_m;  // position in cell units
+    const double ys = p.y / grid.dx_m;
+    FaceStencil& u = u_stencils_[k];
+    FaceStencil& v = v_stencils_[k];
+    // u faces at (i, j + 1/2) cells: interior faces i = 1..nx−1, all rows j = 0..ny−1.
+    // v faces at (i + 1/2, j) cells: all columns i = 0..nx−1, interior faces j = 1..ny−1.
+    const bool fits = axis_stencil(kernel, support_, xs, 1, nx_ - 1, u.i0, u.wx) &&
+                      axis_stencil(kernel, support_, ys - 0.5, 0, ny_ - 1, u.j0, u.wy) &&
+                      axis_stencil(kernel, support_, xs - 0.5, 0, nx_ - 1, v.i0, v.wx) &&
+                      axis_stencil(kernel, support_, ys, 1, ny_ - 1, v.j0, v.wy);
+    if (!fits) {
+      u_stencils_.clear();
+      v_stencils_.clear();
+      const int reach = support_ / 2;
+      const double margin_m = reach * grid.dx_m;
+      throw std::invalid_argument(
+          marker_name(k, p) + " is within " + std::to_string(reach) + (reach == 1 ? " cell" : " cells") +
+          " of the domain wall: the " + std::string(to_string(kernel)) + " kernel reaches " + std::to_string(reach) +
+          " cells around a marker, so markers must stay in [" + show(margin_m) + ", " +
+          show(grid.width_m() - margin_m) + ") x [" + show(margin_m) + ", " + show(grid.height_m() - margin_m) +
+          ") m (cell size " + show(grid.dx_m) + " m)");
+    }
+  }
+}
+
+void Transfer::spread(std::span<const fluid::Vec2> forces_n_per_m,
+                      fluid::FaceVectorField2& force_density_n_per_m3) const {
+  require_count(forces_n_per_m.size(), marker_count(), "forces");
+  if (marker_count() == 0) return;
+  require_shape(force_density_n_per_m3.x, nx_ + 1, ny_, "the x force density (u faces)");
+  require_shape(force_density_n_per_m3.y, nx_, ny_ + 1, "the y force density (v faces)");
+  const double inv_area = inv_cell_area_per_m2_;
+  if (support_ == 2) {
+    spread_component<2, &fluid::Vec2::x>(u_stencils_, forces_n_per_m, inv_area, force_density_n_per_m3.x);
+    spread_component<2, &fluid::Vec2::y>(v_stencils_, forces_n_per_m, inv_area, force_density_n_per_m3.y);
+  } else {
+    spread_component<4, &fluid::Vec2::x>(u_stencils_, forces_n_per_m, inv_area, force_density_n_per_m3.x);
+    spread_component<4, &fluid::Vec2::y>(v_stencils_, forces_n_per_m, inv_area, force_density_n_per_m3.y);
+  }
+}
+
+void Transfer::interpolate(const fluid::MacGrid2& grid, std::span<fluid::Vec2> velocities_m_per_s) const {
+  require_count(velocities_m_per_s.size(), marker_count(), "velocities");
+  if (marker_count() == 0) return;
+  if (grid.nx != nx_ || grid.ny != ny_ || grid.dx_m != dx_m_) {
+    throw std::invalid_argument("immersed-boundary transfer: interpolating on a grid of " + std::to_string(grid.nx) +
+                                " x " + std::to_string(grid.ny) + " cells of " + show(grid.dx_m) +
+                                " m, but the markers were located on " + std::to_string(nx_) + " x " +
+                                std::to_string(ny_) + " cells of " + show(dx_m_) + " m");
+  }
+  require_shape(grid.u_m_per_s, nx_ + 1, ny_, "the u velocity");
+  require_shape(grid.v_m_per_s, nx_, ny_ + 1, "the v velocity");
+  if (support_ == 2) {
+    interpolate_component<2, &fluid::Vec2::x>(u_stencils_, grid.u_m_per_s, velocities_m_per_s);
+    interpolate_component<2, &fluid::Vec2::y>(v_stencils_, grid.v_m_per_s, velocities_m_per_s);
+  } else {
+    interpolate_component<4, &fluid::Vec2::x>(u_stencils_, grid.u_m_per_s, velocities_m_per_s);
+    interpolate_component<4, &fluid::Vec2::y>(v_stencils_, grid.v_m_per_s, velocities_m_per_s);
+  }
+}
+
+}  // namespace creaturelab::ib

@@ -1,0 +1,152 @@
+// The 1-D immersed-boundary kernels (ib/kernel.hpp) against their formulas and the discrete
+// conditions Peskin 2002 (Acta Numerica 11, §6) builds the 4-point function from, at many
+// seeded random offsets.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "ib/kernel.hpp"
+
+namespace creaturelab::ib {
+namespace {
+
+constexpr int kSamples = 20000;
+
+// Uniform in [0, 1) from the top 53 bits: the same numbers with every standard library.
+double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+// The formula exactly as printed in Peskin 2002 §6, independent of the library's rewriting.
+double peskin4_as_printed(double r) {
+  const double a = std::abs(r);
+  if (a <= 1.0) return (3.0 - 2.0 * a + std::sqrt(1.0 + 4.0 * a - 4.0 * r * r)) / 8.0;
+  if (a <= 2.0) return (5.0 - 2.0 * a - std::sqrt(-7.0 + 12.0 * a - 4.0 * r * r)) / 8.0;
+  return 0.0;
+}
+
+class KernelTest : public ::testing::TestWithParam<Kernel> {};
+
+TEST(KernelNames, RoundTripAndRejectUnknownNames) {
+  EXPECT_EQ(to_string(Kernel::bilinear), "bilinear");
+  EXPECT_EQ(to_string(Kernel::peskin4), "peskin4");
+  for (Kernel k : {Kernel::bilinear, Kernel::peskin4}) EXPECT_EQ(parse_kernel(to_string(k)), k);
+  EXPECT_FALSE(parse_kernel("Bilinear"));
+  EXPECT_FALSE(parse_kernel("peskin"));
+  EXPECT_FALSE(parse_kernel(""));
+  EXPECT_EQ(kernel_support_cells(Kernel::bilinear), 2);
+  EXPECT_EQ(kernel_support_cells(Kernel::peskin4), 4);
+}
+
+TEST(KernelFormula, BilinearIsTheHatFunction) {
+  std::mt19937_64 rng(11);
+  for (int n = 0; n < kSamples; ++n) {
+    const double r = -3.0 + 6.0 * uniform01(rng);
+    EXPECT_EQ(kernel_weight_1d(Kernel::bilinear, r), std::max(0.0, 1.0 - std::abs(r))) << "r = " << r;
+  }
+  EXPECT_EQ(kernel_weight_1d(Kernel::bilinear, 0.0), 1.0);
+  EXPECT_EQ(kernel_weight_1d(Kernel::bilinear, 0.25), 0.75);
+  EXPECT_EQ(kernel_weight_1d(Kernel::bilinear, -1.0), 0.0);
+}
+
+TEST(KernelFormula, Peskin4MatchesThePrintedFormula) {
+  std::mt19937_64 rng(12);
+  for (int n = 0; n < kSamples; ++n) {
+    const double r = -3.0 + 6.0 * uniform01(rng);
+    EXPECT_NEAR(kernel_weight_1d(Kernel::peskin4, r), peskin4_as_printed(r), 1e-15) << "r = " << r;
+  }
+  // Values from the formula by hand: phi(0) = 1/2, phi(1/2) = (2 + sqrt 2)/8, phi(1) = 1/4,
+  // phi(3/2) = (2 − sqrt 2)/8, phi(2) = 0.
+  EXPECT_DOUBLE_EQ(kernel_weight_1d(Kernel::peskin4, 0.0), 0.5);
+  EXPECT_DOUBLE_EQ(kernel_weight_1d(Kernel::peskin4, 0.5), (2.0 + std::sqrt(2.0)) / 8.0);
+  EXPECT_DOUBLE_EQ(kernel_weight_1d(Kernel::peskin4, -1.0), 0.25);
+  EXPECT_DOUBLE_EQ(kernel_weight_1d(Kernel::peskin4, 1.5), (2.0 - std::sqrt(2.0)) / 8.0);
+  EXPECT_EQ(kernel_weight_1d(Kernel::peskin4, 2.0), 0.0);
+  // Continuous where the branches meet.
+  EXPECT_NEAR(kernel_weight_1d(Kernel::peskin4, std::nextafter(1.0, 0.0)),
+              kernel_weight_1d(Kernel::peskin4, std::nextafter(1.0, 2.0)), 1e-15);
+}
+
+TEST_P(KernelTest, IsSymmetricNonNegativeAndZeroOutsideItsSupport) {
+  const Kernel kernel = GetParam();
+  const double half_width = 0.5 * kernel_support_cells(kernel);
+  std::mt19937_64 rng(13);
+  for (int n = 0; n < kSamples; ++n) {
+    const double r = -4.0 + 8.0 * uniform01(rng);
+    const double phi = kernel_weight_1d(kernel, r);
+    EXPECT_EQ(phi, kernel_weight_1d(kernel, -r));
+    EXPECT_GE(phi, 0.0);
+    if (std::abs(r) >= half_width) {
+      EXPECT_EQ(phi, 0.0) << "r = " << r;
+    }
+  }
+  EXPECT_TRUE(std::isnan(kernel_weight_1d(kernel, std::numeric_limits<double>::quiet_NaN())));
+  EXPECT_EQ(kernel_weight_1d(kernel, std::numeric_limits<double>::infinity()), 0.0);
+}
+
+// Σ_j phi(r − j) = 1 and Σ_j (r − j) phi(r − j) = 0 for every r: the partition of unity and
+// the zero first moment that make spreading conserve force and interpolation exact on linear
+// fields. Peskin4 also: Σ_even = Σ_odd = 1/2 and Σ_j phi(r − j)² = 3/8.
+TEST_P(KernelTest, OneDimensionalMomentConditions) {
+  const Kernel kernel = GetParam();
+  std::mt19937_64 rng(14);
+  for (int n = 0; n < kSamples; ++n) {
+    const double r = -5.0 + 10.0 * uniform01(rng);
+    double sum = 0.0, first = 0.0, squares = 0.0, even = 0.0, odd = 0.0;
+    for (int j = -8; j <= 8; ++j) {
+      const double phi = kernel_weight_1d(kernel, r - j);
+      sum += phi;
+      first += (r - j) * phi;
+      squares += phi * phi;
+      (j % 2 == 0 ? even : odd) += phi;
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-15) << "r = " << r;
+    EXPECT_NEAR(first, 0.0, 1e-14) << "r = " << r;
+    if (kernel == Kernel::peskin4) {
+      EXPECT_NEAR(squares, 3.0 / 8.0, 1e-15) << "r = " << r;
+      EXPECT_NEAR(even, 0.5, 1e-15) << "r = " << r;
+      EXPECT_NEAR(odd, 0.5, 1e-15) << "r = " << r;
+    }
+  }
+}
+
+// The whole-stencil weights (used by the transfer) equal the kernel at each face and keep the
+// conditions above.
+TEST_P(KernelTest, StencilWeightsEqualTheKernelAndSumToOne) {
+  const Kernel kernel = GetParam();
+  const int s = kernel_support_cells(kernel);
+  std::mt19937_64 rng(15);
+  for (int n = 0; n < kSamples; ++n) {
+    const double t = n == 0 ? 0.0 : uniform01(rng);
+    double w[kMaxKernelSupportCells] = {-1.0, -1.0, -1.0, -1.0};
+    kernel_weights_1d(kernel, t, w);
+    double sum = 0.0, first = 0.0, even = 0.0, odd = 0.0;
+    for (int a = 0; a < kMaxKernelSupportCells; ++a) {
+      const double r = t + s / 2 - 1 - a;  // distance of the point from face a of its stencil
+      if (a < s) {
+        EXPECT_NEAR(w[a], kernel_weight_1d(kernel, r), 1e-15) << "t = " << t << ", a = " << a;
+        EXPECT_GE(w[a], 0.0);
+      } else {
+        EXPECT_EQ(w[a], 0.0);
+      }
+      sum += w[a];
+      first += r * w[a];
+      (a % 2 == 0 ? even : odd) += w[a];
+    }
+    EXPECT_NEAR(sum, 1.0, 5e-16) << "t = " << t;  // a few roundings
+    EXPECT_NEAR(first, 0.0, 1e-15) << "t = " << t;
+    if (kernel == Kernel::peskin4) {
+      EXPECT_NEAR(even, 0.5, 2e-16) << "t = " << t;
+      EXPECT_NEAR(odd, 0.5, 2e-16) << "t = " << t;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Kernels, KernelTest, ::testing::Values(Kernel::bilinear, Kernel::peskin4),
+                         [](const ::testing::TestParamInfo<Kernel>& tested) { return std::string(to_string(tested.param)); });
+
+}  // namespace
+}  // namespace creaturelab::ib

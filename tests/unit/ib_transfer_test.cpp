@@ -1,0 +1,388 @@
+// Properties of the immersed-boundary spreading and interpolation operators (ib/transfer.hpp)
+// on u and v faces, for both kernels, at many seeded random marker positions: weights that sum
+// to one and equal the kernel at each face, force conservation, exact interpolation of linear
+// fields, adjointness, walls left untouched, and the errors a user sees for bad markers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fluid/mac_grid2.hpp"
+#include "ib/kernel.hpp"
+#include "ib/transfer.hpp"
+
+namespace creaturelab::ib {
+namespace {
+
+using fluid::FaceVectorField2;
+using fluid::MacGrid2;
+using fluid::Vec2;
+
+// A non-square grid (x and y must not be mixed up) of 1 cm cells.
+constexpr int kNx = 24;
+constexpr int kNy = 19;
+constexpr double kDx = 0.01;
+constexpr int kMarkers = 300;
+
+double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+double uniform(std::mt19937_64& rng, double lo, double hi) { return lo + (hi - lo) * uniform01(rng); }
+
+// Neumaier's compensated sum: a reference total that the check's own round-off does not blur.
+struct CompensatedSum {
+  double sum = 0.0, correction = 0.0;
+  void add(double v) {
+    const double t = sum + v;
+    correction += std::abs(sum) >= std::abs(v) ? (sum - t) + v : (v - t) + sum;
+    sum = t;
+  }
+  double value() const { return sum + correction; }
+};
+
+// Random markers where the kernel's stencil fits (see transfer.hpp: [s/2 dx, (n − s/2) dx) per
+// axis), plus the corner of that region and markers exactly on faces and cell centres, where a
+// stencil weight is exactly 0 or the fraction t is exactly 0.
+std::vector<Vec2> markers(Kernel kernel, std::uint64_t seed, int count = kMarkers) {
+  const double margin = 0.5 * kernel_support_cells(kernel) * kDx;
+  const double inset = 1e-9 * kDx;
+  std::mt19937_64 rng(seed);
+  std::vector<Vec2> p;
+  p.push_back({margin, margin});
+  p.push_back({margin + 0.5 * kDx, margin + 0.5 * kDx});
+  p.push_back({5.0 * kDx, 7.5 * kDx});  // on a u face
+  p.push_back({8.5 * kDx, 6.0 * kDx});  // on a v face
+  p.push_back({kNx * kDx - margin - inset, kNy * kDx - margin - inset});
+  while (static_cast<int>(p.size()) < count) {
+    p.push_back({uniform(rng, margin, kNx * kDx - margin - inset), uniform(rng, margin, kNy * kDx - margin - inset)});
+  }
+  return p;
+}
+
+std::vector<Vec2> random_vectors(std::uint64_t seed, int count, double scale) {
+  std::mt19937_64 rng(seed);
+  std::vector<Vec2> f(static_cast<std::size_t>(count));
+  for (Vec2& v : f) v = {uniform(rng, -scale, scale), uniform(rng, -scale, scale)};
+  return f;
+}
+
+void fill_random(fluid::Array2& a, std::mt19937_64& rng, double scale) {
+  for (int j = 0; j < a.ny(); ++j)
+    for (int i = 0; i < a.nx(); ++i) a(i, j) = uniform(rng, -scale, scale);
+}
+
+class TransferTest : public ::testing::TestWithParam<Kernel> {
+ protected:
+  Kernel kernel() const { return GetParam(); }
+  int support() const { return kernel_support_cells(GetParam()); }
+  MacGrid2 grid_{kNx, kNy, kDx};
+};
+
+// Each face weight is phi((X − x_face)/dx) phi((Y − y_face)/dx) at the face's MAC position (to
+// the round-off of a position of ~20 cells, ~1e-14), the 2-D weights sum to one, and the stencil
+// holds every face with a non-zero weight (the faces one step beyond it have phi = 0 up to that
+// round-off). Peskin4 also: Σ weights² = (3/8)², the same everywhere.
+TEST_P(TransferTest, StencilWeightsAreTheKernelAtEachFaceAndSumToOne) {
+  const std::vector<Vec2> p = markers(kernel(), 21);
+  Transfer transfer;
+  transfer.locate(grid_, kernel(), p);
+  ASSERT_EQ(transfer.marker_count(), kMarkers);
+  EXPECT_EQ(transfer.kernel(), kernel());
+  const int s = support();
+  for (int k = 0; k < kMarkers; ++k) {
+    for (bool on_u : {true, false}) {
+      const FaceStencil& st = on_u ? transfer.u_stencil(k) : transfer.v_stencil(k);
+      double sum = 0.0, squares = 0.0;
+      for (int b = -1; b <= s; ++b) {
+        for (int a = -1; a <= s; ++a) {
+          const int i = st.i0 + a, j = st.j0 + b;
+          const Vec2 face = on_u ? grid_.u_position_m(i, j) : grid_.v_position_m(i, j);
+          const double expected =
+              kernel_weight_1d(kernel(), (p[k].x - face.x) / kDx) * kernel_weight_1d(kernel(), (p[k].y - face.y) / kDx);
+          if (a < 0 || b < 0 || a >= s || b >= s) {
+            EXPECT_NEAR(expected, 0.0, 2e-14) << "marker " << k << (on_u ? " u" : " v") << " face " << i << "," << j;
+            continue;
+          }
+          const double w = st.wx[a] * st.wy[b];
+          EXPECT_NEAR(w, expected, 2e-14) << "marker " << k << (on_u ? " u" : " v") << " face " << i << "," << j;
+          sum += w;
+          squares += w * w;
+        }
+      }
+      EXPECT_NEAR(sum, 1.0, 1e-15) << "marker " << k;
+      if (kernel() == Kernel::peskin4) {
+        EXPECT_NEAR(squares, 9.0 / 64.0, 1e-15) << "marker " << k;
+      }
+    }
+  }
+}
+
+// A marker on a u face: its x force lands on that face with weight phi(0)² (1 for bilinear),
+// its y force on the v faces around it at (±1/2, ±1/2) cells, each phi(1/2)².
+TEST_P(TransferTest, MarkerOnAFaceSpreadsTheAnalyticDensity) {
+  const double dx = 0x1.0p-7;  // a power of two: the face positions and every weight are exact
+  const MacGrid2 grid(kNx, kNy, dx);
+  const std::vector<Vec2> p{grid.u_position_m(6, 9)};
+  const std::vector<Vec2> f{{2.0, -3.0}};
+  Transfer transfer;
+  transfer.locate(grid, kernel(), p);
+  FaceVectorField2 density(kNx, kNy);
+  transfer.spread(f, density);
+  const double area = dx * dx;
+  const double phi0 = kernel_weight_1d(kernel(), 0.0), phi_half = kernel_weight_1d(kernel(), 0.5);
+  EXPECT_DOUBLE_EQ(density.x(6, 9), 2.0 * phi0 * phi0 / area);
+  for (int i : {5, 6})
+    for (int j : {9, 10}) EXPECT_DOUBLE_EQ(density.y(i, j), -3.0 * phi_half * phi_half / area);
+  if (kernel() == Kernel::bilinear) {  // the whole force on one u face, a quarter on each of four v faces
+    EXPECT_EQ(density.x(6, 9), 2.0 / area);
+    EXPECT_EQ(density.x(5, 9), 0.0);
+    EXPECT_EQ(density.x(6, 10), 0.0);
+    EXPECT_EQ(density.y(5, 9), -0.75 / area);
+    EXPECT_EQ(density.y(4, 9), 0.0);
+  }
+}
+
+// dx² Σ_faces f = Σ_k F_k per component, to 1e-13 of Σ_k |F_k|.
+TEST_P(TransferTest, SpreadingConservesTheTotalForce) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const std::vector<Vec2> p = markers(kernel(), 100 + seed);
+    const std::vector<Vec2> f = random_vectors(200 + seed, kMarkers, 3.0);
+    Transfer transfer;
+    transfer.locate(grid_, kernel(), p);
+    FaceVectorField2 density(kNx, kNy);
+    transfer.spread(f, density);
+    CompensatedSum fx, fy, gx, gy;
+    double scale_x = 0.0, scale_y = 0.0;
+    for (const Vec2& v : f) {
+      fx.add(v.x), fy.add(v.y);
+      scale_x += std::abs(v.x), scale_y += std::abs(v.y);
+    }
+    for (std::size_t n = 0; n < density.x.size(); ++n) gx.add(density.x.data()[n] * kDx * kDx);
+    for (std::size_t n = 0; n < density.y.size(); ++n) gy.add(density.y.data()[n] * kDx * kDx);
+    EXPECT_NEAR(gx.value(), fx.value(), 1e-13 * scale_x) << "seed " << seed;
+    EXPECT_NEAR(gy.value(), fy.value(), 1e-13 * scale_y) << "seed " << seed;
+  }
+}
+
+// Faces on the walls (u at i = 0, nx; v at j = 0, ny) never receive weight, even from markers
+// as close to the walls as allowed; every stencil stays on interior faces.
+TEST_P(TransferTest, WallFacesReceiveNothing) {
+  const double margin = 0.5 * support() * kDx, inset = 1e-9 * kDx;
+  const double w = kNx * kDx, h = kNy * kDx;
+  std::vector<Vec2> p{{margin, margin},         {w - margin - inset, margin}, {margin, h - margin - inset},
+                      {w - margin - inset, h - margin - inset}, {margin, 0.5 * h},   {0.5 * w, margin}};
+  for (const Vec2& q : markers(kernel(), 31, 100)) p.push_back(q);
+  const std::vector<Vec2> f = random_vectors(32, static_cast<int>(p.size()), 1.0);
+  Transfer transfer;
+  transfer.locate(grid_, kernel(), p);
+  FaceVectorField2 density(kNx, kNy);
+  transfer.spread(f, density);
+  for (int j = 0; j < kNy; ++j) {
+    EXPECT_EQ(density.x(0, j), 0.0);
+    EXPECT_EQ(density.x(kNx, j), 0.0);
+  }
+  for (int i = 0; i < kNx; ++i) {
+    EXPECT_EQ(density.y(i, 0), 0.0);
+    EXPECT_EQ(density.y(i, kNy), 0.0);
+  }
+  EXPECT_NE(density.x(support() / 2, support() / 2), 0.0);  // the corner marker did spread
+  for (int k = 0; k < transfer.marker_count(); ++k) {
+    const FaceStencil& u = transfer.u_stencil(k);
+    const FaceStencil& v = transfer.v_stencil(k);
+    EXPECT_GE(u.i0, 1);
+    EXPECT_LE(u.i0 + support() - 1, kNx - 1);
+    EXPECT_GE(u.j0, 0);
+    EXPECT_LE(u.j0 + support() - 1, kNy - 1);
+    EXPECT_GE(v.i0, 0);
+    EXPECT_LE(v.i0 + support() - 1, kNx - 1);
+    EXPECT_GE(v.j0, 1);
+    EXPECT_LE(v.j0 + support() - 1, kNy - 1);
+  }
+}
+
+// spread() adds to what the field holds.
+TEST_P(TransferTest, SpreadAddsToTheField) {
+  const std::vector<Vec2> p = markers(kernel(), 41);
+  const std::vector<Vec2> f = random_vectors(42, kMarkers, 1.0);
+  Transfer transfer;
+  transfer.locate(grid_, kernel(), p);
+  FaceVectorField2 alone(kNx, kNy), on_top(kNx, kNy);
+  on_top.fill(5.0);
+  transfer.spread(f, alone);
+  transfer.spread(f, on_top);
+  for (std::size_t n = 0; n < alone.x.size(); ++n) EXPECT_NEAR(on_top.x.data()[n] - 5.0, alone.x.data()[n], 1e-9);
+  for (std::size_t n = 0; n < alone.y.size(); ++n) EXPECT_NEAR(on_top.y.data()[n] - 5.0, alone.y.data()[n], 1e-9);
+}
+
+// u = a + b x + c y and v = d + e x + f y on the faces interpolate to the same formula at each
+// marker: both kernels have a zero first moment.
+TEST_P(TransferTest, InterpolationIsExactForLinearFields) {
+  std::mt19937_64 rng(51);
+  for (int trial = 0; trial < 5; ++trial) {
+    const double a = uniform(rng, -1, 1), b = uniform(rng, -5, 5), c = uniform(rng, -5, 5);
+    const double d = uniform(rng, -1, 1), e = uniform(rng, -5, 5), g = uniform(rng, -5, 5);
+    for (int j = 0; j < kNy; ++j)
+      for (int i = 0; i <= kNx; ++i) {
+        const Vec2 x = grid_.u_position_m(i, j);
+        grid_.u_m_per_s(i, j) = a + b * x.x + c * x.y;
+      }
+    for (int j = 0; j <= kNy; ++j)
+      for (int i = 0; i < kNx; ++i) {
+        const Vec2 x = grid_.v_position_m(i, j);
+        grid_.v_m_per_s(i, j) = d + e * x.x + g * x.y;
+      }
+    const std::vector<Vec2> p = markers(kernel(), 52 + trial);
+    Transfer transfer;
+    transfer.locate(grid_, kernel(), p);
+    std::vector<Vec2> velocity(p.size(), Vec2{std::nan(""), std::nan("")});
+    transfer.interpolate(grid_, velocity);
+    const double scale = std::abs(a) + std::abs(b) * kNx * kDx + std::abs(c) * kNy * kDx +  //
+                         std::abs(d) + std::abs(e) * kNx * kDx + std::abs(g) * kNy * kDx;
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      EXPECT_NEAR(velocity[k].x, a + b * p[k].x + c * p[k].y, 1e-13 * scale) << "marker " << k;
+      EXPECT_NEAR(velocity[k].y, d + e * p[k].x + g * p[k].y, 1e-13 * scale) << "marker " << k;
+    }
+  }
+}
+
+// dx² <S F, u> = Σ_k F_k · (I u)_k for random forces and random (not smooth) fields.
+TEST_P(TransferTest, SpreadIsTheAdjointOfInterpolation) {
+  std::mt19937_64 rng(61);
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const std::vector<Vec2> p = markers(kernel(), 62 + seed);
+    const std::vector<Vec2> f = random_vectors(70 + seed, kMarkers, 2.0);
+    fill_random(grid_.u_m_per_s, rng, 0.3);
+    fill_random(grid_.v_m_per_s, rng, 0.3);
+    Transfer transfer;
+    transfer.locate(grid_, kernel(), p);
+    FaceVectorField2 density(kNx, kNy);
+    transfer.spread(f, density);
+    std::vector<Vec2> velocity(p.size());
+    transfer.interpolate(grid_, velocity);
+
+    CompensatedSum grid_side, marker_side;
+    double scale = 0.0;
+    for (std::size_t n = 0; n < density.x.size(); ++n)
+      grid_side.add(kDx * kDx * density.x.data()[n] * grid_.u_m_per_s.data()[n]);
+    for (std::size_t n = 0; n < density.y.size(); ++n)
+      grid_side.add(kDx * kDx * density.y.data()[n] * grid_.v_m_per_s.data()[n]);
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      marker_side.add(f[k].x * velocity[k].x);
+      marker_side.add(f[k].y * velocity[k].y);
+      scale += (std::abs(f[k].x) + std::abs(f[k].y)) * 0.3;
+    }
+    EXPECT_NEAR(grid_side.value(), marker_side.value(), 1e-14 * scale) << "seed " << seed;
+  }
+}
+
+// The same markers give bitwise the same stencils, densities and velocities, whether the
+// Transfer is fresh or reused after locating a different number of markers.
+TEST_P(TransferTest, ReusedTransferIsBitwiseDeterministic) {
+  const std::vector<Vec2> p = markers(kernel(), 81);
+  const std::vector<Vec2> fewer = markers(kernel(), 82, 40);
+  const std::vector<Vec2> f = random_vectors(83, kMarkers, 1.0);
+  std::mt19937_64 rng(84);
+  fill_random(grid_.u_m_per_s, rng, 1.0);
+  fill_random(grid_.v_m_per_s, rng, 1.0);
+
+  Transfer fresh, reused;
+  fresh.locate(grid_, kernel(), p);
+  reused.locate(grid_, kernel(), p);
+  reused.locate(grid_, kernel(), fewer);
+  EXPECT_EQ(reused.marker_count(), 40);
+  reused.locate(grid_, kernel(), p);
+
+  FaceVectorField2 d1(kNx, kNy), d2(kNx, kNy);
+  fresh.spread(f, d1);
+  reused.spread(f, d2);
+  EXPECT_TRUE(d1.x == d2.x && d1.y == d2.y);
+  std::vector<Vec2> v1(p.size()), v2(p.size());
+  fresh.interpolate(grid_, v1);
+  reused.interpolate(grid_, v2);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    EXPECT_EQ(v1[k].x, v2[k].x);
+    EXPECT_EQ(v1[k].y, v2[k].y);
+  }
+}
+
+// A marker closer to any wall than the kernel reaches is refused, naming its index and place.
+TEST_P(TransferTest, MarkerTooCloseToAWallThrowsNamingIt) {
+  // A hair closer than support/2 cells to each wall. (Exactly support/2 cells is on the rounding
+  // edge of floor(x / dx) and not tested.)
+  const double too_close = 0.5 * support() * kDx * (1.0 - 1e-9);
+  const double w = kNx * kDx, h = kNy * kDx;
+  const std::string reach = support() == 2 ? "within 1 cell of the domain wall" : "within 2 cells of the domain wall";
+  for (Vec2 bad : {Vec2{too_close, 0.5 * h}, Vec2{w - too_close, 0.5 * h}, Vec2{0.5 * w, too_close},
+                   Vec2{0.5 * w, h - too_close}, Vec2{-0.5, 0.5 * h}, Vec2{0.5 * w, 7.0}, Vec2{1e300, -1e300}}) {
+    std::vector<Vec2> p = markers(kernel(), 91, 20);
+    p[12] = bad;
+    Transfer transfer;
+    try {
+      transfer.locate(grid_, kernel(), p);
+      ADD_FAILURE() << "no error for a marker at (" << bad.x << ", " << bad.y << ")";
+    } catch (const std::invalid_argument& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("immersed-boundary marker 12 at ("), std::string::npos) << message;
+      EXPECT_NE(message.find(reach), std::string::npos) << message;
+      EXPECT_NE(message.find(std::string(to_string(kernel()))), std::string::npos) << message;
+    }
+    EXPECT_EQ(transfer.marker_count(), 0);
+  }
+  // The example of the brief: a marker 0.31 cells from the left wall of a 0.4 m box of 100 cells.
+  MacGrid2 box(100, 100, 0.004);
+  const std::vector<Vec2> p{{0.2, 0.2}, {0.0031, 0.2}};
+  Transfer transfer;
+  try {
+    transfer.locate(box, kernel(), p);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("immersed-boundary marker 1 at (0.0031, 0.2) m is " + reach, 0), 0u)
+        << error.what();
+  }
+}
+
+TEST_P(TransferTest, NonFinitePositionThrowsNamingTheMarker) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (Vec2 bad : {Vec2{nan, 0.05}, Vec2{0.05, nan}, Vec2{inf, 0.05}, Vec2{0.05, -inf}}) {
+    std::vector<Vec2> p = markers(kernel(), 95, 10);
+    p[3] = bad;
+    Transfer transfer;
+    try {
+      transfer.locate(grid_, kernel(), p);
+      ADD_FAILURE() << "no error";
+    } catch (const std::invalid_argument& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("immersed-boundary marker 3 at ("), std::string::npos) << message;
+      EXPECT_NE(message.find("is not finite"), std::string::npos) << message;
+    }
+  }
+}
+
+TEST_P(TransferTest, MismatchedSizesAndGridsThrow) {
+  const std::vector<Vec2> p = markers(kernel(), 97, 10);
+  Transfer transfer;
+  transfer.locate(grid_, kernel(), p);
+  FaceVectorField2 density(kNx, kNy);
+  std::vector<Vec2> too_few(9), velocity(10);
+  EXPECT_THROW(transfer.spread(too_few, density), std::invalid_argument);
+  EXPECT_THROW(transfer.interpolate(grid_, too_few), std::invalid_argument);
+  FaceVectorField2 wrong_shape(kNx, kNy + 1);
+  EXPECT_THROW(transfer.spread(std::vector<Vec2>(10), wrong_shape), std::invalid_argument);
+  const MacGrid2 other(kNx + 1, kNy, kDx);
+  EXPECT_THROW(transfer.interpolate(other, velocity), std::invalid_argument);
+  EXPECT_THROW(transfer.locate(MacGrid2(kNx, kNy, 0.0), kernel(), p), std::invalid_argument);
+  EXPECT_EQ(transfer.marker_count(), 0);
+  // No markers: nothing to do, whatever the field.
+  transfer.spread({}, wrong_shape);
+  transfer.interpolate(other, {});
+}
+
+INSTANTIATE_TEST_SUITE_P(Kernels, TransferTest, ::testing::Values(Kernel::bilinear, Kernel::peskin4),
+                         [](const ::testing::TestParamInfo<Kernel>& tested) { return std::string(to_string(tested.param)); });
+
+}  // namespace
+}  // namespace creaturelab::ib
