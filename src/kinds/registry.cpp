@@ -1,4 +1,5 @@
 #include "kinds/fluid.hpp"
+#include "kinds/jellyfish.hpp"
 #include "kinds/kind.hpp"
 #include "kinds/oscillator.hpp"
 #include "kinds/strand.hpp"
@@ -12,6 +13,7 @@ Registry defaultRegistry() {
   r.add(std::make_unique<StrandKind>());
   r.add(std::make_unique<FluidKind>());
   r.add(std::make_unique<WebKind>());
+  r.add(std::make_unique<JellyfishKind>());
   return r;
 }
 

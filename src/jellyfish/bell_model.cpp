@@ -1,0 +1,123 @@
+#include "jellyfish/bell_model.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace creaturelab::jellyfish {
+namespace {
+
+using springs::Vec;
+
+// Points along the half-ellipse x = -a cos s, y = b sin s, s in [0, pi], equally spaced in arc
+// length (a fine polyline, then linear interpolation at equal arc steps), so every chain spring
+// has the same length and stiffness.
+std::vector<fluid::Vec2> halfEllipse(double a, double b, int segments) {
+  const int fine = 4096;
+  std::vector<fluid::Vec2> poly(fine + 1);
+  std::vector<double> arc(fine + 1, 0.0);
+  for (int i = 0; i <= fine; ++i) {
+    const double s = M_PI * i / fine;
+    poly[i] = {-a * std::cos(s), b * std::sin(s)};
+    if (i > 0) arc[i] = arc[i - 1] + std::hypot(poly[i].x - poly[i - 1].x, poly[i].y - poly[i - 1].y);
+  }
+  std::vector<fluid::Vec2> out(segments + 1);
+  int k = 0;
+  for (int m = 0; m <= segments; ++m) {
+    const double target = arc[fine] * m / segments;
+    while (k < fine - 1 && arc[k + 1] < target) ++k;
+    const double t = (target - arc[k]) / (arc[k + 1] - arc[k]);
+    out[m] = {poly[k].x + t * (poly[k + 1].x - poly[k].x), poly[k].y + t * (poly[k + 1].y - poly[k].y)};
+  }
+  // Exact ends and apex, and exact mirror symmetry (x ↔ -x) so that the model stays symmetric.
+  for (int m = 0; m <= segments / 2; ++m) {
+    const fluid::Vec2 left = out[m];
+    out[segments - m] = {-left.x, left.y};
+  }
+  out[segments / 2].x = 0.0;
+  return out;
+}
+
+Vec<2> toVec(fluid::Vec2 p) { return Vec<2>(p.x, p.y); }
+
+// A chain of springs and bends through `markers` (indices into positions), k = E t / L.
+void addChain(springs::Network<2>& net, const std::vector<fluid::Vec2>& x, const std::vector<int>& markers,
+              double modulus_pa, double thickness_m, double kb) {
+  for (std::size_t m = 0; m + 1 < markers.size(); ++m) {
+    const int a = markers[m], b = markers[m + 1];
+    const double length = std::hypot(x[b].x - x[a].x, x[b].y - x[a].y);
+    net.addSpring(a, b, length, modulus_pa * thickness_m / length);
+  }
+  for (std::size_t m = 1; m + 1 < markers.size(); ++m) {
+    const int i = markers[m - 1], j = markers[m], k = markers[m + 1];
+    net.addBend(i, j, k, springs::turningAngleRad<2>(toVec(x[i]), toVec(x[j]), toVec(x[k])), kb);
+  }
+}
+
+}  // namespace
+
+BellModel buildBell(const BellParams& p) {
+  if (const std::string err = validate(p); !err.empty()) throw std::invalid_argument(err);
+  BellModel model;
+  const double a = 0.5 * p.diameter_m - p.thickness_m;
+  const double b = p.height_m - p.thickness_m;
+  model.rest_positions_m = halfEllipse(a, b, p.segments);
+  model.bell_markers = p.segments + 1;
+  model.apex = p.segments / 2;
+  const double segment_m = std::hypot(model.rest_positions_m[1].x - model.rest_positions_m[0].x,
+                                      model.rest_positions_m[1].y - model.rest_positions_m[0].y);
+  model.bell_area_m2 = segment_m * p.segments * p.thickness_m;
+  model.aperture_width_m = model.rest_positions_m.back().x - model.rest_positions_m.front().x;
+
+  // Tentacles: straight down from each aperture point, segments as long as the bell's.
+  const int tentacle_segments = p.tentacles ? std::max(1, int(std::lround(p.tentacle_length_m / segment_m))) : 0;
+  std::vector<std::vector<int>> tentacle_chains;
+  for (int side = 0; side < 2 && p.tentacles; ++side) {
+    const int root = side == 0 ? 0 : p.segments;
+    std::vector<int> chain{root};
+    // Joint at the root: the bend continues the bell's tangent into the tentacle, so the
+    // previous bell marker is the chain's first point.
+    for (int m = 1; m <= tentacle_segments; ++m) {
+      const fluid::Vec2 top = model.rest_positions_m[root];
+      model.rest_positions_m.push_back({top.x, top.y - p.tentacle_length_m * m / tentacle_segments});
+      const int index = static_cast<int>(model.rest_positions_m.size()) - 1;
+      model.tentacle_markers.push_back(index);
+      chain.push_back(index);
+    }
+    tentacle_chains.push_back(chain);
+  }
+
+  auto& net = model.network;
+  for (std::size_t i = 0; i < model.rest_positions_m.size(); ++i) net.addParticle(1.0, false);
+  std::vector<int> bell(model.bell_markers);
+  for (int i = 0; i < model.bell_markers; ++i) bell[i] = i;
+  addChain(net, model.rest_positions_m, bell, p.bell_modulus_pa, p.thickness_m, p.angular_stiffness_nm_per_rad);
+  const double factor = p.tentacle_area_factor;
+  for (std::size_t side = 0; side < tentacle_chains.size(); ++side) {
+    addChain(net, model.rest_positions_m, tentacle_chains[side], p.bell_modulus_pa, p.thickness_m * factor,
+             p.angular_stiffness_nm_per_rad * factor);
+    // The joint where the tentacle leaves the bell.
+    const int root = tentacle_chains[side][0];
+    const int inner = side == 0 ? 1 : p.segments - 1;
+    const int first = tentacle_chains[side][1];
+    const auto& x = model.rest_positions_m;
+    net.addBend(inner, root, first, springs::turningAngleRad<2>(toVec(x[inner]), toVec(x[root]), toVec(x[first])),
+                p.angular_stiffness_nm_per_rad * factor);
+  }
+
+  for (int pair = 0; pair < p.muscle_pairs; ++pair) {
+    MuscleSpring m;
+    m.a = pair * p.muscle_stride;
+    m.b = p.segments - m.a;
+    const auto& x = model.rest_positions_m;
+    m.relaxed_length_m = std::hypot(x[m.b].x - x[m.a].x, x[m.b].y - x[m.a].y);
+    m.stiffness_n_per_m = p.muscle_modulus_pa * p.muscle_thickness_m / m.relaxed_length_m;
+    m.aperture_position = 1.0 - double(m.a) / model.apex;
+    m.order_from_aperture = pair;
+    model.muscles.push_back(m);
+  }
+  if (const std::string err = net.validate(); !err.empty())
+    throw std::logic_error("jellyfish bell network is inconsistent: " + err);
+  return model;
+}
+
+}  // namespace creaturelab::jellyfish

@@ -1,0 +1,57 @@
+#include "jellyfish/swimmer.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace creaturelab::jellyfish {
+namespace {
+
+std::vector<fluid::Vec2> placed(const BellModel& model, const SwimmerConfig& c) {
+  const double x0 = c.start_x_fraction * c.fluid.domain_width_m;
+  const double y0 = c.start_y_fraction * c.fluid.domain_height_m;
+  std::vector<fluid::Vec2> out = model.rest_positions_m;
+  for (auto& p : out) p = {p.x + x0, p.y + y0};
+  return out;
+}
+
+}  // namespace
+
+Swimmer::Swimmer(const SwimmerConfig& config) : config_(config) {
+  if (const std::string err = validate(config.activation); !err.empty()) throw std::invalid_argument(err);
+  if (!(config.dt_s > 0) || !std::isfinite(config.dt_s)) throw std::invalid_argument("time step must be > 0");
+  fluid_ = std::make_unique<fluid::FluidSolver2>(config.fluid);
+  body_ = std::make_unique<JellyfishBody>(buildBell(config.bell), config.activation);
+  coupling_ = std::make_unique<ib::ImmersedBoundary2>(*fluid_, *body_, placed(body_->model(), config), config.coupling);
+  initial_elastic_j_per_m_ = elastic_energy_j_per_m();
+}
+
+ib::CouplingStepReport Swimmer::step() {
+  previous_ = coupling_->markers_m();
+  const auto report = coupling_->step(config_.dt_s);
+  const auto& force = coupling_->applied_force_n_per_m();
+  const auto& x = coupling_->markers_m();
+  for (std::size_t k = 0; k < x.size(); ++k)
+    fluid_work_j_per_m_ += force[k].x * (x[k].x - previous_[k].x) + force[k].y * (x[k].y - previous_[k].y);
+  return report;
+}
+
+double Swimmer::elastic_energy_j_per_m() const {
+  return body_->elasticEnergy(fluid_->time_s(), coupling_->markers_m());
+}
+
+SwimmerObservation Swimmer::observe() const {
+  SwimmerObservation o;
+  o.time_s = fluid_->time_s();
+  const auto& x = coupling_->markers_m();
+  const int n = body_->model().bell_markers;
+  double sx = 0, sy = 0;
+  for (int i = 0; i < n; ++i) {
+    sx += x[i].x;
+    sy += x[i].y;
+  }
+  o.centroid_m = {sx / n, sy / n};
+  o.diameter_ratio = std::hypot(x[n - 1].x - x[0].x, x[n - 1].y - x[0].y) / body_->model().aperture_width_m;
+  return o;
+}
+
+}  // namespace creaturelab::jellyfish
