@@ -113,7 +113,7 @@ int Commands::check(const std::string& run_dir) const {
   const auto outcomes = runner::evaluateChecks(e.checks, stored.table);
   std::printf("%s", runner::formatCheckTable(outcomes).c_str());
   for (const auto& o : outcomes)
-    if (!o.passed) return 1;
+    if (!o.counts()) return 1;
   return 0;
 }
 

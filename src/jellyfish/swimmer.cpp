@@ -27,6 +27,12 @@ Swimmer::Swimmer(const SwimmerConfig& config) : config_(config) {
 
 ib::CouplingStepReport Swimmer::step() {
   previous_ = coupling_->markers_m();
+  const double t0 = fluid_->time_s(), t1 = t0 + config_.dt_s;
+  body_->muscleTensions(t1, previous_, tension_);
+  for (std::size_t m = 0; m < tension_.size(); ++m) {
+    const double relaxed = body_->model().muscles[m].relaxed_length_m;
+    muscle_work_j_per_m_ += tension_[m] * relaxed * (body_->muscleFactor(int(m), t0) - body_->muscleFactor(int(m), t1));
+  }
   const auto report = coupling_->step(config_.dt_s);
   const auto& force = coupling_->applied_force_n_per_m();
   const auto& x = coupling_->markers_m();

@@ -45,11 +45,17 @@ class Swimmer {
   double fluid_work_j_per_m() const { return fluid_work_j_per_m_; }
   /// Elastic energy of the body now, J per metre of depth.
   double elastic_energy_j_per_m() const;
-  /// Work of the muscles' contractile elements since the start, by the energy balance
-  /// P_muscle = −Σ T dr/dt = dE_elastic/dt + F · U: elastic energy gained plus work on the fluid.
-  /// Measured this way (rather than by summing T Δr) it does not depend on how the stiff muscle's
-  /// tension lags within a step.
-  double muscle_work_j_per_m() const { return elastic_energy_j_per_m() - initial_elastic_j_per_m_ + fluid_work_j_per_m_; }
+  /// Work of the muscles' contractile elements since the start, J per metre of depth: the
+  /// power −Σ_m T_m dr_m/dt (tension times the rate the rest length shortens) summed over steps,
+  /// with the tension of the positions the step's force was evaluated at and the exact change
+  /// of the rest lengths over the step.
+  double muscle_work_j_per_m() const { return muscle_work_j_per_m_; }
+  /// The same work by the energy balance −Σ T dr/dt = dE_elastic/dt + F · U: elastic energy gained
+  /// plus work on the fluid. A cross-check of muscle_work_j_per_m(); the two differ by the
+  /// semi-implicit step's numerical dissipation.
+  double muscle_work_by_balance_j_per_m() const {
+    return elastic_energy_j_per_m() - initial_elastic_j_per_m_ + fluid_work_j_per_m_;
+  }
   const fluid::FluidSolver2& fluid() const { return *fluid_; }
   fluid::FluidSolver2& fluid() { return *fluid_; }
   const JellyfishBody& body() const { return *body_; }
@@ -61,6 +67,8 @@ class Swimmer {
   std::unique_ptr<JellyfishBody> body_;
   std::unique_ptr<ib::ImmersedBoundary2> coupling_;
   double fluid_work_j_per_m_ = 0;
+  double muscle_work_j_per_m_ = 0;
+  std::vector<double> tension_;
   double initial_elastic_j_per_m_ = 0;
   std::vector<fluid::Vec2> previous_;
 };

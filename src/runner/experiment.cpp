@@ -159,7 +159,7 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   static const std::vector<std::string> known = {"name",      "type",        "metric",           "axis",
                                                  "expect",    "direction",   "strict",           "where",
                                                  "numerator", "denominator", "numerator_metric", "denominator_metric",
-                                                 "numerator_base", "denominator_base"};
+                                                 "numerator_base", "denominator_base", "known_deviation"};
   for (auto&& [k, v] : t) {
     std::string ks(k.str());
     if (std::find(known.begin(), known.end(), ks) == known.end())
@@ -172,6 +172,10 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   c.axis = t["axis"].value_or(std::string());
   c.direction = t["direction"].value_or(std::string("increasing"));
   c.strict = t["strict"].value_or(true);
+  c.known_deviation = t["known_deviation"].value_or(std::string());
+  if (t.contains("known_deviation") && (!t["known_deviation"].is_string() || c.known_deviation.empty()))
+    ctx.fail(key + ".known_deviation", "expected a non-empty string: why the model does not reproduce this claim",
+             t.get("known_deviation"));
   c.numerator_metric = t["numerator_metric"].value_or(c.metric);
   c.denominator_metric = t["denominator_metric"].value_or(c.metric);
   if (c.name.empty()) ctx.fail(key, "needs a name", &t);

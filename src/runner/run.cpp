@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 bool RunReport::checksPassed() const {
   for (const auto& c : checks)
-    if (!c.passed) return false;
+    if (!c.counts()) return false;
   return true;
 }
 

@@ -268,7 +268,7 @@ static void writeIndexContents(const io::Group& root, const Experiment& e, const
   io::setAttr(sweep, "metrics_json", nlohmann::json(table.metrics).dump());
 
   const io::Group chk = root.requireGroup("checks");
-  std::vector<std::string> name, type, expected, got;
+  std::vector<std::string> name, type, expected, got, known;
   std::vector<std::int8_t> passed;
   for (const auto& c : checks) {
     name.push_back(c.name);
@@ -276,12 +276,14 @@ static void writeIndexContents(const io::Group& root, const Experiment& e, const
     expected.push_back(c.expected);
     got.push_back(c.got);
     passed.push_back(c.passed ? 1 : 0);
+    known.push_back(c.known_deviation);
   }
   io::writeVector(chk, "name", name);
   io::writeVector(chk, "type", type);
   io::writeVector(chk, "expected", expected);
   io::writeVector(chk, "got", got);
   io::writeVector(chk, "passed", passed);
+  io::writeVector(chk, "known_deviation", known);
 
   const io::Group links = root.requireGroup("points");
   for (const auto& row : table.rows)

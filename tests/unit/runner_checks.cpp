@@ -451,3 +451,35 @@ TEST(RunnerChecks, EvaluateChecksKeepsOrderAndTheTableMarksFailures) {
 }
 
 }  // namespace
+
+// ---- known deviations: still evaluated and printed, but a failure does not fail the run ----
+
+TEST(RunnerChecks, AKnownDeviationIsEvaluatedPrintedAndDoesNotCount) {
+  CheckSpec c = spec("argmax", "distance_m", "contraction_hz");
+  c.expect_lo = 1.0;
+  c.expect_hi = 1.5;
+  c.known_deviation = "the model peaks at 0.7 Hz, not above";
+  const CheckOutcome failed = runner::evaluateCheck(c, frequencyTable());
+  EXPECT_FALSE(failed.passed);
+  EXPECT_TRUE(failed.counts());
+  const std::string table = runner::formatCheckTable({failed});
+  EXPECT_TRUE(contains(table, "KNOWN ")) << table;
+  EXPECT_TRUE(contains(table, "fails as expected")) << table;
+  EXPECT_TRUE(contains(table, "the model peaks at 0.7 Hz, not above")) << table;
+  EXPECT_FALSE(contains(table, "FAIL")) << table;
+
+  c.expect_lo = 0.6;
+  c.expect_hi = 0.8;
+  const CheckOutcome passed = runner::evaluateCheck(c, frequencyTable());
+  EXPECT_TRUE(passed.passed);
+  EXPECT_TRUE(contains(runner::formatCheckTable({passed}), "marked as a known deviation but passed")) << passed.got;
+}
+
+TEST(RunnerChecks, AnOrdinaryFailureStillCounts) {
+  CheckSpec c = spec("argmax", "distance_m", "contraction_hz");
+  c.expect_lo = 1.0;
+  c.expect_hi = 1.5;
+  const CheckOutcome o = runner::evaluateCheck(c, frequencyTable());
+  EXPECT_FALSE(o.counts());
+  EXPECT_TRUE(contains(runner::formatCheckTable({o}), "FAIL")) << o.got;
+}

@@ -644,3 +644,23 @@ TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
 }
 
 }  // namespace
+
+TEST(RunnerExperiment, KnownDeviationIsReadAndMustSayWhy) {
+  const std::string base = R"(kind = "oscillator"
+[sweep]
+dt_s = [0.01, 0.02]
+[[check]]
+name = "c"
+type = "range"
+metric = "max_abs_error_m"
+expect = [0, 1]
+)";
+  const Experiment e = load(base + "known_deviation = \"see the note\"\n");
+  ASSERT_EQ(e.checks.size(), 1u);
+  EXPECT_EQ(e.checks[0].known_deviation, "see the note");
+  EXPECT_EQ(load(base).checks[0].known_deviation, "");
+  std::string m = errorOf(base + "known_deviation = \"\"\n");
+  EXPECT_NE(m.find("known_deviation"), std::string::npos) << m;
+  m = errorOf(base + "known_deviation = true\n");
+  EXPECT_NE(m.find("expected a non-empty string"), std::string::npos) << m;
+}
