@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# MPI (issue 2 §4): `mpirun -np 3 creaturelab run FILE --jobs 1` spreads the points over the ranks,
+# MPI (issue 2 §4; the jellyfish of issue 5 too): `mpirun -np 3 creaturelab run FILE --jobs 1` spreads the points over the ranks,
 # each writing its own point files and rank 0 the index, and gives the same digests as the threaded
 # run. Exits 77 (ctest SKIP_RETURN_CODE) when mpirun is missing or the binary was built without MPI.
 # usage: mpi.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
@@ -42,3 +42,19 @@ diff "$scratch/threads.digest" "$scratch/mpi.digest" || fail "the MPI run differ
 "$bin" check "$scratch/mpi" >/dev/null || fail "checks of the MPI run failed"
 
 echo "mpirun -np 3 gives the threaded run's digests ($points points)"
+
+# The jellyfish (issue 5): a 3-point frequency sweep on the 50² grid, one point per rank.
+cat >"$scratch/jf.toml" <<'TOML'
+kind = "jellyfish"
+title = "three short strokes"
+[params]
+cells = 50
+duration_s = 1.0
+[sweep]
+contraction_hz = [0.8, 1.0, 1.2]
+TOML
+"$bin" run "$scratch/jf.toml" --out "$scratch/jf_threads" --jobs 2 >/dev/null 2>&1 || fail "threaded jellyfish run failed"
+timeout 120 mpirun --allow-run-as-root --oversubscribe -np 3 "$bin" run "$scratch/jf.toml" --out "$scratch/jf_mpi" \
+  --jobs 1 >/dev/null 2>"$scratch/jf_mpi.stderr" || { cat "$scratch/jf_mpi.stderr" >&2; fail "mpirun jellyfish failed"; }
+diff <("$bin" digest "$scratch/jf_threads") <("$bin" digest "$scratch/jf_mpi") || fail "MPI jellyfish differs from threads"
+echo "mpirun -np 3 gives the threaded jellyfish digests (3 points)"
