@@ -1,6 +1,7 @@
 #include "kinds/fluid.hpp"
 #include "kinds/jellyfish.hpp"
 #include "kinds/kind.hpp"
+#include "kinds/membrane.hpp"
 #include "kinds/oscillator.hpp"
 #include "kinds/strand.hpp"
 #include "kinds/web.hpp"
@@ -13,6 +14,7 @@ Registry defaultRegistry() {
   r.add(std::make_unique<StrandKind>());
   r.add(std::make_unique<FluidKind>());
   r.add(std::make_unique<WebKind>());
+  r.add(std::make_unique<MembraneKind>());
   r.add(std::make_unique<JellyfishKind>());
   return r;
 }

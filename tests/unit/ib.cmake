@@ -3,5 +3,6 @@ creaturelab_test(ib_unit_test unit
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/ib_kernel_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/ib_transfer_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/ib_coupling_test.cpp
   LIBS cl_ib
 )

@@ -1,0 +1,5 @@
+# tests for physics/ib: the immersed-boundary membrane (label physics; about 8 s in total on one core)
+creaturelab_test(ib_physics_tests physics
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/ib_membrane_test.cpp
+  LIBS cl_ib)
