@@ -5,8 +5,19 @@
 #include <string>
 
 #include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
 
 namespace creaturelab::ib {
+
+std::string_view to_string(ImplicitMobility mobility) {
+  return mobility == ImplicitMobility::stencil ? "stencil" : "local_mass";
+}
+
+std::optional<ImplicitMobility> parse_implicit_mobility(std::string_view name) {
+  if (name == "stencil") return ImplicitMobility::stencil;
+  if (name == "local_mass") return ImplicitMobility::local_mass;
+  return std::nullopt;
+}
 
 ImmersedBoundary2::ImmersedBoundary2(fluid::FluidSolver2& fluid, const ElasticBody& body,
                                      std::vector<fluid::Vec2> markers_m, CouplingParams params)
@@ -23,30 +34,51 @@ ImmersedBoundary2::ImmersedBoundary2(fluid::FluidSolver2& fluid, const ElasticBo
 void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
   const int n = 2 * static_cast<int>(markers_.size());
   const double dx = fluid_.grid().dx_m;
-  const double mass = params_.implicit_mass_factor * fluid_.params().density_kg_per_m3 * dx * dx;
+  const double rho = fluid_.params().density_kg_per_m3;
   transfer_.interpolate(fluid_.grid(), velocity_);
 
   triplets_.clear();
   body_.stiffness(t1_s, markers_, 1.0, triplets_);
   Eigen::SparseMatrix<double> stiffness(n, n);
   stiffness.setFromTriplets(triplets_.begin(), triplets_.end());
-  Eigen::SparseMatrix<double> system = -(dt_s * dt_s) * stiffness;
-  Eigen::VectorXd rhs(n);
+  Eigen::VectorXd free(n), force(n);
   for (int i = 0; i < n / 2; ++i) {
-    rhs[2 * i] = mass * velocity_[i].x + dt_s * force_[i].x;
-    rhs[2 * i + 1] = mass * velocity_[i].y + dt_s * force_[i].y;
+    free[2 * i] = velocity_[i].x;
+    free[2 * i + 1] = velocity_[i].y;
+    force[2 * i] = force_[i].x;
+    force[2 * i + 1] = force_[i].y;
   }
-  std::vector<Eigen::Triplet<double>> diagonal;
-  diagonal.reserve(n);
-  for (int i = 0; i < n; ++i) diagonal.emplace_back(i, i, mass);
-  Eigen::SparseMatrix<double> mass_matrix(n, n);
-  mass_matrix.setFromTriplets(diagonal.begin(), diagonal.end());
-  system += mass_matrix;
 
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
-  if (solver.info() != Eigen::Success)
-    throw std::runtime_error("immersed boundary: the semi-implicit force system is not positive definite");
-  const Eigen::VectorXd predicted = solver.solve(rhs);
+  Eigen::VectorXd predicted;
+  if (params_.mobility == ImplicitMobility::stencil) {
+    // (I − dt M K) U* = U_free + M F with M = dt/(ρ dx²) G, sparse: markers couple only through
+    // shared faces. Sparse LU: the system is not symmetric.
+    gram_triplets_.clear();
+    transfer_.gramTriplets(dt_s / (rho * dx * dx), gram_triplets_);
+    Eigen::SparseMatrix<double> mobility(n, n);
+    mobility.setFromTriplets(gram_triplets_.begin(), gram_triplets_.end());
+    Eigen::SparseMatrix<double> identity(n, n);
+    identity.setIdentity();
+    const Eigen::SparseMatrix<double> system = identity - dt_s * (mobility * stiffness);
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    lu.compute(system);
+    if (lu.info() != Eigen::Success)
+      throw std::runtime_error("immersed boundary: the semi-implicit force system is singular");
+    predicted = lu.solve(free + mobility * force);
+  } else {
+    // (m I − dt² K) U* = m U_free + dt F: the same with M = dt / m.
+    const double mass = params_.implicit_mass_factor * rho * dx * dx;
+    Eigen::SparseMatrix<double> system = -(dt_s * dt_s) * stiffness;
+    Eigen::SparseMatrix<double> mass_matrix(n, n);
+    mass_matrix.setIdentity();
+    system += mass * mass_matrix;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system);
+    if (solver.info() != Eigen::Success)
+      throw std::runtime_error("immersed boundary: the semi-implicit force system is not positive definite");
+    predicted = solver.solve(mass * free + dt_s * force);
+  }
+  if (!predicted.allFinite())
+    throw std::runtime_error("immersed boundary: the semi-implicit force is not finite at t = " + std::to_string(t1_s) + " s");
   const Eigen::VectorXd correction = dt_s * (stiffness * predicted);
   for (int i = 0; i < n / 2; ++i) {
     force_[i].x += correction[2 * i];

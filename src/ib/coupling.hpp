@@ -19,22 +19,31 @@
 // (§3.2, §4: "time-steps of the order of 0.01 s begin to hit the stability limits") and used
 // CFL with a safety factor of 0.001. Here step 3 makes the elastic force semi-implicit instead:
 // the force is evaluated at the predicted positions X^n + dt U*, linearised (K = ∂F/∂X, with
-// compressed springs' transverse terms clamped so −K is positive semi-definite), where U* solves
-//   (m I − dt² K) U* = m I u^n + dt F
-// — backward Euler of the markers with the fluid's response replaced by a local added mass
-// m = implicit_mass_factor · ρ dx² per marker. Only the force is changed; the markers still move
-// with the fluid, so the coupling stays consistent whatever m is. For stiff modes the force
-// tends to −m U/dt, which the fluid (mobility ≤ 1 / (ρ dx²) per marker for both kernels) absorbs
-// when implicit_mass_factor ≤ 1; above about 4 the step blows up again.
-// What it buys, measured on a closed membrane at dt = 0.01 s on 50² (tests/physics/
-// ib_membrane_test.cpp, experiments/jellyfish/membrane.toml): stability always, accuracy only up
-// to about twice the explicit limit. With bilinear weights a membrane of k = 1e5 N/m² stays
-// within 0.16 cells of a small-step run; at 2e5 it crumples (1.4% area loss), at 5e5 it loses
-// 21% in 2 s; Peskin's kernel holds to 2e5 and crumples at 5e5. The jellyfish's chain springs are
-// soft (E t / L ≈ 2 N/m); its angular springs are stiff but act on bending only, and its bell
-// stays smooth at 0.01 s (analysis/plot_jellyfish.py film strips; its converged quantities are
-// listed in the issue-5 note).
+// compressed springs' transverse terms clamped so −K is positive semi-definite), where U* is the
+// markers' velocity after the step as predicted by a mobility M (velocity per force) of the
+// fluid:  U* = U_free + M F_impl,  F_impl = F + dt K U*,  i.e.
+//   (I − dt M K) U* = I u^n + M F,        F_impl = F + dt K U*.
+// Only the force is changed; the markers still move with the fluid, so the coupling stays
+// consistent whatever M is. Two mobilities (ImplicitMobility):
+//  - stencil (default): M = dt/ρ · I S, the force spread and read back through the markers' own
+//    stencils, without the projection (Transfer::gram). Markers that share grid faces share
+//    their response, so a zigzag between neighbours two to a cell, which the grid cannot move,
+//    keeps its full restoring force. The projection only lowers the true mobility, so M errs
+//    toward more implicit damping. I − dt M K has eigenvalues ≥ 1 (M ⪰ 0, K ⪯ 0): always solvable.
+//  - local_mass: every marker alone, M = dt / (implicit_mass_factor ρ dx²). Cheaper, but it
+//    over-predicts the mobility of sub-cell modes and so cancels their restoring force; the
+//    chain then zigzags at the grid scale (below).
+//
+// Measured (tests/physics/ib_membrane_test.cpp, experiments/jellyfish/membrane.toml, and the
+// jellyfish's chain): local_mass at 0.01 s on 50² keeps a membrane of k = 1e5 N/m² within 0.16
+// cells of a small-step run and crumples it above. For the bell at 0.7 Hz on 100², the largest
+// |second difference| of the turning angle along the chain (explicit steps of 2e-4 s: 0.09 rad):
+// local_mass, bilinear, 0.01 s: 0.96; stencil, bilinear, 0.01 s: 0.77, at 0.0025 s: 0.18;
+// stencil, peskin4, 0.01 s: 0.06. At 0.02 s bilinear crumples the bell; the swimmer stops such a
+// run with an error.
+#include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -58,10 +67,18 @@ class ElasticBody {
                          std::vector<Eigen::Triplet<double>>& out) const = 0;
 };
 
+enum class ImplicitMobility { stencil, local_mass };
+std::string_view to_string(ImplicitMobility mobility);
+std::optional<ImplicitMobility> parse_implicit_mobility(std::string_view name);
+
 struct CouplingParams {
-  Kernel kernel = Kernel::bilinear;  // the paper's choice (§3.2)
+  // Not the paper's bilinear (§3.2; selectable): with the semi-implicit step at the 0.01 s the
+  // speed goal needs, only Peskin's kernel keeps the bell as smooth as small explicit steps do
+  // ("Measured" above); the kernels experiment compares the two.
+  Kernel kernel = Kernel::peskin4;
   bool semi_implicit = true;
-  double implicit_mass_factor = 1.0;  // m = factor · ρ dx², see above
+  ImplicitMobility mobility = ImplicitMobility::stencil;
+  double implicit_mass_factor = 1.0;  // local_mass only: m = factor · ρ dx², see above
 };
 
 struct CouplingStepReport {
@@ -93,7 +110,7 @@ class ImmersedBoundary2 {
   CouplingParams params_;
   Transfer transfer_;
   std::vector<fluid::Vec2> force_, velocity_;
-  std::vector<Eigen::Triplet<double>> triplets_;
+  std::vector<Eigen::Triplet<double>> triplets_, gram_triplets_;
 };
 
 }  // namespace creaturelab::ib

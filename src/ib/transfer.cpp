@@ -168,4 +168,42 @@ void Transfer::interpolate(const fluid::MacGrid2& grid, std::span<fluid::Vec2> v
   }
 }
 
+namespace {
+
+// Σ_a w_k[a] w_l[a + shift] over the stencil offsets a that both cover.
+double overlap1d(const double* wk, const double* wl, int shift, int support) {
+  double sum = 0.0;
+  for (int a = 0; a < support; ++a) {
+    const int b = a + shift;
+    if (b >= 0 && b < support) sum += wk[a] * wl[b];
+  }
+  return sum;
+}
+
+}  // namespace
+
+void Transfer::gramTriplets(double scale, std::vector<Eigen::Triplet<double>>& out) const {
+  const int n = marker_count();
+  for (int c = 0; c < 2; ++c) {
+    const std::vector<FaceStencil>& st = c == 0 ? u_stencils_ : v_stencils_;
+    for (int k = 0; k < n; ++k)
+      for (int l = k; l < n; ++l) {
+        const int di = st[k].i0 - st[l].i0, dj = st[k].j0 - st[l].j0;
+        if (di >= support_ || -di >= support_ || dj >= support_ || -dj >= support_) continue;
+        const double value =
+            scale * overlap1d(st[k].wx, st[l].wx, di, support_) * overlap1d(st[k].wy, st[l].wy, dj, support_);
+        out.emplace_back(2 * k + c, 2 * l + c, value);
+        if (l != k) out.emplace_back(2 * l + c, 2 * k + c, value);
+      }
+  }
+}
+
+void Transfer::gram(Eigen::MatrixXd& g) const {
+  const int n = marker_count();
+  std::vector<Eigen::Triplet<double>> t;
+  gramTriplets(1.0, t);
+  g.setZero(2 * n, 2 * n);
+  for (const auto& e : t) g(e.row(), e.col()) = e.value();
+}
+
 }  // namespace creaturelab::ib

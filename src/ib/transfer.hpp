@@ -27,6 +27,9 @@
 // the rounding of x / dx at its edges.)
 
 #include <span>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <vector>
 
 #include "fluid/array2.hpp"
@@ -72,6 +75,14 @@ class Transfer {
   void interpolate(const fluid::MacGrid2& grid, std::span<fluid::Vec2> velocities_m_per_s) const;
 
   int marker_count() const { return static_cast<int>(u_stencils_.size()); }
+
+  /// The Gram matrix of the located stencils, G(2k + c, 2l + c) = Σ_faces w_k w_l on the faces of
+  /// component c (x: u faces, y: v faces), 0 between components: interpolate(spread(F)) = G F / dx².
+  /// Overwrites `gram` (2 markers × 2 markers). Kernels are separable, so each entry is a product
+  /// of two 1-D overlaps.
+  void gram(Eigen::MatrixXd& gram) const;
+  /// The same as triplets (only the non-zero overlaps; both (k, l) and (l, k)), scaled by `scale`.
+  void gramTriplets(double scale, std::vector<Eigen::Triplet<double>>& out) const;
 
   /// The kernel of the last locate() (bilinear before the first).
   Kernel kernel() const { return kernel_; }

@@ -10,12 +10,13 @@
 // Ceres") can differentiate it with respect to knot values and tangents; phases stay doubles.
 //
 // Staggered expansion (§3.3, Fig. 4 right): springs nearer the aperture expand more slowly
-// than those near the apex. The expansion part of the cycle (from the knot of smallest value to
-// the end of the period) is replayed faster by apex springs: a spring at position a in [0, 1]
-// (0 apex, 1 aperture) runs the expansion at speed 1 / (1 - stagger (1 - a)), finishing early
-// and holding the relaxed value; the aperture spring follows the curve as written. stagger = 0
-// is the paper's "unison" expansion. The paper gives no numbers for either curve; defaults
-// are in jellyfish_params.hpp.
+// than those near the apex. The expansion is the part of the period from the knot of smallest
+// value to the knot of largest value (cyclically). A spring at position a in [0, 1] (0 apex,
+// 1 aperture) replays it at speed 1 / (1 - stagger (1 - a)), finishing early and holding the
+// largest value until the curve's own expansion ends; the aperture spring follows the curve as
+// written, and the contraction is the same for every spring. stagger = 0 is the paper's "unison"
+// expansion. The paper gives no numbers for either curve; defaults are in jellyfish_params.hpp.
+#include <algorithm>
 #include <cmath>
 #include <span>
 
@@ -64,20 +65,35 @@ T hermiteCurve(std::span<const double> knot_phases, const T* values, const T* ta
   return h00 * values[k0] + (h10 * width) * tangents[k0] + h01 * values[k1] + (h11 * width) * tangents[k1];
 }
 
-/// The curve of one muscle spring, with the staggered expansion described above.
-/// contracted_phase: phase of the knot with the smallest value (the end of the contraction).
-inline double muscleFactor(std::span<const Knot> knots, double phase, double contracted_phase,
-                           double stagger, double aperture_position) {
-  double p = wrapPhase(phase);
-  const double expansion_width = 1.0 - contracted_phase;
-  double since = p - contracted_phase;
-  if (since >= 0 && expansion_width > 0) {
-    const double speed = 1.0 / (1.0 - stagger * (1.0 - aperture_position));
-    since = std::min(since * speed, expansion_width);
-    p = contracted_phase + since;
+/// Phases where the expansion starts and ends: those of the knots of smallest and largest value.
+struct ExpansionWindow {
+  double start_phase = 0;  // contracted
+  double end_phase = 0;    // relaxed
+};
+
+inline ExpansionWindow expansionWindow(std::span<const Knot> knots) {
+  int low = 0, high = 0;
+  for (int i = 1; i < static_cast<int>(knots.size()); ++i) {
+    if (knots[i].value < knots[low].value) low = i;
+    if (knots[i].value > knots[high].value) high = i;
   }
-  double phases[16], values[16], tangents[16];
+  return knots.empty() ? ExpansionWindow{} : ExpansionWindow{knots[low].phase, knots[high].phase};
+}
+
+/// The curve of one muscle spring, with the staggered expansion described above.
+inline double muscleFactor(std::span<const Knot> knots, double phase, ExpansionWindow window, double stagger,
+                           double aperture_position) {
+  double p = wrapPhase(phase);
+  const double width = wrapPhase(window.end_phase - window.start_phase);
+  const double since = wrapPhase(p - window.start_phase);
+  if (since < width && stagger > 0) {
+    const double speed = 1.0 / (1.0 - stagger * (1.0 - aperture_position));
+    p = wrapPhase(window.start_phase + std::min(since * speed, width));
+  }
+  constexpr int kMax = 16;
+  double phases[kMax], values[kMax], tangents[kMax];
   const int count = static_cast<int>(knots.size());
+  if (count < 1 || count > kMax) return 1.0;  // validate() rejects these counts before any run
   for (int i = 0; i < count; ++i) {
     phases[i] = knots[i].phase;
     values[i] = knots[i].value;

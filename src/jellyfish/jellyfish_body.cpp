@@ -1,13 +1,19 @@
 #include "jellyfish/jellyfish_body.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace creaturelab::jellyfish {
+namespace {
+void validateOrThrow(const ActivationParams& activation) {
+  if (const std::string err = validate(activation); !err.empty()) throw std::invalid_argument(err);
+}
+}  // namespace
 
 JellyfishBody::JellyfishBody(const BellModel& model, ActivationParams activation)
-    : model_(model),
+    : model_((validateOrThrow(activation), model)),
       activation_(std::move(activation)),
-      contracted_phase_(contractedPhase(activation_.knots)),
+      expansion_(expansionWindow(activation_.knots)),
       system_(model.network),
       state_(springs::zeroState<2>(model.network.particleCount())) {}
 
@@ -15,8 +21,8 @@ double JellyfishBody::muscleFactor(int m, double t_s) const {
   const MuscleSpring& muscle = model_.muscles[m];
   const double delay_s = activation_.synaptic_delay_s * muscle.order_from_aperture;
   const double stagger = activation_.expansion == Expansion::staggered ? activation_.stagger : 0.0;
-  return jellyfish::muscleFactor(activation_.knots, activation_.contraction_hz * (t_s - delay_s), contracted_phase_,
-                                 stagger, muscle.aperture_position);
+  return jellyfish::muscleFactor(activation_.knots, activation_.contraction_hz * (t_s - delay_s), expansion_, stagger,
+                                 muscle.aperture_position);
 }
 
 void JellyfishBody::toState(std::span<const fluid::Vec2> x_m) const {

@@ -33,7 +33,7 @@ class JellyfishBody : public ib::ElasticBody {
 
   BellModel model_;
   ActivationParams activation_;
-  double contracted_phase_ = 0;
+  ExpansionWindow expansion_{};
   springs::System<2> system_;
   mutable springs::State<2> state_;     // scratch: positions in the springs module's layout
   mutable springs::Points<2> scratch_;  // scratch: network forces

@@ -16,13 +16,6 @@ bool positive(double v) { return std::isfinite(v) && v > 0; }
 
 }  // namespace
 
-double contractedPhase(const std::vector<Knot>& knots) {
-  int best = 0;
-  for (int i = 1; i < static_cast<int>(knots.size()); ++i)
-    if (knots[i].value < knots[best].value) best = i;
-  return knots.empty() ? 0.0 : knots[best].phase;
-}
-
 std::string validate(const BellParams& p) {
   Problems e;
   if (!positive(p.diameter_m)) e.add("bell diameter must be > 0");
@@ -64,12 +57,19 @@ std::string validate(const ActivationParams& a) {
   if (!(a.synaptic_delay_s >= 0)) e.add("synaptic delay must be >= 0");
   if (e.str().empty()) {
     // A rest length must stay positive all through the cycle (Hermite segments can overshoot).
-    const double phase_c = contractedPhase(a.knots);
-    double low = 1e300;
-    for (int s = 0; s <= 2000; ++s) low = std::min(low, muscleFactor(a.knots, s / 2000.0, phase_c, 0.0, 1.0));
+    const ExpansionWindow window = expansionWindow(a.knots);
+    double low = 1e300, high = -1e300;
+    for (int s = 0; s <= 2000; ++s) {
+      const double f = muscleFactor(a.knots, s / 2000.0, window, 0.0, 1.0);
+      low = std::min(low, f);
+      high = std::max(high, f);
+    }
     if (!(low > 0.05))
       e.add("the contraction curve falls to " + std::to_string(low) +
-            " of the relaxed length; its knots or tangents overshoot (keep it within (0.05, 1])");
+            " of the relaxed length; its knots or tangents overshoot (keep it within (0.05, 1.5])");
+    if (!(high <= 1.5))
+      e.add("the contraction curve rises to " + std::to_string(high) +
+            " of the relaxed length; its knots or tangents overshoot (keep it within (0.05, 1.5])");
   }
   return e.str();
 }

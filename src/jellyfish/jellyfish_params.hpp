@@ -74,9 +74,6 @@ struct ActivationParams {
   double synaptic_delay_s = 0.0;
 };
 
-/// The phase at which the contraction ends: that of the knot of smallest value.
-double contractedPhase(const std::vector<Knot>& knots);
-
 /// "" if usable, else one sentence per problem joined by "; ".
 std::string validate(const BellParams& bell);
 std::string validate(const ActivationParams& activation);

@@ -33,7 +33,8 @@ class Swimmer {
   /// Throws std::invalid_argument naming the problem for unusable parameters.
   explicit Swimmer(const SwimmerConfig& config);
 
-  /// One coupled step; accumulates the muscle work. Throws as ImmersedBoundary2::step.
+  /// One coupled step; accumulates the work. Throws as ImmersedBoundary2::step, and
+  /// std::runtime_error when the bell's chain has crumpled (a step too large for the coupling).
   ib::CouplingStepReport step();
 
   SwimmerObservation observe() const;
@@ -62,6 +63,11 @@ class Swimmer {
   const SwimmerConfig& config() const { return config_; }
 
  private:
+  // Throws std::runtime_error when a bell segment is shorter than kCrumpledRatio or longer than
+  // 1 / kCrumpledRatio of its rest length.
+  void checkChain() const;
+  static constexpr double kCrumpledRatio = 1.0 / 6.0;
+
   SwimmerConfig config_;
   std::unique_ptr<fluid::FluidSolver2> fluid_;
   std::unique_ptr<JellyfishBody> body_;

@@ -41,6 +41,7 @@ ib::CouplingParams couplingParams(const ParamReader& r) {
   ib::CouplingParams c;
   c.kernel = *ib::parse_kernel(r.text("kernel"));
   c.semi_implicit = r.boolean("semi_implicit");
+  c.mobility = *ib::parse_implicit_mobility(r.text("implicit_mobility"));
   c.implicit_mass_factor = r.real("implicit_mass_factor");
   return c;
 }
@@ -123,7 +124,10 @@ MembraneKind::MembraneKind() {
       choice("kernel", "bilinear", {"bilinear", "peskin4"},
              "spreading/interpolation: the jellyfish paper's bilinear 4-face stencil or Peskin's 4-point kernel"),
       boolean("semi_implicit", true, "linearised implicit elastic forces (ib/coupling.hpp); false = explicit Peskin"),
-      real("implicit_mass_factor", 1.0, "", 1e-6, 100, "local added mass per marker in rho dx^2 (ib/coupling.hpp)"),
+      choice("implicit_mobility", "stencil", {"stencil", "local_mass"},
+             "fluid response assumed by the semi-implicit force: through the markers' stencils, or each marker alone "
+             "(ib/coupling.hpp)"),
+      real("implicit_mass_factor", 1.0, "", 1e-6, 100, "local_mass only: added mass per marker in rho dx^2"),
       // --- fluid: a viscous liquid in a free-slip box (the test is of the method, not of sea water)
       real("domain_m", 1.0, "m", 1e-3, 100, "side of the square free-slip box"),
       integer("cells", 100, 8, 2048, "fluid cells per side (the jellyfish paper's grids: 50 and 100)"),

@@ -1,0 +1,9 @@
+# tests for unit/jellyfish: the activation curve, the parameters, the bell network and the body's
+# forces and stiffness (Rudolf & Mould 2009 §3.1-3.3). Each test well under 1 s; also run under ASan/UBSan.
+creaturelab_test(jellyfish_unit_test unit
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/jellyfish_curve_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/jellyfish_bell_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/jellyfish_body_test.cpp
+  LIBS cl_jellyfish
+)
