@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
+#include "cli/fit_commands.hpp"
 #include "runner/cluster.hpp"
 #include "runner/experiment.hpp"
 
@@ -64,6 +65,34 @@ int main(int argc, char** argv) {
   reproduce->add_option("--list", rep.list, "file listing the experiments")->capture_default_str();
   reproduce->add_option("-j,--jobs", rep.jobs, "points run in parallel (default: the cores)");
 
+  cli::FitSplineArgs fsa;
+  cli::FitControllerArgs fca;
+  auto* fit = app.add_subcommand("fit", "fit the contraction spline to data, or tune controller parameters");
+  fit->require_subcommand(1);
+  auto* fit_spline = fit->add_subcommand("spline", "fit the jellyfish's Hermite contraction curve to a profile");
+  fit_spline->add_option("data", fsa.data, "CSV (time_s,value[,weight]), point file .h5 or run folder")->required();
+  fit_spline->add_option("-o,--out", fsa.out, "output folder (default: results/runs/fit/<data stem>_spline)");
+  fit_spline->add_option("--knots", fsa.knots, "evenly spaced knots k/K (default 4)");
+  fit_spline->add_option("--phases", fsa.phases, "knot phases, e.g. 0,0.3 (instead of --knots)");
+  fit_spline->add_option("--period", fsa.period_s, "period in s (default: 1/contraction_hz of a point, else detected)");
+  fit_spline->add_option("--phase-origin", fsa.phase_origin_s, "time in s at phase 0 (default 0)");
+  fit_spline->add_option("--from", fsa.from_s, "ignore samples before this time in s (a warm-up)");
+  fit_spline->add_option("--lower", fsa.lower, "lower bound on knot values")->capture_default_str();
+  fit_spline->add_option("--upper", fsa.upper, "upper bound on knot values")->capture_default_str();
+  fit_spline->add_option("--loss", fsa.loss, "none | huber | cauchy")->capture_default_str();
+  fit_spline->add_option("--loss-scale", fsa.loss_scale, "residual beyond which the loss is robust")->capture_default_str();
+  fit_spline->add_option("--start-values", fsa.start_values, "start knot values, e.g. 1,0.56 (default: from the data)");
+  fit_spline->add_option("--dataset", fsa.dataset, "HDF5 value dataset")->capture_default_str();
+  fit_spline->add_option("--time-dataset", fsa.time_dataset, "HDF5 time dataset")->capture_default_str();
+  fit_spline->add_option("--weight-dataset", fsa.weight_dataset, "HDF5 weight dataset (default: all 1)");
+  fit_spline->add_option("--point", fsa.point, "point index when DATA is a run folder")->capture_default_str();
+  auto* fit_controller = fit->add_subcommand("controller", "tune parameters of a kind (experiments/fit/*.toml)");
+  fit_controller->add_option("file", fca.file, "controller-fit TOML file")->required();
+  fit_controller->add_option("-o,--out", fca.out, "output folder (default: results/runs/fit/<file stem>)");
+  fit_controller->add_option("-j,--jobs", fca.jobs, "runs in parallel (default: the cores)");
+  fit_controller->add_flag("--resume", fca.resume, "continue an interrupted fit from its record");
+  fit_controller->add_flag("--force", fca.force, "replace an earlier fit in the folder");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -79,6 +108,8 @@ int main(int argc, char** argv) {
     if (*compare) return commands.compare(cmp);
     if (*baseline) return commands.baseline(base);
     if (*digest) return commands.digest(run_dir);
+    if (*fit_spline) return cli::fitSpline(fsa);
+    if (*fit_controller) return cli::fitController(fca, kinds::defaultRegistry());
     return commands.reproduce(rep);
   });
 }
