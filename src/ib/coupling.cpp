@@ -1,5 +1,6 @@
 #include "ib/coupling.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -52,7 +53,7 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
   Eigen::VectorXd predicted;
   if (params_.mobility == ImplicitMobility::stencil) {
     // (I − dt M K) U* = U_free + M F with M = dt/(ρ dx²) G, sparse: markers couple only through
-    // shared faces. Sparse LU: the system is not symmetric.
+    // shared faces. Not symmetric.
     gram_triplets_.clear();
     transfer_.gramTriplets(dt_s / (rho * dx * dx), gram_triplets_);
     Eigen::SparseMatrix<double> mobility(n, n);
@@ -60,11 +61,25 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
     Eigen::SparseMatrix<double> identity(n, n);
     identity.setIdentity();
     const Eigen::SparseMatrix<double> system = identity - dt_s * (mobility * stiffness);
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-    lu.compute(system);
-    if (lu.info() != Eigen::Success)
+    // Sparse LU. Its symbolic analysis (the costly part for the bell) is redone only when the
+    // pattern changes, i.e. when a marker's stencil moves to other faces.
+    Eigen::SparseMatrix<double> compressed = system;
+    compressed.makeCompressed();
+    const bool same_pattern =
+        lu_ready_ && compressed.rows() == pattern_outer_.size() - 1 &&
+        std::equal(pattern_outer_.begin(), pattern_outer_.end(), compressed.outerIndexPtr()) &&
+        static_cast<long>(pattern_inner_.size()) == compressed.nonZeros() &&
+        std::equal(pattern_inner_.begin(), pattern_inner_.end(), compressed.innerIndexPtr());
+    if (!same_pattern) {
+      lu_.analyzePattern(compressed);
+      pattern_outer_.assign(compressed.outerIndexPtr(), compressed.outerIndexPtr() + compressed.outerSize() + 1);
+      pattern_inner_.assign(compressed.innerIndexPtr(), compressed.innerIndexPtr() + compressed.nonZeros());
+      lu_ready_ = true;
+    }
+    lu_.factorize(compressed);
+    if (lu_.info() != Eigen::Success)
       throw std::runtime_error("immersed boundary: the semi-implicit force system is singular");
-    predicted = lu.solve(free + mobility * force);
+    predicted = lu_.solve(free + mobility * force);
   } else {
     // (m I − dt² K) U* = m U_free + dt F: the same with M = dt / m.
     const double mass = params_.implicit_mass_factor * rho * dx * dx;

@@ -47,6 +47,7 @@
 #include <vector>
 
 #include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 
 #include "fluid/fluid_solver2.hpp"
 #include "ib/kernel.hpp"
@@ -111,6 +112,10 @@ class ImmersedBoundary2 {
   Transfer transfer_;
   std::vector<fluid::Vec2> force_, velocity_;
   std::vector<Eigen::Triplet<double>> triplets_, gram_triplets_;
+  // The stencil-mobility solve's LU and the pattern its symbolic analysis was done for.
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+  std::vector<int> pattern_outer_, pattern_inner_;
+  bool lu_ready_ = false;
 };
 
 }  // namespace creaturelab::ib
