@@ -79,7 +79,7 @@ web::WebParams webParams(const ParamReader& r, std::string& error) {
   w.spiral_rest_length_m = r.real("spiral_rest_length_m");
   w.spiral_k_n_per_m = r.real("spiral_k_n_per_m");
   w.spiral_density = int(r.integer("spiral_density"));
-  w.free_zone_radius_m = r.real("free_zone_radius_m");
+  w.spiral_free_masses = int(r.integer("spiral_free_masses"));
   w.spiral_jitter = r.real("spiral_jitter");
   if (r.real("overextension") > 0) w.overextension = r.real("overextension");
   w.particle_mass_kg = r.real("particle_mass_kg");
@@ -153,7 +153,8 @@ WebKind::WebKind() {
       real("spiral_k_n_per_m", d.spiral_k_n_per_m, "N/m", 1e-9, 1e3,
            "spiral k; thesis 0.01 makes the radii zigzag (see src/web/web_params.cpp)"),
       integer("spiral_density", d.spiral_density, 1, 1000, "SPIRAL_DENSITY of the processed spiral (Fig. 5.16: 5)"),
-      real("free_zone_radius_m", d.free_zone_radius_m, "m", 0, 10, "spiral-free zone around the hub (§5.2)"),
+      integer("spiral_free_masses", d.spiral_free_masses, 1, 1000,
+              "masses at the hub end of each radius left without spiral (§5.2 'a little distance away from the hub')"),
       real("spiral_jitter", d.spiral_jitter, "", 0, 1, "randomness of the spiral (§5.2: 'a small amount of randomness')"),
       real("overextension", 0.0, "", 0, 10, "if > 0, every rest length = placement / (1 + this) (§5.1: 0.75-2.5)"),
       real("particle_mass_kg", d.particle_mass_kg, "kg", 1e-15, 1, "particle mass (§5.2.1: 10 ug)"),
@@ -163,7 +164,9 @@ WebKind::WebKind() {
       choice("start", "laid", {"laid", "static"},
              "start from the web as laid, or from its static equilibrium (for wind)"),
       choice("integrator", "rk4", {"euler", "symplectic_euler", "rk4", "implicit_euler"}, "time integrator (thesis: rk4)"),
-      realOrAuto("dt_s", "s", 1e-9, 1, "substep; \"auto\" = half the stability limit"),
+      realOrAuto("dt_s", "s", 1e-9, 1, "substep; \"auto\" = auto_safety times the stability limit"),
+      real("auto_safety", web::kAutoStepSafety, "", 1e-3, 1,
+           "fraction of the stability limit (from an upper bound on omega_max) that dt_s = \"auto\" uses"),
       real("frame_interval_s", 0.02, "s", 1e-6, 10, "output frame (thesis §5.2.1 'time step' 0.02 s)"),
       real("end_time_s", 10.0, "s", 0, 1e5, "simulated time; 0 = build and solve the statics only"),
       real("settling_fraction", 1e-4, "", 1e-12, 1, "settled when kinetic energy stays below this fraction of its peak"),
@@ -211,7 +214,10 @@ Result WebKind::run(const Params& p) const {
   const web::WebModel model = web::build(webParams(r, err));
   const auto& c = model.counts;
 
+  // The inward frame force is constant (Fig. 5.8), so it belongs to the potential: the static solve
+  // includes it and the dynamic settle ends in the same shape. The wind (time-dependent) is external.
   springs::System<3> system(model.network);
+  system.setConstantForce(model.external_force_n);
   springs::State<3> state = model.state;
   springs::State<3> statics = model.state;
   const auto eq = springs::solveStaticEquilibrium(system, statics);
@@ -221,17 +227,16 @@ Result WebKind::run(const Params& p) const {
   const double wind_scale = r.real("wind_scale");
   WindGen wind{r.real("particle_mass_kg") * r.real("gravity_m_per_s2") * 10.0 * wind_scale,
                std::uint64_t(r.integer("seed"))};
-  springs::Points<3> frame_force = model.external_force_n;
   // exp(distance to the hub / alpha), alpha = web radius * 50 (Fig. 5.45), per particle.
   Eigen::VectorXd wind_weight = Eigen::VectorXd::Ones(state.x_m.cols());
+  springs::Points<3> wind_force = springs::Points<3>::Zero(3, state.x_m.cols());  // held for a frame
   if (wind_scale > 0) {
     double radius = 0;
     for (int a : model.attachment_particles)
       radius = std::max(radius, (model.state.x_m.col(a) - web::hubPositionM(model, model.state)).norm());
     for (int i = 0; i < state.x_m.cols(); ++i) wind_weight[i] = std::exp((state.x_m.col(i) - hub0).norm() / (radius * 50));
+    system.setExternalForce([&wind_force](double, const springs::State<3>&, springs::Points<3>& f) { f += wind_force; });
   }
-  springs::Points<3> force = frame_force;
-  system.setExternalForce([&force](double, const springs::State<3>&, springs::Points<3>& f) { f += force; });
 
   Result result;
   auto& hub_sag = result.timeseries["hub_sag_m"] = {{}, "m"};
@@ -253,8 +258,7 @@ Result WebKind::run(const Params& p) const {
     }
     if (wind_scale > 0) {  // windgen once per frame (Fig. 5.45), held until the next
       wind.next();
-      force = frame_force;
-      for (int i = 0; i < force.cols(); ++i) force.col(i) += wind_weight[i] * Eigen::Vector3d(wind.x, wind.y, wind.z);
+      for (int i = 0; i < wind_force.cols(); ++i) wind_force.col(i) = wind_weight[i] * Eigen::Vector3d(wind.x, wind.y, wind.z);
     }
   };
 
@@ -262,6 +266,7 @@ Result WebKind::run(const Params& p) const {
   opt.integrator = parseIntegratorOrThrow(r.text("integrator"));
   opt.frame_interval_s = frame_s;
   opt.dt_s = r.isAuto("dt_s") ? 0.0 : r.real("dt_s");
+  opt.auto_safety = r.real("auto_safety");
   opt.end_time_s = r.real("end_time_s");
   opt.settling_fraction = r.real("settling_fraction");
   const double nan = std::nan("");

@@ -1,12 +1,15 @@
 #pragma once
 // Static equilibrium of a spring network: the rest shape a long damped run settles to (thesis
 // §5.1, the strand "settled down to its final state"), found directly by minimising the total
-// potential energy (springs + bends + gravity) over the free particles' positions.
+// potential energy (springs + bends + gravity + the constant force of System::setConstantForce) over
+// the free particles' positions.
 // Newton's method on the true Hessian (sparse Eigen::SimplicialLDLT) with a backtracking
 // (Armijo) line search on energy; when LDLT fails or its direction is not a descent direction the
-// step is taken from (H + mu I) with mu raised until it is (Levenberg-style regularisation).
+// step is taken from the Hessian with compressed springs' transverse stiffness clamped to 0 (positive
+// semi-definite), plus mu I with mu raised until it is positive definite (Levenberg-style).
 // Stops when max |force| on a free particle coordinate <= gradient_tolerance_n.
-// External forces are not included (they may depend on time and velocity).
+// The ExternalForce is not included (it may depend on time and velocity); a constant one belongs in
+// System::setConstantForce.
 #include "springs/system.hpp"
 
 namespace creaturelab::springs {

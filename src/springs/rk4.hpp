@@ -12,7 +12,7 @@ template <int D> class RungeKutta4 final : public Integrator<D> {
 
  private:
   State<D> stage_;      // the state at which the next derivative is evaluated
-  Points<D> acc_;       // a at the current stage
+  Points<D> forces_;    // System::accelerationsInBlocks' scratch (the raw forces)
   Points<D> sum_dx_;    // k1 + 2 k2 + 2 k3 + k4 for x (velocities)
   Points<D> sum_dv_;    // the same for v (accelerations)
 };

@@ -51,8 +51,4 @@ WebModel build(const WebParams& params) {
   return m;
 }
 
-springs::ExternalForce<3> constantForce(springs::Points<3> force_n) {
-  return [f = std::move(force_n)](double, const springs::State<3>&, springs::Points<3>& out) { out += f; };
-}
-
 }  // namespace creaturelab::web

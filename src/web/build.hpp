@@ -2,8 +2,6 @@
 // Orb-web construction, thesis seeds/orb-webs-mehla-2005.txt §5.2 (pseudo-code Figs. 5.5, 5.10,
 // 5.15, 5.16). Deterministic: the same parameters give the same web, bit for bit; the only random
 // choices (hub attachment of secondary spokes, spiral jitter) come from core::rng keyed by params.seed.
-#include <functional>
-
 #include "springs/system.hpp"
 #include "web/web_model.hpp"
 #include "web/web_params.hpp"
@@ -17,8 +15,5 @@ namespace creaturelab::web {
 //   4. forces       inward radial force on the inner frame (Fig. 5.8, Fig. 5.10 step 8)     frame_forces
 // Throws std::invalid_argument with params.validate()'s message when the parameters are bad.
 WebModel build(const WebParams& params);
-
-// An ExternalForce that adds the constant force_n (3 x particles), e.g. WebModel::external_force_n.
-springs::ExternalForce<3> constantForce(springs::Points<3> force_n);
 
 }  // namespace creaturelab::web

@@ -91,9 +91,12 @@ std::string validateFrameGeometry(const WebParams& prm) {
     }
     to_frame = std::min(to_frame, distanceToSegment(c, a, b));
   }
-  if (prm.free_zone_radius_m + prm.spoke_placement_m >= to_frame) {
-    m << "free_zone_radius_m (" << prm.free_zone_radius_m << " m) plus one spoke placement reaches the inner frame ("
-      << to_frame << " m from the centre); no spiral would fit";
+  // The spiral's free zone: the hub ring plus spiral_free_masses spoke placements, and one more
+  // placement for the spiral to start on.
+  const double free_zone_m = prm.hub_radius_m + (prm.spiral_free_masses + 1) * prm.spoke_placement_m;
+  if (free_zone_m >= to_frame) {
+    m << "the spiral's free zone (hub_radius_m + spiral_free_masses + 1 spoke placements = " << free_zone_m
+      << " m) reaches the inner frame (" << to_frame << " m from the centre); no spiral would fit";
     return m.str();
   }
   return "";

@@ -17,11 +17,16 @@ class SpiralWeaver {
       : web_(web), prm_(web.params()), radii_(spokes.radii), hub_(spokes.hub_centre_m),
         rng_(prm_.seed, kJitterPurpose), covered_(web.particleCount(), 0),
         started_(web.particleCount(), 0) {
-    // Candidates of each radius (frame end first), fixed before any spiral mass is added.
+    // Candidates of each radius (frame end first), fixed before any spiral mass is added: all but the
+    // inner-frame mass and the spiral_free_masses masses at the hub end. The free zone's radius is the
+    // farthest of those hub-end masses from the hub.
+    const int free_masses = prm_.spiral_free_masses;
     for (const auto& r : radii_) {
+      const int size = static_cast<int>(r.size());
       std::vector<int> c;
-      for (size_t i = 1; i < r.size(); ++i)
-        if ((web_.position(r[i]) - hub_).norm() >= prm_.free_zone_radius_m) c.push_back(r[i]);
+      for (int i = 1; i < size - free_masses; ++i) c.push_back(r[i]);
+      for (int i = std::max(0, size - free_masses); i < size; ++i)
+        free_zone_radius_m_ = std::max(free_zone_radius_m_, (web_.position(r[i]) - hub_).norm());
       candidates_.push_back(std::move(c));
     }
   }
@@ -57,7 +62,7 @@ class SpiralWeaver {
 
   // The strand from a to b keeps out of the free zone.
   bool clearOfHub(int a, int b) const {
-    return distanceToSegment(hub_, web_.position(a), web_.position(b)) >= prm_.free_zone_radius_m;
+    return distanceToSegment(hub_, web_.position(a), web_.position(b)) >= free_zone_radius_m_;
   }
 
   // Index in candidates_[r] of the next mass from `from`, or -1.
@@ -108,6 +113,7 @@ class SpiralWeaver {
   const WebParams& prm_;
   const std::vector<std::vector<int>>& radii_;
   Point2 hub_;
+  double free_zone_radius_m_ = 0;  // no spiral strand comes closer to hub_
   core::Stream rng_;
   std::vector<std::vector<int>> candidates_;
   std::vector<char> covered_;  // per particle present before the spiral: a spiral strand ends at it

@@ -16,8 +16,10 @@ struct SpiralResult {
 // mass closest to the current one (Fig. 5.15: "next_mass <-- mass closest to initial_mass on next
 // spoke"), lays a spiral strand to it unless those two masses are already joined, and moves on; the
 // step after the last radius returns to the starting radius. Candidates: a radius's masses other than
-// its inner-frame mass, at least free_zone_radius_m from the hub centre, whose strand from the current
-// mass also stays that far from it (§5.2: "we end this process a little distance away from the hub").
+// its inner-frame mass and its spiral_free_masses masses at the hub end (§5.2: "we end this process a
+// little distance away from the hub"; see WebParams::spiral_free_masses), whose strand from the current
+// mass keeps out of the free zone: the disc about the hub centre through the farthest of those hub-end
+// masses on any radius.
 // With probability spiral_jitter a step takes a neighbour (along the radius) of the closest candidate
 // instead (§5.2: "a small amount of randomness"). A walk with no candidate on the next radius ends.
 //

@@ -34,7 +34,7 @@ struct WebModel {
   // strand type of spring s, for every s: spring_type.size() == network.springCount().
   std::vector<StrandType> spring_type;
   // The constant inward radial force on the inner frame (Fig. 5.8), newtons, 3 x particles; zero on
-  // every other particle. Add it through springs::System::setExternalForce (constantForce() below).
+  // every other particle. Give it to springs::System::setConstantForce, so that the static solve sees it too.
   springs::Points<3> external_force_n;
 
   Point2 centre_m{0, 0};      // middle of the attachment points' bounding box (Fig. 5.3)

@@ -8,7 +8,7 @@
 namespace creaturelab::web {
 
 // Choices where the thesis (seeds/orb-webs-mehla-2005.txt) gives no value, or gives one that cannot
-// work in SI. Figures quoted are for the default web (6,084 particles, 43 radii; tests/physics/web_*).
+// work in SI. Figures quoted are for the default web (6,096 particles, 43 radii; tests/physics/web_*).
 // The load path: each radius is laid at tension k (placement - rest) = 0.01 x 4 mm = 4e-5 N and pulls
 // its frame mass inward; 43 radii on 3.1 m of frame are a line load q ~ 5.5e-4 N/m. The web's weight
 // (6e-4 N) and that pull end on the seven outer-frame strands.
@@ -27,8 +27,9 @@ namespace creaturelab::web {
 //   many radii meet, come next at ~4,100 rad/s.
 //
 // inner_frame_inward_force_n_per_m = 5e-5 N/m. Fig. 5.8 only shows the result, a frame bowed further
-//   inward; a tenth of the radii's own line load q gives a visible but gentle extra bow (it moves the
-//   settled hub by 0.2%).
+//   inward; a tenth of the radii's own line load q gives a visible but gentle extra bow (it lowers the
+//   settled hub by 0.7%: static hub sag 66.49 mm with it, 66.03 mm without). It is constant, so it is
+//   given to springs::System::setConstantForce and the static solve includes it.
 //
 // spiral: placement 21 mm, rest 12 mm, k = 2.5e-4 N/m. The thesis never says whether a spiral strand
 //   carries masses of its own. The spokes' 7 mm would put 3-8 extra masses on every chord near the
@@ -41,8 +42,13 @@ namespace creaturelab::web {
 //   ~40% to a radius's tension, and 75% over-extension (§5.1's lower bound) keeps every spiral spring
 //   taut after settling.
 //
-// hub_radius_m = 30 mm, free_zone_radius_m = 70 mm: Fig. 5.11 shows a small hub polygon and Fig. 5.14
-//   a free zone a few hub radii across; the thesis gives no values.
+// hub_radius_m = 30 mm: Fig. 5.11 shows a small hub polygon; the thesis gives no value.
+//
+// spiral_free_masses = 6: the spiral stops a count of spoke masses short of the hub (web_params.hpp).
+//   The thesis gives no count; 6 gives the default web the free zone it had with the fixed 70 mm radius
+//   used before (innermost spiral mass 69 mm from the hub; Fig. 5.14 shows a free zone a few hub radii
+//   across). With the Fig. 5.28 spoke placements 9, 11 and 15 mm it moves out to 78, 91 and 114 mm
+//   (Fig. 5.26: "a much bigger gap in the hub"), and the spiral's coverage of the web falls with it.
 std::vector<Point2> defaultAttachmentPointsM() {
   return {{-0.05, 0.55}, {-0.52, 0.22}, {-0.48, -0.30}, {-0.08, -0.50},
           {0.36, -0.44}, {0.55, -0.04}, {0.40, 0.40}};
@@ -106,7 +112,6 @@ std::string WebParams::validate() const {
            positive("spiral_placement_m", spiral_placement_m, "m"),
            positive("spiral_rest_length_m", spiral_rest_length_m, "m"),
            positive("spiral_k_n_per_m", spiral_k_n_per_m, "N/m"),
-           positive("free_zone_radius_m", free_zone_radius_m, "m"),
            positive("particle_mass_kg", particle_mass_kg, "kg"),
            nonNegative("air_drag_ns_per_m", air_drag_ns_per_m, "N*s/m"),
            nonNegative("gravity_m_per_s2", gravity_m_per_s2, "m/s^2"),
@@ -139,9 +144,9 @@ std::string WebParams::validate() const {
     m << "spiral_density is " << spiral_density << "; it must be 0 or more";
     return m.str();
   }
-  if (free_zone_radius_m < hub_radius_m) {
-    m << "free_zone_radius_m (" << free_zone_radius_m << " m) is smaller than hub_radius_m (" << hub_radius_m
-      << " m); the spiral must stop outside the hub";
+  if (spiral_free_masses < 1) {
+    m << "spiral_free_masses is " << spiral_free_masses
+      << "; it must be 1 or more (the hub mass of each radius carries no spiral)";
     return m.str();
   }
 

@@ -39,6 +39,16 @@ enum class PrimarySpokeEnd {
   farthest,
 };
 
+// The fraction of the explicit stability limit that a web's automatic substep uses
+// (springs::SimulationOptions::auto_safety; the engine's default is 0.5). The limit divides the
+// integrator's stability interval (RK4: omega h <= 2 sqrt(2) = 2.83) by a Gershgorin UPPER bound on
+// omega_max, so the full limit is still a stable step. Default web: the bound is 5,734 rad/s, the true
+// omega_max (Lanczos on M^-1 K) 5,597 rad/s as laid and 5,603 rad/s settled (the short stiff outer frame,
+// sqrt(4 k / m)); the step 0.02 s / 41 = 0.488 ms gives omega h = 2.73, where RK4 damps the top mode
+// (|R| = 0.79 per step). Half the limit doubles the cost of a settle and moves its settling time by
+// 0.03% (9.1913 s against 9.1882 s).
+inline constexpr double kAutoStepSafety = 1.0;
+
 struct WebParams {
   // --- frame (Fig. 5.5) -----------------------------------------------------------------------
   // Anchor points in order around the frame, metres, in the vertical x-y plane (y up). 3 to 10
@@ -105,9 +115,15 @@ struct WebParams {
   // SPIRAL_DENSITY (Fig. 5.16 step 3): the processed spiral is repeated while some spoke has more
   // than this many masses outside the free zone that no spiral strand touches.
   int spiral_density = 5;
-  // No spiral particle or strand comes closer than this to the hub centre (§5.2: "we end this process
-  // a little distance away from the hub of the web so that a distinct hub is still visible"), metres.
-  double free_zone_radius_m = 0.07;
+  // Where the spiral stops short of the hub: it leaves this many masses at the hub end of every radius
+  // (the hub mass included) without spiral, and no spiral strand crosses the disc through them.
+  // Thesis §5.2: "We end this process a little distance away from the hub of the web so that a distinct
+  // hub is still visible"; the distance is counted in spoke masses, as Fig. 5.15 walks "all masses in
+  // first spoke" from the frame mass by mass ("initial_mass + 1"), and §5.3.4 finds the hub gap growing
+  // with the spoke placement (Fig. 5.26: "a much bigger gap in the hub", Fig. 5.27 "least web coverage"),
+  // which a fixed distance would not give. The thesis gives no count: 6 masses at the default 7 mm
+  // placement leave a free zone of ~70 mm about the 30 mm hub ring (Fig. 5.14); see web_params.cpp.
+  int spiral_free_masses = 6;
   // §5.2: "the spiral has to have a small amount of randomness in it". Probability that a step of a
   // spiral goes to a neighbour (along the spoke) of the closest mass instead of the closest mass.
   double spiral_jitter = 0.1;

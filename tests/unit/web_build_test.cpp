@@ -167,16 +167,33 @@ TEST(WebBuild, CountsAreConsistent) {
 }
 
 TEST(WebBuild, SpiralStopsShortOfTheHub) {
+  // Thesis §5.2: the spiral ends "a little distance away from the hub", here spiral_free_masses masses
+  // short of the hub end of each radius (web_params.hpp).
   const auto& m = defaultWeb();
   const web::WebParams p;
+  std::set<int> on_spiral;
   double nearest = INFINITY;
   for (int s = 0; s < m.network.springCount(); ++s) {
     if (m.spring_type[s] != web::StrandType::spiral) continue;
-    for (int q : {m.network.spring_a[s], m.network.spring_b[s]})
+    for (int q : {m.network.spring_a[s], m.network.spring_b[s]}) {
+      on_spiral.insert(q);
       nearest = std::min(nearest, (m.state.x_m.col(q).head<2>() - m.hub_centre_m).norm());
+    }
   }
-  EXPECT_GE(nearest, p.free_zone_radius_m);
-  EXPECT_LT(nearest, p.free_zone_radius_m + 2 * p.spoke_placement_m);  // ...but reaches close to it
+  double zone = 0;  // the free zone: the disc through the farthest hub-end mass left free
+  int touched_next = 0;
+  for (const auto& r : m.spokes) {
+    const int size = static_cast<int>(r.size());
+    for (int i = std::max(0, size - p.spiral_free_masses); i < size; ++i) {
+      EXPECT_FALSE(on_spiral.count(r[i])) << "hub-end mass " << size - i << " of a radius is on the spiral";
+      zone = std::max(zone, (m.state.x_m.col(r[i]).head<2>() - m.hub_centre_m).norm());
+    }
+    if (size - p.spiral_free_masses - 1 >= 1) touched_next += on_spiral.count(r[size - p.spiral_free_masses - 1]);
+  }
+  EXPECT_GE(nearest, zone);
+  // ...but the spiral reaches the first mass outside the zone on most radii.
+  EXPECT_GT(touched_next, static_cast<int>(m.spokes.size()) / 2);
+  EXPECT_NEAR(zone, p.hub_radius_m + p.spiral_free_masses * p.spoke_placement_m, 2 * p.spoke_placement_m);
 }
 
 TEST(WebBuild, SpokesRunFromTheFrameToTheHub) {
@@ -222,14 +239,6 @@ TEST(WebBuild, InwardForceActsOnTheInnerFrameOnly) {
     EXPECT_EQ(f.z(), 0.0);
   }
   EXPECT_NEAR(total, p.inner_frame_inward_force_n_per_m * perimeter, 1e-12 * total);
-}
-
-TEST(WebBuild, ConstantForceAddsItsArray) {
-  const auto& m = defaultWeb();
-  const auto f = web::constantForce(m.external_force_n);
-  creaturelab::springs::Points<3> out = creaturelab::springs::Points<3>::Ones(3, m.network.particleCount());
-  f(0.0, m.state, out);
-  EXPECT_EQ(out, (m.external_force_n.array() + 1.0).matrix());
 }
 
 TEST(WebBuild, HubSagOfTheLaidWebIsZero) {

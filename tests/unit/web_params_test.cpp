@@ -94,12 +94,11 @@ TEST(WebParams, FrameTooSmallForItsSpacing) {
   p.move_outer_m = 0.4;
   EXPECT_THAT(p.validate(), HasSubstr("more than half the distance from attachment point"));
   p = web::WebParams{};
-  p.free_zone_radius_m = 0.45;
+  p.spiral_free_masses = 60;
   EXPECT_THAT(p.validate(), HasSubstr("reaches the inner frame"));
   p = web::WebParams{};
-  p.hub_radius_m = 0.08;
-  EXPECT_EQ(p.validate(),
-            "free_zone_radius_m (0.07 m) is smaller than hub_radius_m (0.08 m); the spiral must stop outside the hub");
+  p.spiral_free_masses = 0;
+  EXPECT_EQ(p.validate(), "spiral_free_masses is 0; it must be 1 or more (the hub mass of each radius carries no spiral)");
 }
 
 TEST(WebParams, NonPositiveLengthsAndConstantsAreNamed) {
@@ -122,7 +121,6 @@ TEST(WebParams, NonPositiveLengthsAndConstantsAreNamed) {
       {&web::WebParams::spiral_placement_m, "spiral_placement_m"},
       {&web::WebParams::spiral_rest_length_m, "spiral_rest_length_m"},
       {&web::WebParams::spiral_k_n_per_m, "spiral_k_n_per_m"},
-      {&web::WebParams::free_zone_radius_m, "free_zone_radius_m"},
       {&web::WebParams::particle_mass_kg, "particle_mass_kg"},
   };
   for (const auto& c : cases)
