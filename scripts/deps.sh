@@ -9,6 +9,7 @@ packages=(
   libbenchmark-dev libbenchmark-tools libgtest-dev libgmock-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libopenmpi-dev openmpi-bin
+  zlib1g-dev
   python3-h5py python3-numpy python3-matplotlib
 )
 

@@ -1,3 +1,4 @@
+#include "kinds/charlotte.hpp"
 #include "kinds/fluid.hpp"
 #include "kinds/jellyfish.hpp"
 #include "kinds/kind.hpp"
@@ -14,6 +15,7 @@ Registry defaultRegistry() {
   r.add(std::make_unique<StrandKind>());
   r.add(std::make_unique<FluidKind>());
   r.add(std::make_unique<WebKind>());
+  r.add(std::make_unique<CharlotteKind>());
   r.add(std::make_unique<MembraneKind>());
   r.add(std::make_unique<JellyfishKind>());
   return r;

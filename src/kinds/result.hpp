@@ -51,6 +51,9 @@ struct Result {
   // Integer tables that describe the model rather than its motion (which particles a spring
   // joins, its strand type, ...): /topology/<name>.
   std::map<std::string, std::vector<std::int64_t>> topology;
+  // Files written beside the point file as <run dir>/point_NNNNNN_<name> (renders, e.g. "result.png"):
+  // file name -> bytes. Kinds do no I/O; the runner writes these. Not part of the HDF5 (nor its digest).
+  std::map<std::string, std::vector<std::uint8_t>> artifacts;
 };
 
 }  // namespace creaturelab::kinds

@@ -39,7 +39,11 @@ std::string outputDir(const RunOptions& o, const Experiment& e) {
 
 bool isRunFile(const fs::path& p) {
   const std::string name = p.filename().string();
-  return name == "index.h5" || (name.rfind("point_", 0) == 0 && (p.extension() == ".h5" || p.extension() == ".tmp"));
+  // point_NNNNNN.h5, its .tmp, its .xdmf sidecar and its artifacts point_NNNNNN_<name> (renders).
+  const bool point = name.rfind("point_", 0) == 0;
+  const bool artifact = point && name.size() > 13 && name[12] == '_';
+  return name == "index.h5" || artifact ||
+         (point && (p.extension() == ".h5" || p.extension() == ".tmp" || p.extension() == ".xdmf"));
 }
 
 // Before any work: the folder must be writable, and an earlier run in it is only replaced or

@@ -42,6 +42,22 @@ void writeFields(const io::Group& root, const kinds::FieldFrames& f) {
   io::setAttr(group, "origin_y_m", f.origin_y_m);
 }
 
+// Result::artifacts as <dir>/point_NNNNNN_<name>, each written to .tmp and renamed like the point file.
+void writeArtifacts(const std::string& dir, int index, const kinds::Result& r) {
+  const std::string stem = fs::path(pointFileName(index)).stem().string();
+  for (const auto& [name, bytes] : r.artifacts) {
+    if (name.empty() || name.find('/') != std::string::npos || name.find("..") != std::string::npos)
+      throw std::runtime_error("artifact name '" + name + "' is not a plain file name");
+    const std::string final_path = dir + "/" + stem + "_" + name, tmp_path = final_path + ".tmp";
+    {
+      std::ofstream out(tmp_path, std::ios::binary | std::ios::trunc);
+      out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+      if (!out.flush()) throw std::runtime_error(tmp_path + ": cannot write");
+    }
+    fs::rename(tmp_path, final_path);
+  }
+}
+
 void writeXdmfSidecar(const std::string& dir, int index, const kinds::FieldFrames& f) {
   if (f.frames() == 0 || f.fields.empty()) return;
   io::XdmfGrid g{pointFileName(index), f.time_s, f.nx, f.ny, f.dx_m, f.dy_m, f.origin_x_m, f.origin_y_m, {}};
@@ -157,6 +173,7 @@ std::string pointConfigSha(const std::string& kind, const Point& point) {
 void writePointFile(const std::string& dir, const Experiment& e, const kinds::Kind& kind, const Point& point,
                     const PointOutcome& outcome, Provenance provenance) {
   const std::string final_path = dir + "/" + pointFileName(point.index), tmp_path = final_path + ".tmp";
+  writeArtifacts(dir, point.index, outcome.result);  // before the point file: a point file that exists is whole
   {
     io::File file = io::File::create(tmp_path);
     writePointContents(file.root(), e, kind, point, outcome, std::move(provenance));

@@ -1,0 +1,53 @@
+#pragma once
+// Grey-level images of the Charlotte's-web procedure (thesis seeds/orb-webs-mehla-2005.txt ch. 6):
+// the target image (Fig. 6.1), the source image captured from the web (Fig. 6.2), and their
+// dilations (Figs. 6.7-6.8). Values are "ink": 0 = empty background, 1 = a strand or the dark part of
+// the target, so dilation (a max filter) grows the strands and the letters as in Fig. 6.8.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace creaturelab::charlotte {
+
+struct Raster {
+  int width = 0, height = 0;
+  std::vector<float> ink;  // row-major, row 0 at the top; in [0, 1]
+
+  Raster() = default;
+  Raster(int w, int h) : width(w), height(h), ink(std::size_t(w) * std::size_t(h), 0.0f) {}
+  bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
+  float& at(int x, int y) { return ink[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+  float at(int x, int y) const { return ink[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
+  double sum() const {
+    double s = 0;
+    for (float v : ink) s += v;
+    return s;
+  }
+};
+
+// Each pixel becomes a factor x factor block (nearest neighbour); factor >= 1.
+inline Raster scaleUp(const Raster& in, int factor) {
+  Raster out(in.width * factor, in.height * factor);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) out.at(x, y) = in.at(x / factor, y / factor);
+  return out;
+}
+
+// The raster with `margin` empty pixels added on every side.
+inline Raster padded(const Raster& in, int margin) {
+  Raster out(in.width + 2 * margin, in.height + 2 * margin);
+  for (int y = 0; y < in.height; ++y)
+    for (int x = 0; x < in.width; ++x) out.at(x + margin, y + margin) = in.at(x, y);
+  return out;
+}
+
+// An 8-bit RGB picture for the renders (row 0 at the top, 3 bytes per pixel).
+struct RgbImage {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;
+
+  RgbImage() = default;
+  RgbImage(int w, int h, std::uint8_t grey) : width(w), height(h), rgb(std::size_t(w) * std::size_t(h) * 3, grey) {}
+};
+
+}  // namespace creaturelab::charlotte

@@ -1,0 +1,33 @@
+#pragma once
+// Renders of the web for the run folder (thesis Figs. 6.3, 6.4, 6.10-6.18): anti-aliased strands on
+// a light page. Per-strand grey and width are the caller's; the thesis shades its webs in greys
+// (§5.3.8, Fig. 5.44) and draws the emphasis strands "darker than the rest" (Fig. 6.13).
+#include <array>
+#include <cstdint>
+
+#include <Eigen/Core>
+
+#include "charlotte/raster.hpp"
+
+namespace creaturelab::charlotte {
+
+using Rgb = std::array<float, 3>;  // each 0..1
+
+class Painter {
+ public:
+  Painter(int width, int height, const Rgb& background);
+
+  // Tints every pixel towards colour by alpha x ink (a target or an emptied region under the web).
+  void wash(const Raster& ink, const Rgb& colour, float alpha);
+  // A line width_px wide from a to b (pixel coordinates), blended over what is there with
+  // alpha x coverage, coverage = clamp(width/2 + 1/2 - distance from the pixel centre, 0, 1).
+  void line(const Eigen::Vector2d& a_px, const Eigen::Vector2d& b_px, float width_px, const Rgb& colour, float alpha);
+
+  RgbImage image() const;  // 8 bits per channel, rounded
+
+ private:
+  int width_, height_;
+  std::vector<float> rgb_;
+};
+
+}  // namespace creaturelab::charlotte
