@@ -632,6 +632,14 @@ TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
   // experiments/fit/ holds controller-fit specifications (`creaturelab fit controller`), another
   // format, read by src/fit and tested there.
   const std::filesystem::path root = std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / "experiments";
+  // Paths inside experiment files (charlotte.toml's image_file) are relative to the repository
+  // root, where the README runs them from.
+  const std::filesystem::path here = std::filesystem::current_path();
+  std::filesystem::current_path(CREATURELAB_TEST_SOURCE_DIR);
+  struct Restore {
+    std::filesystem::path dir;
+    ~Restore() { std::filesystem::current_path(dir); }
+  } restore{here};
   int n = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
     if (entry.path().extension() != ".toml" || entry.path().filename() == "reproduce.toml") continue;
