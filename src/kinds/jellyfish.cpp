@@ -60,7 +60,8 @@ jellyfish::SwimmerConfig config(const ParamReader& r) {
   f.advection = *fluid::parse_advection_scheme(r.text("advection"));
   f.time_step_policy = fluid::TimeStepPolicy::fixed;
   f.fixed_step_s = r.real("dt_s");
-  // The coupled step is fixed; a fluid running away is caught as a blow-up well before 1 m/s.
+  // The coupled step is fixed; a fluid running away is caught as a blow-up (default 5 m/s, about
+  // 100 times the swimming flow).
   f.blowup_speed_m_per_s = r.real("blowup_speed_m_per_s");
 
   c.coupling.kernel = *ib::parse_kernel(r.text("kernel"));
