@@ -47,7 +47,7 @@
 #include <vector>
 
 #include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
+#include <Eigen/Dense>
 
 #include "fluid/fluid_solver2.hpp"
 #include "ib/kernel.hpp"
@@ -111,11 +111,11 @@ class ImmersedBoundary2 {
   CouplingParams params_;
   Transfer transfer_;
   std::vector<fluid::Vec2> force_, velocity_;
-  std::vector<Eigen::Triplet<double>> triplets_, gram_triplets_;
-  // The stencil-mobility solve's LU and the pattern its symbolic analysis was done for.
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
-  std::vector<int> pattern_outer_, pattern_inner_;
-  bool lu_ready_ = false;
+  std::vector<Eigen::Triplet<double>> triplets_;
+  // The stencil mobility's M, the system I − dt M K and its LU (kept to reuse their storage).
+  Eigen::SparseMatrix<double> mobility_;
+  Eigen::MatrixXd system_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
 };
 
 }  // namespace creaturelab::ib

@@ -182,28 +182,30 @@ double overlap1d(const double* wk, const double* wl, int shift, int support) {
 
 }  // namespace
 
-void Transfer::gramTriplets(double scale, std::vector<Eigen::Triplet<double>>& out) const {
+void Transfer::gram(double scale, Eigen::SparseMatrix<double>& out) const {
   const int n = marker_count();
-  for (int c = 0; c < 2; ++c) {
-    const std::vector<FaceStencil>& st = c == 0 ? u_stencils_ : v_stencils_;
-    for (int k = 0; k < n; ++k)
-      for (int l = k; l < n; ++l) {
+  out.resize(2 * n, 2 * n);
+  out.reserve(static_cast<Eigen::Index>(2 * n) * support_ * support_);
+  // Column by column, rows ascending, so that the storage is filled in order. Entry (k, l) and
+  // (l, k) sum the same products in the same order: G is exactly symmetric.
+  for (int l = 0; l < n; ++l)
+    for (int c = 0; c < 2; ++c) {
+      const std::vector<FaceStencil>& st = c == 0 ? u_stencils_ : v_stencils_;
+      out.startVec(2 * l + c);
+      for (int k = 0; k < n; ++k) {
         const int di = st[k].i0 - st[l].i0, dj = st[k].j0 - st[l].j0;
         if (di >= support_ || -di >= support_ || dj >= support_ || -dj >= support_) continue;
-        const double value =
+        out.insertBack(2 * k + c, 2 * l + c) =
             scale * overlap1d(st[k].wx, st[l].wx, di, support_) * overlap1d(st[k].wy, st[l].wy, dj, support_);
-        out.emplace_back(2 * k + c, 2 * l + c, value);
-        if (l != k) out.emplace_back(2 * l + c, 2 * k + c, value);
       }
-  }
+    }
+  out.finalize();
 }
 
 void Transfer::gram(Eigen::MatrixXd& g) const {
-  const int n = marker_count();
-  std::vector<Eigen::Triplet<double>> t;
-  gramTriplets(1.0, t);
-  g.setZero(2 * n, 2 * n);
-  for (const auto& e : t) g(e.row(), e.col()) = e.value();
+  Eigen::SparseMatrix<double> sparse;
+  gram(1.0, sparse);
+  g = Eigen::MatrixXd(sparse);
 }
 
 }  // namespace creaturelab::ib

@@ -81,8 +81,8 @@ class Transfer {
   /// Overwrites `gram` (2 markers × 2 markers). Kernels are separable, so each entry is a product
   /// of two 1-D overlaps.
   void gram(Eigen::MatrixXd& gram) const;
-  /// The same as triplets (only the non-zero overlaps; both (k, l) and (l, k)), scaled by `scale`.
-  void gramTriplets(double scale, std::vector<Eigen::Triplet<double>>& out) const;
+  /// The same scaled by `scale`, sparse: only the overlapping stencils (overwrites `out`).
+  void gram(double scale, Eigen::SparseMatrix<double>& out) const;
 
   /// The kernel of the last locate() (bilinear before the first).
   Kernel kernel() const { return kernel_; }
