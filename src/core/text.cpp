@@ -39,6 +39,17 @@ std::string closestMatch(std::string_view word, const std::vector<std::string>& 
   return (best != nullptr && best_distance <= limit) ? *best : std::string();
 }
 
+std::string didYouMean(const std::string& word, const std::vector<std::string>& known) {
+  std::string near = closestMatch(word, known);
+  if (near.empty() && word.size() >= 3)
+    for (const auto& k : known)
+      if (k.rfind(word, 0) == 0) {
+        near = k;
+        break;
+      }
+  return near.empty() ? "" : " (did you mean '" + near + "'?)";
+}
+
 std::string formatNumber(double value) {
   char buffer[64];
   const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);

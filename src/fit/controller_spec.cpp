@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <toml++/toml.h>
 
 #include "core/text.hpp"
+#include "kinds/param_toml.hpp"
 
 namespace creaturelab::fit {
 namespace {
@@ -15,68 +14,11 @@ namespace {
 using core::formatNumber;
 using kinds::ParamSpec;
 using kinds::ParamType;
-using kinds::Value;
-
-struct Context {
-  std::string file;
-  [[noreturn]] void fail(const std::string& key, const std::string& msg, const toml::node* node = nullptr) const {
-    std::string where = file;
-    if (node && node->source().begin.line > 0) where += ":" + std::to_string(node->source().begin.line);
-    throw FitError(where + ": " + (key.empty() ? "" : key + ": ") + msg);
-  }
-};
-
-// The nearest name by edit distance, else the first one starting with what was typed.
-std::string suggestion(const std::string& name, const std::vector<std::string>& known) {
-  std::string near = core::closestMatch(name, known);
-  if (near.empty() && name.size() >= 3)
-    for (const auto& k : known)
-      if (k.rfind(name, 0) == 0) {
-        near = k;
-        break;
-      }
-  return near.empty() ? "" : " (did you mean '" + near + "'?)";
-}
-
-void checkKeys(const toml::table& t, const std::vector<std::string>& known, const Context& ctx,
-               const std::string& prefix) {
-  for (auto&& [k, v] : t) {
-    const std::string ks(k.str());
-    if (std::find(known.begin(), known.end(), ks) == known.end())
-      ctx.fail(prefix, "unknown key '" + ks + "'" + suggestion(ks, known), &v);
-  }
-}
+using Context = kinds::TomlContext<FitError>;
 
 const ParamSpec& specFor(const kinds::Kind& kind, const std::string& name, const Context& ctx, const std::string& key,
                          const toml::node* node) {
-  std::vector<std::string> names;
-  for (const auto& s : kind.params()) {
-    if (s.name == name) return s;
-    names.push_back(s.name);
-  }
-  ctx.fail(key, "unknown parameter '" + name + "' for kind '" + kind.name() + "'" + suggestion(name, names) +
-                    "; `creaturelab list " + kind.name() + "` shows every parameter",
-           node);
-}
-
-std::optional<Value> scalarValue(const toml::node& node) {
-  if (auto v = node.as_integer()) return Value(std::int64_t(v->get()));
-  if (auto v = node.as_floating_point()) return Value(v->get());
-  if (auto v = node.as_boolean()) return Value(v->get());
-  if (auto v = node.as_string()) return Value(v->get());
-  return std::nullopt;
-}
-
-// An integer literal is a fine real; then the kind's type and range.
-Value coerce(const ParamSpec& spec, Value v, const Context& ctx, const std::string& key, const toml::node* node) {
-  if (auto i = std::get_if<std::int64_t>(&v); i && (spec.type == ParamType::Real || spec.type == ParamType::RealOrAuto))
-    v = double(*i);
-  if (auto d = std::get_if<double>(&v); d && spec.type == ParamType::Integer && std::floor(*d) == *d && std::fabs(*d) < 9e15)
-    v = std::int64_t(*d);
-  const std::string expected = kinds::checkValue(spec, v);
-  if (!expected.empty())
-    ctx.fail(key, "got " + kinds::describeValue(v) + ", expected " + expected + " (" + spec.doc + ")", node);
-  return v;
+  return kinds::specFor(kind, name, ctx, key, node, "creaturelab list " + kind.name());
 }
 
 double number(const toml::table& t, const std::string& name, double fallback, const Context& ctx,
@@ -99,7 +41,7 @@ std::string metricName(const toml::table& t, const std::string& name, const kind
   for (const auto& m : kind.metrics()) names.push_back(m.name);
   if (std::find(names.begin(), names.end(), metric) == names.end())
     ctx.fail("objective." + name, "'" + metric + "' is not a metric of kind '" + kind.name() + "'" +
-                                      suggestion(metric, names),
+                                      core::didYouMean(metric, names),
              n);
   return metric;
 }
@@ -107,7 +49,7 @@ std::string metricName(const toml::table& t, const std::string& name, const kind
 ObjectiveSpec parseObjective(const toml::table* t, const kinds::Kind& kind, const Context& ctx) {
   ObjectiveSpec o;
   if (!t) ctx.fail("objective", "missing: add an [objective] table (type = \"maximise\" or \"target\")");
-  checkKeys(*t, {"type", "metric", "scale", "target", "tolerance", "least", "least_scale"}, ctx, "objective");
+  kinds::checkKeys(*t, {"type", "metric", "scale", "target", "tolerance", "least", "least_scale"}, ctx, "objective");
   const std::string type = (*t)["type"].value_or(std::string("maximise"));
   if (type == "maximise" || type == "maximize") {
     o.type = ObjectiveType::maximise;
@@ -150,12 +92,7 @@ std::vector<double> ControllerSpec::start() const {
 }
 
 ControllerSpec loadControllerSpec(const std::string& path, const kinds::Registry& registry) {
-  if (!std::filesystem::is_regular_file(path)) throw FitError(path + ": no such controller-fit file");
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in) throw FitError(path + ": cannot read the file");
-  return loadControllerSpecText(text.str(), path, registry);
+  return loadControllerSpecText(Context{path}.readText("controller-fit"), path, registry);
 }
 
 ControllerSpec loadControllerSpecText(const std::string& text, const std::string& path,
@@ -168,7 +105,7 @@ ControllerSpec loadControllerSpecText(const std::string& text, const std::string
     throw FitError(path + ":" + std::to_string(err.source().begin.line) + ": malformed TOML: " +
                    std::string(err.description()));
   }
-  checkKeys(root, {"kind", "title", "description", "params", "objective", "solver", "tune"}, ctx, "");
+  kinds::checkKeys(root, {"kind", "title", "description", "params", "objective", "solver", "tune"}, ctx, "");
 
   ControllerSpec s;
   s.path = path;
@@ -176,7 +113,8 @@ ControllerSpec loadControllerSpecText(const std::string& text, const std::string
   s.source_text = text;
   s.kind = root["kind"].value_or(std::string("jellyfish"));
   const kinds::Kind* kind = registry.find(s.kind);
-  if (!kind) ctx.fail("kind", "unknown kind '" + s.kind + "'" + suggestion(s.kind, registry.names()), root.get("kind"));
+  if (!kind)
+    ctx.fail("kind", "unknown kind '" + s.kind + "'" + core::didYouMean(s.kind, registry.names()), root.get("kind"));
   s.title = root["title"].value_or(s.stem);
 
   // --- [params]: overrides of the kind's defaults
@@ -186,10 +124,7 @@ ControllerSpec loadControllerSpecText(const std::string& text, const std::string
     if (!t) ctx.fail("params", "expected a table [params]", p);
     for (auto&& [k, v] : *t) {
       const std::string name(k.str()), key = "params." + name;
-      const ParamSpec& spec = specFor(*kind, name, ctx, key, &v);
-      auto value = scalarValue(v);
-      if (!value) ctx.fail(key, "expected " + kinds::typeName(spec.type), &v);
-      given[name] = coerce(spec, *value, ctx, key, &v);
+      given[name] = kinds::paramValue(specFor(*kind, name, ctx, key, &v), v, ctx, key);
       s.overrides.emplace_back(name, given[name]);
     }
   }
@@ -204,7 +139,7 @@ ControllerSpec loadControllerSpecText(const std::string& text, const std::string
   for (auto&& item : *arr) {
     const auto& t = *item.as_table();
     const std::string key = "tune[" + std::to_string(n++) + "]";
-    checkKeys(t, {"name", "start", "min", "max", "step"}, ctx, key);
+    kinds::checkKeys(t, {"name", "start", "min", "max", "step"}, ctx, key);
     const auto name = t["name"].value<std::string>();
     if (!name) ctx.fail(key + ".name", "missing: the parameter to tune, e.g. name = \"stagger\"", &t);
     const ParamSpec& spec = specFor(*kind, *name, ctx, key + ".name", t.get("name"));
@@ -241,7 +176,7 @@ ControllerSpec loadControllerSpecText(const std::string& text, const std::string
   if (const toml::node* sn = root.get("solver")) {
     const auto* t = sn->as_table();
     if (!t) ctx.fail("solver", "expected a table [solver]", sn);
-    checkKeys(*t,
+    kinds::checkKeys(*t,
               {"max_iterations", "max_runs", "function_tolerance", "gradient_tolerance", "parameter_tolerance"}, ctx,
               "solver");
     auto& o = s.solver;

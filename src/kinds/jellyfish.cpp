@@ -6,6 +6,7 @@
 
 #include "fluid/diagnostics2.hpp"
 #include "jellyfish/swimmer.hpp"
+#include "kinds/ib_params.hpp"
 
 namespace creaturelab::kinds {
 namespace {
@@ -52,22 +53,8 @@ jellyfish::SwimmerConfig config(const ParamReader& r) {
   a.stagger = r.real("stagger");
   a.synaptic_delay_s = r.real("synaptic_delay_s");
 
-  auto& f = c.fluid;
-  f.domain_width_m = f.domain_height_m = r.real("domain_m");
-  f.cells_x = f.cells_y = int(r.integer("cells"));
-  f.density_kg_per_m3 = r.real("density_kg_per_m3");
-  f.kinematic_viscosity_m2_per_s = r.real("kinematic_viscosity_m2_per_s");
-  f.advection = *fluid::parse_advection_scheme(r.text("advection"));
-  f.time_step_policy = fluid::TimeStepPolicy::fixed;
-  f.fixed_step_s = r.real("dt_s");
-  // The coupled step is fixed; a fluid running away is caught as a blow-up (default 5 m/s, about
-  // 100 times the swimming flow).
-  f.blowup_speed_m_per_s = r.real("blowup_speed_m_per_s");
-
-  c.coupling.kernel = *ib::parse_kernel(r.text("kernel"));
-  c.coupling.semi_implicit = r.boolean("semi_implicit");
-  c.coupling.mobility = *ib::parse_implicit_mobility(r.text("implicit_mobility"));
-  c.coupling.implicit_mass_factor = r.real("implicit_mass_factor");
+  c.fluid = fluidBoxParams(r);
+  c.coupling = couplingParams(r);
   c.dt_s = r.real("dt_s");
   c.start_y_fraction = r.real("start_y_fraction");
   return c;
@@ -193,7 +180,7 @@ JellyfishKind::JellyfishKind() {
     params_.push_back(real(knotName(k, "tangent"), d.tangent, "1/cycle", -100, 100,
                            "slope d value / d phase at knot " + std::to_string(k)));
   }
-  const std::vector<ParamSpec> rest = {
+  const std::vector<ParamSpec> bell_specs = {
       // --- bell (§3.2, Fig. 12)
       real("bell_diameter_m", bell.diameter_m, "m", 1e-4, 10, "Fig. 12: 40 mm"),
       real("bell_height_m", bell.height_m, "m", 1e-4, 10, "Fig. 12: 28 mm"),
@@ -210,23 +197,27 @@ JellyfishKind::JellyfishKind() {
       boolean("tentacles", bell.tentacles, "passive tentacle chains at the aperture (§3.2)"),
       real("tentacle_length_m", bell.tentacle_length_m, "m", 1e-5, 10, "not given; half a diameter"),
       real("tentacle_area_factor", bell.tentacle_area_factor, "", 1e-9, 10, "Fig. 12: 1/100 of the bell's section"),
-      // --- fluid (§3.2, Fig. 12)
-      real("domain_m", 0.4, "m", 1e-3, 100, "side of the square free-slip box: ten diameters (§3.2)"),
-      integer("cells", 100, 8, 2048, "fluid cells per side (Fig. 12: 100; also 50)"),
-      real("density_kg_per_m3", 1000.0, "kg/m^3", 1e-3, 1e6, "paper: '1' without units, read as g/cm^3"),
-      real("kinematic_viscosity_m2_per_s", 1.304e-6, "m^2/s", 0, 10,
-           "paper: 1.304e-3 without units, read as Pa s (water at 10 C) over 1000 kg/m^3"),
-      choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack"},
-             "velocity advection: the paper's semi-Lagrangian (Stam 1999) or MacCormack"),
-      // --- coupling (§3.2; Peskin 2002)
-      choice("kernel", "peskin4", {"bilinear", "peskin4"},
-             "spreading/interpolation: Peskin's 4-point kernel (default: at dt 0.01 s the semi-implicit step keeps "
-             "the bell smooth only with it, ib/coupling.hpp) or the paper's bilinear 4-face stencil (§3.2)"),
-      boolean("semi_implicit", true, "linearised implicit elastic forces (ib/coupling.hpp); false = explicit Peskin"),
-      choice("implicit_mobility", "stencil", {"stencil", "local_mass"},
-             "fluid response assumed by the semi-implicit force: through the markers' stencils (ib/coupling.hpp), or "
-             "each marker alone"),
-      real("implicit_mass_factor", 1.0, "", 1e-6, 100, "local_mass only: added mass per marker in rho dx^2"),
+  };
+  // --- fluid (§3.2, Fig. 12)
+  const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
+      .domain_m = 0.4,
+      .domain_doc = "side of the square free-slip box: ten diameters (§3.2)",
+      .cells_doc = "fluid cells per side (Fig. 12: 100; also 50)",
+      .density_doc = "paper: '1' without units, read as g/cm^3",
+      .kinematic_viscosity_m2_per_s = 1.304e-6,
+      .viscosity_doc = "paper: 1.304e-3 without units, read as Pa s (water at 10 C) over 1000 kg/m^3",
+      .advection_doc = "velocity advection: the paper's semi-Lagrangian (Stam 1999) or MacCormack",
+  });
+  // --- coupling (§3.2; Peskin 2002)
+  const std::vector<ParamSpec> coupling_specs = couplingSpecs({
+      .kernel = "peskin4",
+      .kernel_doc = "spreading/interpolation: Peskin's 4-point kernel (default: at dt 0.01 s the semi-implicit step "
+                    "keeps the bell smooth only with it, ib/coupling.hpp) or the paper's bilinear 4-face stencil "
+                    "(§3.2)",
+      .mobility_doc = "fluid response assumed by the semi-implicit force: through the markers' stencils "
+                      "(ib/coupling.hpp), or each marker alone",
+  });
+  const std::vector<ParamSpec> rest = {
       real("dt_s", 0.01, "s", 1e-7, 0.1,
            "coupled step (the paper: unstable near 0.01 s explicitly; the semi-implicit step is stable and, with "
            "the Peskin kernel, converged to about 2 mm over two cycles here)"),
@@ -240,7 +231,8 @@ JellyfishKind::JellyfishKind() {
       real("field_rate_hz", 10.0, "Hz", 1e-3, 1e4, "field frames per second when store_fields"),
       integer("tracers_per_side", 0, 0, 200, "trace particles on an n x n lattice around the bell (Fig. 6)"),
   };
-  params_.insert(params_.end(), rest.begin(), rest.end());
+  for (const auto* specs : {&bell_specs, &fluid_specs, &coupling_specs, &rest})
+    params_.insert(params_.end(), specs->begin(), specs->end());
   metrics_ = {
       {"distance_m", "m", "axial (+y) displacement of the bell's centroid over the measured window"},
       {"distance_per_cycle_m", "m", "distance_m / cycles in the window"},

@@ -10,22 +10,10 @@
 #include "fluid/fluid_solver2.hpp"
 #include "ib/coupling.hpp"
 #include "ib/membrane_body.hpp"
+#include "kinds/ib_params.hpp"
 
 namespace creaturelab::kinds {
 namespace {
-
-fluid::FluidParams fluidParams(const ParamReader& r) {
-  fluid::FluidParams f;
-  f.domain_width_m = f.domain_height_m = r.real("domain_m");
-  f.cells_x = f.cells_y = int(r.integer("cells"));
-  f.density_kg_per_m3 = r.real("density_kg_per_m3");
-  f.kinematic_viscosity_m2_per_s = r.real("kinematic_viscosity_m2_per_s");
-  f.advection = *fluid::parse_advection_scheme(r.text("advection"));
-  f.time_step_policy = fluid::TimeStepPolicy::fixed;
-  f.fixed_step_s = r.real("dt_s");
-  f.blowup_speed_m_per_s = r.real("blowup_speed_m_per_s");
-  return f;  // free-slip walls, exact (fast direct) projection
-}
 
 ib::MembraneParams membraneParams(const ParamReader& r) {
   ib::MembraneParams m;
@@ -35,15 +23,6 @@ ib::MembraneParams membraneParams(const ParamReader& r) {
   m.markers = int(r.integer("markers"));
   m.stiffness_n_per_m = r.real("stiffness_n_per_m");
   return m;
-}
-
-ib::CouplingParams couplingParams(const ParamReader& r) {
-  ib::CouplingParams c;
-  c.kernel = *ib::parse_kernel(r.text("kernel"));
-  c.semi_implicit = r.boolean("semi_implicit");
-  c.mobility = *ib::parse_implicit_mobility(r.text("implicit_mobility"));
-  c.implicit_mass_factor = r.real("implicit_mass_factor");
-  return c;
 }
 
 // Laplace's law across the membrane: mean pressure of the cells whose centres lie within R/2 of
@@ -119,23 +98,24 @@ class Recorder {
 }  // namespace
 
 MembraneKind::MembraneKind() {
-  params_ = {
-      // --- coupling (ib/coupling.hpp; Rudolf & Mould 2009 §3.2)
-      choice("kernel", "bilinear", {"bilinear", "peskin4"},
-             "spreading/interpolation: the jellyfish paper's bilinear 4-face stencil or Peskin's 4-point kernel"),
-      boolean("semi_implicit", true, "linearised implicit elastic forces (ib/coupling.hpp); false = explicit Peskin"),
-      choice("implicit_mobility", "stencil", {"stencil", "local_mass"},
-             "fluid response assumed by the semi-implicit force: through the markers' stencils, or each marker alone "
-             "(ib/coupling.hpp)"),
-      real("implicit_mass_factor", 1.0, "", 1e-6, 100, "local_mass only: added mass per marker in rho dx^2"),
-      // --- fluid: a viscous liquid in a free-slip box (the test is of the method, not of sea water)
-      real("domain_m", 1.0, "m", 1e-3, 100, "side of the square free-slip box"),
-      integer("cells", 100, 8, 2048, "fluid cells per side (the jellyfish paper's grids: 50 and 100)"),
-      real("density_kg_per_m3", 1000.0, "kg/m^3", 1e-3, 1e6, "fluid density"),
-      real("kinematic_viscosity_m2_per_s", 1e-2, "m^2/s", 0, 10,
-           "nu; default 1e-2 (10 000 x water) damps the relaxation within a few seconds, see membrane.toml"),
-      choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack"},
-             "velocity advection: semi-Lagrangian (Stam 1999, the jellyfish paper's) or MacCormack"),
+  // --- coupling (ib/coupling.hpp; Rudolf & Mould 2009 §3.2)
+  params_ = couplingSpecs({
+      .kernel = "bilinear",
+      .kernel_doc = "spreading/interpolation: the jellyfish paper's bilinear 4-face stencil or Peskin's 4-point kernel",
+      .mobility_doc = "fluid response assumed by the semi-implicit force: through the markers' stencils, or each "
+                      "marker alone (ib/coupling.hpp)",
+  });
+  // --- fluid: a viscous liquid in a free-slip box (the test is of the method, not of sea water)
+  const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
+      .domain_m = 1.0,
+      .domain_doc = "side of the square free-slip box",
+      .cells_doc = "fluid cells per side (the jellyfish paper's grids: 50 and 100)",
+      .density_doc = "fluid density",
+      .kinematic_viscosity_m2_per_s = 1e-2,
+      .viscosity_doc = "nu; default 1e-2 (10 000 x water) damps the relaxation within a few seconds, see membrane.toml",
+      .advection_doc = "velocity advection: semi-Lagrangian (Stam 1999, the jellyfish paper's) or MacCormack",
+  });
+  const std::vector<ParamSpec> rest = {
       // --- membrane (ib/membrane_body.hpp)
       real("semi_axis_x_m", 0.25, "m", 1e-6, 100, "initial ellipse's semi-axis along x (centred in the box)"),
       real("semi_axis_y_m", 0.15, "m", 1e-6, 100, "initial ellipse's semi-axis along y"),
@@ -150,6 +130,7 @@ MembraneKind::MembraneKind() {
            "fluid speed taken as a blow-up (about 200x the default relaxation flow)"),
       real("frame_rate_hz", 10.0, "Hz", 1e-3, 1e4, "series and marker frames per second"),
   };
+  for (const auto* specs : {&fluid_specs, &rest}) params_.insert(params_.end(), specs->begin(), specs->end());
   metrics_ = {
       {"area_loss_fraction", "", "1 - final enclosed area / initial enclosed area (polygon of the markers)"},
       {"late_area_loss_rate_per_s", "1/s", "area lost over the second half of the run, per initial area per second"},
@@ -173,7 +154,7 @@ std::string MembraneKind::doc() const {
 
 std::string MembraneKind::validate(const Params& p) const {
   ParamReader r(p);
-  if (std::string err = fluidParams(r).validate(); !err.empty()) return err;
+  if (std::string err = fluidBoxParams(r).validate(); !err.empty()) return err;
   if (std::string err = membraneParams(r).validate(); !err.empty()) return err;
   const double half = 0.5 * r.real("domain_m");
   const double dx = r.real("domain_m") / double(r.integer("cells"));
@@ -192,7 +173,7 @@ std::string MembraneKind::validate(const Params& p) const {
 
 Result MembraneKind::run(const Params& p) const {
   ParamReader r(p);
-  fluid::FluidSolver2 fluid(fluidParams(r));
+  fluid::FluidSolver2 fluid(fluidBoxParams(r));
   const ib::MembraneParams mp = membraneParams(r);
   const ib::MembraneBody body(mp.markers, mp.stiffness_n_per_m);
   ib::ImmersedBoundary2 coupling(fluid, body, ib::ellipseMarkers(mp), couplingParams(r));

@@ -4,73 +4,23 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <set>
 #include <toml++/toml.h>
 
 #include "core/text.hpp"
+#include "kinds/param_toml.hpp"
 #include "runner/value_json.hpp"
 
 namespace creaturelab::runner {
 namespace {
 
 using kinds::ParamSpec;
-using kinds::ParamType;
-
-// Error context: the file and, when known, the line of the offending node.
-struct Context {
-  std::string file;
-  [[noreturn]] void fail(const std::string& key, const std::string& msg, const toml::node* node = nullptr) const {
-    std::string where = file;
-    if (node && node->source().begin.line > 0) where += ":" + std::to_string(node->source().begin.line);
-    throw ExperimentError(where + ": " + (key.empty() ? "" : key + ": ") + msg);
-  }
-};
-
-// The nearest known name by edit distance, else the first that starts with what was typed
-// (units are spelled out in names, so "spring_k" is a prefix of "spring_k_n_per_m").
-std::string suggestion(const std::string& name, const std::vector<std::string>& known) {
-  std::string near = core::closestMatch(name, known);
-  if (near.empty() && name.size() >= 3)
-    for (const auto& k : known)
-      if (k.rfind(name, 0) == 0) {
-        near = k;
-        break;
-      }
-  return near.empty() ? "" : " (did you mean '" + near + "'?)";
-}
-
-std::optional<Value> scalarValue(const toml::node& node) {
-  if (auto v = node.as_integer()) return Value(std::int64_t(v->get()));
-  if (auto v = node.as_floating_point()) return Value(v->get());
-  if (auto v = node.as_boolean()) return Value(v->get());
-  if (auto v = node.as_string()) return Value(v->get());
-  return std::nullopt;
-}
-
-// Converts to the parameter's type (an integer literal is a fine real) and checks the range.
-Value coerce(const ParamSpec& spec, Value v, const Context& ctx, const std::string& key, const toml::node* node) {
-  if (auto i = std::get_if<std::int64_t>(&v); i && (spec.type == ParamType::Real || spec.type == ParamType::RealOrAuto))
-    v = double(*i);
-  if (auto d = std::get_if<double>(&v); d && spec.type == ParamType::Integer && std::floor(*d) == *d && std::fabs(*d) < 9e15)
-    v = std::int64_t(*d);
-  std::string expected = kinds::checkValue(spec, v);
-  if (!expected.empty())
-    ctx.fail(key, "got " + kinds::describeValue(v) + ", expected " + expected + " (" + spec.doc + ")", node);
-  return v;
-}
+using Context = kinds::TomlContext<ExperimentError>;
 
 const ParamSpec& specFor(const kinds::Kind& kind, const std::string& name, const Context& ctx, const std::string& key,
                          const toml::node* node) {
-  std::vector<std::string> names;
-  for (const auto& s : kind.params()) {
-    if (s.name == name) return s;
-    names.push_back(s.name);
-  }
-  ctx.fail(key, "unknown parameter '" + name + "' for kind '" + kind.name() + "'" + suggestion(name, names) +
-                    "; `creaturelab list` shows every parameter",
-           node);
+  return kinds::specFor(kind, name, ctx, key, node, "creaturelab list");
 }
 
 // "start:stop:step", inclusive of stop up to rounding; values are start + i*step rounded to 12
@@ -88,7 +38,7 @@ std::vector<Value> expandRange(const std::string& text, const ParamSpec& spec, c
   for (long i = 0; i < n; ++i) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.12g", a + double(i) * step);
-    values.push_back(coerce(spec, Value(std::strtod(buf, nullptr)), ctx, key, node));
+    values.push_back(kinds::coerce(spec, Value(std::strtod(buf, nullptr)), ctx, key, node));
   }
   return values;
 }
@@ -147,7 +97,7 @@ Where parseWhere(const toml::node* node, const Context& ctx, const std::string& 
   auto* t = node->as_table();
   if (!t) ctx.fail(key, "expected a table such as { layout = \"overextended\" }", node);
   for (auto&& [k, v] : *t) {
-    auto value = scalarValue(v);
+    auto value = kinds::scalarValue(v);
     if (!value) ctx.fail(key + "." + std::string(k.str()), "expected a number, string or boolean", &v);
     where.emplace_back(std::string(k.str()), *value);
   }
@@ -160,11 +110,7 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
                                                  "expect",    "direction",   "strict",           "where",
                                                  "numerator", "denominator", "numerator_metric", "denominator_metric",
                                                  "numerator_base", "denominator_base", "known_deviation"};
-  for (auto&& [k, v] : t) {
-    std::string ks(k.str());
-    if (std::find(known.begin(), known.end(), ks) == known.end())
-      ctx.fail(key, "unknown key '" + ks + "'" + suggestion(ks, known), &v);
-  }
+  kinds::checkKeys(t, known, ctx, key);
   CheckSpec c;
   c.name = t["name"].value_or(std::string());
   c.type = t["type"].value_or(std::string());
@@ -182,14 +128,14 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   static const std::vector<std::string> types = {"argmax", "argmin", "range", "ratio", "monotonic", "order"};
   if (std::find(types.begin(), types.end(), c.type) == types.end())
     ctx.fail(key + ".type", "'" + c.type + "' is not one of argmax | argmin | range | ratio | monotonic | order" +
-                                suggestion(c.type, types), t.get("type"));
+                                core::didYouMean(c.type, types), t.get("type"));
   std::vector<std::string> metric_names;
   for (const auto& m : kind.metrics()) metric_names.push_back(m.name);
   for (const auto& [field, name] : {std::pair{"metric", c.metric}, std::pair{"numerator_metric", c.numerator_metric},
                                     std::pair{"denominator_metric", c.denominator_metric}})
     if (std::find(metric_names.begin(), metric_names.end(), name) == metric_names.end())
       ctx.fail(key + "." + field, "'" + name + "' is not a metric of kind '" + kind.name() + "'" +
-                                      suggestion(name, metric_names), t.get(field));
+                                      core::didYouMean(name, metric_names), t.get(field));
   const bool needs_axis = c.type == "argmax" || c.type == "argmin" || c.type == "monotonic" || c.type == "order";
   if (needs_axis && c.axis.empty()) ctx.fail(key, "a " + c.type + " check needs an axis", &t);
   if (c.type == "monotonic" && c.direction != "increasing" && c.direction != "decreasing")
@@ -238,17 +184,12 @@ nlohmann::json resolvedJson(const Experiment& e) {
 
 Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides,
                           const kinds::Registry& registry) {
-  if (!std::filesystem::is_regular_file(path)) throw ExperimentError(path + ": no such experiment file");
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in) throw ExperimentError(path + ": cannot read the file");
-  return loadExperimentText(text.str(), path, overrides, registry);
+  return loadExperimentText(Context{path}.readText("experiment"), path, overrides, registry);
 }
 
 Experiment loadExperimentText(const std::string& text, const std::string& path,
                               const std::vector<std::string>& overrides, const kinds::Registry& registry) {
-  Context ctx{path};
+  const Context ctx{path};
   toml::table root;
   try {
     root = toml::parse(text, path);
@@ -260,11 +201,7 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
   for (const auto& o : overrides) applyOverride(root, o);
 
   static const std::vector<std::string> top = {"kind", "title", "description", "params", "sweep", "case", "check", "output"};
-  for (auto&& [k, v] : root) {
-    std::string ks(k.str());
-    if (std::find(top.begin(), top.end(), ks) == top.end())
-      ctx.fail("", "unknown key '" + ks + "'" + suggestion(ks, top), &v);
-  }
+  kinds::checkKeys(root, top, ctx, "");
 
   Experiment e;
   e.path = path;
@@ -275,7 +212,8 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
   if (!kind_name) ctx.fail("kind", "missing: every experiment names its kind, e.g. kind = \"strand\"");
   e.kind = *kind_name;
   const kinds::Kind* kind = registry.find(e.kind);
-  if (!kind) ctx.fail("kind", "unknown kind '" + e.kind + "'" + suggestion(e.kind, registry.names()), root.get("kind"));
+  if (!kind)
+    ctx.fail("kind", "unknown kind '" + e.kind + "'" + core::didYouMean(e.kind, registry.names()), root.get("kind"));
   e.title = root["title"].value_or(e.stem);
 
   if (const toml::node* p = root.get("params")) {
@@ -283,10 +221,7 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
     if (!t) ctx.fail("params", "expected a table [params]", p);
     for (auto&& [k, v] : *t) {
       const std::string name(k.str()), key = "params." + name;
-      const ParamSpec& spec = specFor(*kind, name, ctx, key, &v);
-      auto value = scalarValue(v);
-      if (!value) ctx.fail(key, "expected " + kinds::typeName(spec.type), &v);
-      e.params[name] = coerce(spec, *value, ctx, key, &v);
+      e.params[name] = kinds::paramValue(specFor(*kind, name, ctx, key, &v), v, ctx, key);
     }
   }
 
@@ -301,9 +236,9 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
         axis.values = expandRange(str->get(), spec, ctx, key, &v);
       } else if (auto arr = v.as_array()) {
         for (auto&& item : *arr) {
-          auto value = scalarValue(item);
+          auto value = kinds::scalarValue(item);
           if (!value) ctx.fail(key, "list items must be numbers, strings or booleans", &item);
-          axis.values.push_back(coerce(spec, *value, ctx, key, &item));
+          axis.values.push_back(kinds::coerce(spec, *value, ctx, key, &item));
         }
       } else {
         ctx.fail(key, "expected a list [a, b, ...] or a range \"start:stop:step\"", &v);
@@ -328,10 +263,8 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
         }
         for (const auto& a : e.axes)
           if (a.name == name) ctx.fail(key + "." + name, "is also a [sweep] axis; set it in one place", &v);
-        const ParamSpec& spec = specFor(*kind, name, ctx, key + "." + name, &v);
-        auto value = scalarValue(v);
-        if (!value) ctx.fail(key + "." + name, "expected " + kinds::typeName(spec.type), &v);
-        cs.values[name] = coerce(spec, *value, ctx, key + "." + name, &v);
+        const std::string item_key = key + "." + name;
+        cs.values[name] = kinds::paramValue(specFor(*kind, name, ctx, item_key, &v), v, ctx, item_key);
         cs.keys.push_back(name);
       }
       if (cs.label.empty()) cs.label = "case " + std::to_string(n - 1);
@@ -350,11 +283,7 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
     auto* t = o->as_table();
     if (!t) ctx.fail("output", "expected a table [output]", o);
     static const std::vector<std::string> known = {"dir", "lagrangian"};
-    for (auto&& [k, v] : *t) {
-      std::string ks(k.str());
-      if (std::find(known.begin(), known.end(), ks) == known.end())
-        ctx.fail("output", "unknown key '" + ks + "'" + suggestion(ks, known), &v);
-    }
+    kinds::checkKeys(*t, known, ctx, "output");
     e.output.dir = (*t)["dir"].value_or(std::string());
     e.output.lagrangian = (*t)["lagrangian"].value_or(true);
   }
@@ -364,11 +293,11 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
   for (const auto& chk : e.checks) {
     const std::string key = "check '" + chk.name + "'";
     if (!chk.axis.empty() && std::find(columns.begin(), columns.end(), chk.axis) == columns.end())
-      ctx.fail(key, "axis '" + chk.axis + "' is not swept" + suggestion(chk.axis, columns));
+      ctx.fail(key, "axis '" + chk.axis + "' is not swept" + core::didYouMean(chk.axis, columns));
     for (const Where* w : {&chk.where, &chk.numerator, &chk.denominator, &chk.numerator_base, &chk.denominator_base})
       for (const auto& [k, v] : *w)
         if (k != "label" && std::find(columns.begin(), columns.end(), k) == columns.end())
-          ctx.fail(key, "selection key '" + k + "' is not a swept column" + suggestion(k, columns));
+          ctx.fail(key, "selection key '" + k + "' is not a swept column" + core::didYouMean(k, columns));
   }
 
   e.resolved_json = resolvedJson(e).dump();

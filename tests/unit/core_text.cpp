@@ -31,6 +31,15 @@ TEST(Text, ClosestMatchSuggestsNearKeysOnly) {
   EXPECT_EQ(cl::closestMatch("ab", {"xy", "ba"}), "xy");  // both distance 2: earlier wins
 }
 
+TEST(Text, DidYouMeanNamesAMatchOrAPrefixedName) {
+  const std::vector<std::string> keys = {"spring_k_n_per_m", "cycles"};
+  EXPECT_EQ(cl::didYouMean("cycels", keys), " (did you mean 'cycles'?)");
+  // Too far by edit distance, but the name with its unit spelled out starts with it.
+  EXPECT_EQ(cl::didYouMean("spring_k", keys), " (did you mean 'spring_k_n_per_m'?)");
+  EXPECT_EQ(cl::didYouMean("sp", keys), "");  // a prefix must be 3 characters or more
+  EXPECT_EQ(cl::didYouMean("unrelated", keys), "");
+}
+
 TEST(Text, FormatNumberIsShortestRoundTrip) {
   EXPECT_EQ(cl::formatNumber(0.1), "0.1");
   EXPECT_EQ(cl::formatNumber(3.0), "3");

@@ -8,6 +8,7 @@ creaturelab_test(fit_unit_test unit
   LIBS cl_fit cl_runner
 )
 target_include_directories(fit_unit_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})
+target_compile_definitions(fit_unit_test PRIVATE CREATURELAB_TEST_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 
 # physics: fitting the curve to a simulated jellyfish (one short run on the 100² grid, about 1 s).
 creaturelab_test(fit_jellyfish_test physics

@@ -2,7 +2,7 @@
 // forms: the optimum is found; the fit is bitwise the same for 1, 2 and 4 threads; an interrupted
 // fit resumes from its record (in memory and through the HDF5 file) to the same result, reusing
 // every recorded run; the target form solves a bounded least-squares problem; bad controller files
-// are rejected before any run.
+// are rejected before any run, and the shipped ones (experiments/fit/) load.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -287,6 +287,25 @@ TEST(FitControllerBadInput, RejectsUnknownParametersBadBoundsAndBadMetrics) {
       << e;
   e = specError("kind = \"jellyfish\"\n[objective]\nmetric = \"distance_per_cycle_m\"\n", r);
   EXPECT_NE(e.find("tune: missing"), std::string::npos) << e;
+}
+
+TEST(FitControllerSpec, ShippedFitFilesLoad) {
+  // experiments/fit/ holds controller-fit files, which the runner's ShippedExperimentsLoadAndExpand
+  // passes over (another format): each must load against the real kinds as `creaturelab fit
+  // controller` loads it, start point included.
+  const std::filesystem::path dir = std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / "experiments" / "fit";
+  const kinds::Registry r = kinds::defaultRegistry();
+  int n = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".toml") continue;
+    ++n;
+    try {
+      EXPECT_FALSE(loadControllerSpec(entry.path().string(), r).tuned.empty()) << entry.path();
+    } catch (const FitError& err) {
+      ADD_FAILURE() << err.what();
+    }
+  }
+  EXPECT_GE(n, 2);
 }
 
 }  // namespace

@@ -630,7 +630,7 @@ TEST(RunnerExperimentError, OscillatorStepLongerThanTheRun) {
 TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
   // Every experiment file in the repository (and the reproduce list's entries) is valid.
   // experiments/fit/ holds controller-fit specifications (`creaturelab fit controller`), another
-  // format, read by src/fit and tested there.
+  // format, read by src/fit and tested there (fit_controller_test.cpp, ShippedFitFilesLoad).
   const std::filesystem::path root = std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / "experiments";
   // Paths inside experiment files (charlotte.toml's image_file) are relative to the repository
   // root, where the README runs them from.

@@ -1,0 +1,47 @@
+#include "kinds/ib_params.hpp"
+
+namespace creaturelab::kinds {
+
+std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& d) {
+  return {
+      real("domain_m", d.domain_m, "m", 1e-3, 100, d.domain_doc),
+      integer("cells", 100, 8, 2048, d.cells_doc),
+      real("density_kg_per_m3", 1000.0, "kg/m^3", 1e-3, 1e6, d.density_doc),
+      real("kinematic_viscosity_m2_per_s", d.kinematic_viscosity_m2_per_s, "m^2/s", 0, 10, d.viscosity_doc),
+      choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack"}, d.advection_doc),
+  };
+}
+
+std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& d) {
+  return {
+      choice("kernel", d.kernel, {"bilinear", "peskin4"}, d.kernel_doc),
+      boolean("semi_implicit", true, "linearised implicit elastic forces (ib/coupling.hpp); false = explicit Peskin"),
+      choice("implicit_mobility", "stencil", {"stencil", "local_mass"}, d.mobility_doc),
+      real("implicit_mass_factor", 1.0, "", 1e-6, 100, "local_mass only: added mass per marker in rho dx^2"),
+  };
+}
+
+fluid::FluidParams fluidBoxParams(const ParamReader& r) {
+  fluid::FluidParams f;  // free-slip walls, exact (fast direct) projection
+  f.domain_width_m = f.domain_height_m = r.real("domain_m");
+  f.cells_x = f.cells_y = int(r.integer("cells"));
+  f.density_kg_per_m3 = r.real("density_kg_per_m3");
+  f.kinematic_viscosity_m2_per_s = r.real("kinematic_viscosity_m2_per_s");
+  f.advection = *fluid::parse_advection_scheme(r.text("advection"));
+  // The coupled step is fixed; a fluid running away is caught as a blow-up.
+  f.time_step_policy = fluid::TimeStepPolicy::fixed;
+  f.fixed_step_s = r.real("dt_s");
+  f.blowup_speed_m_per_s = r.real("blowup_speed_m_per_s");
+  return f;
+}
+
+ib::CouplingParams couplingParams(const ParamReader& r) {
+  ib::CouplingParams c;
+  c.kernel = *ib::parse_kernel(r.text("kernel"));
+  c.semi_implicit = r.boolean("semi_implicit");
+  c.mobility = *ib::parse_implicit_mobility(r.text("implicit_mobility"));
+  c.implicit_mass_factor = r.real("implicit_mass_factor");
+  return c;
+}
+
+}  // namespace creaturelab::kinds

@@ -1,0 +1,45 @@
+#pragma once
+// The parameters the immersed-boundary kinds (jellyfish, membrane) share: a fluid in a square
+// free-slip box and its coupling to the markers (ib/coupling.hpp). Declared and read in one place
+// so that the names a kind declares are the names it reads. Defaults and docs stay each kind's:
+// the jellyfish cites its paper's figures, the membrane its own test of the method.
+#include <string>
+#include <vector>
+
+#include "fluid/fluid_params.hpp"
+#include "ib/coupling.hpp"
+#include "kinds/params.hpp"
+
+namespace creaturelab::kinds {
+
+// What each kind says about its fluid box.
+struct FluidBoxDefaults {
+  double domain_m = 0;
+  std::string domain_doc;
+  std::string cells_doc;
+  std::string density_doc;
+  double kinematic_viscosity_m2_per_s = 0;
+  std::string viscosity_doc;
+  std::string advection_doc;
+};
+
+// domain_m, cells, density_kg_per_m3, kinematic_viscosity_m2_per_s, advection.
+std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& defaults);
+
+// What each kind says about the coupling.
+struct CouplingDefaults {
+  std::string kernel;  // "bilinear" | "peskin4"
+  std::string kernel_doc;
+  std::string mobility_doc;
+};
+
+// kernel, semi_implicit, implicit_mobility, implicit_mass_factor.
+std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& defaults);
+
+// The box's fluid from fluidBoxSpecs' parameters, dt_s (the fixed step) and blowup_speed_m_per_s,
+// which each kind declares itself: their ranges and defaults differ.
+fluid::FluidParams fluidBoxParams(const ParamReader& r);
+
+ib::CouplingParams couplingParams(const ParamReader& r);
+
+}  // namespace creaturelab::kinds
