@@ -1,7 +1,6 @@
 #include "fit/controller_record.hpp"
 
 #include <cmath>
-#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -20,11 +19,13 @@ namespace {
 
 std::string specSha(const ControllerSpec& spec) { return core::sha256Hex(spec.source_text); }
 
-void writeMatrix(const io::Group& g, const std::string& name, const std::vector<std::vector<double>>& rows,
-                 std::size_t columns) {
+// One row of `columns` values per record: its vector `field`.
+template <class Record>
+void writeMatrix(const io::Group& g, const std::string& name, const std::vector<Record>& records,
+                 std::vector<double> Record::*field, std::size_t columns) {
   std::vector<double> flat;
-  for (const auto& r : rows) flat.insert(flat.end(), r.begin(), r.end());
-  io::writeArray(g, name, flat.data(), {hsize_t(rows.size()), hsize_t(columns)});
+  for (const auto& r : records) flat.insert(flat.end(), (r.*field).begin(), (r.*field).end());
+  io::writeArray(g, name, flat.data(), {hsize_t(records.size()), hsize_t(columns)});
 }
 
 void writeMetrics(const io::Group& g, const std::map<std::string, double>& metrics) {
@@ -45,66 +46,38 @@ void writeBody(const io::Group& root, const ControllerSpec& spec, const std::vec
 
   const std::size_t n = spec.tuned.size();
   const io::Group tuned = root.createGroup("tuned");
-  std::vector<std::string> names, units;
-  std::vector<double> lower, upper, step, start;
-  for (const auto& t : spec.tuned) {
-    names.push_back(t.name), units.push_back(t.unit);
-    lower.push_back(t.lower), upper.push_back(t.upper), step.push_back(t.step), start.push_back(t.start);
-  }
-  io::writeVector(tuned, "name", names);
-  io::writeVector(tuned, "unit", units);
-  io::writeVector(tuned, "lower", lower);
-  io::writeVector(tuned, "upper", upper);
-  io::writeVector(tuned, "step", step);
-  io::writeVector(tuned, "start", start);
+  io::writeColumn(tuned, "name", spec.tuned, &TunedParam::name);
+  io::writeColumn(tuned, "unit", spec.tuned, &TunedParam::unit);
+  io::writeColumn(tuned, "lower", spec.tuned, &TunedParam::lower);
+  io::writeColumn(tuned, "upper", spec.tuned, &TunedParam::upper);
+  io::writeColumn(tuned, "step", spec.tuned, &TunedParam::step);
+  io::writeColumn(tuned, "start", spec.tuned, &TunedParam::start);
 
   const io::Group ev = root.createGroup("evaluations");
-  std::vector<std::vector<double>> xs;
-  std::vector<std::int8_t> ok;
-  std::vector<double> cost, wall;
-  std::vector<std::string> message;
+  writeMatrix(ev, "x", evaluations, &Evaluation::x, n);
+  io::writeColumn(ev, "ok", evaluations, &Evaluation::ok);
+  io::writeColumn(ev, "cost", evaluations, &Evaluation::cost);
+  io::setAttr(io::writeColumn(ev, "wall_s", evaluations, &Evaluation::wall_s), "unit", "s");
+  io::writeColumn(ev, "message", evaluations, &Evaluation::message);
   std::set<std::string> metric_names;
-  for (const auto& e : evaluations) {
-    xs.push_back(e.x);
-    ok.push_back(e.ok ? 1 : 0);
-    cost.push_back(e.cost);
-    wall.push_back(e.wall_s);
-    message.push_back(e.message);
+  for (const auto& e : evaluations)
     for (const auto& [name, v] : e.metrics) metric_names.insert(name);
-  }
-  writeMatrix(ev, "x", xs, n);
-  io::writeVector(ev, "ok", ok);
-  io::writeVector(ev, "cost", cost);
-  io::setAttr(io::writeVector(ev, "wall_s", wall), "unit", "s");
-  io::writeVector(ev, "message", message);
   const io::Group metrics = ev.createGroup("metrics");
-  for (const auto& name : metric_names) {
-    std::vector<double> column;
-    for (const auto& e : evaluations) {
+  for (const auto& name : metric_names)
+    io::writeColumn(metrics, name, evaluations, [&](const Evaluation& e) {
       auto it = e.metrics.find(name);
-      column.push_back(it == e.metrics.end() ? std::nan("") : it->second);
-    }
-    io::writeVector(metrics, name, column);
-  }
+      return it == e.metrics.end() ? std::nan("") : it->second;
+    });
 
   const io::Group h = root.createGroup("history");
-  std::vector<std::int64_t> iteration, asked;
-  std::vector<std::int8_t> accepted;
-  std::vector<double> hcost, objective, gnorm, snorm;
-  std::vector<std::vector<double>> hx;
-  for (const auto& r : history) {
-    iteration.push_back(r.iteration), asked.push_back(r.evaluations), accepted.push_back(r.accepted ? 1 : 0);
-    hcost.push_back(r.cost), objective.push_back(r.objective), gnorm.push_back(r.gradient_max_norm);
-    snorm.push_back(r.step_norm), hx.push_back(r.x);
-  }
-  io::writeVector(h, "iteration", iteration);
-  io::writeVector(h, "accepted", accepted);
-  io::writeVector(h, "cost", hcost);
-  io::writeVector(h, "objective", objective);
-  io::writeVector(h, "gradient_max_norm", gnorm);
-  io::writeVector(h, "step_norm", snorm);
-  io::writeVector(h, "evaluations", asked);
-  writeMatrix(h, "x", hx, n);
+  io::writeColumn(h, "iteration", history, &IterationRecord::iteration);
+  io::writeColumn(h, "accepted", history, &IterationRecord::accepted);
+  io::writeColumn(h, "cost", history, &IterationRecord::cost);
+  io::writeColumn(h, "objective", history, &IterationRecord::objective);
+  io::writeColumn(h, "gradient_max_norm", history, &IterationRecord::gradient_max_norm);
+  io::writeColumn(h, "step_norm", history, &IterationRecord::step_norm);
+  io::writeColumn(h, "evaluations", history, &IterationRecord::evaluations);
+  writeMatrix(h, "x", history, &IterationRecord::x, n);
 }
 
 void writeRun(const io::Group& g, const kinds::Result& run) {

@@ -1,9 +1,9 @@
 #include "fit/spline_store.hpp"
 
 #include <cmath>
-#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "core/text.hpp"
 #include "fit/fit_error.hpp"
@@ -41,9 +41,7 @@ void writeContents(const io::Group& root, const Profile& profile, const SplineFi
   io::writeVector(knots, "tangent", r.tangents);
   io::setAttr(io::writeVector(knots, "value_sigma", r.value_sigma), "doc", "1-sigma, sqrt of the covariance diagonal");
   io::setAttr(io::writeVector(knots, "tangent_sigma", r.tangent_sigma), "unit", "1/cycle");
-  std::vector<std::int8_t> at_bound;
-  for (bool b : r.value_at_bound) at_bound.push_back(b ? 1 : 0);
-  io::writeVector(knots, "value_at_bound", at_bound);
+  io::writeColumn(knots, "value_at_bound", r.value_at_bound, std::identity{});
   io::writeVector(knots, "start_value", r.start_values);
   io::writeVector(knots, "start_tangent", r.start_tangents);
 

@@ -16,6 +16,7 @@
 // handle, not the file contents, so writers accept `const Group&` (and temporaries).
 
 #include "io/hdf5_attribute.hpp"  // IWYU pragma: export
+#include "io/hdf5_columns.hpp"    // IWYU pragma: export
 #include "io/hdf5_dataset.hpp"    // IWYU pragma: export
 #include "io/hdf5_digest.hpp"     // IWYU pragma: export
 #include "io/hdf5_error.hpp"      // IWYU pragma: export

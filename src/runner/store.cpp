@@ -255,18 +255,10 @@ static void writeIndexContents(const io::Group& root, const Experiment& e, const
   writeProvenance(root, provenance);
 
   const io::Group sweep = root.requireGroup("sweep");
-  std::vector<std::int64_t> index;
-  std::vector<std::string> label, status, message;
-  for (const auto& row : table.rows) {
-    index.push_back(row.index);
-    label.push_back(row.label);
-    status.push_back(row.status);
-    message.push_back(row.message);
-  }
-  io::writeVector(sweep, "point_index", index);
-  io::writeVector(sweep, "label", label);
-  io::writeVector(sweep, "status", status);
-  io::writeVector(sweep, "message", message);
+  io::writeColumn(sweep, "point_index", table.rows, &Row::index);
+  io::writeColumn(sweep, "label", table.rows, &Row::label);
+  io::writeColumn(sweep, "status", table.rows, &Row::status);
+  io::writeColumn(sweep, "message", table.rows, &Row::message);
   nlohmann::json types = nlohmann::json::object();
   for (const auto& c : table.columns) {
     const std::string type = columnType(table, c).type;
@@ -276,31 +268,20 @@ static void writeIndexContents(const io::Group& root, const Experiment& e, const
       if (spec.name == c) io::setAttr(sweep.openDataset(c), "unit", spec.unit);
   }
   for (const auto& m : kind.metrics()) {
-    std::vector<double> values;
-    for (const auto& row : table.rows) values.push_back(row.metrics.at(m.name));
-    io::setAttr(io::writeVector(sweep, m.name, values), "unit", m.unit);
+    const auto metric = [&](const Row& row) { return row.metrics.at(m.name); };
+    io::setAttr(io::writeColumn(sweep, m.name, table.rows, metric), "unit", m.unit);
   }
   io::setAttr(sweep, "columns_json", nlohmann::json(table.columns).dump());
   io::setAttr(sweep, "column_types_json", types.dump());
   io::setAttr(sweep, "metrics_json", nlohmann::json(table.metrics).dump());
 
   const io::Group chk = root.requireGroup("checks");
-  std::vector<std::string> name, type, expected, got, known;
-  std::vector<std::int8_t> passed;
-  for (const auto& c : checks) {
-    name.push_back(c.name);
-    type.push_back(c.type);
-    expected.push_back(c.expected);
-    got.push_back(c.got);
-    passed.push_back(c.passed ? 1 : 0);
-    known.push_back(c.known_deviation);
-  }
-  io::writeVector(chk, "name", name);
-  io::writeVector(chk, "type", type);
-  io::writeVector(chk, "expected", expected);
-  io::writeVector(chk, "got", got);
-  io::writeVector(chk, "passed", passed);
-  io::writeVector(chk, "known_deviation", known);
+  io::writeColumn(chk, "name", checks, &CheckOutcome::name);
+  io::writeColumn(chk, "type", checks, &CheckOutcome::type);
+  io::writeColumn(chk, "expected", checks, &CheckOutcome::expected);
+  io::writeColumn(chk, "got", checks, &CheckOutcome::got);
+  io::writeColumn(chk, "passed", checks, &CheckOutcome::passed);
+  io::writeColumn(chk, "known_deviation", checks, &CheckOutcome::known_deviation);
 
   const io::Group links = root.requireGroup("points");
   for (const auto& row : table.rows)

@@ -1,4 +1,4 @@
-// HDF5 wrapper: files, groups, datasets, links, errors.
+// HDF5 wrapper: files, groups, datasets, columns of records, links, errors.
 #include "scratch_dir_test.hpp"
 #include "io/hdf5.hpp"
 
@@ -249,6 +249,31 @@ TEST_F(Hdf5Test, IdenticalContentGivesIdenticalBytes) {
   std::this_thread::sleep_for(std::chrono::milliseconds(1100));  // object times have 1 s resolution
   write(file("second.h5"));
   EXPECT_EQ(readBytes(file("first.h5")), readBytes(file("second.h5")));
+}
+
+TEST_F(Hdf5Test, ColumnsOfRecordsAreStoredAsTheVectorsOfTheirFields) {
+  struct Record {
+    std::string name;
+    int count;
+    bool ok;
+    double value;
+  };
+  const std::vector<Record> records = {{"a", 1, true, 0.5}, {"b", -2, false, -1e300}};
+  {
+    auto f = io::File::create(file("columns.h5"));
+    io::writeColumn(f.root(), "name", records, &Record::name);
+    io::writeColumn(f.root(), "count", records, &Record::count);
+    io::writeColumn(f.root(), "ok", records, &Record::ok);
+    io::writeColumn(f.root(), "twice", records, [](const Record& r) { return 2 * r.value; });
+  }
+  {
+    auto f = io::File::create(file("vectors.h5"));
+    io::writeVector(f.root(), "name", std::vector<std::string>{"a", "b"});
+    io::writeVector(f.root(), "count", std::vector<std::int64_t>{1, -2});
+    io::writeVector(f.root(), "ok", std::vector<std::int8_t>{1, 0});
+    io::writeVector(f.root(), "twice", std::vector<double>{1.0, -2e300});
+  }
+  EXPECT_EQ(readBytes(file("columns.h5")), readBytes(file("vectors.h5")));
 }
 
 TEST_F(Hdf5Test, ThreadsMayWriteDifferentFilesConcurrently) {
