@@ -2,8 +2,10 @@
 // coupled bell + fluid step at the paper's 50² and 100² grids (Rudolf & Mould 2009 §4: 30-40
 // frames/s on a 1.6 GHz laptop; IB2d's Python needs ~480 s per simulated second at 100²).
 // Goal: >= 20 simulated s per wall s at 100² on one core. Measured with the defaults (Peskin
-// kernel, stencil mobility): 13.2 at 100² (0.76 ms per step, 0.40 ms of it the fluid), 23.0 at
-// 50²; the bilinear kernel's rows (peskin4:0) crumple at 100² after 6.2 s at this step and stop. One benchmark iteration is one
+// kernel, stencil mobility, dense LU of the 106 x 106 implicit system: ib/coupling.cpp): 17.9 at
+// 100² (0.56 ms per step: the fluid 0.41 ms, of it the pressure solve 0.14; the LU 0.09), 38.0 at
+// 50². The bilinear kernel's rows (peskin4:0) are marginal at this step: at 50² the bell crumples
+// after 6.4 s and the run stops. One benchmark iteration is one
 // simulated second at the kind's default step (0.01 s) after a one-cycle warm-up, with the
 // paper's parameters at 0.7 Hz. Reported as "sim_s_per_wall_s" from the thread's CPU time, so
 // other processes on a shared machine do not inflate it (the solver is single-threaded).
@@ -33,9 +35,7 @@ SwimmerConfig paperConfig(int cells, ib::Kernel kernel) {
   return c;
 }
 
-void BM_SimulatedSecond(benchmark::State& state) {
-  const auto kernel = state.range(1) == 0 ? ib::Kernel::bilinear : ib::Kernel::peskin4;
-  const SwimmerConfig config = paperConfig(static_cast<int>(state.range(0)), kernel);
+void measure(benchmark::State& state, const SwimmerConfig& config) {
   const long steps_per_second = std::lround(1.0 / config.dt_s);
   // A fresh swimmer every 10 simulated seconds (not timed): it swims away over longer runs.
   auto fresh = [&] {
@@ -68,6 +68,11 @@ void BM_SimulatedSecond(benchmark::State& state) {
   state.counters["ms_per_step"] = 1e3 * cpu / static_cast<double>(seconds * steps_per_second);
   state.counters["markers"] = static_cast<double>(swimmer->markers_m().size());
 }
+
+void BM_SimulatedSecond(benchmark::State& state) {
+  const auto kernel = state.range(1) == 0 ? ib::Kernel::bilinear : ib::Kernel::peskin4;
+  measure(state, paperConfig(static_cast<int>(state.range(0)), kernel));
+}
 BENCHMARK(BM_SimulatedSecond)
     ->ArgNames({"cells", "peskin4"})
     ->Args({50, 0})
@@ -77,6 +82,21 @@ BENCHMARK(BM_SimulatedSecond)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0);
+
+// The resolution the stagger and frequency experiments use (experiments/jellyfish/convergence.toml):
+// 200², 64 bell segments (212 implicit unknowns), dt as given in ms.
+void BM_SimulatedSecondResolved(benchmark::State& state) {
+  SwimmerConfig c = paperConfig(200, ib::Kernel::peskin4);
+  c.bell.segments = 64;
+  c.fluid.fixed_step_s = c.dt_s = 1e-3 * static_cast<double>(state.range(0));
+  measure(state, c);
+}
+BENCHMARK(BM_SimulatedSecondResolved)
+    ->ArgNames({"dt_ms"})
+    ->Arg(5)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(4.0);
 
 }  // namespace
 }  // namespace creaturelab::jellyfish
