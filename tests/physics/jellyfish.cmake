@@ -1,8 +1,9 @@
 # tests for physics/jellyfish: the swimmer (bell + muscles + fluid, immersed-boundary coupled) on
-# short runs: determinism, mirror symmetry, contraction depth, energy, stability, step convergence.
-# About 40 s in Release on one core.
+# short runs: determinism, mirror symmetry, contraction depth, energy, stability, step convergence;
+# and the stagger comparison on the resolved 200² grid. About 65 s in Release on one core.
 creaturelab_test(jellyfish_physics_test physics
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/jellyfish_swim_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/jellyfish_stagger_test.cpp
   LIBS cl_jellyfish
 )

@@ -427,6 +427,31 @@ TEST(Coupling, StencilGramMatrixIsSymmetricAndMatchesTheWeights) {
   }
 }
 
+// The coupling's mobility uses the sparse Gram matrix: it must be the dense one scaled (to
+// round-off), hold only the overlapping stencils, and be exactly symmetric (each entry's products
+// summed in the same order both ways), so that M stays symmetric in the implicit solve.
+TEST(Coupling, SparseGramMatrixIsTheScaledDenseOneAndExactlySymmetric) {
+  fluid::FluidSolver2 fluid(smallBox());
+  const std::vector<Vec2> x = jitteredRing(12, 7);
+  for (Kernel kernel : {Kernel::bilinear, Kernel::peskin4}) {
+    Transfer t;
+    t.locate(fluid.grid(), kernel, x);
+    Eigen::MatrixXd dense;
+    t.gram(dense);
+    Eigen::SparseMatrix<double> sparse;
+    const double scale = 0.37;
+    t.gram(scale, sparse);
+    const Eigen::MatrixXd from_sparse(sparse);
+    // (scale · a) · b against scale · (a · b): equal to the last bit or two.
+    EXPECT_LE((from_sparse - scale * dense).cwiseAbs().maxCoeff(), 4e-16 * scale * dense.cwiseAbs().maxCoeff())
+        << to_string(kernel);
+    EXPECT_EQ((from_sparse - from_sparse.transpose()).cwiseAbs().maxCoeff(), 0.0) << to_string(kernel);
+    EXPECT_LT(sparse.nonZeros(), from_sparse.size()) << to_string(kernel);  // some stencils do not overlap
+    for (int k = 0; k < sparse.outerSize(); ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator e(sparse, k); e; ++e) EXPECT_NE(e.value(), 0.0);
+  }
+}
+
 // The whole coupled step (all fluid stages on) twice from the same start: bitwise equal markers
 // and velocities (DESIGN.md: determinism).
 TEST(Coupling, TwoRunsAreBitwiseEqual) {
