@@ -203,8 +203,8 @@ JellyfishKind::JellyfishKind() {
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
       .domain_m = 0.4,
       .domain_doc = "side of the square free-slip box: ten diameters (§3.2)",
-      .cells_doc = "fluid cells per side (Fig. 12: 100; also 50). Multi-cycle distances converge in dt_s only from 200 "
-                   "(with bell_segments 64): experiments/jellyfish/convergence.toml",
+      .cells_doc = "fluid cells per side (Fig. 12: 100; also 50). Distances over several cycles converge in dt_s "
+                   "only from 200: experiments/jellyfish/convergence.toml",
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 1.304e-6,
       .viscosity_doc = "paper: 1.304e-3 without units, read as Pa s (water at 10 C) over 1000 kg/m^3",
@@ -221,11 +221,11 @@ JellyfishKind::JellyfishKind() {
   });
   const std::vector<ParamSpec> rest = {
       real("viscosity_tolerance", fluid::FluidParams{}.viscosity_tolerance, "", 1e-14, 1e-2,
-           "relative residual of the implicit viscous solve (fluid/diffusion2.hpp); raising it to 1e-8 perturbs the "
-           "flow by about 1e-8 and shows how sensitive a multi-cycle distance is (experiments/jellyfish/stagger.toml)"),
+           "relative residual of the implicit viscous solve (fluid/diffusion2.hpp); raising it perturbs the flow "
+           "slightly, a test of how sensitive a distance over several cycles is"),
       real("dt_s", 0.01, "s", 1e-7, 0.1,
            "coupled step (the paper: unstable near 0.01 s explicitly; the semi-implicit step is stable at 0.01 s). "
-           "Distances over several cycles: on 100² not converged in it, on 200² to about 10 % from 0.005 s "
+           "Distances over several cycles: on 100² not converged in it, on 200² to a few mm from 0.0025 s "
            "(experiments/jellyfish/convergence.toml)"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
       real("start_y_fraction", 0.25, "", 0.05, 0.95, "aperture's starting height in the box (the bell swims up)"),
