@@ -186,7 +186,9 @@ JellyfishKind::JellyfishKind() {
       real("bell_diameter_m", bell.diameter_m, "m", 1e-4, 10, "Fig. 12: 40 mm"),
       real("bell_height_m", bell.height_m, "m", 1e-4, 10, "Fig. 12: 28 mm"),
       real("bell_thickness_m", bell.thickness_m, "m", 1e-5, 1, "Fig. 12: 4 mm; the markers are the subumbrella"),
-      integer("bell_segments", bell.segments, 8, 512, "springs along the subumbrella (even; apex in the middle)"),
+      integer("bell_segments", bell.segments, 8, 512,
+              "springs along the subumbrella (even; apex in the middle). Refining it keeps the body only with "
+              "muscle_stride and angular_stiffness_nm_per_rad scaled alike (x2 each for 64: convergence.toml)"),
       real("bell_modulus_pa", bell.bell_modulus_pa, "Pa", 1e-6, 1e12, "bell mesoglea, λ = 1186 Pa (Fig. 12); k = E t / L"),
       real("angular_stiffness_nm_per_rad", bell.angular_stiffness_nm_per_rad, "N m/rad", 0, 1e6,
            "per joint, per metre of depth (Fig. 12: 1.186 N·m/rad, depth not given)"),
