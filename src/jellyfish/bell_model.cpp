@@ -39,9 +39,11 @@ std::vector<fluid::Vec2> halfEllipse(double a, double b, int segments) {
 
 Vec<2> toVec(fluid::Vec2 p) { return Vec<2>(p.x, p.y); }
 
-// A chain of springs and bends through `markers` (indices into positions), k = E t / L.
+// A chain of springs and bends through `markers` (indices into positions): k = E t / L per
+// spring, and at each joint an angular spring kb = B / L_joint with L_joint the mean of the two
+// segments' lengths (the discrete elastica: ½ B κ² ds with κ = θ / L_joint).
 void addChain(springs::Network<2>& net, const std::vector<fluid::Vec2>& x, const std::vector<int>& markers,
-              double modulus_pa, double thickness_m, double kb) {
+              double modulus_pa, double thickness_m, double bending_rigidity_n_m) {
   for (std::size_t m = 0; m + 1 < markers.size(); ++m) {
     const int a = markers[m], b = markers[m + 1];
     const double length = std::hypot(x[b].x - x[a].x, x[b].y - x[a].y);
@@ -49,7 +51,9 @@ void addChain(springs::Network<2>& net, const std::vector<fluid::Vec2>& x, const
   }
   for (std::size_t m = 1; m + 1 < markers.size(); ++m) {
     const int i = markers[m - 1], j = markers[m], k = markers[m + 1];
-    net.addBend(i, j, k, springs::turningAngleRad<2>(toVec(x[i]), toVec(x[j]), toVec(x[k])), kb);
+    const double joint_m = 0.5 * (std::hypot(x[j].x - x[i].x, x[j].y - x[i].y) + std::hypot(x[k].x - x[j].x, x[k].y - x[j].y));
+    net.addBend(i, j, k, springs::turningAngleRad<2>(toVec(x[i]), toVec(x[j]), toVec(x[k])),
+                bending_rigidity_n_m / joint_m);
   }
 }
 
@@ -66,6 +70,8 @@ BellModel buildBell(const BellParams& p) {
   const double segment_m = std::hypot(model.rest_positions_m[1].x - model.rest_positions_m[0].x,
                                       model.rest_positions_m[1].y - model.rest_positions_m[0].y);
   model.bell_area_m2 = segment_m * p.segments * p.thickness_m;
+  model.segment_m = segment_m;
+  model.muscle_model = p.muscle_model;
   model.aperture_width_m = model.rest_positions_m.back().x - model.rest_positions_m.front().x;
 
   // Tentacles: straight down from each aperture point, segments as long as the bell's.
@@ -90,29 +96,38 @@ BellModel buildBell(const BellParams& p) {
   for (std::size_t i = 0; i < model.rest_positions_m.size(); ++i) net.addParticle(1.0, false);
   std::vector<int> bell(model.bell_markers);
   for (int i = 0; i < model.bell_markers; ++i) bell[i] = i;
-  addChain(net, model.rest_positions_m, bell, p.bell_modulus_pa, p.thickness_m, p.angular_stiffness_nm_per_rad);
+  addChain(net, model.rest_positions_m, bell, p.bell_modulus_pa, p.thickness_m, p.bending_rigidity_n_m);
   const double factor = p.tentacle_area_factor;
   for (std::size_t side = 0; side < tentacle_chains.size(); ++side) {
     addChain(net, model.rest_positions_m, tentacle_chains[side], p.bell_modulus_pa, p.thickness_m * factor,
-             p.angular_stiffness_nm_per_rad * factor);
+             p.bending_rigidity_n_m * factor);
     // The joint where the tentacle leaves the bell.
     const int root = tentacle_chains[side][0];
     const int inner = side == 0 ? 1 : p.segments - 1;
     const int first = tentacle_chains[side][1];
     const auto& x = model.rest_positions_m;
+    const double joint_m = 0.5 * (std::hypot(x[root].x - x[inner].x, x[root].y - x[inner].y) +
+                                  std::hypot(x[first].x - x[root].x, x[first].y - x[root].y));
     net.addBend(inner, root, first, springs::turningAngleRad<2>(toVec(x[inner]), toVec(x[root]), toVec(x[first])),
-                p.angular_stiffness_nm_per_rad * factor);
+                p.bending_rigidity_n_m * factor / joint_m);
   }
 
-  for (int pair = 0; pair < p.muscle_pairs; ++pair) {
+  // The muscle band: arc [0, band] from each aperture end. The element at marker m (arc m L from
+  // the aperture) carries the band's arc within half a segment of it.
+  const double band_m = p.muscle_band_fraction * model.apex * segment_m;
+  for (int m_index = 0; m_index < model.apex; ++m_index) {
+    const double s0 = std::max(0.0, (m_index - 0.5) * segment_m), s1 = std::min(band_m, (m_index + 0.5) * segment_m);
+    if (s1 <= s0) break;
     MuscleSpring m;
-    m.a = pair * p.muscle_stride;
-    m.b = p.segments - m.a;
+    m.a = m_index;
+    m.b = p.segments - m_index;
     const auto& x = model.rest_positions_m;
     m.relaxed_length_m = std::hypot(x[m.b].x - x[m.a].x, x[m.b].y - x[m.a].y);
-    m.stiffness_n_per_m = p.muscle_modulus_pa * p.muscle_thickness_m / m.relaxed_length_m;
+    m.arc_weight_m = s1 - s0;
+    m.stiffness_n_per_m = p.muscle_modulus_pa * p.muscle_section_per_arc * m.arc_weight_m / m.relaxed_length_m;
+    m.tension_max_n_per_m = p.muscle_tension_n_per_m2 * m.arc_weight_m;
     m.aperture_position = 1.0 - double(m.a) / model.apex;
-    m.order_from_aperture = pair;
+    m.order_from_aperture = m_index;
     model.muscles.push_back(m);
   }
   if (const std::string err = net.validate(); !err.empty())

@@ -15,7 +15,9 @@ namespace creaturelab::jellyfish {
 struct MuscleSpring {
   int a = 0, b = 0;              // marker indices (left side, right side)
   double relaxed_length_m = 0;   // rest length at factor 1: the drawn distance
-  double stiffness_n_per_m = 0;  // per metre of depth, E t / L
+  double arc_weight_m = 0;       // arc length of the muscle band this element carries
+  double stiffness_n_per_m = 0;  // rest_length model, per metre of depth: E_m s w / ℓ
+  double tension_max_n_per_m = 0;  // active_tension model, per metre of depth: T_max w
   double aperture_position = 0;  // 1 at the aperture, 0 at the apex (the stagger's coordinate)
   int order_from_aperture = 0;   // 0 for the aperture pair (Spencer's delay counts from here)
 };
@@ -31,6 +33,8 @@ struct BellModel {
   std::vector<int> tentacle_markers;          // the rest
   double aperture_width_m = 0;                // drawn distance between the two aperture markers
   double bell_area_m2 = 0;                    // slice area of the bell's flesh (arc length × thickness)
+  double segment_m = 0;                       // drawn length of every bell (and tentacle) segment
+  MuscleModel muscle_model = MuscleModel::rest_length;
 };
 
 /// Builds the bell with its apex on +y, centred on x = 0, aperture at y = 0.

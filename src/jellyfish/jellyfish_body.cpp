@@ -1,5 +1,6 @@
 #include "jellyfish/jellyfish_body.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -15,14 +16,32 @@ JellyfishBody::JellyfishBody(const BellModel& model, ActivationParams activation
       activation_(std::move(activation)),
       expansion_(expansionWindow(activation_.knots)),
       system_(model.network),
-      state_(springs::zeroState<2>(model.network.particleCount())) {}
+      state_(springs::zeroState<2>(model.network.particleCount())) {
+  lowest_knot_ = activation_.knots.front().value;  // validate() guarantees at least one knot
+  for (const Knot& k : activation_.knots) lowest_knot_ = std::min(lowest_knot_, k.value);
+}
 
 double JellyfishBody::muscleFactor(int m, double t_s) const {
   const MuscleSpring& muscle = model_.muscles[m];
   const double delay_s = activation_.synaptic_delay_s * muscle.order_from_aperture;
+  const double t = t_s - delay_s;
+  if (activation_.active_cycles > 0 && t * activation_.contraction_hz >= activation_.active_cycles) return 1.0;
+  if (activation_.shape == ActivationShape::pulse) return 1.0 - (1.0 - lowest_knot_) * activation(m, t_s);
   const double stagger = activation_.expansion == Expansion::staggered ? activation_.stagger : 0.0;
-  return jellyfish::muscleFactor(activation_.knots, activation_.contraction_hz * (t_s - delay_s), expansion_, stagger,
+  return jellyfish::muscleFactor(activation_.knots, activation_.contraction_hz * t, expansion_, stagger,
                                  muscle.aperture_position);
+}
+
+double JellyfishBody::activation(int m, double t_s) const {
+  const double t = t_s - activation_.synaptic_delay_s * model_.muscles[m].order_from_aperture;
+  if (t < 0) return 0.0;
+  if (activation_.active_cycles > 0 && t * activation_.contraction_hz >= activation_.active_cycles) return 0.0;
+  if (activation_.shape == ActivationShape::hermite)
+    return std::clamp((1.0 - muscleFactor(m, t_s)) / (1.0 - lowest_knot_), 0.0, 1.0);
+  const double since_s = wrapPhase(activation_.contraction_hz * t) / activation_.contraction_hz;
+  if (since_s >= activation_.pulse_duration_s) return 0.0;
+  const double s = std::sin(M_PI * since_s / activation_.pulse_duration_s);
+  return s * s;
 }
 
 void JellyfishBody::toState(std::span<const fluid::Vec2> x_m) const {
@@ -32,12 +51,8 @@ void JellyfishBody::toState(std::span<const fluid::Vec2> x_m) const {
 void JellyfishBody::muscleTensions(double t_s, std::span<const fluid::Vec2> x_m,
                                    std::vector<double>& tension_n_per_m) const {
   tension_n_per_m.resize(model_.muscles.size());
-  for (std::size_t m = 0; m < model_.muscles.size(); ++m) {
-    const MuscleSpring& s = model_.muscles[m];
-    const double length = std::hypot(x_m[s.b].x - x_m[s.a].x, x_m[s.b].y - x_m[s.a].y);
-    const double rest = s.relaxed_length_m * muscleFactor(static_cast<int>(m), t_s);
-    tension_n_per_m[m] = s.stiffness_n_per_m * std::max(0.0, length - rest);
-  }
+  for (std::size_t m = 0; m < model_.muscles.size(); ++m)
+    tension_n_per_m[m] = muscleState(static_cast<int>(m), t_s, x_m).tension_n_per_m;
 }
 
 double JellyfishBody::elasticEnergy(double t_s, std::span<const fluid::Vec2> x_m) const {
@@ -45,28 +60,47 @@ double JellyfishBody::elasticEnergy(double t_s, std::span<const fluid::Vec2> x_m
   double energy = system_.elasticEnergy(state_);
   std::vector<double> tension;
   muscleTensions(t_s, x_m, tension);
-  for (std::size_t m = 0; m < tension.size(); ++m) energy += 0.5 * tension[m] * tension[m] / model_.muscles[m].stiffness_n_per_m;
+  // An active tension stores no energy: it is a force the muscle makes, not a spring.
+  if (model_.muscle_model == MuscleModel::rest_length)
+    for (std::size_t m = 0; m < tension.size(); ++m)
+      energy += 0.5 * tension[m] * tension[m] / model_.muscles[m].stiffness_n_per_m;
   return energy;
+}
+
+JellyfishBody::MuscleState JellyfishBody::muscleState(int m, double t_s, std::span<const fluid::Vec2> x_m) const {
+  const MuscleSpring& s = model_.muscles[m];
+  MuscleState out;
+  out.lx = x_m[s.a].x - x_m[s.b].x;
+  out.ly = x_m[s.a].y - x_m[s.b].y;
+  out.length_m = std::hypot(out.lx, out.ly);
+  if (model_.muscle_model == MuscleModel::active_tension) {
+    out.tension_n_per_m = s.tension_max_n_per_m * activation(m, t_s);
+    return out;
+  }
+  const double rest = s.relaxed_length_m * muscleFactor(m, t_s);
+  if (out.length_m > rest) {  // a slack muscle (|l| < r) exerts no force and has no stiffness
+    out.tension_n_per_m = s.stiffness_n_per_m * (out.length_m - rest);
+    out.axial_stiffness_n_per_m = s.stiffness_n_per_m;
+  }
+  return out;
 }
 
 void JellyfishBody::forces(double t_s, std::span<const fluid::Vec2> x_m, std::span<fluid::Vec2> force) const {
   toState(x_m);
   system_.conservativeForces(state_, scratch_);
   for (std::size_t i = 0; i < x_m.size(); ++i) force[i] = {scratch_(0, long(i)), scratch_(1, long(i))};
-  // Muscles: Hooke springs f_a = -k (|l| - r) l/|l| (l = x_a - x_b) with rest length r(t) that pull
-  // only (§3.1: "the circumferential muscle has no opposing muscle"; the bell re-opens by the
-  // elasticity of its mesoglea alone). A slack muscle (|l| < r) exerts no force.
+  // Muscles pull only (§3.1: "the circumferential muscle has no opposing muscle"; the bell re-opens
+  // by the elasticity of its mesoglea alone): f_a = -T l/|l| (l = x_a - x_b), f_b = -f_a, with T
+  // the tension of muscleState (a taut spring's k (|l| - r), or the active T_max a(t)).
   for (std::size_t m = 0; m < model_.muscles.size(); ++m) {
     const MuscleSpring& s = model_.muscles[m];
-    const double lx = x_m[s.a].x - x_m[s.b].x, ly = x_m[s.a].y - x_m[s.b].y;
-    const double length = std::hypot(lx, ly);
-    const double rest = s.relaxed_length_m * muscleFactor(static_cast<int>(m), t_s);
-    if (length <= rest) continue;
-    const double magnitude = -s.stiffness_n_per_m * (length - rest) / length;
-    force[s.a].x += magnitude * lx;
-    force[s.a].y += magnitude * ly;
-    force[s.b].x -= magnitude * lx;
-    force[s.b].y -= magnitude * ly;
+    const MuscleState e = muscleState(static_cast<int>(m), t_s, x_m);
+    if (e.tension_n_per_m == 0.0 || e.length_m == 0.0) continue;
+    const double magnitude = -e.tension_n_per_m / e.length_m;
+    force[s.a].x += magnitude * e.lx;
+    force[s.a].y += magnitude * e.ly;
+    force[s.b].x -= magnitude * e.lx;
+    force[s.b].y -= magnitude * e.ly;
   }
 }
 
@@ -74,18 +108,17 @@ void JellyfishBody::stiffness(double t_s, std::span<const fluid::Vec2> x_m, doub
                               std::vector<Eigen::Triplet<double>>& out) const {
   toState(x_m);
   system_.addStiffnessTriplets(state_, scale, out, /*clamp_compression=*/true);
-  // ∂f_a/∂x_a = −k [ûûᵀ + (1 − r/|l|)(I − ûûᵀ)]; blocks (a,a), (b,b) = that, (a,b), (b,a) = minus it.
+  // ∂f_a/∂x_a = −[k_axial ûûᵀ + (T/|l|)(I − ûûᵀ)]: a spring's k_axial = k and T/|l| = k (1 − r/|l|);
+  // an active tension has no axial stiffness. Blocks (a,a), (b,b) = that, (a,b), (b,a) = minus it;
+  // both terms are negative semi-definite, as the coupling requires (ib/coupling.hpp).
   for (std::size_t m = 0; m < model_.muscles.size(); ++m) {
     const MuscleSpring& s = model_.muscles[m];
-    const double lx = x_m[s.a].x - x_m[s.b].x, ly = x_m[s.a].y - x_m[s.b].y;
-    const double length = std::hypot(lx, ly);
-    const double rest = s.relaxed_length_m * muscleFactor(static_cast<int>(m), t_s);
-    if (length <= rest) continue;  // slack: no force, no stiffness
-    const double ux = lx / length, uy = ly / length;
-    const double transverse = 1.0 - rest / length;
-    const double k = -scale * s.stiffness_n_per_m;
-    const double block[2][2] = {{k * (ux * ux + transverse * (1 - ux * ux)), k * (ux * uy - transverse * ux * uy)},
-                                {k * (uy * ux - transverse * uy * ux), k * (uy * uy + transverse * (1 - uy * uy))}};
+    const MuscleState e = muscleState(static_cast<int>(m), t_s, x_m);
+    if (e.tension_n_per_m == 0.0 || e.length_m == 0.0) continue;
+    const double ux = e.lx / e.length_m, uy = e.ly / e.length_m;
+    const double axial = -scale * e.axial_stiffness_n_per_m, transverse = -scale * e.tension_n_per_m / e.length_m;
+    const double block[2][2] = {{axial * ux * ux + transverse * (1 - ux * ux), axial * ux * uy - transverse * ux * uy},
+                                {axial * uy * ux - transverse * uy * ux, axial * uy * uy + transverse * (1 - uy * uy)}};
     for (int r = 0; r < 2; ++r)
       for (int c = 0; c < 2; ++c) {
         out.emplace_back(2 * s.a + r, 2 * s.a + c, block[r][c]);

@@ -19,21 +19,34 @@ class JellyfishBody : public ib::ElasticBody {
   void stiffness(double t_s, std::span<const fluid::Vec2> x_m, double scale,
                  std::vector<Eigen::Triplet<double>>& out) const override;
 
-  /// Rest-length factor of muscle `m` at time t (1 relaxed, 0.56 fully contracted by default).
+  /// Activation of muscle `m` at time t, in [0, 1] (0 relaxed). Hermite shape: the §3.3 curve
+  /// mapped so that its lowest knot is 1; pulse shape: sin²(π t / duration) at the cycle's start.
+  /// Zero after `active_cycles` cycles.
+  double activation(int m, double t_s) const;
+  /// Rest-length factor of muscle `m` at time t (1 relaxed, 0.56 fully contracted by default);
+  /// the rest_length model's control, 1 - (1 - lowest knot) a for the pulse shape.
   double muscleFactor(int m, double t_s) const;
   /// Elastic energy of bell, tentacles and muscles at positions x and time t, J per metre of depth.
   double elasticEnergy(double t_s, std::span<const fluid::Vec2> x_m) const;
-  /// Tension of every muscle spring at positions x and time t, N per metre of depth (> 0 pulls).
+  /// Tension of every muscle element at positions x and time t, N per metre of depth (> 0 pulls):
+  /// a slack-free spring's k (|l| - r) in the rest_length model, T_max a(t) in active_tension.
   void muscleTensions(double t_s, std::span<const fluid::Vec2> x_m, std::vector<double>& tension_n_per_m) const;
   const BellModel& model() const { return model_; }
   const ActivationParams& activation() const { return activation_; }
 
  private:
   void toState(std::span<const fluid::Vec2> x_m) const;
+  struct MuscleState {
+    double lx = 0, ly = 0, length_m = 0;  // l = x_a - x_b
+    double tension_n_per_m = 0;           // > 0 pulls the two ends together
+    double axial_stiffness_n_per_m = 0;   // d tension / d length
+  };
+  MuscleState muscleState(int m, double t_s, std::span<const fluid::Vec2> x_m) const;
 
   BellModel model_;
   ActivationParams activation_;
   ExpansionWindow expansion_{};
+  double lowest_knot_ = 0.56;  // the Hermite curve's full contraction
   springs::System<2> system_;
   mutable springs::State<2> state_;     // scratch: positions in the springs module's layout
   mutable springs::Points<2> scratch_;  // scratch: network forces

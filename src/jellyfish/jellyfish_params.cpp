@@ -27,16 +27,13 @@ std::string validate(const BellParams& p) {
     e.add("bell thickness must be less than its height");
   if (p.segments < 8 || p.segments % 2 != 0) e.add("bell segments must be even and at least 8, got " + std::to_string(p.segments));
   if (!positive(p.bell_modulus_pa)) e.add("bell modulus must be > 0");
-  if (!(p.angular_stiffness_nm_per_rad >= 0)) e.add("angular stiffness must be >= 0");
+  if (!(p.bending_rigidity_n_m >= 0)) e.add("bending rigidity must be >= 0");
   if (!positive(p.muscle_modulus_pa)) e.add("muscle modulus must be > 0");
-  if (!positive(p.muscle_thickness_m)) e.add("muscle thickness must be > 0");
-  if (p.muscle_pairs < 1) e.add("at least one muscle pair is needed");
-  if (p.muscle_stride < 1) e.add("muscle stride must be >= 1");
-  if (p.segments >= 8 && p.muscle_pairs >= 1 && p.muscle_stride >= 1 &&
-      (p.muscle_pairs - 1) * p.muscle_stride >= p.segments / 2)
-    e.add("muscle pairs x stride reach the apex: " + std::to_string(p.muscle_pairs) + " pairs every " +
-          std::to_string(p.muscle_stride) + " markers need more than " + std::to_string(p.segments / 2) +
-          " markers per side");
+  if (!positive(p.muscle_section_per_arc)) e.add("muscle section per arc must be > 0");
+  if (!(p.muscle_tension_n_per_m2 >= 0) || !std::isfinite(p.muscle_tension_n_per_m2))
+    e.add("muscle tension must be >= 0");
+  if (!(p.muscle_band_fraction > 0 && p.muscle_band_fraction < 1))
+    e.add("muscle band fraction must be in (0, 1): the band cannot reach the apex, where a muscle element would join a marker to itself");
   if (p.tentacles && !positive(p.tentacle_length_m)) e.add("tentacle length must be > 0");
   if (!positive(p.tentacle_area_factor)) e.add("tentacle area factor must be > 0");
   return e.str();
@@ -55,6 +52,9 @@ std::string validate(const ActivationParams& a) {
   }
   if (!(a.stagger >= 0 && a.stagger < 1)) e.add("stagger must be in [0, 1)");
   if (!(a.synaptic_delay_s >= 0)) e.add("synaptic delay must be >= 0");
+  if (a.shape == ActivationShape::pulse && !(positive(a.pulse_duration_s) && a.pulse_duration_s * a.contraction_hz <= 1))
+    e.add("pulse duration must be > 0 and no longer than the period (1 / contraction_hz)");
+  if (a.active_cycles < 0) e.add("active cycles must be >= 0 (0 = every cycle)");
   if (e.str().empty()) {
     // A rest length must stay positive all through the cycle (Hermite segments can overshoot).
     const ExpansionWindow window = expansionWindow(a.knots);

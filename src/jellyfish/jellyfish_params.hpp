@@ -18,6 +18,24 @@ namespace creaturelab::jellyfish {
 
 enum class Expansion { unison, staggered };
 
+/// How the circumferential muscle acts (issue 13 §2).
+enum class MuscleModel {
+  // The paper's (§3.3): muscle springs whose rest length follows the activation curve. The curve
+  // prescribes the stroke: the bell contracts to about the curve's minimum at every frequency, so
+  // it cannot resonate.
+  rest_length,
+  // A tension T(t) = T_max a(t) across the bell, a in [0, 1] (Hoover, Porras & Miller 2019 drive
+  // their 2-D bells so): the elastic bell re-expands against it, and the stroke depth emerges from
+  // the bell's elasticity, the water and the frequency (the "resonant gait" of §3.3).
+  active_tension
+};
+
+/// The time course of the muscle's activation within a cycle.
+enum class ActivationShape {
+  hermite,  // the §3.3 Hermite curve (knots below); activation a = (1 - curve) / (1 - lowest knot value)
+  pulse     // a = sin²(π t / pulse_duration_s) for the first pulse_duration_s of each cycle, then 0
+};
+
 struct BellParams {
   // --- geometry (Fig. 12) ---------------------------------------------------------------------
   double diameter_m = 0.040;   // "Jellyfish Diameter 40mm"
@@ -30,29 +48,45 @@ struct BellParams {
   // chain; 32 segments are about 2 mm, half a cell of the paper's 100² grid in a 0.4 m box
   // (markers closer than dx/2 keep the IB boundary from leaking, Peskin 2002 §4).
   int segments = 32;
+  // The body is defined by continuum properties (issue 13 §1): the per-segment constants below are
+  // derived from them for any `segments`, so that refining the chain with the grid refines the
+  // same body. The paper's Fig. 4 chain is coarse; its values are read at 32 segments (1.983 mm).
 
   // --- elasticity (§3.2, Fig. 12) -------------------------------------------------------------
-  double bell_modulus_pa = 1186.0;  // λ, bell mesoglea (Megill 2002 via §3.2)
-  // "Angular Elastic Stiffness 1.186 N·m/rad" per joint. The paper has no depth; it is taken per
-  // metre of depth (1.186 N·m/rad per m), like every other force here.
-  double angular_stiffness_nm_per_rad = 1.186;
+  // Stretching: λ, the bell mesoglea (Megill 2002 via §3.2), times the thickness: k = E t / L.
+  double bell_modulus_pa = 1186.0;
+  // Bending rigidity B of the slice, N·m per metre of depth (a moment per unit curvature): the
+  // angular spring at a joint between segments of length L is B / L (energy ½ B κ² ds with
+  // κ = θ / L). Fig. 12 gives "Angular Elastic Stiffness 1.186 N·m/rad" per joint, without depth
+  // or segment length; it is read per metre of depth on the 32-segment chain: B = 1.186 × 1.983e-3.
+  // (The plate value E t³ / 12 = 6.3e-6 N·m is 370 times smaller: the paper's joints are far
+  // stiffer than its mesoglea, and it is the paper's value that is kept.)
+  double bending_rigidity_n_m = 1.186 * 1.98319e-3;
   // The joint mesoglea (130 Pa, §3.2) lies between the circumferential segments of the bell
   // (Fig. 3, a horizontal cross-section); the axial slice does not cut it, so it has no spring.
 
   // --- circumferential muscle (§3.2, Fig. 4) --------------------------------------------------
+  MuscleModel muscle_model = MuscleModel::rest_length;
+  // The muscle is a band on the subumbrella from the aperture toward the apex, covering this
+  // fraction of the half-arc. Every marker in the band is joined to its mirror image by a muscle
+  // element carrying the band's arc length around it (half at the band's ends). Fig. 4's model has
+  // eight springs, every second marker from the aperture to 14 of 16 half-segments: 0.875.
+  double muscle_band_fraction = 0.875;
+  // rest_length: each element is a spring of E_m · s · w / ℓ (w its arc length, ℓ its length).
   double muscle_modulus_pa = 4.0e5;  // "around 400,000 Pa"
-  // Thickness of the muscle layer: not given. 0.1 mm makes the muscle spring across the aperture
-  // (E t / L = 1250 N/m) a few times stiffer than the bell's bending there, so that a slow
-  // contraction reaches the paper's 0.56 diameter ratio (§3.3).
-  double muscle_thickness_m = 1.0e-4;
-  // Muscle springs join opposite subumbrellar points (Fig. 4). Pairs are taken every
-  // `muscle_stride` markers from the aperture toward the apex, `muscle_pairs` of them.
-  int muscle_pairs = 8;
-  int muscle_stride = 2;
+  // s: muscle cross-section per metre of depth per metre of band arc. The layer's thickness is not
+  // given; Fig. 4's model, read as springs of a 0.1 mm layer every two segments (3.97 mm of arc),
+  // gives 1e-4 / 3.966e-3. It makes the aperture muscle a few times stiffer than the bell's bending
+  // there, so that a slow contraction reaches the paper's 0.56 diameter ratio (§3.3).
+  double muscle_section_per_arc = 1.0e-4 / 3.96638e-3;
+  // active_tension: peak tension per metre of band arc, N per metre of depth per metre of arc
+  // (an element of arc w pulls with T_max · w · a(t)). Not given by the paper; chosen in the kind.
+  double muscle_tension_n_per_m2 = 1.0;
 
   // --- tentacles (§3.2: "the same elastic modulus, but with a volume 1/100th") ----------------
   // One passive tentacle hangs from each aperture point. Length and count are not given:
-  // 20 mm (half a diameter) in segments as long as the bell's.
+  // 20 mm (half a diameter) in segments as long as the bell's. Stretching and bending rigidity
+  // are the bell's times the area factor.
   double tentacle_length_m = 0.020;
   double tentacle_area_factor = 0.01;  // Fig. 12 "Tentacle Cross-sectional Area Factor 1/100"
   bool tentacles = true;
@@ -72,6 +106,12 @@ struct ActivationParams {
   // Spencer's synaptic delay (§3.1): the muscle's pair k (0 = aperture) starts k · delay later.
   // The paper found it has little effect; off by default.
   double synaptic_delay_s = 0.0;
+  ActivationShape shape = ActivationShape::hermite;
+  // pulse only. Not given by the paper; Hoover, Porras & Miller 2019 use a fixed-duration pulse.
+  double pulse_duration_s = 0.3;
+  // Cycles with activation; 0 = every cycle. 1 with a short pulse is a pluck: one contraction,
+  // then the bell rings down freely (natural_frequency.toml).
+  int active_cycles = 0;
 };
 
 /// "" if usable, else one sentence per problem joined by "; ".

@@ -29,12 +29,24 @@ ib::CouplingStepReport Swimmer::step() {
   previous_ = coupling_->markers_m();
   const double t0 = fluid_->time_s(), t1 = t0 + config_.dt_s;
   body_->muscleTensions(t1, previous_, tension_);
-  for (std::size_t m = 0; m < tension_.size(); ++m) {
-    const double relaxed = body_->model().muscles[m].relaxed_length_m;
-    muscle_work_j_per_m_ += tension_[m] * relaxed * (body_->muscleFactor(int(m), t0) - body_->muscleFactor(int(m), t1));
-  }
+  const auto& muscles = body_->model().muscles;
+  const bool active = body_->model().muscle_model == MuscleModel::active_tension;
+  // The contractile element's shortening: the rest length's (a spring's) or the muscle's own length.
+  if (!active)
+    for (std::size_t m = 0; m < tension_.size(); ++m)
+      muscle_work_j_per_m_ += tension_[m] * muscles[m].relaxed_length_m *
+                              (body_->muscleFactor(int(m), t0) - body_->muscleFactor(int(m), t1));
   const auto report = coupling_->step(config_.dt_s);
   checkChain();
+  if (active) {
+    const auto& x = coupling_->markers_m();
+    for (std::size_t m = 0; m < tension_.size(); ++m) {
+      const MuscleSpring& s = muscles[m];
+      const double before = std::hypot(previous_[s.a].x - previous_[s.b].x, previous_[s.a].y - previous_[s.b].y);
+      const double after = std::hypot(x[s.a].x - x[s.b].x, x[s.a].y - x[s.b].y);
+      muscle_work_j_per_m_ += tension_[m] * (before - after);
+    }
+  }
   const auto& force = coupling_->applied_force_n_per_m();
   const auto& x = coupling_->markers_m();
   for (std::size_t k = 0; k < x.size(); ++k)

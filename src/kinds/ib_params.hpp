@@ -21,6 +21,7 @@ struct FluidBoxDefaults {
   double kinematic_viscosity_m2_per_s = 0;
   std::string viscosity_doc;
   std::string advection_doc;
+  std::string advection = "semi_lagrangian";
 };
 
 // domain_m, cells, density_kg_per_m3, kinematic_viscosity_m2_per_s, advection.

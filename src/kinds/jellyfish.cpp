@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "fluid/diagnostics2.hpp"
+#include "jellyfish/ringdown.hpp"
 #include "jellyfish/swimmer.hpp"
 #include "kinds/ib_params.hpp"
 
@@ -29,19 +30,40 @@ std::vector<Knot> knots(const ParamReader& r) {
   return out;
 }
 
+// bell_segments = 0 follows the grid: the fewest even segments whose drawn length is at most
+// marker_spacing_cells cells (issue 13: markers about half a cell apart, so that the boundary does
+// not leak as the grid is refined; the membrane experiment measures leaks of 23-49% at 2-4 cells).
+int bellSegments(const ParamReader& r) {
+  const long given = r.integer("bell_segments");
+  if (given > 0) return int(given);
+  jellyfish::BellParams probe;
+  probe.diameter_m = r.real("bell_diameter_m");
+  probe.height_m = r.real("bell_height_m");
+  probe.thickness_m = r.real("bell_thickness_m");
+  probe.segments = 64;
+  probe.tentacles = false;
+  if (!jellyfish::validate(probe).empty()) return 32;  // validate() reports the geometry's problem
+  const double arc_m = 64 * jellyfish::buildBell(probe).segment_m;
+  const double spacing_m = r.real("marker_spacing_cells") * r.real("domain_m") / double(r.integer("cells"));
+  const int segments = 2 * int(std::ceil(arc_m / spacing_m / 2.0));
+  return std::max(8, segments);
+}
+
 jellyfish::SwimmerConfig config(const ParamReader& r) {
   jellyfish::SwimmerConfig c;
   auto& b = c.bell;
   b.diameter_m = r.real("bell_diameter_m");
   b.height_m = r.real("bell_height_m");
   b.thickness_m = r.real("bell_thickness_m");
-  b.segments = int(r.integer("bell_segments"));
-  b.bell_modulus_pa = r.real("bell_modulus_pa");
-  b.angular_stiffness_nm_per_rad = r.real("angular_stiffness_nm_per_rad");
+  b.segments = bellSegments(r);
+  b.bell_modulus_pa = r.real("bell_modulus_pa") * r.real("stiffness_scale");
+  b.bending_rigidity_n_m = r.real("bending_rigidity_n_m") * r.real("stiffness_scale");
+  b.muscle_model = r.text("muscle_model") == "active_tension" ? jellyfish::MuscleModel::active_tension
+                                                              : jellyfish::MuscleModel::rest_length;
+  b.muscle_band_fraction = r.real("muscle_band_fraction");
   b.muscle_modulus_pa = r.real("muscle_modulus_pa");
-  b.muscle_thickness_m = r.real("muscle_thickness_m");
-  b.muscle_pairs = int(r.integer("muscle_pairs"));
-  b.muscle_stride = int(r.integer("muscle_stride"));
+  b.muscle_section_per_arc = r.real("muscle_section_per_arc");
+  b.muscle_tension_n_per_m2 = r.real("muscle_tension_n_per_m2");
   b.tentacles = r.boolean("tentacles");
   b.tentacle_length_m = r.real("tentacle_length_m");
   b.tentacle_area_factor = r.real("tentacle_area_factor");
@@ -52,8 +74,14 @@ jellyfish::SwimmerConfig config(const ParamReader& r) {
   a.expansion = r.text("expansion") == "unison" ? jellyfish::Expansion::unison : jellyfish::Expansion::staggered;
   a.stagger = r.real("stagger");
   a.synaptic_delay_s = r.real("synaptic_delay_s");
+  a.shape = r.text("activation_shape") == "pulse" ? jellyfish::ActivationShape::pulse : jellyfish::ActivationShape::hermite;
+  a.pulse_duration_s = r.real("pulse_duration_s");
+  a.active_cycles = int(r.integer("active_cycles"));
 
   c.fluid = fluidBoxParams(r);
+  // A tall box: the bell swims up its axis and must not meet the top within the window.
+  c.fluid.cells_y = int(std::lround(r.real("box_aspect") * c.fluid.cells_x));
+  c.fluid.domain_height_m = c.fluid.cells_y * c.fluid.domain_width_m / c.fluid.cells_x;
   c.coupling = couplingParams(r);
   c.fluid.viscosity_tolerance = r.real("viscosity_tolerance");
   c.dt_s = r.real("dt_s");
@@ -172,6 +200,12 @@ JellyfishKind::JellyfishKind() {
               "Hermite knots of the rest-length curve used (knot0_* .. knot{N-1}_*); the paper gives none"),
       real("synaptic_delay_s", act.synaptic_delay_s, "s", 0, 10,
            "Spencer's synaptic delay per muscle pair from the aperture (§3.1); 0 = off"),
+      choice("activation_shape", "hermite", {"hermite", "pulse"},
+             "hermite: the §3.3 curve (activation 1 at its lowest knot); pulse: sin^2 over pulse_duration_s at each "
+             "cycle's start (Hoover, Porras & Miller 2019)"),
+      real("pulse_duration_s", act.pulse_duration_s, "s", 1e-4, 100, "pulse shape: length of the contraction pulse"),
+      integer("active_cycles", 0, 0, 100000,
+              "cycles with activation, 0 = all; 1 with a short pulse is a pluck (natural_frequency.toml)"),
   };
   for (int k = 0; k < kMaxKnots; ++k) {
     const Knot d = defaultKnot(k);
@@ -186,17 +220,30 @@ JellyfishKind::JellyfishKind() {
       real("bell_diameter_m", bell.diameter_m, "m", 1e-4, 10, "Fig. 12: 40 mm"),
       real("bell_height_m", bell.height_m, "m", 1e-4, 10, "Fig. 12: 28 mm"),
       real("bell_thickness_m", bell.thickness_m, "m", 1e-5, 1, "Fig. 12: 4 mm; the markers are the subumbrella"),
-      integer("bell_segments", bell.segments, 8, 512,
-              "springs along the subumbrella (even; apex in the middle). Refining it keeps the body only with "
-              "muscle_stride and angular_stiffness_nm_per_rad scaled alike (x2 each for 64: convergence.toml)"),
+      integer("bell_segments", 0, 0, 2048,
+              "springs along the subumbrella (even, >= 8; apex in the middle); 0 = follow the grid: the fewest "
+              "with markers at most marker_spacing_cells apart. The body is defined by continuum properties, so "
+              "refining it refines the same bell (issue 13)"),
+      real("marker_spacing_cells", 0.5, "", 0.05, 4,
+           "bell_segments = 0: largest marker spacing in cells (immersed boundaries want <= 1; 0.5 is Peskin 2002's "
+           "rule and keeps the membrane's leak small, membrane.toml)"),
       real("bell_modulus_pa", bell.bell_modulus_pa, "Pa", 1e-6, 1e12, "bell mesoglea, λ = 1186 Pa (Fig. 12); k = E t / L"),
-      real("angular_stiffness_nm_per_rad", bell.angular_stiffness_nm_per_rad, "N m/rad", 0, 1e6,
-           "per joint, per metre of depth (Fig. 12: 1.186 N·m/rad, depth not given)"),
+      real("bending_rigidity_n_m", bell.bending_rigidity_n_m, "N m", 0, 1e6,
+           "bending rigidity B per metre of depth; a joint's angular spring is B / L. Default: Fig. 12's 1.186 N·m/rad "
+           "per joint read on the 32-segment chain (L = 1.983 mm)"),
+      real("stiffness_scale", 1.0, "", 1e-3, 1e3,
+           "multiplies bell_modulus_pa and bending_rigidity_n_m together (natural_frequency.toml sweeps it)"),
+      choice("muscle_model", "rest_length", {"rest_length", "active_tension"},
+             "rest_length: muscle springs whose rest length follows the activation (the paper, §3.3; prescribes the "
+             "stroke); active_tension: a tension T_max a(t) that the elastic bell re-expands against (issue 13)"),
+      real("muscle_band_fraction", bell.muscle_band_fraction, "", 0.01, 0.99,
+           "fraction of the half-arc from the aperture that the muscle band covers (Fig. 4's model: 14 of 16)"),
       real("muscle_modulus_pa", bell.muscle_modulus_pa, "Pa", 1e-6, 1e12, "circumferential muscle, 400 kPa (§3.2)"),
-      real("muscle_thickness_m", bell.muscle_thickness_m, "m", 1e-9, 1,
-           "muscle layer thickness (not given; 0.1 mm, see jellyfish_params.hpp)"),
-      integer("muscle_pairs", bell.muscle_pairs, 1, 256, "muscle springs across the bell (Fig. 4)"),
-      integer("muscle_stride", bell.muscle_stride, 1, 64, "markers between muscle springs, from the aperture"),
+      real("muscle_section_per_arc", bell.muscle_section_per_arc, "", 1e-9, 10,
+           "rest_length: muscle cross-section per metre of depth per metre of band arc (not given; a 0.1 mm layer "
+           "every two 1.98 mm segments, see jellyfish_params.hpp)"),
+      real("muscle_tension_n_per_m2", bell.muscle_tension_n_per_m2, "N/m^2", 0, 1e9,
+           "active_tension: peak tension per metre of depth per metre of band arc (not given by the paper)"),
       boolean("tentacles", bell.tentacles, "passive tentacle chains at the aperture (§3.2)"),
       real("tentacle_length_m", bell.tentacle_length_m, "m", 1e-5, 10, "not given; half a diameter"),
       real("tentacle_area_factor", bell.tentacle_area_factor, "", 1e-9, 10, "Fig. 12: 1/100 of the bell's section"),
@@ -210,7 +257,9 @@ JellyfishKind::JellyfishKind() {
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 1.304e-6,
       .viscosity_doc = "paper: 1.304e-3 without units, read as Pa s (water at 10 C) over 1000 kg/m^3",
-      .advection_doc = "velocity advection: the paper's semi-Lagrangian (Stam 1999) or MacCormack",
+      .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space; the default since "
+                       "the first-order scheme moved distances 2-5x, issue 13) or the paper's semi-Lagrangian (Stam 1999)",
+      .advection = "maccormack",
   });
   // --- coupling (§3.2; Peskin 2002)
   const std::vector<ParamSpec> coupling_specs = couplingSpecs({
@@ -231,6 +280,9 @@ JellyfishKind::JellyfishKind() {
            "(experiments/jellyfish/convergence.toml)"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
       real("start_y_fraction", 0.25, "", 0.05, 0.95, "aperture's starting height in the box (the bell swims up)"),
+      real("box_aspect", 1.0, "", 0.25, 8,
+           "box height / width (domain_m is the width); cells * box_aspect must be whole. A tall box lets a fast "
+           "swimmer swim its whole window without meeting the top wall"),
       // --- measurement
       real("warmup_cycles", 1.0, "", 0, 1000, "cycles before the measured window"),
       real("duration_s", 10.0, "s", 1e-6, 1e6, "measured window, the same for every frequency"),
@@ -246,6 +298,12 @@ JellyfishKind::JellyfishKind() {
       {"distance_per_cycle_m", "m", "distance_m / cycles in the window"},
       {"mean_speed_m_per_s", "m/s", "distance_m / duration_s"},
       {"min_diameter_ratio", "", "smallest aperture width / drawn width in the window"},
+      {"stroke_amplitude", "", "largest minus smallest diameter ratio over the second half of the window (the "
+                               "frequency response's amplitude, once the start-up has died away)"},
+      {"ringdown_hz", "Hz", "active_cycles > 0: damped frequency of the diameter's free decay after the last active "
+                          "cycle (zero crossings of ratio - 1); NaN without two half periods"},
+      {"natural_hz", "Hz", "ringdown_hz / sqrt(1 - damping_ratio^2): the bell-water natural frequency f_n"},
+      {"damping_ratio", "", "from the logarithmic decrement of successive extrema of the free decay"},
       {"lateral_drift_m", "m", "x displacement of the centroid over the window"},
       {"muscle_work_j", "J/m",
        "muscles' net work over the whole cycles of the window, per metre of depth: the work the body did on the "
@@ -260,6 +318,7 @@ JellyfishKind::JellyfishKind() {
       {"max_cfl", "", "largest max(|u|,|v|) dt / dx of any step"},
       {"max_marker_speed_m_per_s", "m/s", "largest marker speed of any step"},
       {"markers", "", "immersed-boundary markers (bell + tentacles)"},
+      {"segment_cells", "", "drawn bell segment length in fluid cells (bell_segments = 0 keeps it <= marker_spacing_cells)"},
       {"steps", "", "coupled steps taken"},
   };
 }
@@ -284,6 +343,11 @@ std::string JellyfishKind::validate(const Params& p) const {
   if (std::string err = c.fluid.validate(); !err.empty()) return err;
   if (3 * r.real("bell_diameter_m") > r.real("domain_m"))
     return "the box (domain_m) must be at least three bell diameters wide";
+  const double rows = r.real("box_aspect") * double(r.integer("cells"));
+  if (std::abs(rows - std::round(rows)) > 1e-9)
+    return "cells x box_aspect must be a whole number of cells (got " + std::to_string(rows) + ")";
+  if (const long segments = r.integer("bell_segments"); segments != 0 && (segments < 8 || segments % 2 != 0))
+    return "bell_segments must be 0 (follow the grid) or even and at least 8, got " + std::to_string(segments);
   if (r.real("dt_s") > r.real("duration_s")) return "dt_s is longer than duration_s";
   return "";
 }
@@ -303,6 +367,16 @@ Result JellyfishKind::run(const Params& p) const {
 
   jellyfish::SwimmerObservation start;
   double start_work = 0, end_work = 0, start_fluid = 0, end_fluid = 0, min_ratio = std::numeric_limits<double>::infinity(), max_cfl = 0, max_speed = 0;
+  // Stroke amplitude over the window's second half; the free decay after the last active cycle.
+  const long second_half_step = plan.warmup_steps + (plan.total_steps - plan.warmup_steps) / 2;
+  double late_min = std::numeric_limits<double>::infinity(), late_max = -late_min;
+  const long active_cycles = r.integer("active_cycles");
+  // The activation ends with the last active cycle's pulse (pulse shape) or with the cycle (hermite).
+  const double last_cycle_s = (active_cycles - 1) / r.real("contraction_hz");
+  const double release_s = last_cycle_s + (r.text("activation_shape") == "pulse" ? r.real("pulse_duration_s")
+                                                                                 : 1.0 / r.real("contraction_hz"));
+  const long release_step = active_cycles > 0 ? std::lround(release_s / dt) : -1;
+  std::vector<double> decay_t, decay_d;
   if (plan.warmup_steps == 0) start = swimmer.observe();
   try {
     for (long step = 1; step <= plan.total_steps; ++step) {
@@ -320,6 +394,14 @@ Result JellyfishKind::run(const Params& p) const {
         end_fluid = swimmer.fluid_work_j_per_m();
       }
       if (step > plan.warmup_steps) min_ratio = std::min(min_ratio, o.diameter_ratio);
+      if (step > second_half_step) {
+        late_min = std::min(late_min, o.diameter_ratio);
+        late_max = std::max(late_max, o.diameter_ratio);
+      }
+      if (release_step >= 0 && step >= release_step) {
+        decay_t.push_back(o.time_s);
+        decay_d.push_back(o.diameter_ratio - 1.0);
+      }
       if (step % plan.steps_per_frame == 0) recorder.frame(swimmer);
       if (plan.steps_per_field > 0 && step % plan.steps_per_field == 0) recorder.field(swimmer);
     }
@@ -343,6 +425,15 @@ Result JellyfishKind::run(const Params& p) const {
   m["distance_per_cycle_m"] = {distance / cycles, "m"};
   m["mean_speed_m_per_s"] = {distance / duration, "m/s"};
   m["min_diameter_ratio"] = {min_ratio, ""};
+  m["stroke_amplitude"] = {late_max - late_min, ""};
+  // The first two periods after release, while the breathing mode dominates (the pluck's diameter
+  // shows higher modes beating with it after that); crossings count with a hysteresis of a tenth
+  // of the release deviation (jellyfish/ringdown.hpp).
+  const jellyfish::Ringdown ring = jellyfish::measureRingdown(decay_t, decay_d, 0.1, 4);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  m["ringdown_hz"] = {release_step >= 0 ? ring.damped_hz : nan, "Hz"};
+  m["natural_hz"] = {release_step >= 0 ? ring.natural_hz : nan, "Hz"};
+  m["damping_ratio"] = {release_step >= 0 ? ring.damping_ratio : nan, ""};
   m["lateral_drift_m"] = {end.centroid_m.x - start.centroid_m.x, "m"};
   m["muscle_work_j"] = {end_fluid - start_fluid, "J/m"};
   m["muscle_work_direct_j"] = {work, "J/m"};
@@ -351,6 +442,7 @@ Result JellyfishKind::run(const Params& p) const {
   m["max_cfl"] = {max_cfl, ""};
   m["max_marker_speed_m_per_s"] = {max_speed, "m/s"};
   m["markers"] = {double(swimmer.markers_m().size()), ""};
+  m["segment_cells"] = {swimmer.body().model().segment_m / swimmer.fluid().grid().dx_m, ""};
   m["steps"] = {double(plan.total_steps), ""};
   return result;
 }

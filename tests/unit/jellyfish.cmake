@@ -5,5 +5,6 @@ creaturelab_test(jellyfish_unit_test unit
     ${CMAKE_CURRENT_LIST_DIR}/jellyfish_curve_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/jellyfish_bell_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/jellyfish_body_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/jellyfish_active_test.cpp
   LIBS cl_jellyfish
 )

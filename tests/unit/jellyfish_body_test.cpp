@@ -111,15 +111,17 @@ TEST(JellyfishBody, ForcesVanishAtRestShapeAtTimeZero) {
   std::vector<double> tension;
   body.muscleTensions(t, x, tension);
   for (std::size_t m = 0; m < tension.size(); ++m) {
-    // Hooke: k (L - 0.56 L) = 0.44 E t_m for every pair (k L = E t_m).
-    EXPECT_NEAR(tension[m], 0.44 * 4e5 * 1e-4, 1e-9) << "muscle " << m;
+    // Hooke: k (L - 0.56 L) = 0.44 E s w for every element (k L = E s w).
+    const MuscleSpring& s = defaultModel().muscles[m];
+    EXPECT_NEAR(tension[m], 0.44 * 4e5 * BellParams{}.muscle_section_per_arc * s.arc_weight_m, 1e-9) << "muscle " << m;
   }
   EXPECT_NEAR(
       body.elasticEnergy(t, x),
-      0.5 * 0.44 * 0.44 * 40.0 *
-          [&] {
+      0.5 * 0.44 * 0.44 *
+          [&] {  // ½ k (0.44 L)² with k L = E s w
             double sum = 0;
-            for (const auto& s : defaultModel().muscles) sum += s.relaxed_length_m;
+            for (const auto& s : defaultModel().muscles)
+              sum += 4e5 * BellParams{}.muscle_section_per_arc * s.arc_weight_m * s.relaxed_length_m;
             return sum;
           }(),
       1e-12);
@@ -321,7 +323,9 @@ TEST(JellyfishBody, TautMusclePullsWithHookesTension) {
 // as the moment each pair's rest length crosses 0.78 (halfway) during the contraction, found by
 // bisection: the crossings are k · delay apart, and the aperture pair is not delayed at all.
 TEST(JellyfishBody, SynapticDelayShiftsEachPairByItsOrder) {
-  const double delay = 0.04;
+  // 15 elements in the band: the last starts 14 delays late, 0.28 s as in the earlier 8-pair bell
+  // at 0.04 s per pair, so that every pair is still expanding at the brackets below.
+  const double delay = 0.02;
   for (Expansion e : {Expansion::unison, Expansion::staggered}) {
     const JellyfishBody plain(defaultModel(), activation(e, 0.0));
     const JellyfishBody delayed(defaultModel(), activation(e, delay));

@@ -404,30 +404,19 @@ TEST(JellyfishParams, BellProblemsAreNamed) {
   };
   EXPECT_TRUE(mentions(message([](auto& b) { b.segments = 31; }), "segments must be even and at least 8, got 31"));
   EXPECT_TRUE(mentions(message([](auto& b) { b.segments = 6; }), "segments must be even and at least 8, got 6"));
-  // 32 segments put the apex at marker 16; 9 pairs every 2 markers would reach it (a muscle of
-  // zero length from the apex to itself), 8 pairs stop at marker 14.
-  EXPECT_TRUE(mentions(message([](auto& b) { b.muscle_pairs = 9; }), "muscle pairs x stride reach the apex"));
-  EXPECT_EQ(message([](auto& b) { b.muscle_pairs = 8; }), "");
-  EXPECT_EQ(message([](auto& b) {
-              b.muscle_pairs = 16;
-              b.muscle_stride = 1;
-            }),
-            "");
-  EXPECT_TRUE(mentions(message([](auto& b) {
-                         b.muscle_pairs = 17;
-                         b.muscle_stride = 1;
-                       }),
-                       "reach the apex"));
+  // The muscle band may not reach the apex (an element from the apex to itself).
+  EXPECT_TRUE(mentions(message([](auto& b) { b.muscle_band_fraction = 1.0; }), "cannot reach the apex"));
+  EXPECT_TRUE(mentions(message([](auto& b) { b.muscle_band_fraction = 0.0; }), "muscle band fraction must be in (0, 1)"));
+  EXPECT_EQ(message([](auto& b) { b.muscle_band_fraction = 0.99; }), "");
   EXPECT_TRUE(
       mentions(message([](auto& b) { b.thickness_m = 0.03; }), "thickness must be less than half its diameter"));
   EXPECT_TRUE(mentions(message([](auto& b) { b.height_m = 0.003; }), "thickness must be less than its height"));
   EXPECT_TRUE(mentions(message([](auto& b) { b.diameter_m = -1; }), "diameter must be > 0"));
   EXPECT_TRUE(mentions(message([](auto& b) { b.bell_modulus_pa = 0; }), "bell modulus must be > 0"));
   EXPECT_TRUE(mentions(message([](auto& b) { b.muscle_modulus_pa = std::nan(""); }), "muscle modulus must be > 0"));
-  EXPECT_TRUE(
-      mentions(message([](auto& b) { b.angular_stiffness_nm_per_rad = -1; }), "angular stiffness must be >= 0"));
-  EXPECT_TRUE(mentions(message([](auto& b) { b.muscle_pairs = 0; }), "at least one muscle pair"));
-  EXPECT_TRUE(mentions(message([](auto& b) { b.muscle_stride = 0; }), "muscle stride must be >= 1"));
+  EXPECT_TRUE(mentions(message([](auto& b) { b.bending_rigidity_n_m = -1; }), "bending rigidity must be >= 0"));
+  EXPECT_TRUE(mentions(message([](auto& b) { b.muscle_section_per_arc = 0; }), "muscle section per arc must be > 0"));
+  EXPECT_TRUE(mentions(message([](auto& b) { b.muscle_tension_n_per_m2 = -1; }), "muscle tension must be >= 0"));
   EXPECT_TRUE(mentions(message([](auto& b) { b.tentacle_length_m = 0; }), "tentacle length must be > 0"));
   EXPECT_EQ(message([](auto& b) {
               b.tentacles = false;
