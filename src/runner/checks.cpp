@@ -57,7 +57,7 @@ std::vector<const Row*> select(const Table& table, const Where& where, const std
   return rows;
 }
 
-CheckOutcome extremum(const CheckSpec& c, const std::vector<const Row*>& rows, bool is_max) {
+CheckOutcome extremum(const CheckSpec& c, const Table& table, const std::vector<const Row*>& rows, bool is_max) {
   CheckOutcome out{c.name, c.type, "", "", false};
   const Row* best = rows.front();
   for (const Row* r : rows) {
@@ -69,10 +69,24 @@ CheckOutcome extremum(const CheckSpec& c, const std::vector<const Row*>& rows, b
   if (c.expect_choice) {
     out.expected = c.axis + "=\"" + *c.expect_choice + "\"";
     out.passed = sameValue(at, kinds::Value(*c.expect_choice));
-  } else {
+  } else if (c.relative_to.empty()) {
     out.expected = c.axis + " in " + range(c.expect_lo, c.expect_hi);
     const double x = numericValue(at);
     out.passed = x >= c.expect_lo && x <= c.expect_hi;
+  } else {
+    out.expected = c.axis + " / " + c.relative_metric + "(" + describeWhere(c.relative_to) + ") in " +
+                   range(c.expect_lo, c.expect_hi);
+    std::string problem;
+    const auto reference = select(table, c.relative_to, c.relative_metric, problem);
+    if (!problem.empty()) {
+      out.got += "; " + problem;
+      return out;
+    }
+    double mean = 0;
+    for (const Row* r : reference) mean += r->metrics.at(c.relative_metric) / double(reference.size());
+    const double ratio = numericValue(at) / mean;
+    out.got += " = " + formatNumber(ratio) + " x " + c.relative_metric + " " + formatNumber(mean);
+    out.passed = std::isfinite(ratio) && ratio >= c.expect_lo && ratio <= c.expect_hi;
   }
   return out;
 }
@@ -180,8 +194,8 @@ CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
   }
   auto rows = select(table, c.where, c.metric, problem);
   if (!problem.empty()) return CheckOutcome{c.name, c.type, "", problem, false};
-  if (c.type == "argmax") return extremum(c, rows, true);
-  if (c.type == "argmin") return extremum(c, rows, false);
+  if (c.type == "argmax") return extremum(c, table, rows, true);
+  if (c.type == "argmin") return extremum(c, table, rows, false);
   if (c.type == "range") return inRange(c, rows);
   if (c.type == "order") return order(c, rows);
   return monotonic(c, rows);

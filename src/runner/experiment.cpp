@@ -109,7 +109,8 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   static const std::vector<std::string> known = {"name",      "type",        "metric",           "axis",
                                                  "expect",    "direction",   "strict",           "where",
                                                  "numerator", "denominator", "numerator_metric", "denominator_metric",
-                                                 "numerator_base", "denominator_base", "known_deviation"};
+                                                 "numerator_base", "denominator_base", "known_deviation",
+                                                 "relative_to", "relative_metric"};
   kinds::checkKeys(t, known, ctx, key);
   CheckSpec c;
   c.name = t["name"].value_or(std::string());
@@ -122,6 +123,7 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   if (t.contains("known_deviation") && (!t["known_deviation"].is_string() || c.known_deviation.empty()))
     ctx.fail(key + ".known_deviation", "expected a non-empty string: why the model does not reproduce this claim",
              t.get("known_deviation"));
+  c.relative_metric = t["relative_metric"].value_or(std::string());
   c.numerator_metric = t["numerator_metric"].value_or(c.metric);
   c.denominator_metric = t["denominator_metric"].value_or(c.metric);
   if (c.name.empty()) ctx.fail(key, "needs a name", &t);
@@ -132,7 +134,8 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   std::vector<std::string> metric_names;
   for (const auto& m : kind.metrics()) metric_names.push_back(m.name);
   for (const auto& [field, name] : {std::pair{"metric", c.metric}, std::pair{"numerator_metric", c.numerator_metric},
-                                    std::pair{"denominator_metric", c.denominator_metric}})
+                                    std::pair{"denominator_metric", c.denominator_metric},
+                                    std::pair{"relative_metric", c.relative_metric.empty() ? c.metric : c.relative_metric}})
     if (std::find(metric_names.begin(), metric_names.end(), name) == metric_names.end())
       ctx.fail(key + "." + field, "'" + name + "' is not a metric of kind '" + kind.name() + "'" +
                                       core::didYouMean(name, metric_names), t.get(field));
@@ -161,6 +164,14 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   c.denominator_base = parseWhere(t.get("denominator_base"), ctx, key + ".denominator_base");
   if (c.type == "ratio" && (c.numerator.empty() || c.denominator.empty()))
     ctx.fail(key, "a ratio check needs numerator = {...} and denominator = {...} point selections", &t);
+  c.relative_to = parseWhere(t.get("relative_to"), ctx, key + ".relative_to");
+  if (!c.relative_to.empty() || !c.relative_metric.empty()) {
+    if (c.type != "argmax" && c.type != "argmin")
+      ctx.fail(key, "relative_to and relative_metric belong to argmax and argmin checks", &t);
+    if (c.relative_to.empty() || c.relative_metric.empty())
+      ctx.fail(key, "relative_to = {...} and relative_metric go together", &t);
+    if (c.expect_choice) ctx.fail(key + ".expect", "a relative argmax/argmin expects [low, high]", t.get("expect"));
+  }
   return c;
 }
 
@@ -294,7 +305,8 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
     const std::string key = "check '" + chk.name + "'";
     if (!chk.axis.empty() && std::find(columns.begin(), columns.end(), chk.axis) == columns.end())
       ctx.fail(key, "axis '" + chk.axis + "' is not swept" + core::didYouMean(chk.axis, columns));
-    for (const Where* w : {&chk.where, &chk.numerator, &chk.denominator, &chk.numerator_base, &chk.denominator_base})
+    for (const Where* w : {&chk.where, &chk.numerator, &chk.denominator, &chk.numerator_base, &chk.denominator_base,
+                           &chk.relative_to})
       for (const auto& [k, v] : *w)
         if (k != "label" && std::find(columns.begin(), columns.end(), k) == columns.end())
           ctx.fail(key, "selection key '" + k + "' is not a swept column" + core::didYouMean(k, columns));

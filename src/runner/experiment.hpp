@@ -44,6 +44,10 @@ struct CheckSpec {
   Where where, numerator, denominator;       // point selections
   std::string numerator_metric, denominator_metric;  // ratio: "" = metric
   Where numerator_base, denominator_base;  // ratio: each side divided by its metric at this point
+  // argmax/argmin: the expectation is on axis value / mean of relative_metric over the points
+  // relative_to selects (e.g. a driven response's peak frequency over a pluck's natural_hz).
+  Where relative_to;
+  std::string relative_metric;
   // A paper claim the model is known not to reproduce, with the reason (e.g. "see the note of
   // issue 5"). The check is still evaluated and printed (KNOWN instead of FAIL) but a failure
   // does not change the exit code; if it passes the table says so.

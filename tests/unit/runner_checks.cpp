@@ -78,6 +78,37 @@ TEST(RunnerChecks, ArgmaxOnANumericAxis) {
   EXPECT_EQ(o.expected, "contraction_hz in [0.6, 0.8]");
 }
 
+// An argmax relative to another point's metric: a driven response's peak frequency against the
+// natural frequency a pluck measured (jellyfish natural_frequency.toml).
+TEST(RunnerChecks, ArgmaxRelativeToAnotherPointsMetric) {
+  Table t{{"protocol", "contraction_hz"}, {"stroke_amplitude", "natural_hz"}, {}};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  t.rows.push_back(row(0, {{"protocol", std::string("pluck")}, {"contraction_hz", 1.0}},
+                       {{"stroke_amplitude", 0.1}, {"natural_hz", 0.75}}));
+  const double hz[] = {0.5, 0.7, 0.9};
+  const double amp[] = {0.2, 0.4, 0.3};
+  for (int i = 0; i < 3; ++i)
+    t.rows.push_back(row(i + 1, {{"protocol", std::string("drive")}, {"contraction_hz", hz[i]}},
+                         {{"stroke_amplitude", amp[i]}, {"natural_hz", nan}}));
+  CheckSpec c = spec("argmax", "stroke_amplitude", "contraction_hz");
+  c.where = {{"protocol", Value(std::string("drive"))}};
+  c.relative_to = {{"protocol", Value(std::string("pluck"))}};
+  c.relative_metric = "natural_hz";
+  c.expect_lo = 0.9;
+  c.expect_hi = 1.1;
+  CheckOutcome o = runner::evaluateCheck(c, t);
+  EXPECT_TRUE(o.passed) << o.got;  // 0.7 / 0.75 = 0.933
+  EXPECT_TRUE(contains(o.got, "0.933333 x natural_hz 0.75")) << o.got;
+  EXPECT_EQ(o.expected, "contraction_hz / natural_hz(protocol=\"pluck\") in [0.9, 1.1]");
+  c.expect_lo = 0.95;
+  EXPECT_FALSE(runner::evaluateCheck(c, t).passed);
+  // A reference without a finite metric fails with the reason.
+  c.relative_to = {{"protocol", Value(std::string("drive"))}};
+  o = runner::evaluateCheck(c, t);
+  EXPECT_FALSE(o.passed);
+  EXPECT_TRUE(contains(o.got, "has no finite natural_hz")) << o.got;
+}
+
 TEST(RunnerChecks, ArgmaxBoundsAreInclusiveAndAWrongExpectationFails) {
   CheckSpec c = spec("argmax", "distance_m", "contraction_hz");
   c.expect_lo = 0.7;
