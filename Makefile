@@ -28,8 +28,11 @@ test-asan: deps
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=0 ctest --test-dir $(ASAN_BUILD) -L unit --output-on-failure -j $(JOBS)
 
+# The runs, then their figures from the HDF5 alone (analysis/draw_runs.py); the runs' exit code stands.
 reproduce: build
-	$(BUILD)/creaturelab reproduce
+	@$(BUILD)/creaturelab reproduce; status=$$?; \
+	  /usr/bin/python3 analysis/draw_runs.py results/runs/reproduce || status=$$((status ? status : 4)); \
+	  echo "figures: results/runs/reproduce/*/figures/"; exit $$status
 
 bench: build
 	@for b in $(BUILD)/tests/bench_*; do [ -x "$$b" ] && "$$b"; done

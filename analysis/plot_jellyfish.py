@@ -11,6 +11,12 @@ Writes to RUN_DIR/figures/ (or --out):
                     (Fig. 11): subumbrella (markers), exumbrella projected outward by the
                     thickness along the normals (§3.4), tentacles, muscle springs in grey.
   vorticity_<k>.png  when the point stored fields: vorticity with the bell and tracers (Fig. 6).
+  resonance.png     when a point was plucked (finite natural_hz): the pluck's free decay, and
+                    stroke amplitude and distance per cycle of the driven points against the
+                    driving frequency, with f_n marked (issue 13 §2).
+  convergence.png   when the run sweeps `cells`: distance per cycle and stroke amplitude against
+                    the cell size per setting, with the observed order and Richardson's estimate
+                    (also printed, and written to convergence.txt).
 """
 import argparse
 import glob
@@ -58,12 +64,36 @@ def label_of(sweep, k):
     return ", ".join(parts) if parts else f"point {k}"
 
 
+def short_label(sweep, k):
+    """The case label and the columns a case does not fix (those that vary within a label)."""
+    if "label" not in sweep:
+        return label_of(sweep, k)
+    labels = [text(v) for v in sweep["label"]]
+    parts = [labels[k]]
+    for name, values in sweep.items():
+        if name == "label":
+            continue
+        same = [i for i in range(len(labels)) if labels[i] == labels[k]]
+        if len({text(values[i]) if isinstance(values[i], bytes) else float(values[i]) for i in same}) > 1:
+            v = values[k]
+            parts.append(f"{name}={text(v)}" if isinstance(v, (bytes, str)) else f"{name}={float(v):g}")
+    return ", ".join(parts)
+
+
 def numeric_axis(sweep, wanted):
     names = [wanted] if wanted else [n for n in sweep if n != "label"]
     for n in names:
         if n in sweep and np.issubdtype(sweep[n].dtype, np.number) and len(np.unique(sweep[n])) > 1:
             return n
     return None
+
+
+def metric(f, name):
+    return float(f["metrics/" + name][()]) if "metrics/" + name in f else np.nan
+
+
+def plucked(f):
+    return np.isfinite(metric(f, "natural_hz"))
 
 
 def trajectories(sweep, points, out, axis_name):
@@ -82,13 +112,17 @@ def trajectories(sweep, points, out, axis_name):
     left.set_title("trajectories (Fig. 5 left)")
     if n <= 8:
         left.legend(fontsize=7)
-    dist = np.array([float(f["metrics/distance_m"][()]) if "metrics/distance_m" in f else np.nan for f in points])
+    dist = np.array([metric(f, "distance_m") for f in points])
+    driven = np.array([not plucked(f) for f in points])
     if axis:
         x = sweep[axis]
-        order = np.argsort(x)
+        order = [i for i in np.argsort(x) if driven[i]] or list(np.argsort(x))
         right.plot(x[order], dist[order] * 1e3, "ko-", ms=3)
-        best = int(np.nanargmax(dist))
+        best = order[int(np.nanargmax(dist[order]))]
         right.axvline(x[best], color="tab:red", lw=0.8, ls="--", label=f"max at {axis} = {x[best]:g}")
+        fn = [metric(f, "natural_hz") for f in points if plucked(f)]
+        if fn and axis == "contraction_hz":
+            right.axvline(np.mean(fn), color="tab:blue", lw=0.8, ls=":", label=f"f_n = {np.mean(fn):.3g} Hz (pluck)")
         right.set_xlabel(axis)
         right.legend(fontsize=8)
     else:
@@ -188,6 +222,97 @@ def vorticity(sweep, points, out):
         plt.close(fig)
 
 
+def resonance(sweep, points, out):
+    """The pluck's free decay and the driven response against frequency, f_n marked."""
+    plucks = [k for k, f in enumerate(points) if plucked(f)]
+    if not plucks:
+        return
+    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
+    for k in plucks:
+        f = points[k]
+        t = f["timeseries/time_s"][...]
+        left.plot(t, f["timeseries/diameter_ratio"][...], lw=0.9,
+                  label=f"{short_label(sweep, k)}: f_n {metric(f, 'natural_hz'):.3g} Hz, zeta {metric(f, 'damping_ratio'):.2f}")
+    left.axhline(1, color="0.7", lw=0.6)
+    left.set_xlabel("time (s)")
+    left.set_ylabel("aperture width / rest width")
+    left.set_title("pluck: free decay of the diameter")
+    left.legend(fontsize=7)
+    driven = [k for k, f in enumerate(points) if not plucked(f)]
+    if driven and "contraction_hz" in sweep:
+        hz = np.array([float(sweep["contraction_hz"][k]) for k in driven])
+        order = np.argsort(hz)
+        amp = np.array([metric(points[k], "stroke_amplitude") for k in driven])
+        dpc = np.array([metric(points[k], "distance_per_cycle_m") for k in driven])
+        right.plot(hz[order], amp[order], "ko-", ms=3, label="stroke amplitude")
+        twin = right.twinx()
+        twin.plot(hz[order], dpc[order] * 1e3, "s--", color="tab:green", ms=3, label="distance per cycle (mm)")
+        twin.set_ylabel("distance per cycle (mm)", color="tab:green")
+        for k in plucks:
+            right.axvline(metric(points[k], "natural_hz"), color="tab:blue", ls=":", lw=1)
+        right.axvline(np.nan, color="tab:blue", ls=":", label="f_n (pluck)")
+        right.set_xlabel("driving frequency (Hz)")
+        right.set_ylabel("stroke amplitude (diameter ratio)")
+        right.set_title("driven at fixed peak tension")
+        right.legend(fontsize=7, loc="upper left")
+    else:
+        right.axis("off")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "resonance.png"), dpi=110)
+    plt.close(fig)
+
+
+def richardson(h, q):
+    """Observed order and extrapolated value from three grids h, h/2, h/4 (Roache 1998)."""
+    if len(q) != 3 or not np.all(np.isfinite(q)):
+        return np.nan, np.nan
+    d1, d2 = q[0] - q[1], q[1] - q[2]
+    if d2 == 0 or d1 / d2 <= 0:
+        return np.nan, np.nan
+    ratio = h[0] / h[1]
+    p = np.log(d1 / d2) / np.log(ratio)
+    if p <= 0:  # the differences grow as the grid is refined: no estimate
+        return p, np.nan
+    return p, q[2] + (q[2] - q[1]) / (ratio ** p - 1)
+
+
+def convergence(sweep, points, out):
+    if "cells" not in sweep or len(np.unique(sweep["cells"])) < 2:
+        return
+    skip = {"cells", "dt_s", "label", "bell_segments", "domain_m"}
+    keys = [n for n in sweep if n not in skip]
+    groups = {}
+    for k, f in enumerate(points):
+        g = tuple(text(sweep[n][k]) if isinstance(sweep[n][k], bytes) else float(sweep[n][k]) for n in keys)
+        groups.setdefault(g, []).append(k)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
+    lines = ["setting | cell (mm) | distance per cycle (mm) | stroke amplitude | observed order | Richardson (mm)"]
+    for g, ks in sorted(groups.items()):
+        ks = sorted(ks, key=lambda k: -float(param(points[k], "domain_m")) / float(sweep["cells"][k]))
+        h = np.array([float(param(points[k], "domain_m")) / float(sweep["cells"][k]) * 1e3 for k in ks])
+        d = np.array([metric(points[k], "distance_per_cycle_m") * 1e3 for k in ks])
+        a = np.array([metric(points[k], "stroke_amplitude") for k in ks])
+        name = ", ".join(f"{n}={v:g}" if isinstance(v, float) else f"{n}={v}" for n, v in zip(keys, g))
+        p, rich = richardson(h, d)
+        left.plot(h, d, "o-", ms=3, label=f"{name} (p = {p:.2g})")
+        right.plot(h, a, "o-", ms=3, label=name)
+        for hi, di, ai in zip(h, d, a):
+            lines.append(f"{name} | {hi:g} | {di:.4g} | {ai:.4g} | {p:.3g} | {rich:.4g}")
+    for ax, what in ((left, "distance per cycle (mm)"), (right, "stroke amplitude")):
+        ax.set_xscale("log", base=2)
+        ax.invert_xaxis()
+        ax.set_xlabel("cell size (mm), dt ∝ dx, markers ≤ half a cell apart")
+        ax.set_ylabel(what)
+        ax.legend(fontsize=6)
+    left.set_title("grid convergence (issue 13 §1)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "convergence.png"), dpi=110)
+    plt.close(fig)
+    with open(os.path.join(out, "convergence.txt"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("run_dir")
@@ -203,6 +328,8 @@ def main():
     if not a.no_morphology:
         morphology(sweep, points, out, a.cycles)
     vorticity(sweep, points, out)
+    resonance(sweep, points, out)
+    convergence(sweep, points, out)
     print(f"figures in {out}")
 
 

@@ -10,12 +10,11 @@ Ringdown measureRingdown(std::span<const double> t, std::span<const double> d, d
                          int max_half_periods) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   Ringdown out{0, nan, nan, nan};
-  double largest = 0;
-  for (double v : d) largest = std::max(largest, std::abs(v));
   // Hysteresis: a half period ends when the signal, having crossed zero, passes ±h on the other
-  // side; the crossing's time is the last zero crossing before that. Small beats of higher modes
-  // about zero then add no crossings.
-  const double h = relative_floor * largest;
+  // side; the crossing's time is the last zero crossing before that. h follows the decay: a
+  // fraction of the last half period's extremum (of the starting deviation at first), so that
+  // small beats of higher modes about zero add no crossings while the ring itself still does.
+  double h = relative_floor * std::abs(d.empty() ? 0.0 : d[0]);
   std::vector<double> crossings;
   std::vector<double> extrema;  // |d| largest within each half period between counted crossings
   int side = 0;                 // sign of the current half period, 0 before the signal leaves ±h
@@ -29,6 +28,7 @@ Ringdown measureRingdown(std::span<const double> t, std::span<const double> d, d
         if (!crossings.empty()) extrema.push_back(peak);
         crossings.push_back(last_zero_s);
         if (static_cast<int>(crossings.size()) > max_half_periods) break;
+        h = relative_floor * peak;
       }
       side = now;
       peak = 0;

@@ -17,8 +17,9 @@ struct Ringdown {
 };
 
 /// `time_s` increasing, `deviation` the signal minus its rest value. A zero crossing counts only
-/// once the signal passes ±h on its far side, h = `relative_floor` × max |deviation| (hysteresis):
-/// beats of higher modes about zero and the flow's slow drifts then add no crossings.
+/// once the signal passes ±h on its far side, h = `relative_floor` × the previous half period's
+/// extremum (the starting deviation at first): beats of higher modes about zero and the flow's
+/// slow drifts then add no crossings, while the decaying ring still does.
 /// Only the first `max_half_periods` half periods count: after a pluck the breathing mode
 /// dominates the first two periods, and higher shape modes beat with it later.
 Ringdown measureRingdown(std::span<const double> time_s, std::span<const double> deviation, double relative_floor,

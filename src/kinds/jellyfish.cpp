@@ -30,6 +30,13 @@ std::vector<Knot> knots(const ParamReader& r) {
   return out;
 }
 
+// Calibrated parameters of the active-tension bell (issue 13; measured at 200², MacCormack, in
+// water and at ten times its viscosity): B = 1e-4 N m gives a pluck f_n of 0.73 / 0.76 Hz (the
+// paper's §3.3 gait runs at the resonance, 0.7 Hz, Fig. 5); T_max = 5 N/m² driven at 0.7 Hz gives
+// the smallest diameter ratio 0.54 / 0.58 (Fig. 3: "56% of its maximum diameter").
+constexpr double kCalibratedBendingRigidity = 1.0e-4;
+constexpr double kCalibratedTension = 5.0;
+
 // bell_segments = 0 follows the grid: the fewest even segments whose drawn length is at most
 // marker_spacing_cells cells (issue 13: markers about half a cell apart, so that the boundary does
 // not leak as the grid is refined; the membrane experiment measures leaks of 23-49% at 2-4 cells).
@@ -228,22 +235,26 @@ JellyfishKind::JellyfishKind() {
            "bell_segments = 0: largest marker spacing in cells (immersed boundaries want <= 1; 0.5 is Peskin 2002's "
            "rule and keeps the membrane's leak small, membrane.toml)"),
       real("bell_modulus_pa", bell.bell_modulus_pa, "Pa", 1e-6, 1e12, "bell mesoglea, λ = 1186 Pa (Fig. 12); k = E t / L"),
-      real("bending_rigidity_n_m", bell.bending_rigidity_n_m, "N m", 0, 1e6,
-           "bending rigidity B per metre of depth; a joint's angular spring is B / L. Default: Fig. 12's 1.186 N·m/rad "
-           "per joint read on the 32-segment chain (L = 1.983 mm)"),
+      real("bending_rigidity_n_m", kCalibratedBendingRigidity, "N m", 0, 1e6,
+           "bending rigidity B per metre of depth; a joint's angular spring is B / L. Calibrated: 1e-4 puts the 4 cm "
+           "bell's natural frequency in water at the 0.7 Hz of the paper's resonant gait (§3.3; natural_frequency.toml). "
+           "Fig. 12's 1.186 N·m/rad has no depth or segment length: read per metre of depth on the 32-segment chain it "
+           "is 2.352e-3 (f_n 2.9 Hz); the plate value E t^3/12 of the paper's mesoglea is 6.3e-6"),
       real("stiffness_scale", 1.0, "", 1e-3, 1e3,
            "multiplies bell_modulus_pa and bending_rigidity_n_m together (natural_frequency.toml sweeps it)"),
-      choice("muscle_model", "rest_length", {"rest_length", "active_tension"},
-             "rest_length: muscle springs whose rest length follows the activation (the paper, §3.3; prescribes the "
-             "stroke); active_tension: a tension T_max a(t) that the elastic bell re-expands against (issue 13)"),
+      choice("muscle_model", "active_tension", {"rest_length", "active_tension"},
+             "active_tension: a tension T_max a(t) that the elastic bell re-expands against, so the stroke can resonate "
+             "(issue 13); rest_length: muscle springs whose rest length follows the curve (the paper, §3.3; it "
+             "prescribes the stroke)"),
       real("muscle_band_fraction", bell.muscle_band_fraction, "", 0.01, 0.99,
            "fraction of the half-arc from the aperture that the muscle band covers (Fig. 4's model: 14 of 16)"),
       real("muscle_modulus_pa", bell.muscle_modulus_pa, "Pa", 1e-6, 1e12, "circumferential muscle, 400 kPa (§3.2)"),
       real("muscle_section_per_arc", bell.muscle_section_per_arc, "", 1e-9, 10,
            "rest_length: muscle cross-section per metre of depth per metre of band arc (not given; a 0.1 mm layer "
            "every two 1.98 mm segments, see jellyfish_params.hpp)"),
-      real("muscle_tension_n_per_m2", bell.muscle_tension_n_per_m2, "N/m^2", 0, 1e9,
-           "active_tension: peak tension per metre of depth per metre of band arc (not given by the paper)"),
+      real("muscle_tension_n_per_m2", kCalibratedTension, "N/m^2", 0, 1e9,
+           "active_tension: peak tension per metre of depth per metre of band arc. Not given by the paper; calibrated: 5 "
+           "contracts the 4 cm bell to about the paper's 0.56 of its diameter (Fig. 3) driven at 0.7 Hz"),
       boolean("tentacles", bell.tentacles, "passive tentacle chains at the aperture (§3.2)"),
       real("tentacle_length_m", bell.tentacle_length_m, "m", 1e-5, 10, "not given; half a diameter"),
       real("tentacle_area_factor", bell.tentacle_area_factor, "", 1e-9, 10, "Fig. 12: 1/100 of the bell's section"),
@@ -279,8 +290,8 @@ JellyfishKind::JellyfishKind() {
            "Distances over several cycles: on 100² not converged in it, on 200² to a few mm from 0.0025 s "
            "(experiments/jellyfish/convergence.toml)"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
-      real("start_y_fraction", 0.25, "", 0.05, 0.95, "aperture's starting height in the box (the bell swims up)"),
-      real("box_aspect", 1.0, "", 0.25, 8,
+      real("start_y_fraction", 0.2, "", 0.05, 0.95, "aperture's starting height in the box (the bell swims up)"),
+      real("box_aspect", 1.5, "", 0.25, 8,
            "box height / width (domain_m is the width); cells * box_aspect must be whole. A tall box lets a fast "
            "swimmer swim its whole window without meeting the top wall"),
       // --- measurement
@@ -427,9 +438,9 @@ Result JellyfishKind::run(const Params& p) const {
   m["min_diameter_ratio"] = {min_ratio, ""};
   m["stroke_amplitude"] = {late_max - late_min, ""};
   // The first two periods after release, while the breathing mode dominates (the pluck's diameter
-  // shows higher modes beating with it after that); crossings count with a hysteresis of a tenth
-  // of the release deviation (jellyfish/ringdown.hpp).
-  const jellyfish::Ringdown ring = jellyfish::measureRingdown(decay_t, decay_d, 0.1, 4);
+  // shows higher modes beating with it after that); crossings count with a hysteresis of a fifth
+  // of the last extremum (jellyfish/ringdown.hpp).
+  const jellyfish::Ringdown ring = jellyfish::measureRingdown(decay_t, decay_d, 0.2, 4);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   m["ringdown_hz"] = {release_step >= 0 ? ring.damped_hz : nan, "Hz"};
   m["natural_hz"] = {release_step >= 0 ? ring.natural_hz : nan, "Hz"};

@@ -51,8 +51,8 @@ for k in range(2):
         n = int(m["markers"][()])
         assert markers.shape == (21, n, 2), markers.shape
         bell = int(f["topology/bell_markers"][0])
-        assert f["topology/muscles"].shape == (16,)                   # 8 pairs
-        assert f["fields/vorticity_per_s"].shape == (11, 50, 50)      # 0, 0.2, ..., 2.0 s
+        assert f["topology/muscles"].shape == (16,)                   # 8 elements: 16 segments at 50², band 7/8
+        assert f["fields/vorticity_per_s"].shape == (11, 75, 50)      # 0, 0.2, ..., 2.0 s; the box is 1.5 x 1
         assert f["lagrangian/tracers_m"].shape[1:] == (16, 2)
         assert os.path.exists(os.path.join(run, "point_%06d.xdmf" % k))
         # the mirror-symmetric bell stays centred to round-off in the symmetric box
