@@ -48,8 +48,8 @@ class MacCormackAdvection2 final : public AdvectionSolver2 {
 
  private:
   StaggeredComponent2 u_, v_;          // the advecting velocity u^n
-  StaggeredComponent2 u_hat_, v_hat_;  // forward results, padded for the backward pass
-  Array2 u_fwd_, v_fwd_, u_lo_, u_hi_, v_lo_, v_hi_, u_rev_, v_rev_;
+  StaggeredComponent2 u_hat_, v_hat_;  // forward results, written padded for the backward pass
+  Array2 u_lo_, u_hi_, v_lo_, v_hi_;  // the forward step's interpolation bounds
   std::vector<double> scratch_;
 };
 
