@@ -65,6 +65,30 @@ void radix2(long block, const double* __restrict__ a0r, const double* __restrict
   }
 }
 
+// Odd radix R = 3, 5, 7: the small DFT by its definition, b_u = w_u Σ_t a_t e^{sgn 2πi ut/R}.
+// R known at compile time, so the coefficients stay in registers and the loop over l
+// vectorises; the sums run in the order t = 0 .. R − 1 as before (bitwise the same).
+template <int R>
+void odd_radix(long block, const double* const* ar, const double* const* ai, double* const* br, double* const* bi,
+               const double (&dft_cos)[7][7], const double (&dft_sin)[7][7], const double* wc, const double* ws) {
+  for (int u = 0; u < R; ++u) {
+    double cu[R], su[R];
+    for (int t = 0; t < R; ++t) cu[t] = dft_cos[u][t], su[t] = dft_sin[u][t];
+    const double wcu = wc[u], wsu = ws[u];
+    double* __restrict__ out_r = br[u];
+    double* __restrict__ out_i = bi[u];
+    for (long l = 0; l < block; ++l) {
+      double sr = ar[0][l], si = ai[0][l];
+      for (int t = 1; t < R; ++t) {
+        sr += cu[t] * ar[t][l] - su[t] * ai[t][l];
+        si += cu[t] * ai[t][l] + su[t] * ar[t][l];
+      }
+      out_r[l] = wcu * sr - wsu * si;
+      out_i[l] = wcu * si + wsu * sr;
+    }
+  }
+}
+
 }  // namespace
 
 void FastPressureSolver2::setup(const Walls& walls, int nx, int ny, bool prefer_dense) {
@@ -211,21 +235,12 @@ void FastPressureSolver2::fft(bool inverse) {
       }
       if (r == 2) {
         radix2(block, ar[0], ai[0], ar[1], ai[1], br[0], bi[0], br[1], bi[1], wc[1], ws[1]);
+      } else if (r == 3) {
+        odd_radix<3>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
+      } else if (r == 5) {
+        odd_radix<5>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
       } else {
-        // Odd radix 3, 5, 7: the small DFT by its definition, b_u = Σ_t a_t e^{sgn 2πi ut/r}.
-        for (int u = 0; u < r; ++u) {
-          const double* cu = dft_cos[u];
-          const double* su = dft_sin[u];
-          for (long l = 0; l < block; ++l) {
-            double sr = ar[0][l], si = ai[0][l];
-            for (int t = 1; t < r; ++t) {
-              sr += cu[t] * ar[t][l] - su[t] * ai[t][l];
-              si += cu[t] * ai[t][l] + su[t] * ar[t][l];
-            }
-            br[u][l] = wc[u] * sr - ws[u] * si;
-            bi[u][l] = wc[u] * si + ws[u] * sr;
-          }
-        }
+        odd_radix<7>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
       }
     }
     std::swap(re_, re2_);
