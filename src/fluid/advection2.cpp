@@ -170,6 +170,29 @@ void zero_solid_normal_faces(const Walls& walls, Array2& u, Array2& v) {
   }
 }
 
+// Rows of the u block and then of the v block as one index range, cut into one piece per
+// thread: body(component rows) is called for the u rows and the v rows of each piece.
+template <class UBody, class VBody>
+void for_row_pieces(WorkerPool* workers, const FaceBlock& ub, const FaceBlock& vb, UBody&& u_rows, VBody&& v_rows) {
+  const int nu = ub.j_end - ub.j_begin;
+  const int nv = vb.j_end - vb.j_begin;
+  for_pieces(workers, 0, nu + nv, [&](int lo, int hi, int part) {
+    if (lo < nu) u_rows(ub.j_begin + lo, ub.j_begin + std::min(hi, nu), part);
+    if (hi > nu) v_rows(vb.j_begin + std::max(lo, nu) - nu, vb.j_begin + hi - nu, part);
+  });
+}
+
+// Per-thread row scratch: feet x, feet y and one row of results, each `row` long.
+struct RowScratch {
+  double* xs;
+  double* ys;
+  double* extra;
+};
+RowScratch row_scratch(std::vector<double>& scratch, int part, int row) {
+  double* base = scratch.data() + static_cast<std::size_t>(part) * 3 * static_cast<std::size_t>(row);
+  return {base, base + row, base + 2 * row};
+}
+
 }  // namespace
 
 void SemiLagrangianAdvection2::advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out,
@@ -181,11 +204,20 @@ void SemiLagrangianAdvection2::advect_velocity(const MacGrid2& grid, const Walls
   const double c = dt_s / grid.dx_m;
   const FaceBlock ub = face_block<FaceAxis::x>(grid, unknown_u_columns(grid, walls));
   const FaceBlock vb = face_block<FaceAxis::y>(grid, unknown_v_rows(grid, walls));
-  scratch_.resize(2 * static_cast<std::size_t>(grid.nx + 1));
-  double* xs = scratch_.data();
-  double* ys = xs + (grid.nx + 1);
-  semi_lagrangian_rows<FaceAxis::x>(u_.view(), v_.view(), u_.view(), c, ub, ub.j_begin, ub.j_end, u_out, xs, ys);
-  semi_lagrangian_rows<FaceAxis::y>(u_.view(), v_.view(), v_.view(), c, vb, vb.j_begin, vb.j_end, v_out, xs, ys);
+  const int row = grid.nx + 1;
+  scratch_.resize(3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(piece_count(workers_)));
+  const SampleView& U = u_.view();
+  const SampleView& V = v_.view();
+  for_row_pieces(
+      workers_, ub, vb,
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        semi_lagrangian_rows<FaceAxis::x>(U, V, U, c, ub, j0, j1, u_out, s.xs, s.ys);
+      },
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        semi_lagrangian_rows<FaceAxis::y>(U, V, V, c, vb, j0, j1, v_out, s.xs, s.ys);
+      });
   zero_solid_normal_faces(walls, u_out, v_out);
 }
 
@@ -204,25 +236,39 @@ void MacCormackAdvection2::advect_velocity(const MacGrid2& grid, const Walls& wa
   const double c = dt_s / grid.dx_m;
   const FaceBlock ub = face_block<FaceAxis::x>(grid, unknown_u_columns(grid, walls));
   const FaceBlock vb = face_block<FaceAxis::y>(grid, unknown_v_rows(grid, walls));
-  scratch_.resize(3 * static_cast<std::size_t>(nx + 1));
-  double* xs = scratch_.data();
-  double* ys = xs + (nx + 1);
-  double* rev = ys + (nx + 1);
+  const int row = nx + 1;
+  scratch_.resize(3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(piece_count(workers_)));
   const SampleView& U = u_.view();
   const SampleView& V = v_.view();
 
   // Forward semi-Lagrangian step φ̂ = A(φ), remembering the interpolation bounds; solid walls'
   // normal faces zero and ghosts filled as for the velocity.
-  maccormack_forward_rows<FaceAxis::x>(U, V, U, c, ub, ub.j_begin, ub.j_end, u_hat_, u_lo_, u_hi_, xs, ys);
-  maccormack_forward_rows<FaceAxis::y>(U, V, V, c, vb, vb.j_begin, vb.j_end, v_hat_, v_lo_, v_hi_, xs, ys);
+  for_row_pieces(
+      workers_, ub, vb,
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        maccormack_forward_rows<FaceAxis::x>(U, V, U, c, ub, j0, j1, u_hat_, u_lo_, u_hi_, s.xs, s.ys);
+      },
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        maccormack_forward_rows<FaceAxis::y>(U, V, V, c, vb, j0, j1, v_hat_, v_lo_, v_hi_, s.xs, s.ys);
+      });
   u_hat_.finish(walls);
   v_hat_.finish(walls);
 
   // Backward step φ̃ = A_reversed(φ̂) along the same velocity u^n, and the clamped correction.
-  maccormack_backward_rows<FaceAxis::x>(U, V, u_hat_, grid.u_m_per_s, u_lo_, u_hi_, c, ub, ub.j_begin, ub.j_end,
-                                        u_out, xs, ys, rev);
-  maccormack_backward_rows<FaceAxis::y>(U, V, v_hat_, grid.v_m_per_s, v_lo_, v_hi_, c, vb, vb.j_begin, vb.j_end,
-                                        v_out, xs, ys, rev);
+  for_row_pieces(
+      workers_, ub, vb,
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        maccormack_backward_rows<FaceAxis::x>(U, V, u_hat_, grid.u_m_per_s, u_lo_, u_hi_, c, ub, j0, j1, u_out, s.xs,
+                                              s.ys, s.extra);
+      },
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        maccormack_backward_rows<FaceAxis::y>(U, V, v_hat_, grid.v_m_per_s, v_lo_, v_hi_, c, vb, j0, j1, v_out, s.xs,
+                                              s.ys, s.extra);
+      });
   zero_solid_normal_faces(walls, u_out, v_out);
 }
 

@@ -7,6 +7,7 @@
 #include "fluid/fluid_params.hpp"
 #include "fluid/linear_solve.hpp"
 #include "fluid/mac_grid2.hpp"
+#include "fluid/worker_pool.hpp"
 #include "fluid/staggered_sampler2.hpp"
 
 namespace creaturelab::fluid {
@@ -19,6 +20,11 @@ class DiffusionSolver2 {
   /// conditions; solid-wall normal velocity stays zero. Reports the worse of the two components.
   virtual LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
                                              double dt_s) = 0;
+  /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
+  void set_workers(WorkerPool* workers) { workers_ = workers; }
+
+ protected:
+  WorkerPool* workers_ = nullptr;
 };
 
 /// Backward-Euler diffusion solved per component by conjugate gradients.

@@ -39,11 +39,16 @@ FluidBlowUpError::FluidBlowUpError(long step, double time_s, double dt_s, double
 
 FluidSolver2::FluidSolver2(const FluidParams& params)
     : params_(checked(params)),
+      workers_(params_.threads > 1 ? std::make_unique<WorkerPool>(params_.threads) : nullptr),
       grid_(params_.cells_x, params_.cells_y, params_.cell_size_m()),
       force_density_(params_.cells_x, params_.cells_y),
       advection_(make_advection_solver(params_.advection)),
       diffusion_(std::make_unique<ImplicitDiffusion2>(params_.viscosity_tolerance, params_.viscosity_max_iterations)),
-      pressure_(make_pressure_solver(params_)) {}
+      pressure_(make_pressure_solver(params_)) {
+  advection_->set_workers(workers_.get());
+  diffusion_->set_workers(workers_.get());
+  pressure_->set_workers(workers_.get());
+}
 
 double FluidSolver2::next_time_step_s() const { return time_step_for(max_velocity_component_m_per_s(grid_)); }
 

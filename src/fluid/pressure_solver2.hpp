@@ -18,6 +18,7 @@
 #include "fluid/fluid_params.hpp"
 #include "fluid/linear_solve.hpp"
 #include "fluid/mac_grid2.hpp"
+#include "fluid/worker_pool.hpp"
 
 namespace creaturelab::fluid {
 
@@ -29,6 +30,11 @@ class PressureSolver2 {
   /// stores p = q ρ / dt in grid.pressure_pa. The grid's previous pressure is the warm start of
   /// iterative solvers. The report's residual is measured on the updated velocity.
   virtual LinearSolveReport project(MacGrid2& grid, const Walls& walls, double density_kg_per_m3, double dt_s) = 0;
+  /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
+  void set_workers(WorkerPool* workers) { workers_ = workers; }
+
+ protected:
+  WorkerPool* workers_ = nullptr;
 };
 
 std::unique_ptr<PressureSolver2> make_pressure_solver(const FluidParams& params);

@@ -1,0 +1,80 @@
+#include "fluid/worker_pool.hpp"
+
+#include <chrono>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace creaturelab::fluid {
+namespace {
+
+void cpu_relax() {
+#if defined(__SSE2__)
+  _mm_pause();
+#endif
+}
+
+// How long an idle worker spins before it sleeps: longer than the gaps between the parallel
+// loops of one step (a few microseconds of serial work), much shorter than a step.
+constexpr auto kSpin = std::chrono::microseconds(50);
+
+}  // namespace
+
+WorkerPool::WorkerPool(int threads) : threads_(threads < 1 ? 1 : threads) {
+  workers_.reserve(static_cast<std::size_t>(threads_ - 1));
+  for (int part = 1; part < threads_; ++part) workers_.emplace_back([this, part] { work(part); });
+}
+
+WorkerPool::~WorkerPool() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stop_.store(true, std::memory_order_relaxed);
+    generation_.fetch_add(1, std::memory_order_release);
+  }
+  wake_.notify_all();
+  for (std::thread& t : workers_) t.join();
+}
+
+void WorkerPool::dispatch(void (*function)(void*, int), void* task) {
+  function_ = function;
+  task_ = task;
+  pending_.store(threads_ - 1, std::memory_order_relaxed);
+  {
+    std::lock_guard<std::mutex> lock(mutex_);  // no lost wake-up: sleepers test under the lock
+    generation_.fetch_add(1, std::memory_order_release);
+  }
+  wake_.notify_all();
+  function(task, 0);
+  for (int spins = 0; pending_.load(std::memory_order_acquire) != 0; ++spins) {
+    if (spins < 4096) {
+      cpu_relax();
+    } else {
+      std::this_thread::yield();  // a worker may be waiting for a core (shared machine)
+    }
+  }
+}
+
+void WorkerPool::work(int part) {
+  std::uint64_t seen = 0;
+  for (;;) {
+    std::uint64_t now = generation_.load(std::memory_order_acquire);
+    if (now == seen) {
+      const auto start = std::chrono::steady_clock::now();
+      for (int spins = 1; (now = generation_.load(std::memory_order_acquire)) == seen; ++spins) {
+        if (spins % 64 == 0 && std::chrono::steady_clock::now() - start > kSpin) {
+          std::unique_lock<std::mutex> lock(mutex_);
+          wake_.wait(lock, [&] { return generation_.load(std::memory_order_acquire) != seen; });
+        } else {
+          cpu_relax();
+        }
+      }
+    }
+    seen = now;
+    if (stop_.load(std::memory_order_relaxed)) return;  // ordered by the generation's acquire
+    function_(task_, part);
+    pending_.fetch_sub(1, std::memory_order_release);
+  }
+}
+
+}  // namespace creaturelab::fluid
