@@ -172,14 +172,17 @@ struct MaxAbsAccumulator {
 };
 #endif
 
-/// max |p[k]| (0 when n = 0); NaN if a value is NaN (unless an infinity is also present).
-inline double max_abs(const double* p, std::size_t n) {
+/// The accumulator of |p[k]|, k < n (to merge partial results).
+inline MaxAbsAccumulator partial_max_abs(const double* p, std::size_t n) {
   MaxAbsAccumulator acc;
   std::size_t k = 0;
   for (; k + 4 <= n; k += 4) acc.add4(p + k);
   for (; k < n; ++k) acc.add(p[k]);
-  return acc.result();
+  return acc;
 }
+
+/// max |p[k]| (0 when n = 0); NaN if a value is NaN (unless an infinity is also present).
+inline double max_abs(const double* p, std::size_t n) { return partial_max_abs(p, n).result(); }
 
 /// max |a[k] − b[k]|, with the NaN rule of max_abs.
 inline double max_abs_difference(const double* a, const double* b, std::size_t n) {

@@ -159,6 +159,7 @@ class FluidSolver2 {
   std::unique_ptr<DiffusionSolver2> diffusion_;
   std::unique_ptr<PressureSolver2> pressure_;
   Array2 u_scratch_, v_scratch_;
+  std::vector<double> row_energies_;  // scratch of summarize_flow
   VelocitySampler2 sampler_;
 };
 

@@ -1,5 +1,6 @@
 #include "fluid/worker_pool.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #if defined(__SSE2__)
@@ -21,7 +22,7 @@ constexpr auto kSpin = std::chrono::microseconds(50);
 
 }  // namespace
 
-WorkerPool::WorkerPool(int threads) : threads_(threads < 1 ? 1 : threads) {
+WorkerPool::WorkerPool(int threads) : threads_(std::clamp(threads, 1, kMaxThreads)) {
   workers_.reserve(static_cast<std::size_t>(threads_ - 1));
   for (int part = 1; part < threads_; ++part) workers_.emplace_back([this, part] { work(part); });
 }

@@ -24,9 +24,13 @@
 
 namespace creaturelab::fluid {
 
+/// Most threads a pool runs (FluidParams::validate checks it): per-thread partial results of
+/// reductions live in fixed arrays of this size, so that no step allocates.
+inline constexpr int kMaxThreads = 64;
+
 class WorkerPool {
  public:
-  /// threads ≥ 1: the calling thread plus threads − 1 workers.
+  /// The calling thread plus threads − 1 workers (threads clamped to 1 .. kMaxThreads).
   explicit WorkerPool(int threads);
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;

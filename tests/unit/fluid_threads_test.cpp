@@ -68,6 +68,7 @@ TEST(FluidThreads, StateIsBitwiseTheSameForOneTwoAndThreeThreads) {
       {37, 53, A::maccormack, P::fast_direct, N, N, N, M, 1e-3},       // dense transform, CG
       {40, 31, A::maccormack, P::fast_direct, F, O, N, F, 1e-4},       // open wall
       {30, 34, A::semi_lagrangian, P::pcg, O, O, O, O, 1e-4},
+      {48, 45, A::maccormack, P::fast_direct, F, F, F, O, 1e-4},      // transform along x
   };
   for (const Scene& scene : scenes) {
     SCOPED_TRACE(::testing::Message() << scene.nx << "x" << scene.ny << " advection "
