@@ -3,6 +3,7 @@
 // (backward Euler, Stam 1999 §2.2: "diffuse" step), hence stable for any ν dt / dx².
 
 #include <memory>
+#include <vector>
 
 #include "fluid/fluid_params.hpp"
 #include "fluid/linear_solve.hpp"
@@ -55,6 +56,7 @@ class ImplicitDiffusion2 final : public DiffusionSolver2 {
     int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;  // the unknown block
     bool has_wall_rhs = false;
     Array2 count, wall_rhs, b, r, p, ap;
+    std::vector<double> row_dots, row_rr;  // per-row partial inner products
   };
   LinearSolveReport solve_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha, Workspace& work);
   double tolerance_;
