@@ -115,6 +115,12 @@ struct MaxAbsAccumulator {
     z23 = _mm_add_pd(z23, _mm_sub_pd(v23, v23));
   }
   void add4(double v0, double v1, double v2, double v3) { add2x2(_mm_set_pd(v1, v0), _mm_set_pd(v3, v2)); }
+  /// Two values into lanes 0 and 1.
+  void add2(__m128d v01) {
+    v01 = abs2(v01);
+    m01 = _mm_max_pd(v01, m01);
+    z01 = _mm_add_pd(z01, _mm_sub_pd(v01, v01));
+  }
   /// add4 of p[0..3].
   void add4(const double* p) { add2x2(_mm_loadu_pd(p), _mm_loadu_pd(p + 2)); }
   void add(double v) {
@@ -153,6 +159,7 @@ struct MaxAbsAccumulator {
     z3 += v3 - v3;
   }
   void add4(const double* p) { add4(p[0], p[1], p[2], p[3]); }
+  void add2(double v0, double v1) { add(v0), add(v1); }
   void add(double v) {
     v = std::abs(v);
     m0 = v > m0 ? v : m0;
