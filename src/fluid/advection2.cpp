@@ -66,8 +66,8 @@ void trace_row(const SampleView& U, const SampleView& V, double c, int j, int i_
     const __m128d X2 = _mm_set_pd(x0 + 1.0, x0);
     const __m128d xm = _mm_min_pd(_mm_max_pd(_mm_loadu_pd(xs + i), zero), x_max);  // maxpd: NaN → 0
     const __m128d ym = _mm_min_pd(_mm_max_pd(_mm_loadu_pd(ys + i), zero), y_max);
-    const __m128d u_mid = U.sample2_clamped(xm, ym);
-    const __m128d v_mid = V.sample2_clamped(xm, ym);
+    const __m128d u_mid = U.sample2_clamped_on<FaceAxis::x>(xm, ym);
+    const __m128d v_mid = V.sample2_clamped_on<FaceAxis::y>(xm, ym);
     _mm_storeu_pd(xs + i, _mm_sub_pd(X2, _mm_mul_pd(c2, u_mid)));  // foot of the trajectory
     _mm_storeu_pd(ys + i, _mm_sub_pd(Y2, _mm_mul_pd(c2, v_mid)));
   }
@@ -83,7 +83,7 @@ void trace_row(const SampleView& U, const SampleView& V, double c, int j, int i_
 
 // out[i] = q(xs[i], ys[i]) for i in [i_begin, i_end); with lo and hi, also the range of the
 // four values each sample interpolated.
-template <bool kBounds>
+template <FaceAxis kAxis, bool kBounds>
 void sample_row(const SampleView& q, const double* __restrict__ xs, const double* __restrict__ ys, int i_begin,
                 int i_end, double* __restrict__ out, double* __restrict__ lo, double* __restrict__ hi) {
   int k = i_begin;
@@ -91,11 +91,11 @@ void sample_row(const SampleView& q, const double* __restrict__ xs, const double
   for (; k + 2 <= i_end; k += 2) {
     if constexpr (kBounds) {
       __m128d lo2, hi2;
-      _mm_storeu_pd(out + k, q.sample2(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k), &lo2, &hi2));
+      _mm_storeu_pd(out + k, q.sample2_on<kAxis>(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k), &lo2, &hi2));
       _mm_storeu_pd(lo + k, lo2);
       _mm_storeu_pd(hi + k, hi2);
     } else {
-      _mm_storeu_pd(out + k, q.sample2(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k)));
+      _mm_storeu_pd(out + k, q.sample2_on<kAxis>(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k)));
     }
   }
 #endif
@@ -115,7 +115,7 @@ void semi_lagrangian_rows(const SampleView& U, const SampleView& V, const Sample
                           int j_begin, int j_end, Array2& out, double* xs, double* ys) {
   for (int j = j_begin; j < j_end; ++j) {
     trace_row<kAxis>(U, V, c, j, b.i_begin, b.i_end, xs, ys);
-    sample_row<false>(q, xs, ys, b.i_begin, b.i_end, out.row(j), nullptr, nullptr);
+    sample_row<kAxis, false>(q, xs, ys, b.i_begin, b.i_end, out.row(j), nullptr, nullptr);
   }
 }
 
@@ -127,7 +127,7 @@ void maccormack_forward_rows(const SampleView& U, const SampleView& V, const Sam
                              double* ys) {
   for (int j = j_begin; j < j_end; ++j) {
     trace_row<kAxis>(U, V, c, j, b.i_begin, b.i_end, xs, ys);
-    sample_row<true>(q, xs, ys, b.i_begin, b.i_end, hat.interior_row(j), lo.row(j), hi.row(j));
+    sample_row<kAxis, true>(q, xs, ys, b.i_begin, b.i_end, hat.interior_row(j), lo.row(j), hi.row(j));
   }
 }
 
@@ -140,7 +140,7 @@ void maccormack_backward_rows(const SampleView& U, const SampleView& V, const St
                               int j_begin, int j_end, Array2& out, double* xs, double* ys, double* __restrict__ rev) {
   for (int j = j_begin; j < j_end; ++j) {
     trace_row<kAxis>(U, V, -c, j, b.i_begin, b.i_end, xs, ys);
-    sample_row<false>(hat.view(), xs, ys, b.i_begin, b.i_end, rev, nullptr, nullptr);
+    sample_row<kAxis, false>(hat.view(), xs, ys, b.i_begin, b.i_end, rev, nullptr, nullptr);
     const double* __restrict__ p = phi.row(j);
     const double* __restrict__ f = hat.interior_row(j);
     const double* __restrict__ l = lo.row(j);

@@ -80,8 +80,28 @@ struct SampleView {
   /// sample2() for positions already clamped to [0, x_max] × [0, y_max] (the u and v views of
   /// one grid share the domain, so a caller sampling both clamps once).
   __m128d sample2_clamped(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
-    const __m128d fx = _mm_add_pd(X, _mm_set1_pd(offset_x));
-    const __m128d fy = _mm_add_pd(Y, _mm_set1_pd(offset_y));
+    return sample2_shifted(_mm_add_pd(X, _mm_set1_pd(offset_x)), _mm_add_pd(Y, _mm_set1_pd(offset_y)), lo, hi);
+  }
+
+  /// sample2_clamped() of a component on kAxis faces, whose offset along kAxis is 0
+  /// (StaggeredComponent2: u (0, ½), v (½, 0)). A clamped coordinate is ≥ +0 (maxpd(−0, 0) = +0),
+  /// so adding the zero offset is exact and is skipped: the same bits, one addition fewer.
+  template <FaceAxis kAxis>
+  __m128d sample2_clamped_on(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
+    if constexpr (kAxis == FaceAxis::x) return sample2_shifted(X, _mm_add_pd(Y, _mm_set1_pd(offset_y)), lo, hi);
+    return sample2_shifted(_mm_add_pd(X, _mm_set1_pd(offset_x)), Y, lo, hi);
+  }
+  /// sample2() of a component on kAxis faces (see sample2_clamped_on).
+  template <FaceAxis kAxis>
+  __m128d sample2_on(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
+    const __m128d zero = _mm_setzero_pd();
+    X = _mm_min_pd(_mm_max_pd(X, zero), _mm_set1_pd(x_max));  // maxpd returns 0 for NaN
+    Y = _mm_min_pd(_mm_max_pd(Y, zero), _mm_set1_pd(y_max));
+    return sample2_clamped_on<kAxis>(X, Y, lo, hi);
+  }
+
+  /// The interpolation at padded-index coordinates (fx, fy) = clamped position + offset.
+  __m128d sample2_shifted(__m128d fx, __m128d fy, __m128d* lo, __m128d* hi) const {
     // Truncation of non-negative values, then the upper index limit, all in doubles.
     const __m128d i0 = _mm_min_pd(_mm_cvtepi32_pd(_mm_cvttpd_epi32(fx)), _mm_set1_pd(i_max));
     const __m128d j0 = _mm_min_pd(_mm_cvtepi32_pd(_mm_cvttpd_epi32(fy)), _mm_set1_pd(j_max));
