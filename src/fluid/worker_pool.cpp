@@ -24,7 +24,7 @@ constexpr auto kSpin = std::chrono::microseconds(50);
 
 WorkerPool::WorkerPool(int threads) : threads_(std::clamp(threads, 1, kMaxThreads)) {
   workers_.reserve(static_cast<std::size_t>(threads_ - 1));
-  for (int part = 1; part < threads_; ++part) workers_.emplace_back([this, part] { work(part); });
+  for (int worker = 1; worker < threads_; ++worker) workers_.emplace_back([this] { work(); });
 }
 
 WorkerPool::~WorkerPool() {
@@ -37,26 +37,41 @@ WorkerPool::~WorkerPool() {
   for (std::thread& t : workers_) t.join();
 }
 
+// Parts are claimed from a counter, so whoever is free runs the next one: the calling thread
+// runs part 0 and then any part no worker has taken yet. On a machine whose cores are busy with
+// other work a worker may wait long for a core; the caller does not wait for it to start. Which
+// thread runs a part never changes what the part computes.
 void WorkerPool::dispatch(void (*function)(void*, int), void* task) {
   function_ = function;
   task_ = task;
-  pending_.store(threads_ - 1, std::memory_order_relaxed);
+  done_.store(0, std::memory_order_relaxed);
+  next_part_.store(1, std::memory_order_release);  // publishes function_ and task_ to claimers
   {
     std::lock_guard<std::mutex> lock(mutex_);  // no lost wake-up: sleepers test under the lock
     generation_.fetch_add(1, std::memory_order_release);
   }
   wake_.notify_all();
   function(task, 0);
-  for (int spins = 0; pending_.load(std::memory_order_acquire) != 0; ++spins) {
+  run_parts();
+  for (int spins = 0; done_.load(std::memory_order_acquire) != threads_ - 1; ++spins) {
     if (spins < 4096) {
       cpu_relax();
     } else {
-      std::this_thread::yield();  // a worker may be waiting for a core (shared machine)
+      std::this_thread::yield();  // a worker is still running its part
     }
   }
 }
 
-void WorkerPool::work(int part) {
+void WorkerPool::run_parts() {
+  for (;;) {
+    const int part = next_part_.fetch_add(1, std::memory_order_acq_rel);
+    if (part >= threads_) return;
+    function_(task_, part);
+    done_.fetch_add(1, std::memory_order_release);
+  }
+}
+
+void WorkerPool::work() {
   std::uint64_t seen = 0;
   for (;;) {
     std::uint64_t now = generation_.load(std::memory_order_acquire);
@@ -73,8 +88,7 @@ void WorkerPool::work(int part) {
     }
     seen = now;
     if (stop_.load(std::memory_order_relaxed)) return;  // ordered by the generation's acquire
-    function_(task_, part);
-    pending_.fetch_sub(1, std::memory_order_release);
+    run_parts();
   }
 }
 

@@ -38,8 +38,9 @@ class WorkerPool {
 
   int threads() const { return threads_; }
 
-  /// Calls task(part) for part = 0 .. threads() − 1, part 0 on the calling thread, and returns
-  /// when all have finished. Tasks must not throw. Not reentrant.
+  /// Calls task(part) once for each part = 0 .. threads() − 1 and returns when all have
+  /// finished: part 0 on the calling thread, the others on whichever thread claims them first
+  /// (the caller too, when the workers are slow to start). Tasks must not throw. Not reentrant.
   template <class Task>
   void run(Task&& task) {
     if (threads_ == 1) {
@@ -58,14 +59,16 @@ class WorkerPool {
 
  private:
   void dispatch(void (*function)(void*, int), void* task);
-  void work(int part);
+  void run_parts();
+  void work();
 
   int threads_ = 1;
   std::vector<std::thread> workers_;
   std::mutex mutex_;
   std::condition_variable wake_;
   std::atomic<std::uint64_t> generation_{0};
-  std::atomic<int> pending_{0};
+  std::atomic<int> next_part_{1};  // the next part to claim; ≥ threads_ when all are taken
+  std::atomic<int> done_{0};       // parts 1.. finished in this task
   std::atomic<bool> stop_{false};
   void (*function_)(void*, int) = nullptr;
   void* task_ = nullptr;
