@@ -1,14 +1,20 @@
-// Speed of the swimming jellyfish (issue 5): simulated seconds per wall-clock second of the
+// Speed of the swimming jellyfish (issue 5): simulated seconds per CPU second of the
 // coupled bell + fluid step at the paper's 50² and 100² grids (Rudolf & Mould 2009 §4: 30-40
 // frames/s on a 1.6 GHz laptop; IB2d's Python needs ~480 s per simulated second at 100²).
-// Goal: >= 20 simulated s per wall s at 100² on one core. Measured with the defaults (Peskin
-// kernel, stencil mobility, dense LU of the 106 x 106 implicit system: ib/coupling.cpp): 17.9 at
-// 100² (0.56 ms per step: the fluid 0.41 ms, of it the pressure solve 0.14; the LU 0.09), 38.0 at
-// 50². The bilinear kernel's rows (peskin4:0) are marginal at this step: at 50² the bell crumples
-// after 6.4 s and the run stops. One benchmark iteration is one
-// simulated second at the kind's default step (0.01 s) after a one-cycle warm-up, with the
-// paper's parameters at 0.7 Hz. Reported as "sim_s_per_wall_s" from the thread's CPU time, so
-// other processes on a shared machine do not inflate it (the solver is single-threaded).
+// Goal: >= 20 simulated s per CPU s at 100² on one core (issue 13 §4). Measured with the
+// defaults (Peskin kernel, stencil mobility, dense LU of the 106 x 106 implicit system:
+// ib/coupling.cpp): 17.9 at 100² (0.56 ms per step: the fluid 0.41 ms, of it the pressure solve
+// 0.14; the LU 0.09), 38.0 at 50², before issue 13 §4. After it (2026-11-24, the shared 2-core
+// machine at load average 5-6 from other work, three runs each, interleaved with the previous
+// build): 20.1-20.4 at 100² (0.49 ms per step), where the previous build gave 17.3-17.6 in the
+// same runs. With the fluid step on two threads (BM_SimulatedSecondFluidThreads; the swim is
+// bitwise the same) that loaded machine gave 7.9-8.1 simulated s per elapsed s against 13.4-13.7
+// with one: the workers wait for a core. The bilinear kernel's rows (peskin4:0) are marginal at
+// this step: at 50² the bell crumples after 6.4 s and the run stops. One benchmark iteration is
+// one simulated second at the kind's default step (0.01 s) after a one-cycle warm-up, with the
+// paper's parameters at 0.7 Hz. Reported as "sim_s_per_wall_s" (its historical name) from the
+// process's CPU time, so other processes on a shared machine do not inflate it, and as
+// "sim_s_per_elapsed_s" from elapsed time.
 #include <benchmark/benchmark.h>
 #include <time.h>
 
