@@ -43,7 +43,7 @@ class ImplicitDiffusion2 final : public DiffusionSolver2 {
  public:
   ImplicitDiffusion2(double tolerance, int max_iterations) : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
-  static constexpr double kSweepContraction = 0.05;  ///< largest error factor per sweep allowed
+  static constexpr double kSweepContraction = 0.1;  ///< largest error factor per sweep allowed
   static constexpr int kMaxSweeps = 8;
   LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
                                      double dt_s) override;
