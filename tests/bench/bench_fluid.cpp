@@ -6,15 +6,18 @@
 // full steps also report elapsed time per cell ("ns_per_cell_wall"), and run at 1 and 2
 // threads (FluidParams::threads; bitwise the same results).
 //
-// Measured 2026-11-24 on the shared 2-core machine (load average 4-5 from other work: treat the
-// figures as upper bounds), minimum over 3 repetitions, twice; before -> after issue 13 §4:
+// Measured 2026-11-24 on the shared 2-core machine (load average 5-9 from other work: treat the
+// figures as upper bounds), minimum over 3 repetitions, twice, interleaved with the build before
+// issue 13 §4; before -> after:
 //   1 thread, CPU ns per cell        128²          256²
-//     semi-Lagrangian              36.8 -> 32.5   52 -> 44
-//     MacCormack                   58 -> 50       78-81 -> 63-65
-// Stage by stage at 256², MacCormack, 1 thread: advection 36, viscosity (3 CG iterations) 13,
-// pressure 12, forces and diagnostics 3. The 20 ns goal is not met on one core. With 2 threads
-// on this loaded machine the step is slower (CPU 52-80, elapsed 67-129 ns per cell): the
-// workers wait for a core; the gain the threads can give needs an idle machine.
+//     semi-Lagrangian              36.5 -> 33     52 -> 38.6
+//     MacCormack                   58.5 -> 51     79.5 -> 58.6
+// Stage by stage at 256², MacCormack, 1 thread: advection 36 (six bilinear samples per face),
+// viscosity 8 (four Richardson sweeps), pressure 12, forces and diagnostics 3. The 20 ns goal is
+// not met on one core. With 2 threads on this loaded machine the step is slower than with one
+// (at load 9: CPU 47-75, elapsed 62-99 ns per cell, against 1 thread's 33-59 CPU, 47-82
+// elapsed): the workers wait for a core; what the threads gain on an idle machine is not
+// measured here.
 #include <benchmark/benchmark.h>
 #include <time.h>
 
