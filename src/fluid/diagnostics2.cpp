@@ -33,7 +33,7 @@ double max_divergence_per_s(const MacGrid2& grid) { return max_abs_flux_sum_m_pe
 
 double max_abs_flux_sum_m_per_s(const MacGrid2& grid, WorkerPool* workers) {
   // A maximum does not depend on the order in which the values meet: one accumulator per piece.
-  std::array<MaxAbsAccumulator, kMaxThreads> acc{};
+  std::array<MaxAbsAccumulator, kMaxParts> acc{};
   for_pieces(workers, 0, grid.ny, [&](int j0, int j1, int part) {
     for (int j = j0; j < j1; ++j) {
       add_flux_row(acc[part], grid.u_m_per_s.row(j), grid.v_m_per_s.row(j), grid.v_m_per_s.row(j + 1), grid.nx);
@@ -61,7 +61,7 @@ double kinetic_energy_joule_per_m(const MacGrid2& grid, double density_kg_per_m3
 }
 
 double max_velocity_component_m_per_s(const MacGrid2& grid, WorkerPool* workers) {
-  std::array<MaxAbsAccumulator, kMaxThreads> u{}, v{};
+  std::array<MaxAbsAccumulator, kMaxParts> u{}, v{};
   for_pieces(workers, 0, grid.ny + 1, [&](int j0, int j1, int part) {
     if (j1 > grid.ny) {  // u has ny rows, v ny + 1
       j1 = grid.ny;
@@ -95,7 +95,7 @@ FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3, Worke
   };
   // Maxima per piece of rows (order-free); the energy of each row is stored and the rows are
   // summed afterwards in row order, the serial order (so any thread count gives the same bits).
-  std::array<MaxAbsAccumulator, kMaxThreads> speed{}, flux{};
+  std::array<MaxAbsAccumulator, kMaxParts> speed{}, flux{};
   row_energies.resize(2 * static_cast<std::size_t>(ny) + 1);
   double* e_u = row_energies.data();  // e_u[j]: row j of u
   double* e_v = e_u + ny;             // e_v[j]: row j of v, j = 0..ny

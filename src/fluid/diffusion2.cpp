@@ -269,7 +269,7 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
   w.row_rr.resize(static_cast<std::size_t>(ny));
 
   // b = x^n + α · (wall terms) on the unknown block (zero elsewhere: x is zero there).
-  std::array<MaxAbsAccumulator, kMaxThreads> acc{};
+  std::array<MaxAbsAccumulator, kMaxParts> acc{};
   {
     const double* __restrict__ xv = x.data();
     const double* __restrict__ wall = w.wall_rhs.data();
@@ -301,7 +301,7 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
   int sweeps = 0;
   if (10.0 * alpha <= kSweepContraction) {
     while (sweeps < kMaxSweeps) {
-      std::array<double, kMaxThreads> change{};
+      std::array<double, kMaxParts> change{};
       for_pieces(workers_, w.j_begin, w.j_end, [&](int j0, int j1, int part) {
         change[part] = richardson_sweep(w.i_begin, w.i_end, j0, j1, w.count, alpha, w.b, x, w.p);
       });

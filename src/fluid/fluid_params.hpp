@@ -97,7 +97,7 @@ struct FluidParams {
   double body_acceleration_x_m_per_s2 = 0.0;
   double body_acceleration_y_m_per_s2 = 0.0;
 
-  /// Threads that share the work of one step, 1..64 (1: none). Results are bitwise the same for
+  /// Threads that share the work of one step, 1..16 (1: none). Results are bitwise the same for
   /// any number (the work is cut by index only; see worker_pool.hpp): this changes only the time.
   int threads = 1;
 

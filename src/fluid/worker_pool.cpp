@@ -22,7 +22,8 @@ constexpr auto kSpin = std::chrono::microseconds(50);
 
 }  // namespace
 
-WorkerPool::WorkerPool(int threads) : threads_(std::clamp(threads, 1, kMaxThreads)) {
+WorkerPool::WorkerPool(int threads)
+    : threads_(std::clamp(threads, 1, kMaxThreads)), parts_(threads_ == 1 ? 1 : threads_ * kPartsPerThread) {
   workers_.reserve(static_cast<std::size_t>(threads_ - 1));
   for (int worker = 1; worker < threads_; ++worker) workers_.emplace_back([this] { work(); });
 }
@@ -53,7 +54,7 @@ void WorkerPool::dispatch(void (*function)(void*, int), void* task) {
   wake_.notify_all();
   function(task, 0);
   run_parts();
-  for (int spins = 0; done_.load(std::memory_order_acquire) != threads_ - 1; ++spins) {
+  for (int spins = 0; done_.load(std::memory_order_acquire) != parts_ - 1; ++spins) {
     if (spins < 4096) {
       cpu_relax();
     } else {
@@ -65,7 +66,7 @@ void WorkerPool::dispatch(void (*function)(void*, int), void* task) {
 void WorkerPool::run_parts() {
   for (;;) {
     const int part = next_part_.fetch_add(1, std::memory_order_acq_rel);
-    if (part >= threads_) return;
+    if (part >= parts_) return;
     function_(task_, part);
     done_.fetch_add(1, std::memory_order_release);
   }

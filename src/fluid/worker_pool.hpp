@@ -24,9 +24,15 @@
 
 namespace creaturelab::fluid {
 
-/// Most threads a pool runs (FluidParams::validate checks it): per-thread partial results of
-/// reductions live in fixed arrays of this size, so that no step allocates.
-inline constexpr int kMaxThreads = 64;
+/// A loop is cut into kPartsPerThread pieces per thread, claimed by whichever thread is free:
+/// on a machine whose cores are shared with other work a thread that loses its core holds up
+/// only a small piece, which the others do not wait for to start.
+inline constexpr int kPartsPerThread = 4;
+/// Most pieces of a loop: per-piece partial results of reductions live in fixed arrays of this
+/// size, so that no step allocates.
+inline constexpr int kMaxParts = 64;
+/// Most threads a pool runs (FluidParams::validate checks it).
+inline constexpr int kMaxThreads = kMaxParts / kPartsPerThread;
 
 class WorkerPool {
  public:
@@ -37,8 +43,10 @@ class WorkerPool {
   WorkerPool& operator=(const WorkerPool&) = delete;
 
   int threads() const { return threads_; }
+  /// Parts of each task: 1 with one thread, else kPartsPerThread per thread.
+  int parts() const { return parts_; }
 
-  /// Calls task(part) once for each part = 0 .. threads() − 1 and returns when all have
+  /// Calls task(part) once for each part = 0 .. parts() − 1 and returns when all have
   /// finished: part 0 on the calling thread, the others on whichever thread claims them first
   /// (the caller too, when the workers are slow to start). Tasks must not throw. Not reentrant.
   template <class Task>
@@ -63,34 +71,35 @@ class WorkerPool {
   void work();
 
   int threads_ = 1;
+  int parts_ = 1;
   std::vector<std::thread> workers_;
   std::mutex mutex_;
   std::condition_variable wake_;
   std::atomic<std::uint64_t> generation_{0};
-  std::atomic<int> next_part_{1};  // the next part to claim; ≥ threads_ when all are taken
+  std::atomic<int> next_part_{1};  // the next part to claim; ≥ parts_ when all are taken
   std::atomic<int> done_{0};       // parts 1.. finished in this task
   std::atomic<bool> stop_{false};
   void (*function_)(void*, int) = nullptr;
   void* task_ = nullptr;
 };
 
-/// Runs body(begin_k, end_k, part) over [begin, end) cut into one piece per thread of `pool`
-/// (serially, as one piece, when pool is null). body must give each index the same result
-/// whatever piece it falls in.
+/// Runs body(begin_k, end_k, part) over [begin, end) cut into pool->parts() pieces (serially,
+/// as one piece, when pool is null). body must give each index the same result whatever piece
+/// it falls in.
 template <class Body>
 void for_pieces(WorkerPool* pool, int begin, int end, Body&& body) {
-  if (pool == nullptr || pool->threads() == 1) {
+  if (pool == nullptr || pool->parts() == 1) {
     if (begin < end) body(begin, end, 0);
     return;
   }
-  const int parts = pool->threads();
+  const int parts = pool->parts();
   pool->run([&](int part) {
     const auto [lo, hi] = WorkerPool::piece(begin, end, part, parts);
     if (lo < hi) body(lo, hi, part);
   });
 }
 
-/// Number of pieces for_pieces() uses: per-piece scratch is indexed by part < piece_count.
-inline int piece_count(const WorkerPool* pool) { return pool == nullptr ? 1 : pool->threads(); }
+/// Number of pieces for_pieces() uses (≤ kMaxParts): per-piece scratch is indexed by part.
+inline int piece_count(const WorkerPool* pool) { return pool == nullptr ? 1 : pool->parts(); }
 
 }  // namespace creaturelab::fluid
