@@ -8,97 +8,147 @@
 namespace creaturelab::fluid {
 namespace {
 
-// Semi-Lagrangian transport of the staggered component `q` (on kAxis faces) along the
-// velocity (U, V): out(face) = q(x_face − trajectory), RK2 midpoint backtrace. `c` is dt/dx,
-// so that c·u is a displacement in cells; c < 0 traces forward (MacCormack's reverse step).
-// With kBounds the four interpolated values' range is stored in lo/hi.
-template <FaceAxis kAxis, bool kBounds>
-void trace_and_sample(const StaggeredComponent2& U_component, const StaggeredComponent2& V_component,
-                      const StaggeredComponent2& q_component, double c, FaceRange unknown, Array2& out, Array2* lo,
-                      Array2* hi, std::vector<double>& scratch) {
-  const SampleView U = U_component.view();
-  const SampleView V = V_component.view();
-  const SampleView q = q_component.view();
-  scratch.resize(2 * static_cast<std::size_t>(out.nx()));
-  double* __restrict__ xs = scratch.data();
-  double* __restrict__ ys = xs + out.nx();
+// The faces a semi-Lagrangian pass computes: unknown faces of one component, and their rows.
+struct FaceBlock {
+  int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;
+};
+template <FaceAxis kAxis>
+FaceBlock face_block(const MacGrid2& grid, FaceRange unknown) {
+  if constexpr (kAxis == FaceAxis::x) return {unknown.begin, unknown.end, 0, grid.ny};
+  return {0, grid.nx, unknown.begin, unknown.end};
+}
+
+// Feet of the trajectories of the faces (i, j), i in [i_begin, i_end), of one row, traced along
+// the velocity (U, V) by the RK2 midpoint rule, in cell units: x_mid = x − ½ c u(x),
+// x_foot = x − c u(x_mid), with c = dt/dx (c < 0 traces forward: MacCormack's reverse step).
+// Written to xs, ys (indexed by i). Two short passes over the row instead of one long
+// dependent chain per face, so that the processor overlaps the independent faces (about 1.5×
+// faster than one fused loop).
+template <FaceAxis kAxis>
+void trace_row(const SampleView& U, const SampleView& V, double c, int j, int i_begin, int i_end,
+               double* __restrict__ xs, double* __restrict__ ys) {
   const double half_c = 0.5 * c;
-  const int nx = out.nx() - (kAxis == FaceAxis::x ? 1 : 0);
-  const int ny = out.ny() - (kAxis == FaceAxis::y ? 1 : 0);
-  const int i_begin = kAxis == FaceAxis::x ? unknown.begin : 0;
-  const int i_end = kAxis == FaceAxis::x ? unknown.end : nx;
-  const int j_begin = kAxis == FaceAxis::y ? unknown.begin : 0;
-  const int j_end = kAxis == FaceAxis::y ? unknown.end : ny;
-  for (int j = j_begin; j < j_end; ++j) {
-    double* __restrict__ out_row = out.row(j);
-    double* lo_row = kBounds ? lo->row(j) : nullptr;
-    double* hi_row = kBounds ? hi->row(j) : nullptr;
-    // Padded rows holding the face's own component and the four surrounding other ones.
-    const double* own;
-    const double* other0;
-    const double* other1;
-    if constexpr (kAxis == FaceAxis::x) {
-      own = U.data + static_cast<long>(j + 1) * U.stride;  // u(i, j) = padded(i, j + 1)
-      other0 = V.data + static_cast<long>(j) * V.stride;   // v(i − 1 .. i, j) = padded(i .. i + 1, j)
-      other1 = other0 + V.stride;                          // v(i − 1 .. i, j + 1)
-    } else {
-      own = V.data + static_cast<long>(j) * V.stride + 1;  // v(i, j) = padded(i + 1, j)
-      other0 = U.data + static_cast<long>(j) * U.stride;   // u(i .. i + 1, j − 1) = padded(i .. i + 1, j)
-      other1 = other0 + U.stride;                          // u(i .. i + 1, j)
-    }
-    const double Y = kAxis == FaceAxis::x ? j + 0.5 : j;
-    // Three short passes over the row instead of one long dependent chain per face, so that
-    // the processor overlaps the independent faces (about 1.5× faster than one fused loop).
-    for (int i = i_begin; i < i_end; ++i) {
-      // Face position (cells) and velocity: its own component and the mean of the other one.
-      const double X = kAxis == FaceAxis::x ? i : i + 0.5;
-      const double own_velocity = own[i];
-      const double other_velocity = 0.25 * ((other0[i] + other0[i + 1]) + (other1[i] + other1[i + 1]));
-      const double vel_x = kAxis == FaceAxis::x ? own_velocity : other_velocity;
-      const double vel_y = kAxis == FaceAxis::x ? other_velocity : own_velocity;
-      xs[i] = X - half_c * vel_x;  // midpoint of the trajectory
-      ys[i] = Y - half_c * vel_y;
-    }
-    int i = i_begin;
+  // Padded rows holding the face's own component and the four surrounding other ones.
+  const double* own;
+  const double* other0;
+  const double* other1;
+  if constexpr (kAxis == FaceAxis::x) {
+    own = U.data + static_cast<long>(j + 1) * U.stride;  // u(i, j) = padded(i, j + 1)
+    other0 = V.data + static_cast<long>(j) * V.stride;   // v(i − 1 .. i, j) = padded(i .. i + 1, j)
+    other1 = other0 + V.stride;                          // v(i − 1 .. i, j + 1)
+  } else {
+    own = V.data + static_cast<long>(j) * V.stride + 1;  // v(i, j) = padded(i + 1, j)
+    other0 = U.data + static_cast<long>(j) * U.stride;   // u(i .. i + 1, j − 1) = padded(i .. i + 1, j)
+    other1 = other0 + U.stride;                          // u(i .. i + 1, j)
+  }
+  const double Y = kAxis == FaceAxis::x ? j + 0.5 : j;
+  for (int i = i_begin; i < i_end; ++i) {
+    // Face position (cells) and velocity: its own component and the mean of the other one.
+    const double X = kAxis == FaceAxis::x ? i : i + 0.5;
+    const double own_velocity = own[i];
+    const double other_velocity = 0.25 * ((other0[i] + other0[i + 1]) + (other1[i] + other1[i + 1]));
+    const double vel_x = kAxis == FaceAxis::x ? own_velocity : other_velocity;
+    const double vel_y = kAxis == FaceAxis::x ? other_velocity : own_velocity;
+    xs[i] = X - half_c * vel_x;  // midpoint of the trajectory
+    ys[i] = Y - half_c * vel_y;
+  }
+  int i = i_begin;
 #if defined(__SSE2__)
-    // Two faces at a time (same arithmetic per face as the scalar loop below).
-    const __m128d c2 = _mm_set1_pd(c);
-    const __m128d Y2 = _mm_set1_pd(Y);
-    for (; i + 2 <= i_end; i += 2) {
-      const double x0 = kAxis == FaceAxis::x ? i : i + 0.5;
-      const __m128d X2 = _mm_set_pd(x0 + 1.0, x0);
-      const __m128d xm = _mm_loadu_pd(xs + i);
-      const __m128d ym = _mm_loadu_pd(ys + i);
-      const __m128d u_mid = U.sample2(xm, ym);
-      const __m128d v_mid = V.sample2(xm, ym);
-      _mm_storeu_pd(xs + i, _mm_sub_pd(X2, _mm_mul_pd(c2, u_mid)));  // foot of the trajectory
-      _mm_storeu_pd(ys + i, _mm_sub_pd(Y2, _mm_mul_pd(c2, v_mid)));
-    }
+  // Two faces at a time (same arithmetic per face as the scalar loop below). U and V share
+  // the domain, so the midpoint is clamped once for both.
+  const __m128d c2 = _mm_set1_pd(c);
+  const __m128d Y2 = _mm_set1_pd(Y);
+  const __m128d zero = _mm_setzero_pd();
+  const __m128d x_max = _mm_set1_pd(U.x_max);
+  const __m128d y_max = _mm_set1_pd(U.y_max);
+  for (; i + 2 <= i_end; i += 2) {
+    const double x0 = kAxis == FaceAxis::x ? i : i + 0.5;
+    const __m128d X2 = _mm_set_pd(x0 + 1.0, x0);
+    const __m128d xm = _mm_min_pd(_mm_max_pd(_mm_loadu_pd(xs + i), zero), x_max);  // maxpd: NaN → 0
+    const __m128d ym = _mm_min_pd(_mm_max_pd(_mm_loadu_pd(ys + i), zero), y_max);
+    const __m128d u_mid = U.sample2_clamped_on<FaceAxis::x>(xm, ym);
+    const __m128d v_mid = V.sample2_clamped_on<FaceAxis::y>(xm, ym);
+    _mm_storeu_pd(xs + i, _mm_sub_pd(X2, _mm_mul_pd(c2, u_mid)));  // foot of the trajectory
+    _mm_storeu_pd(ys + i, _mm_sub_pd(Y2, _mm_mul_pd(c2, v_mid)));
+  }
 #endif
-    for (; i < i_end; ++i) {
-      const double X = kAxis == FaceAxis::x ? i : i + 0.5;
-      const double u_mid = U.sample(xs[i], ys[i]);
-      const double v_mid = V.sample(xs[i], ys[i]);
-      xs[i] = X - c * u_mid;  // foot of the trajectory
-      ys[i] = Y - c * v_mid;
-    }
+  for (; i < i_end; ++i) {
+    const double X = kAxis == FaceAxis::x ? i : i + 0.5;
+    const double u_mid = U.sample(xs[i], ys[i]);
+    const double v_mid = V.sample(xs[i], ys[i]);
+    xs[i] = X - c * u_mid;  // foot of the trajectory
+    ys[i] = Y - c * v_mid;
+  }
+}
+
+// out[i] = q(xs[i], ys[i]) for i in [i_begin, i_end); with lo and hi, also the range of the
+// four values each sample interpolated.
+template <FaceAxis kAxis, bool kBounds>
+void sample_row(const SampleView& q, const double* __restrict__ xs, const double* __restrict__ ys, int i_begin,
+                int i_end, double* __restrict__ out, double* __restrict__ lo, double* __restrict__ hi) {
+  int k = i_begin;
+#if defined(__SSE2__)
+  for (; k + 2 <= i_end; k += 2) {
     if constexpr (kBounds) {
-      int k = i_begin;
-#if defined(__SSE2__)
-      for (; k + 2 <= i_end; k += 2) {
-        __m128d lo2, hi2;
-        _mm_storeu_pd(out_row + k, q.sample2(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k), &lo2, &hi2));
-        _mm_storeu_pd(lo_row + k, lo2);
-        _mm_storeu_pd(hi_row + k, hi2);
-      }
-#endif
-      for (; k < i_end; ++k) out_row[k] = q.sample(xs[k], ys[k], lo_row[k], hi_row[k]);
+      __m128d lo2, hi2;
+      _mm_storeu_pd(out + k, q.sample2_on<kAxis>(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k), &lo2, &hi2));
+      _mm_storeu_pd(lo + k, lo2);
+      _mm_storeu_pd(hi + k, hi2);
     } else {
-      int k = i_begin;
-#if defined(__SSE2__)
-      for (; k + 2 <= i_end; k += 2) _mm_storeu_pd(out_row + k, q.sample2(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k)));
+      _mm_storeu_pd(out + k, q.sample2_on<kAxis>(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k)));
+    }
+  }
 #endif
-      for (; k < i_end; ++k) out_row[k] = q.sample(xs[k], ys[k]);
+  for (; k < i_end; ++k) {
+    if constexpr (kBounds) {
+      out[k] = q.sample(xs[k], ys[k], lo[k], hi[k]);
+    } else {
+      out[k] = q.sample(xs[k], ys[k]);
+    }
+  }
+}
+
+// Semi-Lagrangian transport of the component `q` (on kAxis faces) along (U, V), rows
+// [j_begin, j_end) of the block: out(face) = q(x_face − trajectory).
+template <FaceAxis kAxis>
+void semi_lagrangian_rows(const SampleView& U, const SampleView& V, const SampleView& q, double c, FaceBlock b,
+                          int j_begin, int j_end, Array2& out, double* xs, double* ys) {
+  for (int j = j_begin; j < j_end; ++j) {
+    trace_row<kAxis>(U, V, c, j, b.i_begin, b.i_end, xs, ys);
+    sample_row<kAxis, false>(q, xs, ys, b.i_begin, b.i_end, out.row(j), nullptr, nullptr);
+  }
+}
+
+// MacCormack's forward step φ̂ = A(φ) on rows [j_begin, j_end), written into φ̂'s padded
+// storage, with the interpolation bounds.
+template <FaceAxis kAxis>
+void maccormack_forward_rows(const SampleView& U, const SampleView& V, const SampleView& q, double c, FaceBlock b,
+                             int j_begin, int j_end, StaggeredComponent2& hat, Array2& lo, Array2& hi, double* xs,
+                             double* ys) {
+  for (int j = j_begin; j < j_end; ++j) {
+    trace_row<kAxis>(U, V, c, j, b.i_begin, b.i_end, xs, ys);
+    sample_row<kAxis, true>(q, xs, ys, b.i_begin, b.i_end, hat.interior_row(j), lo.row(j), hi.row(j));
+  }
+}
+
+// MacCormack's backward step φ̃ = A_reversed(φ̂) and the clamped correction
+// φ^{n+1} = clamp(φ̂ + ½ (φ − φ̃), lo, hi) (Selle et al. 2008), on rows [j_begin, j_end):
+// φ̃ of a row is used while it is in cache and never stored.
+template <FaceAxis kAxis>
+void maccormack_backward_rows(const SampleView& U, const SampleView& V, const StaggeredComponent2& hat,
+                              const Array2& phi, const Array2& lo, const Array2& hi, double c, FaceBlock b,
+                              int j_begin, int j_end, Array2& out, double* xs, double* ys, double* __restrict__ rev) {
+  for (int j = j_begin; j < j_end; ++j) {
+    trace_row<kAxis>(U, V, -c, j, b.i_begin, b.i_end, xs, ys);
+    sample_row<kAxis, false>(hat.view(), xs, ys, b.i_begin, b.i_end, rev, nullptr, nullptr);
+    const double* __restrict__ p = phi.row(j);
+    const double* __restrict__ f = hat.interior_row(j);
+    const double* __restrict__ l = lo.row(j);
+    const double* __restrict__ h = hi.row(j);
+    double* __restrict__ o = out.row(j);
+    for (int i = b.i_begin; i < b.i_end; ++i) {
+      const double corrected = f[i] + 0.5 * (p[i] - rev[i]);
+      o[i] = std::min(std::max(corrected, l[i]), h[i]);
     }
   }
 }
@@ -120,6 +170,29 @@ void zero_solid_normal_faces(const Walls& walls, Array2& u, Array2& v) {
   }
 }
 
+// Rows of the u block and then of the v block as one index range, cut into one piece per
+// thread: body(component rows) is called for the u rows and the v rows of each piece.
+template <class UBody, class VBody>
+void for_row_pieces(WorkerPool* workers, const FaceBlock& ub, const FaceBlock& vb, UBody&& u_rows, VBody&& v_rows) {
+  const int nu = ub.j_end - ub.j_begin;
+  const int nv = vb.j_end - vb.j_begin;
+  for_pieces(workers, 0, nu + nv, [&](int lo, int hi, int part) {
+    if (lo < nu) u_rows(ub.j_begin + lo, ub.j_begin + std::min(hi, nu), part);
+    if (hi > nu) v_rows(vb.j_begin + std::max(lo, nu) - nu, vb.j_begin + hi - nu, part);
+  });
+}
+
+// Per-thread row scratch: feet x, feet y and one row of results, each `row` long.
+struct RowScratch {
+  double* xs;
+  double* ys;
+  double* extra;
+};
+RowScratch row_scratch(std::vector<double>& scratch, int part, int row) {
+  double* base = scratch.data() + static_cast<std::size_t>(part) * 3 * static_cast<std::size_t>(row);
+  return {base, base + row, base + 2 * row};
+}
+
 }  // namespace
 
 void SemiLagrangianAdvection2::advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out,
@@ -129,9 +202,22 @@ void SemiLagrangianAdvection2::advect_velocity(const MacGrid2& grid, const Walls
   u_.assign(FaceAxis::x, grid.u_m_per_s, walls);
   v_.assign(FaceAxis::y, grid.v_m_per_s, walls);
   const double c = dt_s / grid.dx_m;
-  trace_and_sample<FaceAxis::x, false>(u_, v_, u_, c, unknown_u_columns(grid, walls), u_out, nullptr, nullptr,
-                                       scratch_);
-  trace_and_sample<FaceAxis::y, false>(u_, v_, v_, c, unknown_v_rows(grid, walls), v_out, nullptr, nullptr, scratch_);
+  const FaceBlock ub = face_block<FaceAxis::x>(grid, unknown_u_columns(grid, walls));
+  const FaceBlock vb = face_block<FaceAxis::y>(grid, unknown_v_rows(grid, walls));
+  const int row = grid.nx + 1;
+  scratch_.resize(3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(piece_count(workers_)));
+  const SampleView& U = u_.view();
+  const SampleView& V = v_.view();
+  for_row_pieces(
+      workers_, ub, vb,
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        semi_lagrangian_rows<FaceAxis::x>(U, V, U, c, ub, j0, j1, u_out, s.xs, s.ys);
+      },
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        semi_lagrangian_rows<FaceAxis::y>(U, V, V, c, vb, j0, j1, v_out, s.xs, s.ys);
+      });
   zero_solid_normal_faces(walls, u_out, v_out);
 }
 
@@ -141,42 +227,48 @@ void MacCormackAdvection2::advect_velocity(const MacGrid2& grid, const Walls& wa
   const int ny = grid.ny;
   u_out.resize(nx + 1, ny);
   v_out.resize(nx, ny + 1);
-  for (Array2* a : {&u_fwd_, &u_lo_, &u_hi_, &u_rev_}) a->resize(nx + 1, ny);
-  for (Array2* a : {&v_fwd_, &v_lo_, &v_hi_, &v_rev_}) a->resize(nx, ny + 1);
+  for (Array2* a : {&u_lo_, &u_hi_}) a->resize(nx + 1, ny);
+  for (Array2* a : {&v_lo_, &v_hi_}) a->resize(nx, ny + 1);
   u_.assign(FaceAxis::x, grid.u_m_per_s, walls);
   v_.assign(FaceAxis::y, grid.v_m_per_s, walls);
+  u_hat_.prepare(FaceAxis::x, nx, ny);
+  v_hat_.prepare(FaceAxis::y, nx, ny);
   const double c = dt_s / grid.dx_m;
-  const FaceRange u_cols = unknown_u_columns(grid, walls);
-  const FaceRange v_rows = unknown_v_rows(grid, walls);
+  const FaceBlock ub = face_block<FaceAxis::x>(grid, unknown_u_columns(grid, walls));
+  const FaceBlock vb = face_block<FaceAxis::y>(grid, unknown_v_rows(grid, walls));
+  const int row = nx + 1;
+  scratch_.resize(3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(piece_count(workers_)));
+  const SampleView& U = u_.view();
+  const SampleView& V = v_.view();
 
-  // Forward semi-Lagrangian step φ̂ = A(φ), remembering the interpolation bounds.
-  trace_and_sample<FaceAxis::x, true>(u_, v_, u_, c, u_cols, u_fwd_, &u_lo_, &u_hi_, scratch_);
-  trace_and_sample<FaceAxis::y, true>(u_, v_, v_, c, v_rows, v_fwd_, &v_lo_, &v_hi_, scratch_);
-  zero_solid_normal_faces(walls, u_fwd_, v_fwd_);
+  // Forward semi-Lagrangian step φ̂ = A(φ), remembering the interpolation bounds; solid walls'
+  // normal faces zero and ghosts filled as for the velocity.
+  for_row_pieces(
+      workers_, ub, vb,
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        maccormack_forward_rows<FaceAxis::x>(U, V, U, c, ub, j0, j1, u_hat_, u_lo_, u_hi_, s.xs, s.ys);
+      },
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        maccormack_forward_rows<FaceAxis::y>(U, V, V, c, vb, j0, j1, v_hat_, v_lo_, v_hi_, s.xs, s.ys);
+      });
+  u_hat_.finish(walls);
+  v_hat_.finish(walls);
 
-  // Backward step φ̃ = A_reversed(φ̂) along the same velocity u^n.
-  u_hat_.assign(FaceAxis::x, u_fwd_, walls);
-  v_hat_.assign(FaceAxis::y, v_fwd_, walls);
-  trace_and_sample<FaceAxis::x, false>(u_, v_, u_hat_, -c, u_cols, u_rev_, nullptr, nullptr, scratch_);
-  trace_and_sample<FaceAxis::y, false>(u_, v_, v_hat_, -c, v_rows, v_rev_, nullptr, nullptr, scratch_);
-
-  // Correction φ̂ + ½ (φ − φ̃), clamped to [lo, hi] (Selle et al. 2008).
-  auto correct = [](const Array2& phi, const Array2& fwd, const Array2& rev, const Array2& lo, const Array2& hi,
-                    Array2& out) {
-    const double* p = phi.data();
-    const double* f = fwd.data();
-    const double* r = rev.data();
-    const double* l = lo.data();
-    const double* h = hi.data();
-    double* o = out.data();
-    const std::size_t n = out.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const double corrected = f[k] + 0.5 * (p[k] - r[k]);
-      o[k] = std::min(std::max(corrected, l[k]), h[k]);
-    }
-  };
-  correct(grid.u_m_per_s, u_fwd_, u_rev_, u_lo_, u_hi_, u_out);
-  correct(grid.v_m_per_s, v_fwd_, v_rev_, v_lo_, v_hi_, v_out);
+  // Backward step φ̃ = A_reversed(φ̂) along the same velocity u^n, and the clamped correction.
+  for_row_pieces(
+      workers_, ub, vb,
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        maccormack_backward_rows<FaceAxis::x>(U, V, u_hat_, grid.u_m_per_s, u_lo_, u_hi_, c, ub, j0, j1, u_out, s.xs,
+                                              s.ys, s.extra);
+      },
+      [&](int j0, int j1, int part) {
+        const RowScratch s = row_scratch(scratch_, part, row);
+        maccormack_backward_rows<FaceAxis::y>(U, V, v_hat_, grid.v_m_per_s, v_lo_, v_hi_, c, vb, j0, j1, v_out, s.xs,
+                                              s.ys, s.extra);
+      });
   zero_solid_normal_faces(walls, u_out, v_out);
 }
 

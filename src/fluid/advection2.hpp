@@ -8,6 +8,7 @@
 #include "fluid/fluid_params.hpp"
 #include "fluid/mac_grid2.hpp"
 #include "fluid/staggered_sampler2.hpp"
+#include "fluid/worker_pool.hpp"
 
 namespace creaturelab::fluid {
 
@@ -18,6 +19,11 @@ class AdvectionSolver2 {
   /// Transports the grid's velocity along itself for dt_s. Writes u_out ((nx+1) × ny) and
   /// v_out (nx × (ny+1)); normal velocity on solid walls is zero. The grid is not modified.
   virtual void advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out, Array2& v_out) = 0;
+  /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
+  void set_workers(WorkerPool* workers) { workers_ = workers; }
+
+ protected:
+  WorkerPool* workers_ = nullptr;
 };
 
 /// Stam 1999 §2.2 with linear interpolation: u^{n+1}(x) = u^n(x − Δ), where the displacement Δ
@@ -48,8 +54,8 @@ class MacCormackAdvection2 final : public AdvectionSolver2 {
 
  private:
   StaggeredComponent2 u_, v_;          // the advecting velocity u^n
-  StaggeredComponent2 u_hat_, v_hat_;  // forward results, padded for the backward pass
-  Array2 u_fwd_, v_fwd_, u_lo_, u_hi_, v_lo_, v_hi_, u_rev_, v_rev_;
+  StaggeredComponent2 u_hat_, v_hat_;  // forward results, written padded for the backward pass
+  Array2 u_lo_, u_hi_, v_lo_, v_hi_;  // the forward step's interpolation bounds
   std::vector<double> scratch_;
 };
 

@@ -7,6 +7,10 @@
 #include <limits>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace creaturelab::fluid {
 
 /// A dense nx × ny array of doubles with the x index fastest: element (i, j) lives at
@@ -60,12 +64,23 @@ class Array2 {
 inline double dot(const double* a, const double* b, std::size_t n) {
   double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
   std::size_t k = 0;
+#if defined(__SSE2__)
+  // The same four lanes as the scalar loop, two per register (the compiler does not pair them).
+  __m128d s01 = _mm_setzero_pd(), s23 = _mm_setzero_pd();
+  for (; k + 4 <= n; k += 4) {
+    s01 = _mm_add_pd(s01, _mm_mul_pd(_mm_loadu_pd(a + k), _mm_loadu_pd(b + k)));
+    s23 = _mm_add_pd(s23, _mm_mul_pd(_mm_loadu_pd(a + k + 2), _mm_loadu_pd(b + k + 2)));
+  }
+  s0 = _mm_cvtsd_f64(s01), s1 = _mm_cvtsd_f64(_mm_unpackhi_pd(s01, s01));
+  s2 = _mm_cvtsd_f64(s23), s3 = _mm_cvtsd_f64(_mm_unpackhi_pd(s23, s23));
+#else
   for (; k + 4 <= n; k += 4) {
     s0 += a[k] * b[k];
     s1 += a[k + 1] * b[k + 1];
     s2 += a[k + 2] * b[k + 2];
     s3 += a[k + 3] * b[k + 3];
   }
+#endif
   for (; k < n; ++k) s0 += a[k] * b[k];
   return (s0 + s1) + (s2 + s3);
 }
@@ -85,6 +100,50 @@ inline double sum(const double* p, std::size_t n) {
 }
 
 /// Running maximum of |values| in four lanes, with NaN detection.
+#if defined(__SSE2__)
+// Lanes (0, 1) and (2, 3) in one register each: maxpd(v, m) is v > m ? v : m per lane, the
+// scalar rule below, so the result is bitwise the same as the scalar version's.
+struct MaxAbsAccumulator {
+  __m128d m01 = _mm_setzero_pd(), m23 = _mm_setzero_pd();  // maxima
+  __m128d z01 = _mm_setzero_pd(), z23 = _mm_setzero_pd();  // Σ (v − v): NaN once a NaN or inf was seen
+  static __m128d abs2(__m128d v) { return _mm_andnot_pd(_mm_set1_pd(-0.0), v); }
+  void add2x2(__m128d v01, __m128d v23) {
+    v01 = abs2(v01), v23 = abs2(v23);
+    m01 = _mm_max_pd(v01, m01);
+    m23 = _mm_max_pd(v23, m23);
+    z01 = _mm_add_pd(z01, _mm_sub_pd(v01, v01));
+    z23 = _mm_add_pd(z23, _mm_sub_pd(v23, v23));
+  }
+  void add4(double v0, double v1, double v2, double v3) { add2x2(_mm_set_pd(v1, v0), _mm_set_pd(v3, v2)); }
+  /// Two values into lanes 0 and 1.
+  void add2(__m128d v01) {
+    v01 = abs2(v01);
+    m01 = _mm_max_pd(v01, m01);
+    z01 = _mm_add_pd(z01, _mm_sub_pd(v01, v01));
+  }
+  /// add4 of p[0..3].
+  void add4(const double* p) { add2x2(_mm_loadu_pd(p), _mm_loadu_pd(p + 2)); }
+  void add(double v) {
+    const __m128d a = abs2(_mm_set_sd(v));
+    m01 = _mm_move_sd(m01, _mm_max_sd(a, m01));
+    z01 = _mm_move_sd(z01, _mm_add_sd(z01, _mm_sub_sd(a, a)));
+  }
+  /// The maximum; +infinity if an infinity was seen, NaN if a NaN was seen.
+  double result() const {
+    auto lo = [](__m128d x) { return _mm_cvtsd_f64(x); };
+    auto hi = [](__m128d x) { return _mm_cvtsd_f64(_mm_unpackhi_pd(x, x)); };
+    const double z = (lo(z01) + hi(z01)) + (lo(z23) + hi(z23));
+    const double m = std::max(std::max(lo(m01), hi(m01)), std::max(lo(m23), hi(m23)));
+    if (z != z) return m > std::numeric_limits<double>::max() ? m : std::numeric_limits<double>::quiet_NaN();
+    return m;
+  }
+  /// Merges another accumulator (the maximum and the NaN flag do not depend on the order).
+  void merge(const MaxAbsAccumulator& o) {
+    m01 = _mm_max_pd(o.m01, m01), m23 = _mm_max_pd(o.m23, m23);
+    z01 = _mm_add_pd(z01, o.z01), z23 = _mm_add_pd(z23, o.z23);
+  }
+};
+#else
 struct MaxAbsAccumulator {
   double m0 = 0.0, m1 = 0.0, m2 = 0.0, m3 = 0.0;  // maxima
   double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;  // Σ (v − v): NaN once a NaN or inf was seen
@@ -99,6 +158,8 @@ struct MaxAbsAccumulator {
     z2 += v2 - v2;
     z3 += v3 - v3;
   }
+  void add4(const double* p) { add4(p[0], p[1], p[2], p[3]); }
+  void add2(double v0, double v1) { add(v0), add(v1); }
   void add(double v) {
     v = std::abs(v);
     m0 = v > m0 ? v : m0;
@@ -111,22 +172,37 @@ struct MaxAbsAccumulator {
     if (z != z) return m > std::numeric_limits<double>::max() ? m : std::numeric_limits<double>::quiet_NaN();
     return m;
   }
+  void merge(const MaxAbsAccumulator& o) {
+    m0 = o.m0 > m0 ? o.m0 : m0, m1 = o.m1 > m1 ? o.m1 : m1, m2 = o.m2 > m2 ? o.m2 : m2, m3 = o.m3 > m3 ? o.m3 : m3;
+    z0 += o.z0, z1 += o.z1, z2 += o.z2, z3 += o.z3;
+  }
 };
+#endif
 
-/// max |p[k]| (0 when n = 0); NaN if a value is NaN (unless an infinity is also present).
-inline double max_abs(const double* p, std::size_t n) {
+/// The accumulator of |p[k]|, k < n (to merge partial results).
+inline MaxAbsAccumulator partial_max_abs(const double* p, std::size_t n) {
   MaxAbsAccumulator acc;
   std::size_t k = 0;
-  for (; k + 4 <= n; k += 4) acc.add4(p[k], p[k + 1], p[k + 2], p[k + 3]);
+  for (; k + 4 <= n; k += 4) acc.add4(p + k);
   for (; k < n; ++k) acc.add(p[k]);
-  return acc.result();
+  return acc;
 }
+
+/// max |p[k]| (0 when n = 0); NaN if a value is NaN (unless an infinity is also present).
+inline double max_abs(const double* p, std::size_t n) { return partial_max_abs(p, n).result(); }
 
 /// max |a[k] − b[k]|, with the NaN rule of max_abs.
 inline double max_abs_difference(const double* a, const double* b, std::size_t n) {
   MaxAbsAccumulator acc;
   std::size_t k = 0;
+#if defined(__SSE2__)
+  for (; k + 4 <= n; k += 4) {
+    acc.add2x2(_mm_sub_pd(_mm_loadu_pd(a + k), _mm_loadu_pd(b + k)),
+               _mm_sub_pd(_mm_loadu_pd(a + k + 2), _mm_loadu_pd(b + k + 2)));
+  }
+#else
   for (; k + 4 <= n; k += 4) acc.add4(a[k] - b[k], a[k + 1] - b[k + 1], a[k + 2] - b[k + 2], a[k + 3] - b[k + 3]);
+#endif
   for (; k < n; ++k) acc.add(a[k] - b[k]);
   return acc.result();
 }

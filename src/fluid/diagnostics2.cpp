@@ -1,27 +1,46 @@
 #include "fluid/diagnostics2.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "fluid/boundary2.hpp"
 
 namespace creaturelab::fluid {
+namespace {
+
+// acc.add over i < nx of the flux sums (u[i+1] − u[i]) + (v_n[i] − v_s[i]) of one row of cells.
+void add_flux_row(MaxAbsAccumulator& acc, const double* u, const double* v_s, const double* v_n, int nx) {
+  auto flux = [&](int i) { return (u[i + 1] - u[i]) + (v_n[i] - v_s[i]); };
+  int i = 0;
+#if defined(__SSE2__)
+  auto flux2 = [&](int k) {  // flux(k), flux(k + 1): the same arithmetic in each lane
+    return _mm_add_pd(_mm_sub_pd(_mm_loadu_pd(u + k + 1), _mm_loadu_pd(u + k)),
+                      _mm_sub_pd(_mm_loadu_pd(v_n + k), _mm_loadu_pd(v_s + k)));
+  };
+  for (; i + 4 <= nx; i += 4) acc.add2x2(flux2(i), flux2(i + 2));
+#else
+  for (; i + 4 <= nx; i += 4) acc.add4(flux(i), flux(i + 1), flux(i + 2), flux(i + 3));
+#endif
+  for (; i < nx; ++i) acc.add(flux(i));
+}
+
+}  // namespace
 
 double max_divergence_per_s(const MacGrid2& grid) { return max_abs_flux_sum_m_per_s(grid) / grid.dx_m; }
 
-double max_abs_flux_sum_m_per_s(const MacGrid2& grid) {
-  MaxAbsAccumulator acc;
-  for (int j = 0; j < grid.ny; ++j) {
-    const double* u = grid.u_m_per_s.row(j);
-    const double* v_s = grid.v_m_per_s.row(j);
-    const double* v_n = grid.v_m_per_s.row(j + 1);
-    auto flux = [&](int i) { return (u[i + 1] - u[i]) + (v_n[i] - v_s[i]); };
-    int i = 0;
-    for (; i + 4 <= grid.nx; i += 4) acc.add4(flux(i), flux(i + 1), flux(i + 2), flux(i + 3));
-    for (; i < grid.nx; ++i) acc.add(flux(i));
-  }
-  const double m = acc.result();
+double max_abs_flux_sum_m_per_s(const MacGrid2& grid, WorkerPool* workers) {
+  // A maximum does not depend on the order in which the values meet: one accumulator per piece.
+  std::array<MaxAbsAccumulator, kMaxParts> acc{};
+  for_pieces(workers, 0, grid.ny, [&](int j0, int j1, int part) {
+    for (int j = j0; j < j1; ++j) {
+      add_flux_row(acc[part], grid.u_m_per_s.row(j), grid.v_m_per_s.row(j), grid.v_m_per_s.row(j + 1), grid.nx);
+    }
+  });
+  for (int part = 1; part < piece_count(workers); ++part) acc[0].merge(acc[part]);
+  const double m = acc[0].result();
   return m == m ? m : std::numeric_limits<double>::infinity();
 }
 
@@ -41,45 +60,72 @@ double kinetic_energy_joule_per_m(const MacGrid2& grid, double density_kg_per_m3
   return 0.5 * density_kg_per_m3 * grid.dx_m * grid.dx_m * (sum_u + sum_v);
 }
 
-double max_velocity_component_m_per_s(const MacGrid2& grid) {
-  const double mu = max_abs(grid.u_m_per_s);
-  const double mv = max_abs(grid.v_m_per_s);
+double max_velocity_component_m_per_s(const MacGrid2& grid, WorkerPool* workers) {
+  std::array<MaxAbsAccumulator, kMaxParts> u{}, v{};
+  for_pieces(workers, 0, grid.ny + 1, [&](int j0, int j1, int part) {
+    if (j1 > grid.ny) {  // u has ny rows, v ny + 1
+      j1 = grid.ny;
+      v[part].merge(partial_max_abs(grid.v_m_per_s.row(grid.ny), static_cast<std::size_t>(grid.nx)));
+    }
+    for (int j = j0; j < j1; ++j) {
+      u[part].merge(partial_max_abs(grid.u_m_per_s.row(j), static_cast<std::size_t>(grid.nx) + 1));
+      v[part].merge(partial_max_abs(grid.v_m_per_s.row(j), static_cast<std::size_t>(grid.nx)));
+    }
+  });
+  for (int part = 1; part < piece_count(workers); ++part) u[0].merge(u[part]), v[0].merge(v[part]);
+  const double mu = u[0].result();
+  const double mv = v[0].result();
   const double big = std::numeric_limits<double>::max();
   return (mu <= big && mv <= big) ? std::max(mu, mv) : std::numeric_limits<double>::infinity();
 }
 
-FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3) {
+FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3, WorkerPool* workers) {
+  std::vector<double> row_energies;
+  return summarize_flow(grid, density_kg_per_m3, workers, row_energies);
+}
+
+FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3, WorkerPool* workers,
+                           std::vector<double>& row_energies) {
   const int nx = grid.nx;
   const int ny = grid.ny;
-  MaxAbsAccumulator speed, flux;
-  double sum_u = 0.0, sum_v = 0.0;
   auto add_row = [](MaxAbsAccumulator& acc, const double* p, int n) {
     int i = 0;
-    for (; i + 4 <= n; i += 4) acc.add4(p[i], p[i + 1], p[i + 2], p[i + 3]);
+    for (; i + 4 <= n; i += 4) acc.add4(p + i);
     for (; i < n; ++i) acc.add(p[i]);
   };
-  {
-    const double* v = grid.v_m_per_s.row(0);
-    add_row(speed, v, nx);
-    sum_v += 0.5 * dot(v, v, nx);
-  }
+  // Maxima per piece of rows (order-free); the energy of each row is stored and the rows are
+  // summed afterwards in row order, the serial order (so any thread count gives the same bits).
+  std::array<MaxAbsAccumulator, kMaxParts> speed{}, flux{};
+  row_energies.resize(2 * static_cast<std::size_t>(ny) + 1);
+  double* e_u = row_energies.data();  // e_u[j]: row j of u
+  double* e_v = e_u + ny;             // e_v[j]: row j of v, j = 0..ny
+  for_pieces(workers, 0, ny, [&](int j0, int j1, int part) {
+    if (j0 == 0) {
+      const double* v = grid.v_m_per_s.row(0);
+      add_row(speed[part], v, nx);
+      e_v[0] = 0.5 * dot(v, v, nx);
+    }
+    for (int j = j0; j < j1; ++j) {
+      const double* u = grid.u_m_per_s.row(j);
+      const double* v_s = grid.v_m_per_s.row(j);
+      const double* v_n = grid.v_m_per_s.row(j + 1);
+      add_row(speed[part], u, nx + 1);
+      add_row(speed[part], v_n, nx);
+      e_u[j] = dot(u, u, nx + 1) - 0.5 * (u[0] * u[0] + u[nx] * u[nx]);
+      e_v[j + 1] = (j + 1 == ny ? 0.5 : 1.0) * dot(v_n, v_n, nx);
+      add_flux_row(flux[part], u, v_s, v_n, nx);
+    }
+  });
+  for (int part = 1; part < piece_count(workers); ++part) speed[0].merge(speed[part]), flux[0].merge(flux[part]);
+  double sum_u = 0.0, sum_v = e_v[0];
   for (int j = 0; j < ny; ++j) {
-    const double* u = grid.u_m_per_s.row(j);
-    const double* v_s = grid.v_m_per_s.row(j);
-    const double* v_n = grid.v_m_per_s.row(j + 1);
-    add_row(speed, u, nx + 1);
-    add_row(speed, v_n, nx);
-    sum_u += dot(u, u, nx + 1) - 0.5 * (u[0] * u[0] + u[nx] * u[nx]);
-    sum_v += (j + 1 == ny ? 0.5 : 1.0) * dot(v_n, v_n, nx);
-    auto cell_flux = [&](int i) { return (u[i + 1] - u[i]) + (v_n[i] - v_s[i]); };
-    int i = 0;
-    for (; i + 4 <= nx; i += 4) flux.add4(cell_flux(i), cell_flux(i + 1), cell_flux(i + 2), cell_flux(i + 3));
-    for (; i < nx; ++i) flux.add(cell_flux(i));
+    sum_u += e_u[j];
+    sum_v += e_v[j + 1];
   }
   const double infinity = std::numeric_limits<double>::infinity();
   const double big = std::numeric_limits<double>::max();
-  const double max_speed = speed.result();
-  const double max_flux = flux.result();
+  const double max_speed = speed[0].result();
+  const double max_flux = flux[0].result();
   FlowSummary summary;
   summary.max_velocity_component_m_per_s = max_speed <= big ? max_speed : infinity;
   summary.max_divergence_per_s = max_flux <= big ? max_flux / grid.dx_m : infinity;

@@ -1,7 +1,9 @@
 #include "fluid/diffusion2.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "fluid/boundary2.hpp"
 
@@ -23,11 +25,12 @@ bool same_walls(const Walls& a, const Walls& b) {
   return same(a.left, b.left) && same(a.right, b.right) && same(a.bottom, b.bottom) && same(a.top, b.top);
 }
 
-// y = A x on the unknown block [ib, ie) × [jb, je). Entries outside the block are never written
-// (they stay zero). Neighbours outside the block are solid-wall normal faces (zero in x) or
-// lie beyond the array (ghosts, accounted for in `count`).
-double apply(int ib, int ie, int jb, int je, const Array2& count, double alpha, const Array2& x, Array2& y) {
-  double x_dot_y = 0.0;
+// y = A x on rows [jb, je) of the unknown block [ib, ie) × [.., ..), and row_dots[j] = the
+// x·y of row j. Entries outside the block are never written (they stay zero). Neighbours outside
+// the block are solid-wall normal faces (zero in x) or lie beyond the array (ghosts, accounted
+// for in `count`).
+void apply(int ib, int ie, int jb, int je, const Array2& count, double alpha, const Array2& x, Array2& y,
+           double* row_dots) {
   const int nx = x.nx();
   const int ny = x.ny();
   for (int j = jb; j < je; ++j) {
@@ -60,13 +63,13 @@ double apply(int ib, int ie, int jb, int je, const Array2& count, double alpha, 
       if (n != nullptr) sum += n[i];
       out[i] = (1.0 + alpha * d[i]) * c[i] - alpha * sum;
     }
-    x_dot_y += dot(c + ib, out + ib, static_cast<std::size_t>(ie - ib));  // while the row is in cache
+    row_dots[j] = dot(c + ib, out + ib, static_cast<std::size_t>(ie - ib));  // while the row is in cache
   }
-  return x_dot_y;
 }
 
-// One Richardson sweep x_new = x + (b − A x) = b + α (Σ_nb x − d x) on the block. Returns
-// max |x_new − x| = ‖b − A x‖∞, the residual of the old iterate (NaN if any value is NaN).
+// One Richardson sweep x_new = x + (b − A x) = b + α (Σ_nb x − d x) on rows [jb, je) of the
+// block. Returns max |x_new − x| = ‖b − A x‖∞ over those rows, the residual of the old iterate
+// (NaN if any value is NaN).
 double richardson_sweep(int ib, int ie, int jb, int je, const Array2& count, double alpha, const Array2& b,
                         const Array2& x, Array2& x_new) {
   const int nx = x.nx();
@@ -81,44 +84,76 @@ double richardson_sweep(int ib, int ie, int jb, int je, const Array2& count, dou
     double* __restrict__ out = x_new.row(j);
     const int lo = std::max(ib, 1);
     const int hi = std::min(ie, nx - 1);
+    // The change |x_new − x| of each face is accumulated as it is computed (the maximum and the
+    // NaN flag of a row do not depend on the order in which its values meet).
+    MaxAbsAccumulator row_max;
+    int i = lo;
     if (s != nullptr && n != nullptr) {
-      for (int i = lo; i < hi; ++i) {
+#if defined(__SSE2__)
+      const __m128d alpha2 = _mm_set1_pd(alpha), four = _mm_set1_pd(4.0);
+      for (; i + 2 <= hi; i += 2) {
+        const __m128d ci = _mm_loadu_pd(c + i);
+        const __m128d sum = _mm_add_pd(_mm_add_pd(_mm_loadu_pd(c + i - 1), _mm_loadu_pd(c + i + 1)),
+                                       _mm_add_pd(_mm_loadu_pd(s + i), _mm_loadu_pd(n + i)));
+        const __m128d o = _mm_add_pd(_mm_loadu_pd(br + i), _mm_mul_pd(alpha2, _mm_sub_pd(sum, _mm_mul_pd(four, ci))));
+        _mm_storeu_pd(out + i, o);
+        row_max.add2(_mm_sub_pd(o, ci));
+      }
+#endif
+      for (; i < hi; ++i) {
         out[i] = br[i] + alpha * (((c[i - 1] + c[i + 1]) + (s[i] + n[i])) - 4.0 * c[i]);  // d = 4 here
+        row_max.add(out[i] - c[i]);
       }
     } else {
-      for (int i = lo; i < hi; ++i) {
+      for (; i < hi; ++i) {
         const double vertical = (s != nullptr ? s[i] : 0.0) + (n != nullptr ? n[i] : 0.0);
         out[i] = br[i] + alpha * (((c[i - 1] + c[i + 1]) + vertical) - d[i] * c[i]);
+        row_max.add(out[i] - c[i]);
       }
     }
-    for (int i : {ib, ie - 1}) {
-      if (i >= lo && i < hi) continue;
+    for (int e : {ib, ie - 1}) {
+      if (e >= lo && e < hi) continue;
       double sum = 0.0;
-      if (i > 0) sum += c[i - 1];
-      if (i < nx - 1) sum += c[i + 1];
-      if (s != nullptr) sum += s[i];
-      if (n != nullptr) sum += n[i];
-      out[i] = br[i] + alpha * (sum - d[i] * c[i]);
+      if (e > 0) sum += c[e - 1];
+      if (e < nx - 1) sum += c[e + 1];
+      if (s != nullptr) sum += s[e];
+      if (n != nullptr) sum += n[e];
+      out[e] = br[e] + alpha * (sum - d[e] * c[e]);
+      row_max.add(out[e] - c[e]);
     }
-    const double row_change = max_abs_difference(out + ib, c + ib, static_cast<std::size_t>(ie - ib));
-    change = row_change > change || row_change != row_change ? row_change : change;
-    if (change != change) return change;
+    const double row_change = row_max.result();
+    change = row_change > change || row_change != row_change ? row_change : change;  // NaN sticks
   }
   return change;
 }
 
-// The CG update x += a p, r −= a Ap, fused with the reductions that follow it: returns
-// (max |r|, r·r). Four partial results in a fixed pattern (deterministic, see array2.hpp).
-struct Norms {
-  double max_abs;
-  double squared;
-};
-Norms update(std::size_t n, double a, double* __restrict__ x, const double* __restrict__ p, double* __restrict__ r,
-             const double* __restrict__ ap) {
-  MaxAbsAccumulator r_max;
+// The CG update x += a p, r −= a Ap on the elements [k0, k1), fused with the reductions that
+// follow it: max |r| into r_max, and r·r returned (four partial sums in a fixed pattern, see
+// array2.hpp). The solver calls it per row and sums the rows in row order, so that threads
+// sharing the rows give the same bits.
+double update(std::size_t k0, std::size_t k1, double a, double* __restrict__ x, const double* __restrict__ p,
+              double* __restrict__ r, const double* __restrict__ ap, MaxAbsAccumulator& r_max) {
   double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-  std::size_t k = 0;
-  for (; k + 4 <= n; k += 4) {
+  std::size_t k = k0;
+#if defined(__SSE2__)
+  // The scalar loop below, two lanes per register: the same operations per element.
+  const __m128d a2 = _mm_set1_pd(a);
+  __m128d s01 = _mm_setzero_pd(), s23 = _mm_setzero_pd();
+  for (; k + 4 <= k1; k += 4) {
+    _mm_storeu_pd(x + k, _mm_add_pd(_mm_loadu_pd(x + k), _mm_mul_pd(a2, _mm_loadu_pd(p + k))));
+    _mm_storeu_pd(x + k + 2, _mm_add_pd(_mm_loadu_pd(x + k + 2), _mm_mul_pd(a2, _mm_loadu_pd(p + k + 2))));
+    const __m128d r01 = _mm_sub_pd(_mm_loadu_pd(r + k), _mm_mul_pd(a2, _mm_loadu_pd(ap + k)));
+    const __m128d r23 = _mm_sub_pd(_mm_loadu_pd(r + k + 2), _mm_mul_pd(a2, _mm_loadu_pd(ap + k + 2)));
+    _mm_storeu_pd(r + k, r01);
+    _mm_storeu_pd(r + k + 2, r23);
+    r_max.add2x2(r01, r23);
+    s01 = _mm_add_pd(s01, _mm_mul_pd(r01, r01));
+    s23 = _mm_add_pd(s23, _mm_mul_pd(r23, r23));
+  }
+  s0 = _mm_cvtsd_f64(s01), s1 = _mm_cvtsd_f64(_mm_unpackhi_pd(s01, s01));
+  s2 = _mm_cvtsd_f64(s23), s3 = _mm_cvtsd_f64(_mm_unpackhi_pd(s23, s23));
+#else
+  for (; k + 4 <= k1; k += 4) {
     for (std::size_t l = k; l < k + 4; ++l) {
       x[l] += a * p[l];
       r[l] -= a * ap[l];
@@ -129,13 +164,29 @@ Norms update(std::size_t n, double a, double* __restrict__ x, const double* __re
     s2 += r[k + 2] * r[k + 2];
     s3 += r[k + 3] * r[k + 3];
   }
-  for (; k < n; ++k) {
+#endif
+  for (; k < k1; ++k) {
     x[k] += a * p[k];
     r[k] -= a * ap[k];
     r_max.add(r[k]);
     s0 += r[k] * r[k];
   }
-  return {r_max.result(), (s0 + s1) + (s2 + s3)};
+  return (s0 + s1) + (s2 + s3);
+}
+
+// Σ_j row_values[j] for j in [0, rows), in row order.
+double sum_rows(const std::vector<double>& row_values) {
+  double total = 0.0;
+  for (double value : row_values) total += value;
+  return total;
+}
+
+// Per-thread maxima combined by the rule of richardson_sweep's row loop (NaN sticks): the
+// serial result, whatever the pieces.
+double max_of_parts(const double* parts, int count) {
+  double m = parts[0];
+  for (int k = 1; k < count; ++k) m = parts[k] > m || parts[k] != parts[k] ? parts[k] : m;
+  return m;
 }
 
 }  // namespace
@@ -210,19 +261,31 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
     }
   }
 
+  // Threads share rows everywhere below; every element gets the serial arithmetic, maxima merge
+  // per thread (order-free) and sums are kept per row and added in row order (worker_pool.hpp).
+  const int parts = piece_count(workers_);
+  const std::size_t row = static_cast<std::size_t>(nx);
+  w.row_dots.resize(static_cast<std::size_t>(ny));
+  w.row_rr.resize(static_cast<std::size_t>(ny));
+
   // b = x^n + α · (wall terms) on the unknown block (zero elsewhere: x is zero there).
-  const std::size_t n = x.size();
+  std::array<MaxAbsAccumulator, kMaxParts> acc{};
   {
     const double* __restrict__ xv = x.data();
     const double* __restrict__ wall = w.wall_rhs.data();
     double* __restrict__ b = w.b.data();
-    if (w.has_wall_rhs) {
-      for (std::size_t k = 0; k < n; ++k) b[k] = xv[k] + alpha * wall[k];
-    } else {
-      std::copy(xv, xv + n, b);
-    }
+    for_pieces(workers_, 0, ny, [&](int j0, int j1, int part) {
+      const std::size_t k0 = j0 * row, k1 = j1 * row;
+      if (w.has_wall_rhs) {
+        for (std::size_t k = k0; k < k1; ++k) b[k] = xv[k] + alpha * wall[k];
+      } else {
+        std::copy(xv + k0, xv + k1, b + k0);
+      }
+      acc[part].merge(partial_max_abs(b + k0, k1 - k0));
+    });
   }
-  const double b_norm = max_abs(w.b);
+  for (int part = 1; part < parts; ++part) acc[0].merge(acc[part]);
+  const double b_norm = acc[0].result();
   if (b_norm == 0.0) {
     x.fill(0.0);
     return {};
@@ -230,13 +293,19 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
   const double target = tolerance_ * b_norm;
 
   // Warm start for small α: Richardson sweeps x ← x + (b − A x) contract every error mode
-  // by |1 − λ(A)| ≤ α max_row Σ|A_ij − δ_ij| ≤ 10 α, i.e. by ≥ 20× per sweep when 10 α ≤
-  // 0.05, at the cost of one pass each (a CG iteration costs three). Water on the paper's grid
+  // by |1 − λ(A)| ≤ α max_row Σ|A_ij − δ_ij| ≤ 10 α, i.e. by ≥ 10× per sweep when 10 α ≤
+  // 0.1, at the cost of one pass each (a CG iteration costs three). (The limit was 0.05 until
+  // issue 13: water at 256² and dt = 0.01 s has 10 α = 0.053 and took three CG iterations, about
+  // eleven passes, where four sweeps reach the tolerance.) Water on the paper's grid
   // has α ~ 1e-3: two to four sweeps reach the tolerance and CG is not needed.
   int sweeps = 0;
   if (10.0 * alpha <= kSweepContraction) {
     while (sweeps < kMaxSweeps) {
-      const double residual = richardson_sweep(w.i_begin, w.i_end, w.j_begin, w.j_end, w.count, alpha, w.b, x, w.p);
+      std::array<double, kMaxParts> change{};
+      for_pieces(workers_, w.j_begin, w.j_end, [&](int j0, int j1, int part) {
+        change[part] = richardson_sweep(w.i_begin, w.i_end, j0, j1, w.count, alpha, w.b, x, w.p);
+      });
+      const double residual = max_of_parts(change.data(), parts);
       std::swap(x, w.p);  // O(1): the newest iterate is in x; w.p keeps zeros off the block
       ++sweeps;
       // `residual` belongs to the previous iterate; the new one's is r_new = (I − A) r with
@@ -249,30 +318,62 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
 
   // Conjugate gradients for A x = b from the current x. Unpreconditioned: the diagonal 1 + α d
   // varies only at the walls (d = 2..6), so Jacobi scaling buys nothing; cond(A) ≤ 1 + 8α.
+  // The inner products are sums of per-row partial sums in row order (so that threads can share
+  // the rows); until this branch they ran over the whole array in one pattern, which rounds
+  // differently (tests/unit/fluid_stages_test.cpp compares the two to the tolerance).
   double* __restrict__ xv = x.data();
   double* __restrict__ r = w.r.data();
   double* __restrict__ p = w.p.data();
   const double* __restrict__ ap = w.ap.data();
   const double* __restrict__ b = w.b.data();
-  apply(w.i_begin, w.i_end, w.j_begin, w.j_end, w.count, alpha, x, w.ap);
+  auto apply_rows = [&](const Array2& in) {
+    for_pieces(workers_, w.j_begin, w.j_end, [&](int j0, int j1, int) {
+      apply(w.i_begin, w.i_end, j0, j1, w.count, alpha, in, w.ap, w.row_dots.data());
+    });
+    double in_dot_ap = 0.0;
+    for (int j = w.j_begin; j < w.j_end; ++j) in_dot_ap += w.row_dots[static_cast<std::size_t>(j)];
+    return in_dot_ap;
+  };
+  auto merged_max = [&] {
+    for (int part = 1; part < parts; ++part) acc[0].merge(acc[part]);
+    return acc[0].result();
+  };
+  apply_rows(x);
   // r = p = b − A x (zero off the block), with ‖r‖∞ and r·r in the same pass.
-  for (std::size_t k = 0; k < n; ++k) {
-    r[k] = b[k] - ap[k];
-    p[k] = r[k];
-  }
-  double rr = dot(w.r, w.r);
-  double r_norm = rr == rr ? max_abs(w.r) : rr;
+  acc.fill(MaxAbsAccumulator{});
+  for_pieces(workers_, 0, ny, [&](int j0, int j1, int part) {
+    for (int j = j0; j < j1; ++j) {
+      const std::size_t k0 = j * row, k1 = k0 + row;
+      for (std::size_t k = k0; k < k1; ++k) {
+        r[k] = b[k] - ap[k];
+        p[k] = r[k];
+      }
+      w.row_rr[static_cast<std::size_t>(j)] = dot(r + k0, r + k0, row);
+      acc[part].merge(partial_max_abs(r + k0, row));
+    }
+  });
+  double rr = sum_rows(w.row_rr);
+  double r_norm = rr == rr ? merged_max() : rr;
   int iteration = 0;
   if (r_norm > target) {
     while (iteration < max_iterations_) {
       ++iteration;
-      const double p_ap = apply(w.i_begin, w.i_end, w.j_begin, w.j_end, w.count, alpha, w.p, w.ap);
-      const Norms norms = update(n, rr / p_ap, xv, p, r, ap);
-      r_norm = norms.max_abs;
+      const double p_ap = apply_rows(w.p);
+      const double a = rr / p_ap;
+      acc.fill(MaxAbsAccumulator{});
+      for_pieces(workers_, 0, ny, [&](int j0, int j1, int part) {
+        for (int j = j0; j < j1; ++j) {
+          w.row_rr[static_cast<std::size_t>(j)] = update(j * row, (j + 1) * row, a, xv, p, r, ap, acc[part]);
+        }
+      });
+      r_norm = merged_max();
       if (r_norm <= target || !(r_norm == r_norm)) break;
-      const double beta = norms.squared / rr;
-      rr = norms.squared;
-      for (std::size_t k = 0; k < n; ++k) p[k] = r[k] + beta * p[k];
+      const double r_squared = sum_rows(w.row_rr);
+      const double beta = r_squared / rr;
+      rr = r_squared;
+      for_pieces(workers_, 0, ny, [&](int j0, int j1, int) {
+        for (std::size_t k = j0 * row; k < j1 * row; ++k) p[k] = r[k] + beta * p[k];
+      });
     }
   }
   return {sweeps + iteration, r_norm / b_norm, r_norm <= target};

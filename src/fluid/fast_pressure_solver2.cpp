@@ -6,6 +6,10 @@
 
 #include "fluid/boundary2.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace creaturelab::fluid {
 namespace {
 
@@ -62,6 +66,46 @@ void radix2(long block, const double* __restrict__ a0r, const double* __restrict
     b0i[l] = a0i[l] + a1i[l];
     b1r[l] = wc * dr - ws * di;
     b1i[l] = wc * di + ws * dr;
+  }
+}
+
+// Odd radix R = 3, 5, 7: the small DFT by its definition, b_u = w_u Σ_t a_t e^{sgn 2πi ut/R}.
+// R known at compile time, so the coefficients stay in registers and the loop over l
+// vectorises; the sums run in the order t = 0 .. R − 1 as before (bitwise the same).
+template <int R>
+void odd_radix(long block, const double* const* ar, const double* const* ai, double* const* br, double* const* bi,
+               const double (&dft_cos)[7][7], const double (&dft_sin)[7][7], const double* wc, const double* ws) {
+  for (int u = 0; u < R; ++u) {
+    double cu[R], su[R];
+    for (int t = 0; t < R; ++t) cu[t] = dft_cos[u][t], su[t] = dft_sin[u][t];
+    const double wcu = wc[u], wsu = ws[u];
+    double* __restrict__ out_r = br[u];
+    double* __restrict__ out_i = bi[u];
+    long l = 0;
+#if defined(__SSE2__)
+    // Two lanes per register (the compiler cannot prove the R input rows and the output apart).
+    const __m128d wc2 = _mm_set1_pd(wcu), ws2 = _mm_set1_pd(wsu);
+    for (; l + 2 <= block; l += 2) {
+      __m128d sr = _mm_loadu_pd(ar[0] + l), si = _mm_loadu_pd(ai[0] + l);
+      for (int t = 1; t < R; ++t) {
+        const __m128d xr = _mm_loadu_pd(ar[t] + l), xi = _mm_loadu_pd(ai[t] + l);
+        const __m128d c = _mm_set1_pd(cu[t]), sn = _mm_set1_pd(su[t]);
+        sr = _mm_add_pd(sr, _mm_sub_pd(_mm_mul_pd(c, xr), _mm_mul_pd(sn, xi)));
+        si = _mm_add_pd(si, _mm_add_pd(_mm_mul_pd(c, xi), _mm_mul_pd(sn, xr)));
+      }
+      _mm_storeu_pd(out_r + l, _mm_sub_pd(_mm_mul_pd(wc2, sr), _mm_mul_pd(ws2, si)));
+      _mm_storeu_pd(out_i + l, _mm_add_pd(_mm_mul_pd(wc2, si), _mm_mul_pd(ws2, sr)));
+    }
+#endif
+    for (; l < block; ++l) {
+      double sr = ar[0][l], si = ai[0][l];
+      for (int t = 1; t < R; ++t) {
+        sr += cu[t] * ar[t][l] - su[t] * ai[t][l];
+        si += cu[t] * ai[t][l] + su[t] * ar[t][l];
+      }
+      out_r[l] = wcu * sr - wsu * si;
+      out_i[l] = wcu * si + wsu * sr;
+    }
   }
 }
 
@@ -164,18 +208,27 @@ void FastPressureSolver2::setup(const Walls& walls, int nx, int ny, bool prefer_
   }
 }
 
-// Mixed-radix (2, 3, 5, 7) Stockham FFT of length h = n/2 of every lane at once, on
+// Mixed-radix (2, 3, 5, 7) Stockham FFT of length h = n/2 of the lanes [l0, l1), on
 // (re_, im_) in natural order, result in natural order (Van Loan 1992, "Computational
 // Frameworks for the FFT", §1.7 and ch. 2). Stage with radix r, current length L, stride s:
 //   y[q + s (r p + u)] = e^{∓2πi p u / L} Σ_t x[q + s (p + t L/r)] e^{∓2πi t u / r}
 // for p < L/r, q < s. Forward: e^{−…}; inverse: e^{+…}, no 1/h. Rows q = 0..s−1 are adjacent,
-// so every (p, t) is one contiguous vector of s·m lanes and the inner loops vectorise.
-void FastPressureSolver2::fft(bool inverse) {
+// so with all lanes every (p, t) is one contiguous vector of s·m values and the inner loops
+// vectorise; with a part of the lanes (threads) it is s vectors of l1 − l0 values. Each value
+// gets the same arithmetic either way. The stages alternate between (re_, im_) and
+// (re2_, im2_): the result is in the second pair when the number of stages is odd
+// (result_in_second_buffers()).
+void FastPressureSolver2::fft(bool inverse, int l0, int l1) {
   const int h = lines_ / 2;
   const long m = lanes_;
   const double sgn = inverse ? 1.0 : -1.0;
+  const bool all_lanes = l0 == 0 && l1 == m;
   int length = h;
   long stride = 1;
+  const double* xr = re_.data();
+  const double* xi = im_.data();
+  double* yr = re2_.data();
+  double* yi = im2_.data();
   for (int r : radices_) {
     const int mm = length / r;
     const long block = stride * m;  // one contiguous vector per (p, t)
@@ -190,10 +243,6 @@ void FastPressureSolver2::fft(bool inverse) {
         }
       }
     }
-    const double* __restrict__ xr = re_.data();
-    const double* __restrict__ xi = im_.data();
-    double* __restrict__ yr = re2_.data();
-    double* __restrict__ yi = im2_.data();
     for (int p = 0; p < mm; ++p) {
       const double* ar[7];
       const double* ai[7];
@@ -201,60 +250,64 @@ void FastPressureSolver2::fft(bool inverse) {
       double* bi[7];
       double wc[7], ws[7];
       for (int t = 0; t < r; ++t) {
-        ar[t] = xr + (p + static_cast<long>(t) * mm) * block;
-        ai[t] = xi + (p + static_cast<long>(t) * mm) * block;
-        br[t] = yr + (static_cast<long>(r) * p + t) * block;
-        bi[t] = yi + (static_cast<long>(r) * p + t) * block;
+        ar[t] = xr + (p + static_cast<long>(t) * mm) * block + l0;
+        ai[t] = xi + (p + static_cast<long>(t) * mm) * block + l0;
+        br[t] = yr + (static_cast<long>(r) * p + t) * block + l0;
+        bi[t] = yi + (static_cast<long>(r) * p + t) * block + l0;
         const int index = (p * t * twiddle_scale) % h;
         wc[t] = fft_cos_[index];
         ws[t] = sgn * fft_sin_[index];
       }
-      if (r == 2) {
-        radix2(block, ar[0], ai[0], ar[1], ai[1], br[0], bi[0], br[1], bi[1], wc[1], ws[1]);
-      } else {
-        // Odd radix 3, 5, 7: the small DFT by its definition, b_u = Σ_t a_t e^{sgn 2πi ut/r}.
-        for (int u = 0; u < r; ++u) {
-          const double* cu = dft_cos[u];
-          const double* su = dft_sin[u];
-          for (long l = 0; l < block; ++l) {
-            double sr = ar[0][l], si = ai[0][l];
-            for (int t = 1; t < r; ++t) {
-              sr += cu[t] * ar[t][l] - su[t] * ai[t][l];
-              si += cu[t] * ai[t][l] + su[t] * ar[t][l];
-            }
-            br[u][l] = wc[u] * sr - ws[u] * si;
-            bi[u][l] = wc[u] * si + ws[u] * sr;
-          }
+      const long pieces = all_lanes ? 1 : stride;
+      const long length_of_piece = all_lanes ? block : l1 - l0;
+      for (long q = 0; q < pieces; ++q) {
+        const long o = q * m;  // offset of the piece's lanes within each vector
+        const double* ar_q[7];
+        const double* ai_q[7];
+        double* br_q[7];
+        double* bi_q[7];
+        for (int t = 0; t < r; ++t) ar_q[t] = ar[t] + o, ai_q[t] = ai[t] + o, br_q[t] = br[t] + o, bi_q[t] = bi[t] + o;
+        if (r == 2) {
+          radix2(length_of_piece, ar_q[0], ai_q[0], ar_q[1], ai_q[1], br_q[0], bi_q[0], br_q[1], bi_q[1], wc[1], ws[1]);
+        } else if (r == 3) {
+          odd_radix<3>(length_of_piece, ar_q, ai_q, br_q, bi_q, dft_cos, dft_sin, wc, ws);
+        } else if (r == 5) {
+          odd_radix<5>(length_of_piece, ar_q, ai_q, br_q, bi_q, dft_cos, dft_sin, wc, ws);
+        } else {
+          odd_radix<7>(length_of_piece, ar_q, ai_q, br_q, bi_q, dft_cos, dft_sin, wc, ws);
         }
       }
     }
-    std::swap(re_, re2_);
-    std::swap(im_, im2_);
+    // The output of this stage is the input of the next.
+    const double* next_r = yr;
+    const double* next_i = yi;
+    yr = const_cast<double*>(xr);
+    yi = const_cast<double*>(xi);
+    xr = next_r;
+    xi = next_i;
     length = mm;
     stride *= r;
   }
 }
 
-// work_ (lines × lanes) ← its transform along lines.
-void FastPressureSolver2::forward_transform() {
+// Forward transform along lines of the lanes [l0, l1): work_ (lines × lanes) ← its transform,
+// reading line t of the input from source.row(t) × scale (scale 1: a copy).
+void FastPressureSolver2::forward_transform(const Array2& source, double scale, int l0, int l1) {
   const int n = lines_;
-  const int m = lanes_;
   if (method_ == Method::dense_along_y) {
-    // out_k = Σ_j φ_k(j) in_j, four modes at a time; j ascending for every output.
-    im_.resize(m, n);
+    // out_k = Σ_j φ_k(j) in_j, four modes at a time; j ascending for every output. Into im_.
     for (int k0 = 0; k0 < n; k0 += 4) {
       const int kb = std::min(4, n - k0);
-      for (int kk = 0; kk < kb; ++kk) std::fill(im_.row(k0 + kk), im_.row(k0 + kk) + m, 0.0);
+      for (int kk = 0; kk < kb; ++kk) std::fill(im_.row(k0 + kk) + l0, im_.row(k0 + kk) + l1, 0.0);
       for (int j = 0; j < n; ++j) {
-        const double* __restrict__ in = work_.row(j);
+        const double* __restrict__ in = source.row(j);
         for (int kk = 0; kk < kb; ++kk) {
           const double c = basis_(j, k0 + kk);
           double* __restrict__ out = im_.row(k0 + kk);
-          for (int l = 0; l < m; ++l) out[l] += c * in[l];
+          for (int l = l0; l < l1; ++l) out[l] += c * in[l];
         }
       }
     }
-    std::swap(work_, im_);
     return;
   }
   // DCT-II by Makhoul's reordering, v_t = x_{2t} and v_{n−1−t} = x_{2t+1} (t < n/2), so that
@@ -263,18 +316,29 @@ void FastPressureSolver2::forward_transform() {
   // V_k = E_k + e^{−2πik/n} O_k for k ≤ n/2, V_{n−k} = conj V_k.
   const int h = n / 2;
   auto source_row = [n, h](int t) { return t < h ? 2 * t : 2 * (n - 1 - t) + 1; };  // x row of v_t
+  auto load = [&](int t, double* out) {
+    const double* in = source.row(source_row(t));
+    if (scale == 1.0) {
+      std::copy(in + l0, in + l1, out + l0);
+    } else {
+      for (int l = l0; l < l1; ++l) out[l] = in[l] * scale;
+    }
+  };
   for (int j = 0; j < h; ++j) {
-    std::copy(work_.row(source_row(2 * j)), work_.row(source_row(2 * j)) + m, re_.row(j));
-    std::copy(work_.row(source_row(2 * j + 1)), work_.row(source_row(2 * j + 1)) + m, im_.row(j));
+    load(2 * j, re_.row(j));
+    load(2 * j + 1, im_.row(j));
   }
-  fft(false);
+  fft(false, l0, l1);
+  const bool second = result_in_second_buffers();
+  const Array2& z_re = second ? re2_ : re_;
+  const Array2& z_im = second ? im2_ : im_;
   for (int k = 0; k <= h / 2; ++k) {
     // Rows k and h − k of Z give V_k, V_{h−k} and their mirrors V_{n−k}, V_{n−h+k}.
     const int k2 = (h - k) % h;  // Z_h = Z_0
-    const double* __restrict__ zr_a = re_.row(k % h);
-    const double* __restrict__ zi_a = im_.row(k % h);
-    const double* __restrict__ zr_b = re_.row(k2);
-    const double* __restrict__ zi_b = im_.row(k2);
+    const double* __restrict__ zr_a = z_re.row(k % h);
+    const double* __restrict__ zi_a = z_im.row(k % h);
+    const double* __restrict__ zr_b = z_re.row(k2);
+    const double* __restrict__ zi_b = z_im.row(k2);
     const int ka = k, kb = h - k;  // the two V indices produced
     const double wa_c = twiddle_cos_[ka % h], wa_s = ka == h ? 0.0 : twiddle_sin_[ka % h];
     const double wb_c = kb == h ? -1.0 : twiddle_cos_[kb], wb_s = kb == h ? 0.0 : twiddle_sin_[kb];
@@ -285,7 +349,7 @@ void FastPressureSolver2::forward_transform() {
     double* xb = work_.row(kb);
     double* xnb = work_.row(n - kb);
     const bool do_b = kb != ka;
-    for (int l = 0; l < m; ++l) {
+    for (int l = l0; l < l1; ++l) {
       // E_a = (Z_a + conj Z_b)/2, O_a = (Z_a − conj Z_b)/(2i); E_b, O_b likewise with a ↔ b.
       const double ar = zr_a[l], ai = zi_a[l], br = zr_b[l], bi = zi_b[l];
       const double ea_r = 0.5 * (ar + br), ea_i = 0.5 * (ai - bi);
@@ -307,26 +371,24 @@ void FastPressureSolver2::forward_transform() {
   }
 }
 
-// work_ ← inverse transform along lines of work_.
-void FastPressureSolver2::inverse_transform() {
+// Inverse transform along lines of the lanes [l0, l1) of work_, into `target` (lines × lanes):
+// the dense path writes im_.
+void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1) {
   const int n = lines_;
-  const int m = lanes_;
   if (method_ == Method::dense_along_y) {
     // out_j = Σ_k φ_k(j) in_k, k ascending.
-    im_.resize(m, n);
     for (int j0 = 0; j0 < n; j0 += 4) {
       const int jb = std::min(4, n - j0);
-      for (int jj = 0; jj < jb; ++jj) std::fill(im_.row(j0 + jj), im_.row(j0 + jj) + m, 0.0);
+      for (int jj = 0; jj < jb; ++jj) std::fill(im_.row(j0 + jj) + l0, im_.row(j0 + jj) + l1, 0.0);
       for (int k = 0; k < n; ++k) {
         const double* __restrict__ in = work_.row(k);
         for (int jj = 0; jj < jb; ++jj) {
           const double c = basis_t_(k, j0 + jj);
           double* __restrict__ out = im_.row(j0 + jj);
-          for (int l = 0; l < m; ++l) out[l] += c * in[l];
+          for (int l = l0; l < l1; ++l) out[l] += c * in[l];
         }
       }
     }
-    std::swap(work_, im_);
     return;
   }
   // Inverse of the forward DCT-II: V_t = e^{iπt/2n} (X_t − i X_{n−t}) (X_n = 0) is the FFT of
@@ -344,7 +406,7 @@ void FastPressureSolver2::inverse_transform() {
     const double* __restrict__ xna = k == 0 ? nullptr : work_.row(n - k);
     const double* __restrict__ xb = work_.row(h - k);
     const double* __restrict__ xnb = work_.row(n - (h - k));
-    for (int l = 0; l < m; ++l) {
+    for (int l = l0; l < l1; ++l) {
       const double a_x = xa[l], a_nx = xna != nullptr ? xna[l] : 0.0;
       const double ar = a_x * ca + a_nx * sa;  // V_k
       const double ai = a_x * sa - a_nx * ca;
@@ -358,30 +420,33 @@ void FastPressureSolver2::inverse_transform() {
       zi[l] = ei + or_;
     }
   }
-  fft(true);
+  fft(true, l0, l1);
+  const bool second = result_in_second_buffers();
+  const Array2& z_re = second ? re2_ : re_;
+  const Array2& z_im = second ? im2_ : im_;
   const double inv_h = 1.0 / h;
   auto target_row = [n, h](int t) { return t < h ? 2 * t : 2 * (n - 1 - t) + 1; };  // x row of v_t
   for (int j = 0; j < h; ++j) {
-    const double* zr = re_.row(j);
-    const double* zi = im_.row(j);
-    double* even = work_.row(target_row(2 * j));
-    double* odd = work_.row(target_row(2 * j + 1));
-    for (int l = 0; l < m; ++l) {
+    const double* zr = z_re.row(j);
+    const double* zi = z_im.row(j);
+    double* even = target.row(target_row(2 * j));
+    double* odd = target.row(target_row(2 * j + 1));
+    for (int l = l0; l < l1; ++l) {
       even[l] = zr[l] * inv_h;
       odd[l] = zi[l] * inv_h;
     }
   }
 }
 
-// For each mode k (row k of work_), solves (T_lanes + λ_k I) x = f in place. Eight modes are
-// swept together so that their independent recurrences overlap in the pipeline.
-void FastPressureSolver2::solve_modes() {
-  const int n = lines_;
+// For each mode k in [k0, k1) (row k of work_), solves (T_lanes + λ_k I) x = f in place. Eight
+// modes are swept together so that their independent recurrences overlap in the pipeline.
+void FastPressureSolver2::solve_modes(int k0_begin, int k1) {
   const int m = lanes_;
   constexpr int kBlock = 8;
-  const int first = singular_ ? 1 : 0;
-  for (int k0 = first; k0 < n; k0 += kBlock) {
-    const int kb = std::min(kBlock, n - k0);
+  const bool has_singular = singular_ && k0_begin == 0;
+  const int first = has_singular ? 1 : k0_begin;
+  for (int k0 = first; k0 < k1; k0 += kBlock) {
+    const int kb = std::min(kBlock, k1 - k0);
     double* x[kBlock];
     const double* inv[kBlock];
     for (int kk = 0; kk < kb; ++kk) {
@@ -396,7 +461,7 @@ void FastPressureSolver2::solve_modes() {
       for (int kk = 0; kk < kb; ++kk) x[kk][l] += inv[kk][l] * x[kk][l + 1];
     }
   }
-  if (singular_) {
+  if (has_singular) {
     // Mode 0 of a closed box: T x = f with T the Neumann Laplacian (singular, f sums to 0).
     // With g_l = x_l − x_{l+1}: g_0 = f_0, g_l = g_{l−1} + f_l; x_0 = 0, x_{l+1} = x_l − g_l;
     // then mean zero.
@@ -425,40 +490,85 @@ void FastPressureSolver2::solve(const Walls& walls, const Array2& b, Array2& q, 
   const int ny = b.ny();
   setup(walls, nx, ny, prefer_dense);
   q.resize(nx, ny);
+  if (method_ == Method::dense_along_y) im_.resize(lanes_, lines_);
+  const bool transposed = method_ == Method::fft_along_x;
+  const bool dense = method_ == Method::dense_along_y;
   // The transform is linear: scaling its input scales the solution. In a closed box the mean of
   // b (round-off only, the fluxes telescope) is ignored by the singular mode's recurrence.
-  if (method_ == Method::fft_along_x) {
-    for (int j = 0; j < ny; ++j) {
-      for (int i = 0; i < nx; ++i) work_(j, i) = b(i, j) * output_scale;
+  // Threads share the lanes of the transforms and the modes of the tridiagonal solves; every
+  // value gets the serial arithmetic (worker_pool.hpp).
+  for_pieces(workers_, 0, lanes_, [&](int l0, int l1, int) {
+    if (transposed) {
+      for (int j = l0; j < l1; ++j) {
+        const double* src = b.row(j);
+        for (int i = 0; i < nx; ++i) work_(j, i) = src[i] * output_scale;
+      }
+      forward_transform(work_, 1.0, l0, l1);
+    } else if (dense) {
+      for (int j = 0; j < ny; ++j) {
+        const double* src = b.row(j);
+        double* dst = work_.row(j);
+        if (output_scale == 1.0) {
+          std::copy(src + l0, src + l1, dst + l0);
+        } else {
+          for (int l = l0; l < l1; ++l) dst[l] = src[l] * output_scale;
+        }
+      }
+      forward_transform(work_, 1.0, l0, l1);
+    } else {
+      forward_transform(b, output_scale, l0, l1);
     }
-  } else if (output_scale == 1.0) {
-    work_ = b;
-  } else {
-    const double* src = b.data();
-    double* dst = work_.data();
-    for (std::size_t k = 0; k < b.size(); ++k) dst[k] = src[k] * output_scale;
-  }
-  forward_transform();
-  solve_modes();
-  inverse_transform();
-  if (method_ == Method::fft_along_x) {
-    for (int j = 0; j < ny; ++j) {
-      for (int i = 0; i < nx; ++i) q(i, j) = work_(j, i);
+  });
+  if (dense) std::swap(work_, im_);
+  for_pieces(workers_, 0, lines_, [&](int k0, int k1, int) { solve_modes(k0, k1); });
+  for_pieces(workers_, 0, lanes_, [&](int l0, int l1, int) {
+    if (transposed) {
+      inverse_transform(work_, l0, l1);
+      for (int j = l0; j < l1; ++j) {
+        double* dst = q.row(j);
+        for (int i = 0; i < nx; ++i) dst[i] = work_(j, i);
+      }
+    } else {
+      inverse_transform(q, l0, l1);  // the dense path writes im_
     }
-  } else {
-    std::swap(q, work_);  // same shape: O(1)
+  });
+  if (dense) std::swap(q, im_);
+}
+
+namespace {
+
+// projection_rhs (pressure_solver2.hpp) on rows [j0, j1), with max |b| of those rows.
+void projection_rhs_rows(const MacGrid2& grid, Array2& b, int j0, int j1, MaxAbsAccumulator& b_max) {
+  const double dx = grid.dx_m;
+  for (int j = j0; j < j1; ++j) {
+    const double* u = grid.u_m_per_s.row(j);
+    const double* v_s = grid.v_m_per_s.row(j);
+    const double* v_n = grid.v_m_per_s.row(j + 1);
+    double* out = b.row(j);
+    for (int i = 0; i < grid.nx; ++i) out[i] = -dx * ((u[i + 1] - u[i]) + (v_n[i] - v_s[i]));
+    int i = 0;
+    for (; i + 4 <= grid.nx; i += 4) b_max.add4(out + i);
+    for (; i < grid.nx; ++i) b_max.add(out[i]);
   }
 }
 
+}  // namespace
+
 LinearSolveReport FastPressureSolver2::project(MacGrid2& grid, const Walls& walls, double density_kg_per_m3,
                                                double dt_s) {
-  projection_rhs(grid, rhs_);
+  rhs_.resize(grid.nx, grid.ny);
+  const int parts = piece_count(workers_);
+  std::vector<MaxAbsAccumulator>& acc = accumulators_;
+  acc.assign(static_cast<std::size_t>(parts), MaxAbsAccumulator{});
+  // Maxima do not depend on the order in which values meet: per-piece accumulators, merged.
+  for_pieces(workers_, 0, grid.ny, [&](int j0, int j1, int part) { projection_rhs_rows(grid, rhs_, j0, j1, acc[part]); });
+  for (int part = 1; part < parts; ++part) acc[0].merge(acc[part]);
+  const double b_norm = acc[0].result();
   // Solve for p = q ρ / dt directly and subtract (dt/ρ) ∇p.
   solve(walls, rhs_, grid.pressure_pa, false, density_kg_per_m3 / dt_s);
-  subtract_gradient(grid, walls, grid.pressure_pa, dt_s / (density_kg_per_m3 * grid.dx_m));
-  const double b_norm = max_abs(rhs_);
+  subtract_gradient(grid, walls, grid.pressure_pa, dt_s / (density_kg_per_m3 * grid.dx_m), workers_);
   LinearSolveReport report;
-  report.relative_residual = b_norm > 0.0 ? max_abs_cell_flux_m2_per_s(grid) / b_norm : 0.0;
+  report.relative_residual = b_norm > 0.0 ? max_abs_cell_flux_m2_per_s(grid, workers_) / b_norm : 0.0;
   return report;
 }
 

@@ -44,10 +44,12 @@ class FastPressureSolver2 final : public PressureSolver2 {
 
  private:
   void setup(const Walls& walls, int nx, int ny, bool prefer_dense);
-  void forward_transform();
-  void inverse_transform();
-  void fft(bool inverse);
-  void solve_modes();
+  // The pieces of a solve; [l0, l1) a range of lanes, [k0, k1) of modes (threads share them).
+  void forward_transform(const Array2& source, double scale, int l0, int l1);
+  void inverse_transform(Array2& target, int l0, int l1);
+  void fft(bool inverse, int l0, int l1);
+  bool result_in_second_buffers() const { return radices_.size() % 2 == 1; }
+  void solve_modes(int k0, int k1);
 
   bool ready_ = false;
   bool prefer_dense_ = false;
@@ -65,6 +67,7 @@ class FastPressureSolver2 final : public PressureSolver2 {
   Array2 basis_;                                   // dense: basis_(j, k) = φ_k(j), contiguous in j
   Array2 basis_t_;                                 // dense: basis_t_(k, j) = φ_k(j), contiguous in k
   Array2 work_, re_, im_, re2_, im2_, rhs_;
+  std::vector<MaxAbsAccumulator> accumulators_;  // one per thread
 };
 
 }  // namespace creaturelab::fluid

@@ -105,6 +105,9 @@ std::string FluidParams::validate() const {
   if (!(std::isfinite(viscosity_tolerance) && viscosity_tolerance > 0.0 && viscosity_tolerance < 1.0)) {
     problems.add("viscosity_tolerance must lie between 0 and 1, exclusive (got " + show(viscosity_tolerance) + ")");
   }
+  if (threads < 1 || threads > 16) {
+    problems.add("threads must be between 1 and 16 (got " + std::to_string(threads) + ")");
+  }
   if (viscosity_max_iterations < 1) {
     problems.add("viscosity_max_iterations must be at least 1 (got " + std::to_string(viscosity_max_iterations) + ")");
   }

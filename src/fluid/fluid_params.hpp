@@ -97,6 +97,10 @@ struct FluidParams {
   double body_acceleration_x_m_per_s2 = 0.0;
   double body_acceleration_y_m_per_s2 = 0.0;
 
+  /// Threads that share the work of one step, 1..16 (1: none). Results are bitwise the same for
+  /// any number (the work is cut by index only; see worker_pool.hpp): this changes only the time.
+  int threads = 1;
+
   /// A step whose velocity is not finite or exceeds this speed throws FluidBlowUpError.
   double blowup_speed_m_per_s = 100.0;
 

@@ -39,13 +39,20 @@ FluidBlowUpError::FluidBlowUpError(long step, double time_s, double dt_s, double
 
 FluidSolver2::FluidSolver2(const FluidParams& params)
     : params_(checked(params)),
+      workers_(params_.threads > 1 ? std::make_unique<WorkerPool>(params_.threads) : nullptr),
       grid_(params_.cells_x, params_.cells_y, params_.cell_size_m()),
       force_density_(params_.cells_x, params_.cells_y),
       advection_(make_advection_solver(params_.advection)),
       diffusion_(std::make_unique<ImplicitDiffusion2>(params_.viscosity_tolerance, params_.viscosity_max_iterations)),
-      pressure_(make_pressure_solver(params_)) {}
+      pressure_(make_pressure_solver(params_)) {
+  advection_->set_workers(workers_.get());
+  diffusion_->set_workers(workers_.get());
+  pressure_->set_workers(workers_.get());
+}
 
-double FluidSolver2::next_time_step_s() const { return time_step_for(max_velocity_component_m_per_s(grid_)); }
+double FluidSolver2::next_time_step_s() const {
+  return time_step_for(max_velocity_component_m_per_s(grid_, workers_.get()));
+}
 
 double FluidSolver2::time_step_for(double max_velocity_component_m_per_s) const {
   if (params_.time_step_policy == TimeStepPolicy::fixed) return params_.fixed_step_s;
@@ -54,11 +61,13 @@ double FluidSolver2::time_step_for(double max_velocity_component_m_per_s) const 
 }
 
 FluidStepReport FluidSolver2::step() {
-  const double speed = max_velocity_component_m_per_s(grid_);
+  const double speed = max_velocity_component_m_per_s(grid_, workers_.get());
   return run_step(time_step_for(speed), speed);
 }
 
-FluidStepReport FluidSolver2::step(double dt_s) { return run_step(dt_s, max_velocity_component_m_per_s(grid_)); }
+FluidStepReport FluidSolver2::step(double dt_s) {
+  return run_step(dt_s, max_velocity_component_m_per_s(grid_, workers_.get()));
+}
 
 FluidStepReport FluidSolver2::run_step(double dt_s, double start_speed_m_per_s) {
   if (!(std::isfinite(dt_s) && dt_s > 0.0)) {
@@ -80,7 +89,7 @@ FluidStepReport FluidSolver2::run_step(double dt_s, double start_speed_m_per_s) 
   ++steps_done_;
   report.steps_done = steps_done_;
   report.time_s = time_s_;
-  const FlowSummary summary = summarize_flow(grid_, params_.density_kg_per_m3);
+  const FlowSummary summary = summarize_flow(grid_, params_.density_kg_per_m3, workers_.get(), row_energies_);
   report.max_velocity_component_m_per_s = summary.max_velocity_component_m_per_s;
   report.max_divergence_per_s = summary.max_divergence_per_s;
   report.kinetic_energy_joule_per_m = summary.kinetic_energy_joule_per_m;
@@ -98,16 +107,19 @@ void FluidSolver2::apply_external_forces(const StepContext& context) {
   const double gy = params_.body_acceleration_y_m_per_s2;
   const FaceRange u_cols = unknown_u_columns(grid_, walls());
   const FaceRange v_rows = unknown_v_rows(grid_, walls());
-  for (int j = 0; j < grid_.ny; ++j) {
-    double* u = grid_.u_m_per_s.row(j);
-    const double* f = force_density_.x.row(j);
-    for (int i = u_cols.begin; i < u_cols.end; ++i) u[i] += dt * (gx + f[i] * inv_rho);
-  }
-  for (int j = v_rows.begin; j < v_rows.end; ++j) {
-    double* v = grid_.v_m_per_s.row(j);
-    const double* f = force_density_.y.row(j);
-    for (int i = 0; i < grid_.nx; ++i) v[i] += dt * (gy + f[i] * inv_rho);
-  }
+  // Rows of u and of v, cut among threads (each face independent).
+  for_pieces(workers_.get(), 0, grid_.ny + 1, [&](int j0, int j1, int) {
+    for (int j = j0; j < std::min(j1, grid_.ny); ++j) {
+      double* u = grid_.u_m_per_s.row(j);
+      const double* f = force_density_.x.row(j);
+      for (int i = u_cols.begin; i < u_cols.end; ++i) u[i] += dt * (gx + f[i] * inv_rho);
+    }
+    for (int j = std::max(j0, v_rows.begin); j < std::min(j1, v_rows.end); ++j) {
+      double* v = grid_.v_m_per_s.row(j);
+      const double* f = force_density_.y.row(j);
+      for (int i = 0; i < grid_.nx; ++i) v[i] += dt * (gy + f[i] * inv_rho);
+    }
+  });
 }
 
 void FluidSolver2::advect_velocity(const StepContext& context) {

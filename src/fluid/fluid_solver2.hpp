@@ -12,8 +12,9 @@
 //   5. tracers           passive particles move with the new velocity
 // Each stage is a public method that can be called alone, each can be switched off
 // (FluidStages), and advection, viscosity and pressure delegate to swappable sub-solvers.
-// The solver owns its state, is deterministic (single-threaded, fixed loop orders), does no
-// I/O and prints nothing.
+// The solver owns its state, is deterministic (fixed loop orders; with FluidParams::threads > 1
+// the stages share their loops among threads by index only, bitwise the same for any thread
+// count: worker_pool.hpp), does no I/O and prints nothing.
 //
 // Accuracy: the split advects without the pressure and projects afterwards, which is first
 // order in time whatever the advection scheme; with dt ∝ dx both schemes converge at first
@@ -30,6 +31,7 @@
 #include "fluid/mac_grid2.hpp"
 #include "fluid/pressure_solver2.hpp"
 #include "fluid/staggered_sampler2.hpp"
+#include "fluid/worker_pool.hpp"
 
 namespace creaturelab::fluid {
 
@@ -122,9 +124,19 @@ class FluidSolver2 {
   long steps_done() const { return steps_done_; }
   FluidStages& stages() { return stages_; }
 
-  void set_advection_solver(std::unique_ptr<AdvectionSolver2> solver) { advection_ = std::move(solver); }
-  void set_diffusion_solver(std::unique_ptr<DiffusionSolver2> solver) { diffusion_ = std::move(solver); }
-  void set_pressure_solver(std::unique_ptr<PressureSolver2> solver) { pressure_ = std::move(solver); }
+  /// The new sub-solver shares the solver's threads (FluidParams::threads).
+  void set_advection_solver(std::unique_ptr<AdvectionSolver2> solver) {
+    advection_ = std::move(solver);
+    advection_->set_workers(workers_.get());
+  }
+  void set_diffusion_solver(std::unique_ptr<DiffusionSolver2> solver) {
+    diffusion_ = std::move(solver);
+    diffusion_->set_workers(workers_.get());
+  }
+  void set_pressure_solver(std::unique_ptr<PressureSolver2> solver) {
+    pressure_ = std::move(solver);
+    pressure_->set_workers(workers_.get());
+  }
 
   // --- observables of the current state -------------------------------------------------
   double kinetic_energy_joule_per_m() const;
@@ -136,6 +148,7 @@ class FluidSolver2 {
   FluidStepReport run_step(double dt_s, double start_speed_m_per_s);
 
   FluidParams params_;
+  std::unique_ptr<WorkerPool> workers_;  // null with one thread
   MacGrid2 grid_;
   FaceVectorField2 force_density_;
   std::vector<Vec2> tracers_;
@@ -146,6 +159,7 @@ class FluidSolver2 {
   std::unique_ptr<DiffusionSolver2> diffusion_;
   std::unique_ptr<PressureSolver2> pressure_;
   Array2 u_scratch_, v_scratch_;
+  std::vector<double> row_energies_;  // scratch of summarize_flow
   VelocitySampler2 sampler_;
 };
 

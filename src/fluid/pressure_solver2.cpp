@@ -32,26 +32,32 @@ void projection_rhs(const MacGrid2& grid, Array2& b) {
   }
 }
 
-double max_abs_cell_flux_m2_per_s(const MacGrid2& grid) { return grid.dx_m * max_abs_flux_sum_m_per_s(grid); }
+double max_abs_cell_flux_m2_per_s(const MacGrid2& grid, WorkerPool* workers) {
+  return grid.dx_m * max_abs_flux_sum_m_per_s(grid, workers);
+}
 
-void subtract_gradient(MacGrid2& grid, const Walls& walls, const Array2& q, double factor_per_m) {
+void subtract_gradient(MacGrid2& grid, const Walls& walls, const Array2& q, double factor_per_m,
+                       WorkerPool* workers) {
   const int nx = grid.nx;
   const int ny = grid.ny;
   const double inv_dx = factor_per_m;
-  for (int j = 0; j < ny; ++j) {
-    const double* qr = q.row(j);
-    double* u = grid.u_m_per_s.row(j);
-    for (int i = 1; i < nx; ++i) u[i] -= (qr[i] - qr[i - 1]) * inv_dx;
-    // Open walls: ghost q = −q_interior half a cell beyond the wall (p = 0 on the wall).
-    if (!is_solid(walls.left)) u[0] -= (qr[0] + qr[0]) * inv_dx;
-    if (!is_solid(walls.right)) u[nx] += (qr[nx - 1] + qr[nx - 1]) * inv_dx;
-  }
-  for (int j = 1; j < ny; ++j) {
-    const double* q_s = q.row(j - 1);
-    const double* q_n = q.row(j);
-    double* v = grid.v_m_per_s.row(j);
-    for (int i = 0; i < nx; ++i) v[i] -= (q_n[i] - q_s[i]) * inv_dx;
-  }
+  // Rows of u and the interior rows of v, cut among threads; each face's update is independent.
+  for_pieces(workers, 0, ny, [&](int j0, int j1, int) {
+    for (int j = j0; j < j1; ++j) {
+      const double* qr = q.row(j);
+      double* u = grid.u_m_per_s.row(j);
+      for (int i = 1; i < nx; ++i) u[i] -= (qr[i] - qr[i - 1]) * inv_dx;
+      // Open walls: ghost q = −q_interior half a cell beyond the wall (p = 0 on the wall).
+      if (!is_solid(walls.left)) u[0] -= (qr[0] + qr[0]) * inv_dx;
+      if (!is_solid(walls.right)) u[nx] += (qr[nx - 1] + qr[nx - 1]) * inv_dx;
+    }
+    for (int j = std::max(j0, 1); j < j1; ++j) {
+      const double* q_s = q.row(j - 1);
+      const double* q_n = q.row(j);
+      double* v = grid.v_m_per_s.row(j);
+      for (int i = 0; i < nx; ++i) v[i] -= (q_n[i] - q_s[i]) * inv_dx;
+    }
+  });
   if (!is_solid(walls.bottom)) {
     double* v = grid.v_m_per_s.row(0);
     const double* qr = q.row(0);

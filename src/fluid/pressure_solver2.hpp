@@ -18,6 +18,7 @@
 #include "fluid/fluid_params.hpp"
 #include "fluid/linear_solve.hpp"
 #include "fluid/mac_grid2.hpp"
+#include "fluid/worker_pool.hpp"
 
 namespace creaturelab::fluid {
 
@@ -29,6 +30,11 @@ class PressureSolver2 {
   /// stores p = q ρ / dt in grid.pressure_pa. The grid's previous pressure is the warm start of
   /// iterative solvers. The report's residual is measured on the updated velocity.
   virtual LinearSolveReport project(MacGrid2& grid, const Walls& walls, double density_kg_per_m3, double dt_s) = 0;
+  /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
+  void set_workers(WorkerPool* workers) { workers_ = workers; }
+
+ protected:
+  WorkerPool* workers_ = nullptr;
 };
 
 std::unique_ptr<PressureSolver2> make_pressure_solver(const FluidParams& params);
@@ -39,7 +45,9 @@ std::unique_ptr<PressureSolver2> make_pressure_solver(const FluidParams& params)
 void projection_rhs(const MacGrid2& grid, Array2& b);
 /// u ← u − factor · Δφ across every unknown face (interior faces and open-wall faces, with
 /// ghost φ = −φ beyond an open wall): factor = 1/dx for φ = q, dt/(ρ dx) for φ = p.
-void subtract_gradient(MacGrid2& grid, const Walls& walls, const Array2& phi, double factor_per_m);
+/// With workers, threads share the rows (bitwise the same result).
+void subtract_gradient(MacGrid2& grid, const Walls& walls, const Array2& phi, double factor_per_m,
+                       WorkerPool* workers = nullptr);
 inline void subtract_gradient(MacGrid2& grid, const Walls& walls, const Array2& q) {
   subtract_gradient(grid, walls, q, 1.0 / grid.dx_m);
 }
@@ -48,6 +56,6 @@ void apply_pressure_matrix(const Walls& walls, const Array2& x, Array2& y);
 /// Diagonal of A: number of neighbour cells + 2 per adjacent open wall.
 void pressure_matrix_diagonal(const Walls& walls, int nx, int ny, Array2& diagonal);
 /// max over cells of |dx · flux sum| = ‖A q − b‖∞ after the update.
-double max_abs_cell_flux_m2_per_s(const MacGrid2& grid);
+double max_abs_cell_flux_m2_per_s(const MacGrid2& grid, WorkerPool* workers = nullptr);
 
 }  // namespace creaturelab::fluid

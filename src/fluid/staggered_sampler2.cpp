@@ -2,34 +2,62 @@
 
 namespace creaturelab::fluid {
 
-void StaggeredComponent2::assign(FaceAxis axis, const Array2& values, const Walls& walls) {
+Array2& StaggeredComponent2::prepare(FaceAxis axis, int nx, int ny) {
+  axis_ = axis;
   if (axis == FaceAxis::x) {
-    // values: (nx + 1) × ny, tangential to the bottom and top walls.
-    const int nx = values.nx() - 1;
-    const int ny = values.ny();
+    // u: (nx + 1) × ny, tangential to the bottom and top walls: ghost rows 0 and ny + 1.
     padded_.resize(nx + 1, ny + 2);
-    for (int j = 0; j < ny; ++j) {
-      std::copy(values.row(j), values.row(j) + (nx + 1), padded_.row(j + 1));
-    }
-    for (int i = 0; i <= nx; ++i) {
-      padded_(i, 0) = tangential_ghost(walls.bottom, values(i, 0));
-      padded_(i, ny + 1) = tangential_ghost(walls.top, values(i, ny - 1));
-    }
     view_ = SampleView{padded_.data(), nx + 1, 0.0, 0.5, static_cast<double>(nx), static_cast<double>(ny), nx - 1, ny};
   } else {
-    // values: nx × (ny + 1), tangential to the left and right walls.
-    const int nx = values.nx();
-    const int ny = values.ny() - 1;
+    // v: nx × (ny + 1), tangential to the left and right walls: ghost columns 0 and nx + 1.
     padded_.resize(nx + 2, ny + 1);
-    for (int j = 0; j <= ny; ++j) {
-      const double* src = values.row(j);
-      double* dst = padded_.row(j);
-      std::copy(src, src + nx, dst + 1);
-      dst[0] = tangential_ghost(walls.left, src[0]);
-      dst[nx + 1] = tangential_ghost(walls.right, src[nx - 1]);
-    }
     view_ = SampleView{padded_.data(), nx + 2, 0.5, 0.0, static_cast<double>(nx), static_cast<double>(ny), nx, ny - 1};
   }
+  return padded_;
+}
+
+void StaggeredComponent2::fill_ghosts(const Walls& walls) {
+  if (axis_ == FaceAxis::x) {
+    const int nx = padded_.nx() - 1;
+    const int ny = padded_.ny() - 2;
+    for (int i = 0; i <= nx; ++i) {
+      padded_(i, 0) = tangential_ghost(walls.bottom, padded_(i, 1));
+      padded_(i, ny + 1) = tangential_ghost(walls.top, padded_(i, ny));
+    }
+  } else {
+    const int nx = padded_.nx() - 2;
+    const int ny = padded_.ny() - 1;
+    for (int j = 0; j <= ny; ++j) {
+      double* row = padded_.row(j);
+      row[0] = tangential_ghost(walls.left, row[1]);
+      row[nx + 1] = tangential_ghost(walls.right, row[nx]);
+    }
+  }
+}
+
+void StaggeredComponent2::finish(const Walls& walls) {
+  if (axis_ == FaceAxis::x) {
+    const int nx = padded_.nx() - 1;
+    const int ny = padded_.ny() - 2;
+    for (int j = 0; j < ny; ++j) {
+      if (is_solid(walls.left)) interior_row(j)[0] = 0.0;
+      if (is_solid(walls.right)) interior_row(j)[nx] = 0.0;
+    }
+  } else {
+    const int nx = padded_.nx() - 2;
+    const int ny = padded_.ny() - 1;
+    if (is_solid(walls.bottom)) std::fill(interior_row(0), interior_row(0) + nx, 0.0);
+    if (is_solid(walls.top)) std::fill(interior_row(ny), interior_row(ny) + nx, 0.0);
+  }
+  fill_ghosts(walls);
+}
+
+void StaggeredComponent2::assign(FaceAxis axis, const Array2& values, const Walls& walls) {
+  const int nx = axis == FaceAxis::x ? values.nx() - 1 : values.nx();
+  const int ny = axis == FaceAxis::x ? values.ny() : values.ny() - 1;
+  prepare(axis, nx, ny);
+  for (int j = 0; j < values.ny(); ++j) std::copy(values.row(j), values.row(j) + values.nx(), interior_row(j));
+  fill_ghosts(walls);
 }
 
 }  // namespace creaturelab::fluid

@@ -74,19 +74,44 @@ struct SampleView {
     const __m128d zero = _mm_setzero_pd();
     X = _mm_min_pd(_mm_max_pd(X, zero), _mm_set1_pd(x_max));  // maxpd returns 0 for NaN
     Y = _mm_min_pd(_mm_max_pd(Y, zero), _mm_set1_pd(y_max));
-    const __m128d fx = _mm_add_pd(X, _mm_set1_pd(offset_x));
-    const __m128d fy = _mm_add_pd(Y, _mm_set1_pd(offset_y));
+    return sample2_clamped(X, Y, lo, hi);
+  }
+
+  /// sample2() for positions already clamped to [0, x_max] × [0, y_max] (the u and v views of
+  /// one grid share the domain, so a caller sampling both clamps once).
+  __m128d sample2_clamped(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
+    return sample2_shifted(_mm_add_pd(X, _mm_set1_pd(offset_x)), _mm_add_pd(Y, _mm_set1_pd(offset_y)), lo, hi);
+  }
+
+  /// sample2_clamped() of a component on kAxis faces, whose offset along kAxis is 0
+  /// (StaggeredComponent2: u (0, ½), v (½, 0)). A clamped coordinate is ≥ +0 (maxpd(−0, 0) = +0),
+  /// so adding the zero offset is exact and is skipped: the same bits, one addition fewer.
+  template <FaceAxis kAxis>
+  __m128d sample2_clamped_on(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
+    if constexpr (kAxis == FaceAxis::x) return sample2_shifted(X, _mm_add_pd(Y, _mm_set1_pd(offset_y)), lo, hi);
+    return sample2_shifted(_mm_add_pd(X, _mm_set1_pd(offset_x)), Y, lo, hi);
+  }
+  /// sample2() of a component on kAxis faces (see sample2_clamped_on).
+  template <FaceAxis kAxis>
+  __m128d sample2_on(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
+    const __m128d zero = _mm_setzero_pd();
+    X = _mm_min_pd(_mm_max_pd(X, zero), _mm_set1_pd(x_max));  // maxpd returns 0 for NaN
+    Y = _mm_min_pd(_mm_max_pd(Y, zero), _mm_set1_pd(y_max));
+    return sample2_clamped_on<kAxis>(X, Y, lo, hi);
+  }
+
+  /// The interpolation at padded-index coordinates (fx, fy) = clamped position + offset.
+  __m128d sample2_shifted(__m128d fx, __m128d fy, __m128d* lo, __m128d* hi) const {
     // Truncation of non-negative values, then the upper index limit, all in doubles.
     const __m128d i0 = _mm_min_pd(_mm_cvtepi32_pd(_mm_cvttpd_epi32(fx)), _mm_set1_pd(i_max));
     const __m128d j0 = _mm_min_pd(_mm_cvtepi32_pd(_mm_cvttpd_epi32(fy)), _mm_set1_pd(j_max));
     const __m128d tx = _mm_sub_pd(fx, i0);
     const __m128d ty = _mm_sub_pd(fy, j0);
-    const __m128i ii = _mm_cvttpd_epi32(i0);
-    const __m128i jj = _mm_cvttpd_epi32(j0);
-    const long i_a = _mm_cvtsi128_si32(ii), i_b = _mm_cvtsi128_si32(_mm_shuffle_epi32(ii, 1));
-    const long j_a = _mm_cvtsi128_si32(jj), j_b = _mm_cvtsi128_si32(_mm_shuffle_epi32(jj, 1));
-    const double* ra = data + j_a * stride + i_a;
-    const double* rb = data + j_b * stride + i_b;
+    // The element offset j0 · stride + i0 is an integer far below 2^31, exact in doubles: one
+    // conversion and two extractions instead of two and four.
+    const __m128i offset = _mm_cvttpd_epi32(_mm_add_pd(_mm_mul_pd(j0, _mm_set1_pd(static_cast<double>(stride))), i0));
+    const double* ra = data + _mm_cvtsi128_si32(offset);
+    const double* rb = data + _mm_cvtsi128_si32(_mm_shuffle_epi32(offset, 1));
     const __m128d low_a = _mm_loadu_pd(ra), high_a = _mm_loadu_pd(ra + stride);
     const __m128d low_b = _mm_loadu_pd(rb), high_b = _mm_loadu_pd(rb + stride);
     const __m128d col_a = _mm_add_pd(low_a, _mm_mul_pd(_mm_unpacklo_pd(ty, ty), _mm_sub_pd(high_a, low_a)));
@@ -125,6 +150,15 @@ class StaggeredComponent2 {
   /// ghost layer from the walls. Reuses its storage between calls.
   void assign(FaceAxis axis, const Array2& values, const Walls& walls);
 
+  /// For writing a component straight into the padded storage (no copy): shapes it for a grid of
+  /// nx × ny cells and returns it. Element (i, j) of the component is interior_row(j)[i]. Write
+  /// every unknown face, then call finish(), which zeroes the solid walls' normal faces and
+  /// fills the ghosts: the same state as assign() of those values.
+  Array2& prepare(FaceAxis axis, int nx, int ny);
+  double* interior_row(int j) { return axis_ == FaceAxis::x ? padded_.row(j + 1) : padded_.row(j) + 1; }
+  const double* interior_row(int j) const { return axis_ == FaceAxis::x ? padded_.row(j + 1) : padded_.row(j) + 1; }
+  void finish(const Walls& walls);
+
   /// Bilinear interpolation at (X, Y) in cell units, clamped to [0, nx] × [0, ny].
   double sample(double X, double Y) const { return view_.sample(X, Y); }
   double sample(double X, double Y, double& lo, double& hi) const { return view_.sample(X, Y, lo, hi); }
@@ -135,6 +169,8 @@ class StaggeredComponent2 {
   const SampleView& view() const { return view_; }
 
  private:
+  void fill_ghosts(const Walls& walls);
+  FaceAxis axis_ = FaceAxis::x;
   Array2 padded_;
   SampleView view_;
 };

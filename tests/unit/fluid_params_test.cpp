@@ -67,6 +67,7 @@ TEST(FluidParams, SolverSettingsAreChecked) {
   params.cfl_safety_factor = -0.5;
   params.max_step_s = 0.0;
   params.blowup_speed_m_per_s = std::numeric_limits<double>::infinity();
+  params.threads = 0;
   const std::string message = params.validate();
   EXPECT_NE(message.find("pressure_tolerance must lie between 0 and 1"), std::string::npos) << message;
   EXPECT_NE(message.find("viscosity_max_iterations must be at least 1 (got 0)"), std::string::npos) << message;
@@ -74,6 +75,7 @@ TEST(FluidParams, SolverSettingsAreChecked) {
   EXPECT_NE(message.find("max_step_s must be a positive number of seconds (got 0)"), std::string::npos) << message;
   EXPECT_NE(message.find("blowup_speed_m_per_s must be a positive number of m/s (got inf)"), std::string::npos)
       << message;
+  EXPECT_NE(message.find("threads must be between 1 and 16 (got 0)"), std::string::npos) << message;
 }
 
 TEST(FluidParams, SolverRefusesInvalidParameters) {

@@ -150,6 +150,43 @@ TEST(Viscosity, EigenmodeDecaysByTheBackwardEulerFactor) {
   EXPECT_EQ(max_abs(grid.u_m_per_s), 0.0);
 }
 
+// Where Richardson sweeps replace CG (10 α ≤ ImplicitDiffusion2::kSweepContraction), the
+// result meets the same tolerance: against a solve to 1e-14 (the sweeps cannot reach it in
+// kMaxSweeps, so CG finishes it), the default 1e-10 solve differs by at most 1e-10 ‖b‖∞
+// (A = I + α L with L ≥ 0, so ‖x − x*‖ ≤ ‖b − A x‖). A rough field (grid-scale noise on a
+// vortex) at two α near the limit, with no-slip and moving walls.
+TEST(Viscosity, RichardsonSweepsMeetTheToleranceOfCg) {
+  const int nx = 40, ny = 30;
+  const double dx = 0.01;
+  Walls walls;
+  walls.bottom.type = WallType::no_slip;
+  walls.top.type = WallType::moving;
+  walls.top.tangential_velocity_m_per_s = 0.05;
+  for (double ten_alpha : {0.06, 0.1}) {
+    const double alpha = 0.1 * ten_alpha;
+    ASSERT_LE(ten_alpha, ImplicitDiffusion2::kSweepContraction);
+    MacGrid2 grid(nx, ny, dx);
+    set_vortex_pair(grid, VortexPair{});
+    enforce_wall_normal_velocity(grid, walls);  // the stage's precondition
+    for (int j = 0; j < ny; ++j)
+      for (int i = 1; i < nx; ++i) grid.u_m_per_s(i, j) += 1e-3 * (((i * 7 + j * 13) % 5) - 2);
+    for (int j = 1; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) grid.v_m_per_s(i, j) += 1e-3 * (((i * 11 + j * 3) % 7) - 3);
+    const double b_norm = std::max(max_abs(grid.u_m_per_s), max_abs(grid.v_m_per_s)) + 2.0 * alpha * 0.05;
+    MacGrid2 tight = grid;
+    const double nu = 1e-3, dt = alpha * dx * dx / nu;
+    ImplicitDiffusion2 fast(1e-10, 100), reference(1e-14, 1000);
+    const LinearSolveReport r = fast.diffuse_velocity(grid, walls, nu, dt);
+    EXPECT_TRUE(r.converged);
+    EXPECT_LE(r.relative_residual, 1e-10);
+    EXPECT_TRUE(reference.diffuse_velocity(tight, walls, nu, dt).converged);
+    EXPECT_LE(max_abs_difference(grid.u_m_per_s.data(), tight.u_m_per_s.data(), grid.u_m_per_s.size()), 1e-10 * b_norm)
+        << "10 alpha = " << ten_alpha;
+    EXPECT_LE(max_abs_difference(grid.v_m_per_s.data(), tight.v_m_per_s.data(), grid.v_m_per_s.size()), 1e-10 * b_norm)
+        << "10 alpha = " << ten_alpha;
+  }
+}
+
 // Couette flow: a moving top wall over a no-slip bottom, open at both ends. A backward-Euler
 // step with a very long dt reaches the steady profile u = U y / H, which the ghost values
 // represent exactly.

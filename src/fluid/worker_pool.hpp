@@ -1,0 +1,105 @@
+#pragma once
+// Threads inside one fluid step that cannot change its results (DESIGN.md: parallelism inside a
+// solver "only where the result cannot change"; Box2D v3 runs its solver stages on workers the
+// same way and checks it by a hash over 1..32 workers).
+//
+// The rule that makes results independent of the thread count: work is cut into pieces by
+// index alone (rows, lanes, modes), every piece computes exactly what the serial loop computed
+// for it and writes only its own outputs, and a reduction is either order-free (maxima) or
+// kept per row and summed afterwards in row order. Which thread runs a piece, and how many
+// threads there are, then only changes the time. tests/unit/fluid_threads_test.cpp compares
+// the state after many steps bitwise for 1, 2 and 3 threads.
+//
+// One pool per solver; its workers spin for a short while after a task (a step runs a few
+// dozen short parallel loops) and then sleep on a condition variable. The spinning is CPU time
+// and is counted by the benchmarks (tests/bench/bench_fluid.cpp reports process CPU time).
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace creaturelab::fluid {
+
+/// A loop is cut into kPartsPerThread pieces per thread, claimed by whichever thread is free:
+/// on a machine whose cores are shared with other work a thread that loses its core holds up
+/// only a small piece, which the others do not wait for to start.
+inline constexpr int kPartsPerThread = 4;
+/// Most pieces of a loop: per-piece partial results of reductions live in fixed arrays of this
+/// size, so that no step allocates.
+inline constexpr int kMaxParts = 64;
+/// Most threads a pool runs (FluidParams::validate checks it).
+inline constexpr int kMaxThreads = kMaxParts / kPartsPerThread;
+
+class WorkerPool {
+ public:
+  /// The calling thread plus threads − 1 workers (threads clamped to 1 .. kMaxThreads).
+  explicit WorkerPool(int threads);
+  ~WorkerPool();
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+
+  int threads() const { return threads_; }
+  /// Parts of each task: 1 with one thread, else kPartsPerThread per thread.
+  int parts() const { return parts_; }
+
+  /// Calls task(part) once for each part = 0 .. parts() − 1 and returns when all have
+  /// finished: part 0 on the calling thread, the others on whichever thread claims them first
+  /// (the caller too, when the workers are slow to start). Tasks must not throw. Not reentrant.
+  template <class Task>
+  void run(Task&& task) {
+    if (threads_ == 1) {
+      task(0);
+      return;
+    }
+    using T = std::remove_reference_t<Task>;
+    dispatch([](void* t, int part) { (*static_cast<T*>(t))(part); }, const_cast<void*>(static_cast<const void*>(&task)));
+  }
+
+  /// Piece `part` of [begin, end) cut into `parts` contiguous pieces of nearly equal size.
+  static std::pair<int, int> piece(int begin, int end, int part, int parts) {
+    const long n = end - begin;
+    return {begin + static_cast<int>(n * part / parts), begin + static_cast<int>(n * (part + 1) / parts)};
+  }
+
+ private:
+  void dispatch(void (*function)(void*, int), void* task);
+  void run_parts();
+  void work();
+
+  int threads_ = 1;
+  int parts_ = 1;
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::atomic<std::uint64_t> generation_{0};
+  std::atomic<int> next_part_{1};  // the next part to claim; ≥ parts_ when all are taken
+  std::atomic<int> done_{0};       // parts 1.. finished in this task
+  std::atomic<bool> stop_{false};
+  void (*function_)(void*, int) = nullptr;
+  void* task_ = nullptr;
+};
+
+/// Runs body(begin_k, end_k, part) over [begin, end) cut into pool->parts() pieces (serially,
+/// as one piece, when pool is null). body must give each index the same result whatever piece
+/// it falls in.
+template <class Body>
+void for_pieces(WorkerPool* pool, int begin, int end, Body&& body) {
+  if (pool == nullptr || pool->parts() == 1) {
+    if (begin < end) body(begin, end, 0);
+    return;
+  }
+  const int parts = pool->parts();
+  pool->run([&](int part) {
+    const auto [lo, hi] = WorkerPool::piece(begin, end, part, parts);
+    if (lo < hi) body(lo, hi, part);
+  });
+}
+
+/// Number of pieces for_pieces() uses (≤ kMaxParts): per-piece scratch is indexed by part.
+inline int piece_count(const WorkerPool* pool) { return pool == nullptr ? 1 : pool->parts(); }
+
+}  // namespace creaturelab::fluid
