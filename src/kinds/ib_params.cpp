@@ -9,6 +9,9 @@ std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& d) {
       real("density_kg_per_m3", 1000.0, "kg/m^3", 1e-3, 1e6, d.density_doc),
       real("kinematic_viscosity_m2_per_s", d.kinematic_viscosity_m2_per_s, "m^2/s", 0, 10, d.viscosity_doc),
       choice("advection", d.advection, {"semi_lagrangian", "maccormack"}, d.advection_doc),
+      integer("fluid_threads", 1, 1, 16,
+              "threads inside each fluid step; results are bitwise the same for any count (fluid/worker_pool.hpp). "
+              "Helps only on idle cores: on a loaded machine two were slower than one"),
   };
 }
 
@@ -28,6 +31,7 @@ fluid::FluidParams fluidBoxParams(const ParamReader& r) {
   f.density_kg_per_m3 = r.real("density_kg_per_m3");
   f.kinematic_viscosity_m2_per_s = r.real("kinematic_viscosity_m2_per_s");
   f.advection = *fluid::parse_advection_scheme(r.text("advection"));
+  f.threads = int(r.integer("fluid_threads"));
   // The coupled step is fixed; a fluid running away is caught as a blow-up.
   f.time_step_policy = fluid::TimeStepPolicy::fixed;
   f.fixed_step_s = r.real("dt_s");

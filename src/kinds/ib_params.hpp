@@ -24,7 +24,7 @@ struct FluidBoxDefaults {
   std::string advection = "semi_lagrangian";
 };
 
-// domain_m, cells, density_kg_per_m3, kinematic_viscosity_m2_per_s, advection.
+// domain_m, cells, density_kg_per_m3, kinematic_viscosity_m2_per_s, advection, fluid_threads.
 std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& defaults);
 
 // What each kind says about the coupling.
