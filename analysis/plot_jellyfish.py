@@ -81,7 +81,8 @@ def short_label(sweep, k):
 
 
 def numeric_axis(sweep, wanted):
-    names = [wanted] if wanted else [n for n in sweep if n != "label"]
+    # The frequency first (Fig. 5's axis), when the run varies it.
+    names = [wanted] if wanted else ["contraction_hz"] + [n for n in sweep if n not in ("label", "contraction_hz")]
     for n in names:
         if n in sweep and np.issubdtype(sweep[n].dtype, np.number) and len(np.unique(sweep[n])) > 1:
             return n

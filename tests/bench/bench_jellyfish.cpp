@@ -118,14 +118,32 @@ BENCHMARK(BM_SimulatedSecondFluidThreads)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0);
 
-// The resolution the stagger and frequency experiments use (experiments/jellyfish/convergence.toml):
-// 200², the same 32-segment bell, dt 0.0025 s.
-void BM_SimulatedSecondResolved(benchmark::State& state) {
-  SwimmerConfig c = paperConfig(200, ib::Kernel::peskin4);
-  c.fluid.fixed_step_s = c.dt_s = 0.0025;
+// The grid study's bell (issue 13, experiments/jellyfish/convergence.toml): the kind's defaults,
+// active tension (5 N/m²) on the calibrated bell (B = 1e-4 N m), MacCormack advection, a box 1.5
+// times as tall as wide, markers half a cell apart (64 segments on 200², 128 on 400²), dt ∝ dx.
+// Issue 13 §4's goal: an 11 s point (10 s window + a 0.7 Hz warm-up cycle) in <= 60 s on one core,
+// i.e. >= 0.18 simulated s per CPU s at the converged grid.
+void BM_SimulatedSecondGridStudy(benchmark::State& state) {
+  const int cells = static_cast<int>(state.range(0));
+  SwimmerConfig c = paperConfig(cells, ib::Kernel::peskin4);
+  c.bell.segments = cells / 200 * 64;
+  c.bell.muscle_model = MuscleModel::active_tension;
+  c.bell.muscle_tension_n_per_m2 = 5.0;
+  c.bell.bending_rigidity_n_m = 1.0e-4;
+  c.fluid.advection = fluid::AdvectionScheme::maccormack;
+  c.fluid.cells_y = cells * 3 / 2;
+  c.fluid.domain_height_m = 1.5 * c.fluid.domain_width_m;
+  c.start_y_fraction = 0.2;
+  c.fluid.fixed_step_s = c.dt_s = 0.0025 * 200.0 / cells;
   measure(state, c);
 }
-BENCHMARK(BM_SimulatedSecondResolved)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(4.0);
+BENCHMARK(BM_SimulatedSecondGridStudy)
+    ->ArgNames({"cells"})
+    ->Arg(200)
+    ->Arg(400)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(4.0);
 
 }  // namespace
 }  // namespace creaturelab::jellyfish
