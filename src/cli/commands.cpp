@@ -12,6 +12,7 @@
 #include "runner/compare.hpp"
 #include "runner/experiment.hpp"
 #include "runner/store.hpp"
+#include "runner/verify.hpp"
 
 namespace creaturelab::cli {
 namespace fs = std::filesystem;
@@ -33,9 +34,10 @@ void parseSlice(const std::string& text, runner::RunOptions& o) {
   o.slice_count = n;
 }
 
-runner::Baseline loadBaseline(const std::string& path, double rtol, double atol) {
+runner::Baseline loadBaseline(const std::string& path, double rtol, double atol, bool verify) {
   if (fs::is_directory(path)) {
     const runner::StoredRun stored = runner::readIndex(path);
+    if (verify) runner::requireVerifiedRun(path, stored);
     runner::Baseline b{stored.experiment_path, stored.overrides, {{"default", {rtol, atol}}}, stored.table};
     return b;
   }
@@ -75,6 +77,7 @@ int Commands::run(const RunArgs& args) const {
   runner::RunOptions o = args.options;
   parseSlice(args.slice, o);
   const runner::RunReport report = runner::runExperiment(o, registry_, cluster_);
+  if (!report.write_error.empty()) std::fprintf(stderr, "error: %s\n", report.write_error.c_str());
   if (o.dry_run) {
     std::printf("%s", runner::describeExperiment(o.experiment_path, o.overrides, registry_).c_str());
     std::printf("\nwould write %d point file(s) to %s\n", report.total, report.out_dir.c_str());
@@ -107,8 +110,9 @@ int Commands::show(const std::string& file, const std::vector<std::string>& over
   return 0;
 }
 
-int Commands::check(const std::string& run_dir) const {
+int Commands::check(const std::string& run_dir, bool verify) const {
   const runner::StoredRun stored = runner::readIndex(run_dir);
+  if (verify) runner::requireVerifiedRun(run_dir, stored);
   const auto e = runner::loadExperimentText(stored.experiment_text, stored.experiment_path, stored.overrides, registry_);
   const auto outcomes = runner::evaluateChecks(e.checks, stored.table);
   std::printf("%s", runner::formatCheckTable(outcomes).c_str());
@@ -119,7 +123,8 @@ int Commands::check(const std::string& run_dir) const {
 
 int Commands::compare(const CompareArgs& args) const {
   const runner::StoredRun run = runner::readIndex(args.run);
-  const runner::Baseline baseline = loadBaseline(args.baseline, args.rtol, args.atol);
+  if (!args.no_verify) runner::requireVerifiedRun(args.run, run);
+  const runner::Baseline baseline = loadBaseline(args.baseline, args.rtol, args.atol, !args.no_verify);
   const runner::Comparison c = runner::compareTables(run.table, baseline);
   std::printf("%s", runner::formatComparison(c, !args.all).c_str());
   std::printf("%s: %s\n", args.run.c_str(), c.passed() ? "within tolerance of the baseline" : "OUTSIDE the baseline");
@@ -133,6 +138,7 @@ int Commands::baseline(const BaselineArgs& args) const {
   if (args.output.empty()) {
     std::fputs(text.c_str(), stdout);
   } else {
+    if (fs::is_directory(args.output)) throw UsageError(args.output + ": is a folder; expected a file to write");
     std::ofstream out(args.output);
     out << text;
     if (!out) throw UsageError(args.output + ": cannot write");
@@ -141,6 +147,8 @@ int Commands::baseline(const BaselineArgs& args) const {
 }
 
 int Commands::digest(const std::string& run_dir) const {
+  if (fs::exists(run_dir) && !fs::is_directory(run_dir))
+    throw UsageError(run_dir + ": is a file; expected a run folder (the --out of `creaturelab run`)");
   if (!fs::is_directory(run_dir)) throw UsageError(run_dir + ": no such run folder");
   std::vector<std::string> files;
   for (const auto& entry : fs::directory_iterator(run_dir)) {
@@ -156,6 +164,7 @@ int Commands::digest(const std::string& run_dir) const {
 
 int Commands::reproduce(const ReproduceArgs& args) const {
   toml::table list;
+  if (fs::is_directory(args.list)) throw UsageError(args.list + ": is a folder; expected a TOML file listing experiments");
   try {
     list = toml::parse_file(args.list);
   } catch (const toml::parse_error& e) {
