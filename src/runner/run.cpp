@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "core/text.hpp"
+#include "runner/cost.hpp"
 #include "runner/experiment.hpp"
 #include "runner/folder_lock.hpp"
 #include "runner/interrupt.hpp"
@@ -156,6 +157,7 @@ RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, co
   const kinds::Kind& kind = *registry.find(e.kind);
   const std::vector<Point> points = expandPoints(e, kind);
   checkSelections(e, points);
+  checkCost(e, kind, points, o.allow_long);
   const auto columns = sweepColumns(e);
 
   RunReport report;

@@ -165,6 +165,17 @@ expect = [0, 10]
 EOF
 expect_bad ratio_key 'denominator = {label="none"}: no point has label = "none" (the file has no [[case]] labels)' "$scratch/ratio_key.toml"
 
+# Explicit Euler at dt_s = "auto" picks 1.25e-7 s: refused with the estimate unless --allow-long.
+write euler_auto <<'EOF'
+kind = "strand"
+[params]
+integrator = "euler"
+EOF
+expect_bad euler_auto 'point 0 would take about 1.2e+08 time steps (dt = 1.25e-07 s (dt_s = "auto" for euler)' \
+  "$scratch/euler_auto.toml"
+grep -qF -- "--allow-long" "$scratch/euler_auto.stderr" || fail "euler_auto: does not mention --allow-long"
+"$bin" run "$scratch/euler_auto.toml" --allow-long --dry-run >/dev/null 2>&1 || fail "euler_auto: --allow-long still refused"
+
 # A folder where a file is expected says so.
 mkdir -p "$scratch/a_folder"
 expect_bad folder_as_file "$scratch/a_folder: is a folder; expected an experiment file" "$scratch/a_folder"
