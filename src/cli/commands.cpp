@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <toml++/toml.h>
 
 #include "io/hdf5.hpp"
@@ -62,6 +63,9 @@ int Commands::guard(const std::function<int()>& verb) const {
     return verb();
   } catch (const std::runtime_error& e) {
     if (primary()) std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const std::bad_alloc&) {
+    // Before the points run (expanding a huge sweep): a message, not an abort.
+    if (primary()) std::fprintf(stderr, "error: out of memory before any point ran (a sweep or grid too large?)\n");
   }
   return 2;
 }

@@ -30,10 +30,12 @@ class RunFailure : public std::runtime_error {
 };
 
 // What one point will cost, estimated from its parameters before it runs (cheaply: no stepping), so
-// the runner can refuse a point that would run for hours before any work starts. 0 = not known.
+// the runner can refuse a point that would run for hours, or not fit in memory, before any work
+// starts. 0 = not known.
 struct CostEstimate {
-  double steps = 0;    // time steps the solver will take
-  std::string detail;  // how: e.g. "dt = 1.25e-07 s (auto for euler) x 8 substeps over 15 s"
+  double steps = 0;         // time steps the solver will take
+  double memory_bytes = 0;  // peak memory of the point while it runs, its recorded Result included
+  std::string detail;       // how: e.g. "dt = 1.25e-07 s (auto for euler) x 8 substeps over 15 s"
 };
 
 class Kind {

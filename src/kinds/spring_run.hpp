@@ -36,7 +36,7 @@ CostEstimate springRunCost(const springs::Network<D>& net, const springs::State<
     std::snprintf(detail, sizeof detail, "dt = %.3g s (%s%s), %d substep(s) per %.3g s frame, %.3g s simulated",
                   e.dt_s, options.dt_s == 0 ? "dt_s = \"auto\" for " : "", integrator.c_str(), e.substeps_per_frame,
                   options.frame_interval_s, options.end_time_s);
-    return {e.steps, detail};
+    return {e.steps, 0, detail};
   } catch (const std::exception&) {
     return {};  // no stable step at all: simulate() says why when the point runs
   }

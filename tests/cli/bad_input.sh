@@ -176,6 +176,19 @@ expect_bad euler_auto 'point 0 would take about 1.2e+08 time steps (dt = 1.25e-0
 grep -qF -- "--allow-long" "$scratch/euler_auto.stderr" || fail "euler_auto: does not mention --allow-long"
 "$bin" run "$scratch/euler_auto.toml" --allow-long --dry-run >/dev/null 2>&1 || fail "euler_auto: --allow-long still refused"
 
+# A point whose stored fields cannot fit in memory: refused before it starts, never killed by the
+# kernel half-way (4096^2 cells x 1e6 stored frames: about 670 TB, more than any machine has).
+write memory <<'EOF'
+kind = "fluid"
+[params]
+cells = 4096
+end_time_s = 1000.0
+output_interval_s = 0.001
+EOF
+expect_bad memory "of memory but" "$scratch/memory.toml"
+grep -qF "point 0 needs about" "$scratch/memory.stderr" || fail "memory: does not name the point: $(cat "$scratch/memory.stderr")"
+grep -qF "4096^2 cells" "$scratch/memory.stderr" || fail "memory: does not say how: $(cat "$scratch/memory.stderr")"
+
 # A folder where a file is expected says so.
 mkdir -p "$scratch/a_folder"
 expect_bad folder_as_file "$scratch/a_folder: is a folder; expected an experiment file" "$scratch/a_folder"
