@@ -25,7 +25,10 @@ std::unique_lock<std::recursive_mutex> lockHdf5() {
 namespace detail {
 
 void silenceHdf5Errors() {
-  static bool silenced = false;  // guarded by the HDF5 lock
+  // Per thread: a thread-safe HDF5 keeps error-printing settings per thread, so a thread that
+  // never silenced its own (the runner's main thread writing the index after the workers wrote
+  // the points) would print HDF5's error stack to stderr.
+  thread_local bool silenced = false;
   if (!silenced) {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     silenced = true;

@@ -352,7 +352,16 @@ RunReport runShare(const ShareContext& c, RunReport report) {
 
   c.cluster.barrier();
   if (c.cluster.rank() != 0) return report;
-  writeIndexFromFiles(c, report, provenance);
+  try {
+    writeIndexFromFiles(c, report, provenance);
+  } catch (const ExperimentError&) {
+    throw;  // a point file of another configuration: a refusal (exit 2)
+  } catch (const std::exception& err) {
+    // Every point file is written; only the index is not (the disk filled): exit 3, not a crash.
+    removeTemporaries(report.out_dir, mine, o.slice_count == 1 && c.cluster.size() == 1);
+    report.write_error = "cannot write " + report.out_dir + "/index.h5: " + describeWriteError(err.what()) +
+                         "; every point file is written; free space and run again with --resume to write the index";
+  }
   return report;
 }
 

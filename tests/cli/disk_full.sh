@@ -38,4 +38,22 @@ with h5py.File(sys.argv[1] + "/index.h5", "r") as f:
     status = [s.decode() for s in f["sweep/status"][()]]
     assert status.count("ok") == int(sys.argv[2]), status
 PY
+! grep -qE "HDF5-DIAG|minor:" "$scratch/run.stderr" || fail "HDF5's error stack was printed: $(grep -m3 -E 'HDF5-DIAG|minor:' "$scratch/run.stderr")"
 echo "ok   disk full: exit 3, $n point files kept and listed: $(grep '^error:' "$scratch/run.stderr")"
+
+# The disk fills while index.h5 is written (every point fits, 152 KiB): exit 3 and a message, the
+# points stay; once there is space again, --resume writes the index.
+umount "$small"
+mount -t tmpfs -o size=152k tmpfs "$small"
+rc=0
+"$bin" run tests/cli/strand_sweep.toml --out "$run" --jobs 1 >/dev/null 2>"$scratch/index.stderr" || rc=$?
+[[ $rc == 3 ]] || fail "index on a full disk: exit code $rc, expected 3: $(tail -3 "$scratch/index.stderr")"
+grep -qF "error: cannot write $run/index.h5: no space left on device" "$scratch/index.stderr" ||
+  fail "index on a full disk: $(grep -v '^\[' "$scratch/index.stderr" | head -5)"
+[[ $(grep -vc '^\[' "$scratch/index.stderr") == 1 ]] || fail "index on a full disk: more than one message: $(grep -v '^\[' "$scratch/index.stderr" | head -5)"
+[[ -z $(find "$run" -name '*.tmp') ]] || fail "index on a full disk: temporary files left: $(ls "$run")"
+[[ $(find "$run" -maxdepth 1 -name 'point_*.h5' | wc -l) == 6 ]] || fail "index on a full disk: points missing: $(ls "$run")"
+mount -o remount,size=1m "$small"
+"$bin" run tests/cli/strand_sweep.toml --out "$run" --jobs 1 --resume >/dev/null 2>&1 || fail "--resume after freeing space failed"
+[[ -e $run/index.h5 ]] || fail "--resume after freeing space wrote no index"
+echo "ok   index on a full disk: exit 3, every point kept; --resume wrote the index once there was space"
