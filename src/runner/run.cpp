@@ -137,6 +137,11 @@ PointOutcome runPoint(const kinds::Kind& kind, const Point& point) {
   return out;
 }
 
+// A point file that could not be written (disk full) on one MPI rank: the ranks end with exit 3.
+struct PointWriteError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // What a share of the run needs besides the options: the experiment, its points and the folder lock.
 struct ShareContext {
   const RunOptions& o;
@@ -200,6 +205,9 @@ RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, co
   // Past this point an error on one rank would leave the others waiting: it ends them all.
   try {
     return runShare(context, report);
+  } catch (const PointWriteError& err) {
+    std::fprintf(stderr, "error (rank %d): %s\n", cluster.rank(), err.what());
+    cluster.abort(3);  // points were computed and some written: not a user error
   } catch (const std::exception& err) {
     std::fprintf(stderr, "error (rank %d): %s\n", cluster.rank(), err.what());
     cluster.abort(2);
@@ -332,7 +340,7 @@ RunReport runShare(const ShareContext& c, RunReport report) {
   for (auto& t : pool) t.join();
   if (!write_error.empty()) {
     removeTemporaries(report.out_dir, mine, o.slice_count == 1 && c.cluster.size() == 1);
-    if (c.cluster.size() > 1) throw std::runtime_error(write_error);
+    if (c.cluster.size() > 1) throw PointWriteError(write_error);
     progress.finish();
     report.ran = written;
     report.write_error = write_error;
