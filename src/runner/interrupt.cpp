@@ -20,7 +20,9 @@ InterruptGuard::InterruptGuard() {
   struct sigaction sa {};
   sa.sa_handler = recordSignal;
   sigemptyset(&sa.sa_mask);
-  sa.sa_flags = 0;  // no SA_RESTART: a blocking wait returns EINTR and the runner looks at the flag
+  // SA_RESTART: a worker's read or write that the signal lands in goes on instead of failing with
+  // EINTR; the runner's main thread polls the flag, it does not rely on being woken.
+  sa.sa_flags = SA_RESTART;
   sigaction(SIGINT, &sa, &g_old_int);
   sigaction(SIGTERM, &sa, &g_old_term);
   // A signal the parent chose to ignore (nohup, a background job of a script) stays ignored.
