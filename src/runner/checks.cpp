@@ -226,15 +226,17 @@ void checkSelections(const Experiment& experiment, const std::vector<Point>& poi
     for (const auto& [field, where] : selections) {
       if (where->empty()) continue;
       if (std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return matches(r, *where); })) continue;
-      const std::string head = experiment.path + ": check '" + c.name + "': " + field + " = {" + describeWhere(*where) + "}";
+      const std::string head =
+          experiment.path + ": check '" + c.name + "': " + field + " = {" + describeWhere(*where) + "}";
       for (const auto& [key, value] : *where) {
         if (key != "label" && !std::count(columns.begin(), columns.end(), key))
           throw ExperimentError(head + ": no point has the key '" + key + "'");
         const Where one{{key, value}};
         if (std::none_of(rows.begin(), rows.end(), [&](const Row& r) { return matches(r, one); }))
           throw ExperimentError(head + ": no point has " + key + " = " + kinds::describeValue(value) + " (" +
-                                (key == "label" && experiment.cases.empty() ? std::string("the file has no [[case]] labels")
-                                                                            : key + " takes " + valuesOf(key)) +
+                                (key == "label" && experiment.cases.empty()
+                                     ? std::string("the file has no [[case]] labels")
+                                     : key + " takes " + valuesOf(key)) +
                                 ")");
       }
       throw ExperimentError(head + ": no point has these values together");

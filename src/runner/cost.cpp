@@ -25,6 +25,7 @@ void checkCost(const Experiment& experiment, const kinds::Kind& kind, const std:
                const CostLimits& limits) {
   std::vector<double> memory;
   const Point* largest = nullptr;
+  double largest_bytes = 0;
   std::string largest_detail;
   for (const auto& p : points) {
     const kinds::CostEstimate cost = kind.estimateCost(p.params);
@@ -32,8 +33,9 @@ void checkCost(const Experiment& experiment, const kinds::Kind& kind, const std:
       throw ExperimentError(experiment.path + ": " + pointName(p) + " would take about " + format(cost.steps) +
                             " time steps (" + cost.detail + "), more than " + format(kMaxStepsWithoutAllowLong) +
                             ": give params.dt_s, choose another integrator, or pass --allow-long to run it anyway");
-    if (cost.memory_bytes > 0 && (memory.empty() || cost.memory_bytes > *std::max_element(memory.begin(), memory.end()))) {
+    if (cost.memory_bytes > largest_bytes) {
       largest = &p;
+      largest_bytes = cost.memory_bytes;
       largest_detail = cost.detail;
     }
     memory.push_back(cost.memory_bytes);
@@ -51,7 +53,8 @@ void checkCost(const Experiment& experiment, const kinds::Kind& kind, const std:
   if (largest && memory[0] > 0) {
     why = pointName(*largest) + " needs about " + gb(memory[0]) + " (" + largest_detail + ")";
     if (at_once > 1) why += "; " + std::to_string(at_once) + " points at once (--jobs) need about " + gb(points_bytes);
-    if (runner_bytes > 1e8) why += "; the runner's tables for " + std::to_string(points.size()) + " points about " + gb(runner_bytes);
+    if (runner_bytes > 1e8)
+      why += "; the runner's tables for " + std::to_string(points.size()) + " points about " + gb(runner_bytes);
   } else {
     why = "the runner's tables for " + std::to_string(points.size()) + " points need about " + gb(runner_bytes);
   }

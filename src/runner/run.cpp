@@ -165,7 +165,8 @@ RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, co
   {
     // The points this process computes at once: --jobs (default the cores), at most its share.
     const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-    const int share = int((points.size() + size_t(o.slice_count * cluster.size()) - 1) / size_t(o.slice_count * cluster.size()));
+    const size_t shares = size_t(o.slice_count * cluster.size());
+    const int share = int((points.size() + shares - 1) / shares);
     const CostLimits limits{o.allow_long, std::max(1, std::min(o.jobs > 0 ? o.jobs : cores, share)), memoryBudget()};
     checkCost(e, kind, points, limits);
   }
