@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <new>
 #include <toml++/toml.h>
 
 #include "io/hdf5.hpp"
@@ -12,6 +13,7 @@
 #include "runner/compare.hpp"
 #include "runner/experiment.hpp"
 #include "runner/store.hpp"
+#include "runner/verify.hpp"
 
 namespace creaturelab::cli {
 namespace fs = std::filesystem;
@@ -33,9 +35,10 @@ void parseSlice(const std::string& text, runner::RunOptions& o) {
   o.slice_count = n;
 }
 
-runner::Baseline loadBaseline(const std::string& path, double rtol, double atol) {
+runner::Baseline loadBaseline(const std::string& path, double rtol, double atol, bool verify) {
   if (fs::is_directory(path)) {
     const runner::StoredRun stored = runner::readIndex(path);
+    if (verify) runner::requireVerifiedRun(path, stored);
     runner::Baseline b{stored.experiment_path, stored.overrides, {{"default", {rtol, atol}}}, stored.table};
     return b;
   }
@@ -60,6 +63,9 @@ int Commands::guard(const std::function<int()>& verb) const {
     return verb();
   } catch (const std::runtime_error& e) {
     if (primary()) std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (const std::bad_alloc&) {
+    // Before the points run (expanding a huge sweep): a message, not an abort.
+    if (primary()) std::fprintf(stderr, "error: out of memory before any point ran (a sweep or grid too large?)\n");
   }
   return 2;
 }
@@ -75,6 +81,7 @@ int Commands::run(const RunArgs& args) const {
   runner::RunOptions o = args.options;
   parseSlice(args.slice, o);
   const runner::RunReport report = runner::runExperiment(o, registry_, cluster_);
+  if (!report.write_error.empty()) std::fprintf(stderr, "error: %s\n", report.write_error.c_str());
   if (o.dry_run) {
     std::printf("%s", runner::describeExperiment(o.experiment_path, o.overrides, registry_).c_str());
     std::printf("\nwould write %d point file(s) to %s\n", report.total, report.out_dir.c_str());
@@ -107,8 +114,9 @@ int Commands::show(const std::string& file, const std::vector<std::string>& over
   return 0;
 }
 
-int Commands::check(const std::string& run_dir) const {
+int Commands::check(const std::string& run_dir, bool verify) const {
   const runner::StoredRun stored = runner::readIndex(run_dir);
+  if (verify) runner::requireVerifiedRun(run_dir, stored);
   const auto e = runner::loadExperimentText(stored.experiment_text, stored.experiment_path, stored.overrides, registry_);
   const auto outcomes = runner::evaluateChecks(e.checks, stored.table);
   std::printf("%s", runner::formatCheckTable(outcomes).c_str());
@@ -119,7 +127,8 @@ int Commands::check(const std::string& run_dir) const {
 
 int Commands::compare(const CompareArgs& args) const {
   const runner::StoredRun run = runner::readIndex(args.run);
-  const runner::Baseline baseline = loadBaseline(args.baseline, args.rtol, args.atol);
+  if (!args.no_verify) runner::requireVerifiedRun(args.run, run);
+  const runner::Baseline baseline = loadBaseline(args.baseline, args.rtol, args.atol, !args.no_verify);
   const runner::Comparison c = runner::compareTables(run.table, baseline);
   std::printf("%s", runner::formatComparison(c, !args.all).c_str());
   std::printf("%s: %s\n", args.run.c_str(), c.passed() ? "within tolerance of the baseline" : "OUTSIDE the baseline");
@@ -133,6 +142,7 @@ int Commands::baseline(const BaselineArgs& args) const {
   if (args.output.empty()) {
     std::fputs(text.c_str(), stdout);
   } else {
+    if (fs::is_directory(args.output)) throw UsageError(args.output + ": is a folder; expected a file to write");
     std::ofstream out(args.output);
     out << text;
     if (!out) throw UsageError(args.output + ": cannot write");
@@ -141,6 +151,8 @@ int Commands::baseline(const BaselineArgs& args) const {
 }
 
 int Commands::digest(const std::string& run_dir) const {
+  if (fs::exists(run_dir) && !fs::is_directory(run_dir))
+    throw UsageError(run_dir + ": is a file; expected a run folder (the --out of `creaturelab run`)");
   if (!fs::is_directory(run_dir)) throw UsageError(run_dir + ": no such run folder");
   std::vector<std::string> files;
   for (const auto& entry : fs::directory_iterator(run_dir)) {
@@ -156,6 +168,7 @@ int Commands::digest(const std::string& run_dir) const {
 
 int Commands::reproduce(const ReproduceArgs& args) const {
   toml::table list;
+  if (fs::is_directory(args.list)) throw UsageError(args.list + ": is a folder; expected a TOML file listing experiments");
   try {
     list = toml::parse_file(args.list);
   } catch (const toml::parse_error& e) {

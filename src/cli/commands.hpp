@@ -19,6 +19,7 @@ struct CompareArgs {
   std::string run, baseline;
   double rtol = 1e-9, atol = 0;
   bool all = false;
+  bool no_verify = false;  // trust index.h5 without checking the point files against it
 };
 
 struct BaselineArgs {
@@ -40,7 +41,7 @@ class Commands {
   int run(const RunArgs& args) const;
   int list(const std::string& kind) const;
   int show(const std::string& file, const std::vector<std::string>& overrides) const;
-  int check(const std::string& run_dir) const;
+  int check(const std::string& run_dir, bool verify) const;
   int compare(const CompareArgs& args) const;
   int baseline(const BaselineArgs& args) const;
   int digest(const std::string& run_dir) const;

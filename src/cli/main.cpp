@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
   run->add_flag("--force", run_args.options.force, "replace an earlier run in the folder");
   run->add_flag("--dry-run", run_args.options.dry_run, "check the file and print the plan; write nothing");
   run->add_option("--points", run_args.slice, "run only the share i of N (i/N: points with index % N == i)");
+  run->add_flag("--allow-long", run_args.options.allow_long,
+                "run points estimated to take very many steps (explicit integrators with dt_s = \"auto\")");
 
   std::string kind_name;
   auto* list = app.add_subcommand("list", "every kind and each parameter with unit, default, range and doc");
@@ -41,6 +43,8 @@ int main(int argc, char** argv) {
   std::string run_dir;
   auto* check = app.add_subcommand("check", "evaluate the experiment's checks on a finished run");
   check->add_option("run", run_dir, "run folder")->required();
+  bool check_no_verify = false;
+  check->add_flag("--no-verify", check_no_verify, "trust index.h5 without checking each point file against it");
 
   cli::CompareArgs cmp;
   auto* compare = app.add_subcommand("compare", "compare a run with a baseline (JSON or another run folder)");
@@ -49,6 +53,7 @@ int main(int argc, char** argv) {
   compare->add_option("--rtol", cmp.rtol, "relative tolerance when the baseline is a run folder");
   compare->add_option("--atol", cmp.atol, "absolute tolerance when the baseline is a run folder");
   compare->add_flag("--all", cmp.all, "show every value, not only those outside tolerance");
+  compare->add_flag("--no-verify", cmp.no_verify, "trust index.h5 without checking each point file against it");
 
   cli::BaselineArgs base;
   auto* baseline = app.add_subcommand("baseline", "write a run's metrics as a baseline JSON");
@@ -104,7 +109,7 @@ int main(int argc, char** argv) {
     if (*run) return commands.run(run_args);
     if (*list) return commands.list(kind_name);
     if (*show) return commands.show(file, overrides);
-    if (*check) return commands.check(run_dir);
+    if (*check) return commands.check(run_dir, !check_no_verify);
     if (*compare) return commands.compare(cmp);
     if (*baseline) return commands.baseline(base);
     if (*digest) return commands.digest(run_dir);

@@ -29,6 +29,15 @@ class RunFailure : public std::runtime_error {
   Result partial_;
 };
 
+// What one point will cost, estimated from its parameters before it runs (cheaply: no stepping), so
+// the runner can refuse a point that would run for hours, or not fit in memory, before any work
+// starts. 0 = not known.
+struct CostEstimate {
+  double steps = 0;         // time steps the solver will take
+  double memory_bytes = 0;  // peak memory of the point while it runs, its recorded Result included
+  std::string detail;       // how: e.g. "dt = 1.25e-07 s (auto for euler) x 8 substeps over 15 s"
+};
+
 class Kind {
  public:
   virtual ~Kind() = default;
@@ -39,6 +48,9 @@ class Kind {
   // Checks that need several parameters together; "" when the set is consistent.
   virtual std::string validate(const Params& params) const { (void)params; return ""; }
   virtual Result run(const Params& params) const = 0;
+  // See CostEstimate; a kind that cannot tell returns {}. Never throws: a point that cannot run
+  // says so in validate() or run().
+  virtual CostEstimate estimateCost(const Params& params) const { (void)params; return {}; }
 };
 
 // A kind whose schema is fixed when it is constructed: the constructor fills params_ and metrics_.

@@ -88,8 +88,16 @@ std::string StrandKind::validate(const Params& p) const {
   return "";
 }
 
-Result StrandKind::run(const Params& p) const {
-  ParamReader r(p);
+namespace {
+
+// The strand as laid out before it is released: network, initial state and run options.
+struct StrandSetup {
+  springs::Network<2> net;
+  springs::State<2> state;
+  springs::SimulationOptions opt;
+};
+
+StrandSetup setupOf(const ParamReader& r) {
   const Layout lay = layoutOf(r);
   const double rest = r.real("rest_length_m"), mass = r.real("mass_kg");
 
@@ -104,12 +112,6 @@ Result StrandKind::run(const Params& p) const {
   springs::State<2> state{springs::Points<2>::Zero(2, n), springs::Points<2>::Zero(2, n)};
   for (int i = 0; i < n; ++i) state.x_m(0, i) = lay.placement_m * i;
 
-  // The middle of the strand: the middle particle, or the mean of the two middle ones.
-  auto midSag = [n](const springs::State<2>& s) {
-    const double y = (n % 2) ? s.x_m(1, n / 2) : 0.5 * (s.x_m(1, n / 2 - 1) + s.x_m(1, n / 2));
-    return -y;
-  };
-
   springs::SimulationOptions opt;
   opt.integrator = parseIntegratorOrThrow(r.text("integrator"));
   opt.frame_interval_s = r.real("frame_interval_s");
@@ -117,6 +119,35 @@ Result StrandKind::run(const Params& p) const {
   opt.end_time_s = r.real("end_time_s");
   opt.settling_fraction = r.real("settling_fraction");
   opt.provot = {r.boolean("provot"), r.real("provot_max_strain"), int(r.integer("provot_passes"))};
+  return {std::move(net), std::move(state), opt};
+}
+
+}  // namespace
+
+CostEstimate StrandKind::estimateCost(const Params& p) const {
+  try {
+    ParamReader r(p);
+    const StrandSetup setup = setupOf(r);
+    return springRunCost(setup.net, setup.state, setup.opt, r.text("integrator"));
+  } catch (const std::exception&) {
+    return {};  // the point itself will say what is wrong
+  }
+}
+
+Result StrandKind::run(const Params& p) const {
+  ParamReader r(p);
+  const Layout lay = layoutOf(r);
+  StrandSetup setup = setupOf(r);
+  springs::Network<2>& net = setup.net;
+  springs::State<2>& state = setup.state;
+  const springs::SimulationOptions& opt = setup.opt;
+  const int n = int(state.x_m.cols());
+
+  // The middle of the strand: the middle particle, or the mean of the two middle ones.
+  auto midSag = [n](const springs::State<2>& s) {
+    const double y = (n % 2) ? s.x_m(1, n / 2) : 0.5 * (s.x_m(1, n / 2 - 1) + s.x_m(1, n / 2));
+    return -y;
+  };
 
   Result result;
   auto& sag = result.timeseries["mid_sag_m"] = {{}, "m"};

@@ -208,6 +208,38 @@ std::string WebKind::validate(const Params& p) const {
   return w.validate();
 }
 
+namespace {
+
+springs::SimulationOptions simulationOptions(const ParamReader& r) {
+  springs::SimulationOptions opt;
+  opt.integrator = parseIntegratorOrThrow(r.text("integrator"));
+  opt.frame_interval_s = r.real("frame_interval_s");
+  opt.dt_s = r.isAuto("dt_s") ? 0.0 : r.real("dt_s");
+  opt.auto_safety = r.real("auto_safety");
+  opt.end_time_s = r.real("end_time_s");
+  opt.settling_fraction = r.real("settling_fraction");
+  return opt;
+}
+
+}  // namespace
+
+// The step at the web as built (the run may start from the static shape instead: omega_max
+// changes little between the two, and this is an estimate).
+CostEstimate WebKind::estimateCost(const Params& p) const {
+  try {
+    ParamReader r(p);
+    std::string err;
+    const web::WebParams w = webParams(r, err);
+    if (!err.empty()) return {};
+    const springs::SimulationOptions opt = simulationOptions(r);
+    if (opt.end_time_s <= 0) return {};
+    const web::WebModel model = web::build(w);
+    return springRunCost(model.network, model.state, opt, r.text("integrator"));
+  } catch (const std::exception&) {
+    return {};  // the point itself will say what is wrong
+  }
+}
+
 Result WebKind::run(const Params& p) const {
   ParamReader r(p);
   std::string err;
@@ -262,13 +294,7 @@ Result WebKind::run(const Params& p) const {
     }
   };
 
-  springs::SimulationOptions opt;
-  opt.integrator = parseIntegratorOrThrow(r.text("integrator"));
-  opt.frame_interval_s = frame_s;
-  opt.dt_s = r.isAuto("dt_s") ? 0.0 : r.real("dt_s");
-  opt.auto_safety = r.real("auto_safety");
-  opt.end_time_s = r.real("end_time_s");
-  opt.settling_fraction = r.real("settling_fraction");
+  const springs::SimulationOptions opt = simulationOptions(r);
   const double nan = std::nan("");
   std::optional<double> settling;
   double dt_used = nan;

@@ -12,6 +12,7 @@ class WebKind : public SchemaKind {
   std::string doc() const override;
   std::string validate(const Params& params) const override;
   Result run(const Params& params) const override;
+  CostEstimate estimateCost(const Params& params) const override;
 };
 
 }  // namespace creaturelab::kinds

@@ -208,6 +208,56 @@ CheckOutcome evaluateCheck(const CheckSpec& c, const Table& table) {
   return out;
 }
 
+void checkSelections(const Experiment& experiment, const std::vector<Point>& points) {
+  // The rows the sweep will have, without metrics: enough to match selections against.
+  const auto columns = sweepColumns(experiment);
+  std::vector<Row> rows;
+  for (const auto& p : points) {
+    Row row;
+    row.index = p.index;
+    row.label = p.label;
+    for (const auto& c : columns) row.columns[c] = p.params.at(c);
+    rows.push_back(std::move(row));
+  }
+  // The distinct values a key takes over the sweep, for the message.
+  auto valuesOf = [&](const std::string& key) {
+    std::vector<std::string> values;
+    for (const auto& row : rows) {
+      const std::string v =
+          key == "label" ? kinds::describeValue(kinds::Value(row.label)) : kinds::describeValue(row.columns.at(key));
+      if (std::find(values.begin(), values.end(), v) == values.end()) values.push_back(v);
+    }
+    std::string out;
+    for (size_t i = 0; i < values.size() && i < 12; ++i) out += (i ? ", " : "") + values[i];
+    return values.size() > 12 ? out + ", ..." : out;
+  };
+  for (const auto& c : experiment.checks) {
+    const std::pair<const char*, const Where*> selections[] = {{"where", &c.where},
+                                                               {"numerator", &c.numerator},
+                                                               {"denominator", &c.denominator},
+                                                               {"numerator_base", &c.numerator_base},
+                                                               {"denominator_base", &c.denominator_base}};
+    for (const auto& [field, where] : selections) {
+      if (where->empty()) continue;
+      if (std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return matches(r, *where); })) continue;
+      const std::string head =
+          experiment.path + ": check '" + c.name + "': " + field + " = {" + describeWhere(*where) + "}";
+      for (const auto& [key, value] : *where) {
+        if (key != "label" && !std::count(columns.begin(), columns.end(), key))
+          throw ExperimentError(head + ": no point has the key '" + key + "'");
+        const Where one{{key, value}};
+        if (std::none_of(rows.begin(), rows.end(), [&](const Row& r) { return matches(r, one); }))
+          throw ExperimentError(head + ": no point has " + key + " = " + kinds::describeValue(value) + " (" +
+                                (key == "label" && experiment.cases.empty()
+                                     ? std::string("the file has no [[case]] labels")
+                                     : key + " takes " + valuesOf(key)) +
+                                ")");
+      }
+      throw ExperimentError(head + ": no point has these values together");
+    }
+  }
+}
+
 std::vector<CheckOutcome> evaluateChecks(const std::vector<CheckSpec>& checks, const Table& table) {
   std::vector<CheckOutcome> out;
   for (const auto& c : checks) out.push_back(evaluateCheck(c, table));

@@ -22,6 +22,11 @@ struct CheckOutcome {
 CheckOutcome evaluateCheck(const CheckSpec& check, const Table& table);
 std::vector<CheckOutcome> evaluateChecks(const std::vector<CheckSpec>& checks, const Table& table);
 
+// Before any point runs: every check's point selections (where, numerator, denominator, *_base)
+// must match a point of the sweep; a key or value no point has is an ExperimentError naming the
+// check, the key and the values the sweep does have.
+void checkSelections(const Experiment& experiment, const std::vector<Point>& points);
+
 // A plain-text table for the console.
 std::string formatCheckTable(const std::vector<CheckOutcome>& outcomes);
 

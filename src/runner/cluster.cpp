@@ -49,6 +49,13 @@ int Cluster::sumOnRoot(int value) const {
   return value;
 }
 
+int Cluster::broadcastFromRoot(int value) const {
+#ifdef CREATURELAB_HAVE_MPI
+  if (initialised_) MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+#endif
+  return value;
+}
+
 void Cluster::abort(int code) const {
 #ifdef CREATURELAB_HAVE_MPI
   if (initialised_) MPI_Abort(MPI_COMM_WORLD, code);

@@ -16,6 +16,8 @@ class Cluster {
   void barrier() const;
   // Sum of `value` over the ranks, on rank 0 (other ranks get their own value back).
   int sumOnRoot(int value) const;
+  // Rank 0's `value` on every rank: a decision rank 0 alone can take (the folder lock).
+  int broadcastFromRoot(int value) const;
   // Ends every rank with `code`: an error after the ranks split the work, where waiting at the
   // next barrier would hang the others.
   [[noreturn]] void abort(int code) const;

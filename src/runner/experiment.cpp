@@ -195,6 +195,8 @@ nlohmann::json resolvedJson(const Experiment& e) {
 
 Experiment loadExperiment(const std::string& path, const std::vector<std::string>& overrides,
                           const kinds::Registry& registry) {
+  if (std::filesystem::is_directory(path))
+    throw ExperimentError(path + ": is a folder; expected an experiment file (e.g. experiments/web/sag.toml)");
   return loadExperimentText(Context{path}.readText("experiment"), path, overrides, registry);
 }
 
@@ -279,6 +281,11 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
         cs.keys.push_back(name);
       }
       if (cs.label.empty()) cs.label = "case " + std::to_string(n - 1);
+      // A label names one case: checks select by it and the index lists it per row.
+      for (size_t other = 0; other < e.cases.size(); ++other)
+        if (e.cases[other].label == cs.label)
+          ctx.fail(key + ".label", "\"" + cs.label + "\" is already the label of case[" + std::to_string(other) +
+                                       "]; each [[case]] needs its own label", item.as_table()->get("label"));
       e.cases.push_back(std::move(cs));
     }
   }

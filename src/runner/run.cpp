@@ -5,13 +5,19 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <csignal>
+#include <functional>
 #include <filesystem>
 #include <mutex>
 #include <sstream>
 #include <thread>
 
 #include "core/text.hpp"
+#include "runner/cost.hpp"
 #include "runner/experiment.hpp"
+#include "runner/folder_lock.hpp"
+#include "runner/interrupt.hpp"
 #include "runner/progress.hpp"
 #include "runner/store.hpp"
 
@@ -25,7 +31,7 @@ bool RunReport::checksPassed() const {
 }
 
 int RunReport::exitCode() const {
-  if (failed > 0) return 3;
+  if (failed > 0 || !write_error.empty()) return 3;
   return checksPassed() ? 0 : 1;
 }
 
@@ -42,23 +48,61 @@ bool isRunFile(const fs::path& p) {
   // point_NNNNNN.h5, its .tmp, its .xdmf sidecar and its artifacts point_NNNNNN_<name> (renders).
   const bool point = name.rfind("point_", 0) == 0;
   const bool artifact = point && name.size() > 13 && name[12] == '_';
-  return name == "index.h5" || artifact ||
+  return name == "index.h5" || name == "index.h5.tmp" || artifact ||
          (point && (p.extension() == ".h5" || p.extension() == ".tmp" || p.extension() == ".xdmf"));
 }
 
-// Before any work: the folder must be writable, and an earlier run in it is only replaced or
-// continued when asked.
-void prepareOutputDir(const std::string& dir, const RunOptions& o) {
+// Before any work, on every rank (read-only): the folder must be creatable and writable.
+void checkWritable(const std::string& dir) {
   fs::path probe = fs::absolute(dir);
   while (!fs::exists(probe)) probe = probe.parent_path();
   if (!fs::is_directory(probe)) throw ExperimentError("output folder " + dir + ": " + probe.string() + " is not a folder");
   if (access(probe.c_str(), W_OK) != 0) throw ExperimentError("output folder " + dir + ": " + probe.string() + " is not writable");
-  if (!fs::exists(dir)) return;
+}
+
+// Under the folder lock: an earlier run in the folder is only replaced or continued when asked.
+void checkEarlierRun(const std::string& dir, const RunOptions& o) {
   bool has_run = false;
   for (const auto& entry : fs::directory_iterator(dir)) has_run |= isRunFile(entry.path());
   if (has_run && !o.resume && !o.force && o.slice_count == 1)
     throw ExperimentError("output folder " + dir +
                           " already holds a run: pass --resume to finish it, --force to replace it, or --out DIR");
+}
+
+// The point index of a run file's name (point_NNNNNN...), -1 for index.h5 and other names.
+int pointIndexOf(const std::string& name) {
+  if (name.rfind("point_", 0) != 0 || name.size() < 12) return -1;
+  int index = 0;
+  for (size_t i = 6; i < 12; ++i) {
+    if (name[i] < '0' || name[i] > '9') return -1;
+    index = index * 10 + (name[i] - '0');
+  }
+  return index;
+}
+
+// Removes the temporary files (*.tmp) this process may own: those of points in its share, and
+// index.h5.tmp when it holds the folder alone. A crash or a kill leaves them; nothing reads them.
+// Truncated first: a file HDF5 still holds open (a write that failed) frees its space only then.
+int removeTemporaries(const std::string& dir, const std::function<bool(int)>& mine, bool whole_folder) {
+  if (!fs::is_directory(dir)) return 0;
+  int removed = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.path().extension() != ".tmp" || !isRunFile(entry.path())) continue;
+    const int index = pointIndexOf(name);
+    if (index < 0 ? !whole_folder : !mine(index)) continue;
+    std::error_code ec;
+    fs::resize_file(entry.path(), 0, ec);
+    if (fs::remove(entry.path(), ec)) ++removed;
+  }
+  return removed;
+}
+
+// "no space left on device" when that is why a write failed (HDF5 reports errno 28 in its text).
+std::string describeWriteError(const std::string& what) {
+  if (what.find("errno = 28") != std::string::npos || what.find("No space left on device") != std::string::npos)
+    return "no space left on device";
+  return what;
 }
 
 void clearRun(const std::string& dir) {
@@ -93,8 +137,23 @@ PointOutcome runPoint(const kinds::Kind& kind, const Point& point) {
   return out;
 }
 
-RunReport runShare(const RunOptions& o, const Experiment& e, const kinds::Kind& kind, const std::vector<Point>& points,
-                   const std::vector<std::string>& columns, RunReport report, const Cluster& cluster);
+// A point file that could not be written (disk full) on one MPI rank: the ranks end with exit 3.
+struct PointWriteError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// What a share of the run needs besides the options: the experiment, its points and the folder lock.
+struct ShareContext {
+  const RunOptions& o;
+  const Experiment& e;
+  const kinds::Kind& kind;
+  const std::vector<Point>& points;
+  const std::vector<std::string>& columns;
+  const Cluster& cluster;
+  const FolderLock& lock;  // held by rank 0; other ranks write under rank 0's lock
+};
+
+RunReport runShare(const ShareContext& c, RunReport report);
 
 }  // namespace
 
@@ -102,6 +161,15 @@ RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, co
   const Experiment e = loadExperiment(o.experiment_path, o.overrides, registry);
   const kinds::Kind& kind = *registry.find(e.kind);
   const std::vector<Point> points = expandPoints(e, kind);
+  checkSelections(e, points);
+  {
+    // The points this process computes at once: --jobs (default the cores), at most its share.
+    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    const size_t shares = size_t(o.slice_count * cluster.size());
+    const int share = int((points.size() + shares - 1) / shares);
+    const CostLimits limits{o.allow_long, std::max(1, std::min(o.jobs > 0 ? o.jobs : cores, share)), memoryBudget()};
+    checkCost(e, kind, points, limits);
+  }
   const auto columns = sweepColumns(e);
 
   RunReport report;
@@ -110,16 +178,37 @@ RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, co
   if (o.dry_run) return report;
   // Every rank checks (read-only), so a user error stops every rank here alike, before any
   // rank waits for another.
-  prepareOutputDir(report.out_dir, o);
+  checkWritable(report.out_dir);
+  // Rank 0 alone takes the folder lock and looks at the folder under it (so two runs cannot both
+  // find it free); it tells the other ranks whether to go on, so a refusal ends every rank alike.
+  FolderLock lock;
+  std::string refusal;
   if (cluster.rank() == 0) {
-    if (o.force) clearRun(report.out_dir);
-    fs::create_directories(report.out_dir);
+    try {
+      fs::create_directories(report.out_dir);
+      lock = FolderLock::acquire(report.out_dir,
+                                 o.slice_count > 1 ? FolderLock::Mode::Shared : FolderLock::Mode::Exclusive);
+      checkEarlierRun(report.out_dir, o);
+      if (o.force) clearRun(report.out_dir);
+      // Temporaries left by a crash or a kill: of the whole folder when this run holds it
+      // alone, else (a --points share) only of this share's points.
+      const int removed = removeTemporaries(
+          report.out_dir, [&](int index) { return index % o.slice_count == o.slice_index; }, o.slice_count == 1);
+      if (removed > 0) std::fprintf(stderr, "removed %d temporary file(s) left by an earlier run\n", removed);
+    } catch (const std::exception& err) {
+      refusal = err.what();
+    }
   }
-  cluster.barrier();
-  if (cluster.size() == 1) return runShare(o, e, kind, points, columns, report, cluster);
+  if (cluster.broadcastFromRoot(refusal.empty() ? 1 : 0) == 0)
+    throw ExperimentError(cluster.rank() == 0 ? refusal : "rank 0 refused the output folder " + report.out_dir);
+  const ShareContext context{o, e, kind, points, columns, cluster, lock};
+  if (cluster.size() == 1) return runShare(context, report);
   // Past this point an error on one rank would leave the others waiting: it ends them all.
   try {
-    return runShare(o, e, kind, points, columns, report, cluster);
+    return runShare(context, report);
+  } catch (const PointWriteError& err) {
+    std::fprintf(stderr, "error (rank %d): %s\n", cluster.rank(), err.what());
+    cluster.abort(3);  // points were computed and some written: not a user error
   } catch (const std::exception& err) {
     std::fprintf(stderr, "error (rank %d): %s\n", cluster.rank(), err.what());
     cluster.abort(2);
@@ -128,20 +217,53 @@ RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, co
 
 namespace {
 
-RunReport runShare(const RunOptions& o, const Experiment& e, const kinds::Kind& kind, const std::vector<Point>& points,
-                   const std::vector<std::string>& columns, RunReport report, const Cluster& cluster) {
+// The index is built from the point files alone, so it is the same whoever computed them. A
+// point file of another configuration (a share run with other settings) is refused, never mixed.
+void writeIndexFromFiles(const ShareContext& c, RunReport& report, const Provenance& provenance) {
+  Table table{c.columns, {}, {}};
+  for (const auto& m : c.kind.metrics()) table.metrics.push_back(m.name);
+  report.failed = report.missing = 0;
+  for (const auto& p : c.points) {
+    table.rows.push_back(readPointRow(report.out_dir, p, c.columns, c.kind));
+    if (table.rows.back().status == "failed") ++report.failed;
+    if (table.rows.back().status == "missing") ++report.missing;
+  }
+  report.checks.clear();
+  report.checks_evaluated = false;
+  if (report.missing == 0) {
+    report.checks = evaluateChecks(c.e.checks, table);
+    report.checks_evaluated = true;
+  }
+  c.lock.lockIndex();  // shares finishing together take turns
+  writeIndex(report.out_dir, c.e, c.kind, table, report.checks, provenance);
+  c.lock.unlockIndex();
+}
+
+RunReport runShare(const ShareContext& c, RunReport report) {
+  const RunOptions& o = c.o;
   // This process's share: a --points slice and/or an MPI rank.
-  const int share_count = o.slice_count * cluster.size();
-  const int share_index = o.slice_index * cluster.size() + cluster.rank();
+  const int share_count = o.slice_count * c.cluster.size();
+  const int share_index = o.slice_index * c.cluster.size() + c.cluster.rank();
+  const auto mine = [&](int index) { return index % share_count == share_index; };
   std::vector<const Point*> todo;
-  for (const auto& p : points) {
-    if (p.index % share_count != share_index) continue;
+  for (const auto& p : c.points) {
     const std::string path = report.out_dir + "/" + pointFileName(p.index);
+    if (!mine(p.index)) {
+      // Another share's point (--points): a file of another configuration means two shares of
+      // different settings; refuse before running rather than mix them in one folder.
+      if (o.slice_count > 1 && fs::exists(path)) {
+        const std::string sha = readPointConfigSha(path);
+        if (!sha.empty() && sha != pointConfigSha(c.e.kind, p))
+          throw ExperimentError(path + " was made by a different configuration (another --points share with other "
+                                       "settings?); use --force or another --out");
+      }
+      continue;
+    }
     if (fs::exists(path)) {
       if (!o.resume && !o.force && o.slice_count == 1)
         throw ExperimentError(path + " exists: pass --resume or --force");
       const std::string sha = readPointConfigSha(path);
-      if (sha == pointConfigSha(e.kind, p)) {
+      if (sha == pointConfigSha(c.e.kind, p)) {
         ++report.skipped;
         continue;
       }
@@ -157,54 +279,98 @@ RunReport runShare(const RunOptions& o, const Experiment& e, const kinds::Kind& 
   if (report.skipped > 0)
     std::fprintf(stderr, "resume: %d point file(s) already complete, %zu to run\n", report.skipped, todo.size());
   Progress progress(int(todo.size()) + report.skipped, report.skipped);
+  // SIGINT/SIGTERM only set a flag; this thread watches it while the workers run the points.
+  const InterruptGuard interrupt_guard;
   std::mutex write_mutex;  // one point file written at a time; guards write_error
   std::atomic<size_t> next{0};
-  std::atomic<int> failed{0};
+  std::atomic<bool> stop{false};
   // A write error (disk full, folder removed) stops every worker; points already written stay.
-  std::exception_ptr write_error;
+  std::string write_error;
+  std::mutex done_mutex;
+  std::condition_variable done_cv;
+  int workers_done = 0;
+  std::atomic<int> written{0};
   auto worker = [&] {
-    for (size_t i = next++; i < todo.size(); i = next++) {
+    for (size_t i = next++; i < todo.size() && !stop; i = next++) {
       const Point& p = *todo[i];
-      PointOutcome outcome = runPoint(kind, p);
+      PointOutcome outcome = runPoint(c.kind, p);
+      std::lock_guard lock(write_mutex);
+      if (stop) break;  // interrupted or a write failed while this point ran: it is not written
       try {
-        std::lock_guard lock(write_mutex);
-        if (write_error) return;
-        writePointFile(report.out_dir, e, kind, p, outcome, provenance);
-      } catch (...) {
-        write_error = std::current_exception();
-        next = todo.size();
-        return;
+        writePointFile(report.out_dir, c.e, c.kind, p, outcome, provenance);
+      } catch (const std::exception& err) {
+        write_error = "cannot write " + report.out_dir + "/" + pointFileName(p.index) + ": " +
+                      describeWriteError(err.what());
+        stop = true;
+        break;
       }
-      if (!outcome.ok) ++failed;
-      progress.pointFinished(describePoint(p, columns) + (outcome.ok ? "" : ": " + outcome.message), outcome.ok,
+      ++written;
+      progress.pointFinished(describePoint(p, c.columns) + (outcome.ok ? "" : ": " + outcome.message), outcome.ok,
                              outcome.wall_s);
     }
+    std::lock_guard lock(done_mutex);
+    ++workers_done;
+    done_cv.notify_all();
   };
   std::vector<std::thread> pool;
-  for (int j = 1; j < jobs; ++j) pool.emplace_back(worker);
-  worker();
+  for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);
+  for (std::unique_lock lock(done_mutex); workers_done < jobs;) {
+    done_cv.wait_for(lock, std::chrono::milliseconds(50));
+    if (interrupted() && !stop) stop = true;
+    if (stop && interrupted()) break;
+  }
+  if (const int signal = interrupted()) {
+    // No point file is being written while this thread holds the write lock; the points still
+    // computing are dropped (they were never written) when the process ends.
+    std::lock_guard lock(write_mutex);
+    removeTemporaries(report.out_dir, mine, o.slice_count == 1 && c.cluster.size() == 1);
+    std::string index_note;
+    if (c.cluster.rank() == 0) {
+      try {
+        writeIndexFromFiles(c, report, provenance);
+        index_note = ", listed in " + report.out_dir + "/index.h5";
+      } catch (const std::exception& err) {
+        index_note = "; index.h5 not written: " + std::string(err.what());
+      }
+    }
+    std::fprintf(stderr, "interrupted by %s: stopped before the remaining points; the point files written stay%s; "
+                         "--resume finishes the run\n", signal == SIGINT ? "SIGINT" : "SIGTERM", index_note.c_str());
+    std::fflush(stderr);
+    endBySignal(signal);
+  }
   for (auto& t : pool) t.join();
-  if (write_error) std::rethrow_exception(write_error);
+  if (!write_error.empty()) {
+    removeTemporaries(report.out_dir, mine, o.slice_count == 1 && c.cluster.size() == 1);
+    if (c.cluster.size() > 1) throw PointWriteError(write_error);
+    progress.finish();
+    report.ran = written;
+    report.write_error = write_error;
+    try {
+      writeIndexFromFiles(c, report, provenance);
+      report.write_error += "; the point files written before it stay, listed in " + report.out_dir + "/index.h5";
+    } catch (const std::exception& err) {
+      report.write_error += "; the point files written before it stay, but index.h5 could not be written: " +
+                            describeWriteError(err.what());
+    }
+    report.write_error += "; free space and run again with --resume";
+    return report;
+  }
   progress.finish();
-  report.ran = cluster.sumOnRoot(int(todo.size()));
-  report.skipped = cluster.sumOnRoot(report.skipped);
+  report.ran = c.cluster.sumOnRoot(int(todo.size()));
+  report.skipped = c.cluster.sumOnRoot(report.skipped);
 
-  cluster.barrier();
-  if (cluster.rank() != 0) return report;
-
-  // The index is built from the point files alone, so it is the same whoever computed them.
-  Table table{columns, {}, {}};
-  for (const auto& m : kind.metrics()) table.metrics.push_back(m.name);
-  for (const auto& p : points) {
-    table.rows.push_back(readPointRow(report.out_dir, p, columns, kind));
-    if (table.rows.back().status == "failed") ++report.failed;
-    if (table.rows.back().status == "missing") ++report.missing;
+  c.cluster.barrier();
+  if (c.cluster.rank() != 0) return report;
+  try {
+    writeIndexFromFiles(c, report, provenance);
+  } catch (const ExperimentError&) {
+    throw;  // a point file of another configuration: a refusal (exit 2)
+  } catch (const std::exception& err) {
+    // Every point file is written; only the index is not (the disk filled): exit 3, not a crash.
+    removeTemporaries(report.out_dir, mine, o.slice_count == 1 && c.cluster.size() == 1);
+    report.write_error = "cannot write " + report.out_dir + "/index.h5: " + describeWriteError(err.what()) +
+                         "; every point file is written; free space and run again with --resume to write the index";
   }
-  if (report.missing == 0) {
-    report.checks = evaluateChecks(e.checks, table);
-    report.checks_evaluated = true;
-  }
-  writeIndex(report.out_dir, e, kind, table, report.checks, provenance);
   return report;
 }
 
@@ -215,6 +381,7 @@ std::string describeExperiment(const std::string& path, const std::vector<std::s
   const Experiment e = loadExperiment(path, overrides, registry);
   const kinds::Kind& kind = *registry.find(e.kind);
   const auto points = expandPoints(e, kind);
+  checkSelections(e, points);
   const auto columns = sweepColumns(e);
   std::ostringstream s;
   s << e.title << "\nkind: " << e.kind << " — " << kind.doc() << "\n\nparameters (resolved; * = set by the file):\n";

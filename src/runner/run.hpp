@@ -20,6 +20,7 @@ struct RunOptions {
   bool force = false;   // replace an existing run in out_dir
   bool dry_run = false; // print the plan only
   int slice_index = 0, slice_count = 1;  // --points i/N: run points with index % N == i
+  bool allow_long = false;  // run points estimated to take very many steps or much memory
 };
 
 struct RunReport {
@@ -27,8 +28,12 @@ struct RunReport {
   int total = 0, ran = 0, skipped = 0, failed = 0, missing = 0;
   std::vector<CheckOutcome> checks;
   bool checks_evaluated = false;
+  // A point file could not be written (disk full, folder gone): the run stopped there; the points
+  // written before stay, listed in the index. The message names the file.
+  std::string write_error;
   bool checksPassed() const;
-  // 0: all good; 1: a check failed; 3: a point failed (ran but could not finish).
+  // 0: all good; 1: a check failed; 3: a point failed (ran but could not finish) or could not be
+  // written.
   int exitCode() const;
 };
 

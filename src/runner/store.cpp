@@ -222,6 +222,11 @@ Row readPointRow(const std::string& dir, const Point& point, const std::vector<s
   if (!fs::exists(path)) return row;
   const io::File file = io::File::openReadOnly(path);
   const io::Group root = file.root();
+  row.config_sha256 = io::getAttrString(root, "config_sha256");
+  if (row.config_sha256 != pointConfigSha(kind.name(), point))
+    throw ExperimentError(path + " was made by a different configuration than this run (another run into the same "
+                          "folder?): not listed; use --force or another --out");
+  row.content_sha256 = io::contentDigest(path, provenanceAttributeNames());
   row.status = io::getAttrString(root, "status");
   row.message = io::getAttrString(root, "message");
   if (root.isGroup("metrics")) {
@@ -283,6 +288,15 @@ static void writeIndexContents(const io::Group& root, const Experiment& e, const
   io::writeColumn(chk, "passed", checks, &CheckOutcome::passed);
   io::writeColumn(chk, "known_deviation", checks, &CheckOutcome::known_deviation);
 
+  // The seal of each point file, checked by `check` and `compare` before they trust this index.
+  std::vector<Row> present;
+  for (const auto& row : table.rows)
+    if (row.status != "missing") present.push_back(row);
+  const io::Group integrity = root.requireGroup("integrity");
+  io::writeColumn(integrity, "point_index", present, &Row::index);
+  io::writeColumn(integrity, "config_sha256", present, &Row::config_sha256);
+  io::writeColumn(integrity, "content_sha256", present, &Row::content_sha256);
+
   const io::Group links = root.requireGroup("points");
   for (const auto& row : table.rows)
     if (row.status != "missing")
@@ -291,6 +305,8 @@ static void writeIndexContents(const io::Group& root, const Experiment& e, const
 
 StoredRun readIndex(const std::string& dir) {
   const std::string path = dir + "/index.h5";
+  if (fs::exists(dir) && !fs::is_directory(dir))
+    throw std::runtime_error(dir + ": is a file; expected a run folder (the --out of `creaturelab run`)");
   if (!fs::exists(path))
     throw std::runtime_error(path + ": no index (not a run folder, or the run has not finished: use --resume)");
   const io::File file = io::File::openReadOnly(path);
@@ -312,10 +328,18 @@ StoredRun readIndex(const std::string& dir) {
   std::map<std::string, std::vector<kinds::Value>> column_values;
   for (const auto& c : out.table.columns) column_values[c] = readColumn(sweep, c, types.at(c));
   for (size_t r = 0; r < index.size(); ++r) {
-    Row row{int(index[r]), label[r], status[r], message[r], {}, {}};
+    Row row{int(index[r]), label[r], status[r], message[r], {}, {}, {}, {}};
     for (const auto& c : out.table.columns) row.columns[c] = column_values[c].at(r);
     for (const auto& m : out.table.metrics) row.metrics[m] = metric_values[m][r];
     out.table.rows.push_back(std::move(row));
+  }
+  if (root.isGroup("integrity")) {
+    const io::Group integrity = root.openGroup("integrity");
+    const auto ids = io::readVectorInt64(integrity, "point_index");
+    const auto config = io::readVectorString(integrity, "config_sha256");
+    const auto content = io::readVectorString(integrity, "content_sha256");
+    for (size_t i = 0; i < ids.size() && i < config.size() && i < content.size(); ++i)
+      out.seals[int(ids[i])] = {config[i], content[i]};
   }
   return out;
 }

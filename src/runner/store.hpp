@@ -38,17 +38,24 @@ void writePointFile(const std::string& dir, const Experiment& experiment, const 
                     const PointOutcome& outcome, Provenance provenance);
 // "" when the file is missing or unreadable.
 std::string readPointConfigSha(const std::string& path);
-// The table row of a point file; status "missing" when there is none.
+// The table row of a point file; status "missing" when there is none. Throws ExperimentError when
+// the file was made by another configuration (another run into the same folder): never mixed.
 Row readPointRow(const std::string& dir, const Point& point, const std::vector<std::string>& columns,
                  const kinds::Kind& kind);
 
 void writeIndex(const std::string& dir, const Experiment& experiment, const kinds::Kind& kind, const Table& table,
                 const std::vector<CheckOutcome>& checks, Provenance provenance);
 
+// What index.h5 recorded of one point file (/integrity).
+struct PointSeal {
+  std::string config_sha256, content_sha256;
+};
+
 struct StoredRun {
   std::string experiment_path, experiment_text;
   std::vector<std::string> overrides;
   Table table;
+  std::map<int, PointSeal> seals;  // by point index; empty for an index older than /integrity
 };
 StoredRun readIndex(const std::string& dir);  // throws std::runtime_error naming the file
 

@@ -15,6 +15,9 @@ struct Row {
   std::string message;             // why a point failed
   std::map<std::string, kinds::Value> columns;
   std::map<std::string, double> metrics;  // NaN where a failed point has none
+  // The point file's seal, recorded in index.h5 /integrity so `check` and `compare` can tell a
+  // damaged or swapped file: its configuration fingerprint and content digest ("" when missing).
+  std::string config_sha256, content_sha256;
 };
 
 struct Table {

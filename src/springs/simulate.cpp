@@ -255,6 +255,14 @@ SimulationSummary simulate(const System<D>& system, State<D>& s, const Simulatio
   return summary;
 }
 
+template <int D> StepEstimate estimateSteps(const Network<D>& net, const State<D>& s, const SimulationOptions& options) {
+  const StepPlan plan = planStep(net, options, estimateOmegaMaxRadPerS(net, s));
+  const double frames = std::ceil(options.end_time_s / options.frame_interval_s * (1 - 1e-12));
+  return {plan.dt_s, plan.substeps_per_frame, frames * plan.substeps_per_frame};
+}
+
+template StepEstimate estimateSteps<2>(const Network<2>&, const State<2>&, const SimulationOptions&);
+template StepEstimate estimateSteps<3>(const Network<3>&, const State<3>&, const SimulationOptions&);
 template SimulationSummary simulate<2>(const System<2>&, State<2>&, const SimulationOptions&, const FrameObserver<2>&);
 template SimulationSummary simulate<3>(const System<3>&, State<3>&, const SimulationOptions&, const FrameObserver<3>&);
 

@@ -50,6 +50,16 @@ class DivergenceError : public std::runtime_error {
   double time_s_;
 };
 
+// The step simulate() would take, found the same way but without running, so that a caller can
+// refuse a run that would take hours before it starts (explicit Euler at dt_s = auto can pick a
+// step far below the frame). Throws std::invalid_argument where simulate() would.
+struct StepEstimate {
+  double dt_s = 0;             // the substep simulate() would use
+  int substeps_per_frame = 0;
+  double steps = 0;            // substeps over the whole run
+};
+template <int D> StepEstimate estimateSteps(const Network<D>& net, const State<D>& s, const SimulationOptions& options);
+
 template <int D> using FrameObserver = std::function<void(int frame, double t_s, const State<D>& s)>;
 
 // Runs from t = 0 to the end of the last frame, in place on s. on_frame (if set) is called at

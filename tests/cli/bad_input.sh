@@ -110,6 +110,89 @@ n_springs = 10
 EOF
 expect_bad both_span "set span_m or n_springs, not both" "$scratch/both_span.toml"
 
+# Issue 19 §5: refused before any point runs.
+write duplicate_label <<'EOF'
+kind = "strand"
+[[case]]
+label = "rest"
+overextension = 1.0
+[[case]]
+label = "rest"
+overextension = 1.5
+EOF
+expect_bad duplicate_label '"rest" is already the label of case[0]' "$scratch/duplicate_label.toml"
+grep -qF "case[1].label" "$scratch/duplicate_label.stderr" || fail "duplicate_label: does not name case[1].label"
+
+write where_value <<'EOF'
+kind = "oscillator"
+[sweep]
+dt_s = [0.01, 0.02]
+[[check]]
+name = "small step"
+type = "range"
+metric = "max_abs_error_m"
+where = { dt_s = 0.03 }
+expect = [0, 1]
+EOF
+expect_bad where_value "check 'small step': where = {dt_s=0.03}: no point has dt_s = 0.03 (dt_s takes 0.01, 0.02)" \
+  "$scratch/where_value.toml"
+
+write where_label <<'EOF'
+kind = "strand"
+[[case]]
+label = "rest"
+overextension = 1.0
+[[check]]
+name = "sag"
+type = "range"
+metric = "mid_sag_m"
+where = { label = "reset" }
+expect = [0, 1]
+EOF
+expect_bad where_label 'no point has label = "reset" (label takes "rest")' "$scratch/where_label.toml"
+
+write ratio_key <<'EOF'
+kind = "oscillator"
+[sweep]
+dt_s = [0.01, 0.02]
+[[check]]
+name = "ratio"
+type = "ratio"
+metric = "max_abs_error_m"
+numerator = { dt_s = 0.02 }
+denominator = { label = "none" }
+expect = [0, 10]
+EOF
+expect_bad ratio_key 'denominator = {label="none"}: no point has label = "none" (the file has no [[case]] labels)' "$scratch/ratio_key.toml"
+
+# Explicit Euler at dt_s = "auto" picks 1.25e-7 s: refused with the estimate unless --allow-long.
+write euler_auto <<'EOF'
+kind = "strand"
+[params]
+integrator = "euler"
+EOF
+expect_bad euler_auto 'point 0 would take about 1.2e+08 time steps (dt = 1.25e-07 s (dt_s = "auto" for euler)' \
+  "$scratch/euler_auto.toml"
+grep -qF -- "--allow-long" "$scratch/euler_auto.stderr" || fail "euler_auto: does not mention --allow-long"
+"$bin" run "$scratch/euler_auto.toml" --allow-long --dry-run >/dev/null 2>&1 || fail "euler_auto: --allow-long still refused"
+
+# A point whose stored fields cannot fit in memory: refused before it starts, never killed by the
+# kernel half-way (4096^2 cells x 1e6 stored frames: about 670 TB, more than any machine has).
+write memory <<'EOF'
+kind = "fluid"
+[params]
+cells = 4096
+end_time_s = 1000.0
+output_interval_s = 0.001
+EOF
+expect_bad memory "of memory but" "$scratch/memory.toml"
+grep -qF "point 0 needs about" "$scratch/memory.stderr" || fail "memory: does not name the point: $(cat "$scratch/memory.stderr")"
+grep -qF "4096^2 cells" "$scratch/memory.stderr" || fail "memory: does not say how: $(cat "$scratch/memory.stderr")"
+
+# A folder where a file is expected says so.
+mkdir -p "$scratch/a_folder"
+expect_bad folder_as_file "$scratch/a_folder: is a folder; expected an experiment file" "$scratch/a_folder"
+
 # A good file, refused for its overrides.
 write good <<'EOF'
 kind = "oscillator"
@@ -140,6 +223,16 @@ rc=0
 grep -qF "already holds a run" "$scratch/again.stderr" || fail "existing run: $(cat "$scratch/again.stderr")"
 [[ $before == "$(cd "$scratch/done" && ls -l --time-style=+%s.%N && sha256sum ./*)" ]] || fail "existing run: files changed"
 echo "ok   existing run: $(cat "$scratch/again.stderr")"
+
+# A file where a run folder is expected, and a folder where a file is expected, say so.
+rc=0
+"$bin" check "$scratch/good.toml" >/dev/null 2>"$scratch/check_file.stderr" || rc=$?
+[[ $rc == 2 ]] || fail "check FILE: exit code $rc"
+grep -qF "$scratch/good.toml: is a file; expected a run folder" "$scratch/check_file.stderr" || fail "$(cat "$scratch/check_file.stderr")"
+rc=0
+"$bin" show "$scratch/a_folder" >/dev/null 2>"$scratch/show_folder.stderr" || rc=$?
+[[ $rc == 2 ]] || fail "show FOLDER: exit code $rc"
+grep -qF "is a folder; expected an experiment file" "$scratch/show_folder.stderr" || fail "$(cat "$scratch/show_folder.stderr")"
 
 # The same errors from `show` (nothing to write, but the same message and exit code).
 rc=0

@@ -18,6 +18,11 @@ creaturelab_cli_test(show_list)      # --dry-run writes nothing; show; list
 creaturelab_cli_test(fluid_fields)   # /fields shape and chunks, XDMF sidecar, --jobs determinism
 creaturelab_cli_test(jellyfish)      # metrics, series, tracks, fields; --jobs determinism; KNOWN; bad input
 creaturelab_cli_test(run_folder)     # --points shares, --force, --resume with another configuration
+creaturelab_cli_test(folder_lock)    # one writer per folder (fcntl lock, holder's pid); configurations never mix
+creaturelab_cli_test(interrupt)      # SIGINT/SIGTERM: 130/143, no *.tmp, a consistent index; stale *.tmp removed
+creaturelab_cli_test(verify)         # check/compare name truncated, garbage, swapped, foreign point files; --no-verify
+# Disk full on a 300 KiB tmpfs: exit 3 and a message, never a signal. Skipped (77) without mount rights.
+creaturelab_cli_test(disk_full SKIP_RETURN_CODE 77)
 # MPI: skipped (exit 77) without mpirun or an MPI build. RESOURCE_LOCK: 3 ranks on 2 cores.
 creaturelab_cli_test(mpi SKIP_RETURN_CODE 77 RESOURCE_LOCK mpi)
 # User errors under MPI end every rank once (no rank left waiting in a barrier).

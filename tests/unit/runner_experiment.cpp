@@ -1,6 +1,8 @@
 // Experiment files (DESIGN.md "Experiment files", issue 2 §3): parsing, sweeps, cases, overrides,
 // and the user errors that must name the file, the key, a close match and what was expected.
 #include "runner/experiment.hpp"
+#include "runner/checks.hpp"
+#include "runner/cost.hpp"
 
 #include <gtest/gtest.h>
 
@@ -674,4 +676,73 @@ expect = [0, 1]
   EXPECT_NE(m.find("known_deviation"), std::string::npos) << m;
   m = errorOf(base + "known_deviation = true\n");
   EXPECT_NE(m.find("expected a non-empty string"), std::string::npos) << m;
+}
+
+// ---- issue 19 §5: input that should never start ----
+
+TEST(RunnerExperimentError, DuplicateCaseLabelsAreRefused) {
+  const std::string m = errorOf(
+      "kind = \"strand\"\n[[case]]\nlabel = \"a\"\noverextension = 1.0\n[[case]]\nlabel = \"a\"\noverextension = 1.5\n");
+  EXPECT_NE(m.find("case[1].label"), std::string::npos) << m;
+  EXPECT_NE(m.find("\"a\" is already the label of case[0]"), std::string::npos) << m;
+}
+
+// The message of the ExperimentError that checking `text`'s selections against its points throws.
+static std::string selectionErrorOf(const std::string& text) {
+  const Experiment e = load(text);
+  try {
+    runner::checkSelections(e, points(e));
+  } catch (const ExperimentError& err) {
+    return err.what();
+  }
+  return "";
+}
+
+TEST(RunnerExperimentError, SelectionsMustMatchAPointBeforeTheRun) {
+  const std::string sweep = "kind = \"oscillator\"\n[sweep]\ndt_s = [0.01, 0.02]\n"
+                            "[[check]]\nname = \"c\"\ntype = \"range\"\nmetric = \"max_abs_error_m\"\nexpect = [0, 1]\n";
+  EXPECT_EQ(selectionErrorOf(sweep + "where = { dt_s = 0.02 }\n"), "");
+  std::string m = selectionErrorOf(sweep + "where = { dt_s = 0.03 }\n");
+  EXPECT_NE(m.find("check 'c': where = {dt_s=0.03}: no point has dt_s = 0.03 (dt_s takes 0.01, 0.02)"),
+            std::string::npos) << m;
+  m = selectionErrorOf(sweep + "where = { label = \"x\" }\n");
+  EXPECT_NE(m.find("no point has label = \"x\" (the file has no [[case]] labels)"), std::string::npos) << m;
+}
+
+TEST(RunnerExperimentError, ExplicitEulerAtAnAutomaticStepIsRefusedUnlessAllowed) {
+  const Experiment e = load("kind = \"strand\"\n[params]\nintegrator = \"euler\"\n");
+  const kinds::Kind& kind = *registry().find(e.kind);
+  const auto ps = points(e);
+  const kinds::CostEstimate cost = kind.estimateCost(ps[0].params);
+  EXPECT_NEAR(cost.steps, 1.2e8, 1e6);  // dt = 1.25e-7 s over 15 s
+  runner::CostLimits limits;
+  try {
+    runner::checkCost(e, kind, ps, limits);
+    ADD_FAILURE() << "no refusal";
+  } catch (const ExperimentError& err) {
+    EXPECT_NE(std::string(err.what()).find("--allow-long"), std::string::npos) << err.what();
+  }
+  limits.allow_long = true;
+  EXPECT_NO_THROW(runner::checkCost(e, kind, ps, limits));
+  // RK4 at its automatic step: far below the limit.
+  const Experiment rk4 = load("kind = \"strand\"\n");
+  EXPECT_LT(kind.estimateCost(points(rk4)[0].params).steps, 1e6);
+}
+
+TEST(RunnerExperimentError, AGridThatCannotFitInMemoryIsRefused) {
+  const Experiment e = load("kind = \"fluid\"\n[params]\ncells = 1024\n");
+  const kinds::Kind& kind = *registry().find(e.kind);
+  const auto ps = points(e);
+  const double need = kind.estimateCost(ps[0].params).memory_bytes;
+  EXPECT_GT(need, 0.7e9);  // measured: 1024^2 cells with 11-12 stored frames peak at 660-692 MB
+  runner::CostLimits limits;
+  limits.memory = {need * 1.01, "a test budget"};
+  EXPECT_NO_THROW(runner::checkCost(e, kind, ps, limits));
+  limits.memory = {need * 0.99, "a test budget"};
+  try {
+    runner::checkCost(e, kind, ps, limits);
+    ADD_FAILURE() << "no refusal";
+  } catch (const ExperimentError& err) {
+    EXPECT_NE(std::string(err.what()).find("(a test budget)"), std::string::npos) << err.what();
+  }
 }
