@@ -236,7 +236,8 @@ void checkSelections(const Experiment& experiment, const std::vector<Point>& poi
                                                                {"numerator", &c.numerator},
                                                                {"denominator", &c.denominator},
                                                                {"numerator_base", &c.numerator_base},
-                                                               {"denominator_base", &c.denominator_base}};
+                                                               {"denominator_base", &c.denominator_base},
+                                                               {"relative_to", &c.relative_to}};
     for (const auto& [field, where] : selections) {
       if (where->empty()) continue;
       if (std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return matches(r, *where); })) continue;
