@@ -12,6 +12,7 @@
 
 #include "jellyfish/bell_model.hpp"
 #include "jellyfish/jellyfish_body.hpp"
+#include "jellyfish_stiffness_matrix.hpp"
 #include "jellyfish/ringdown.hpp"
 
 namespace creaturelab::jellyfish {
@@ -36,14 +37,7 @@ ActivationParams pulse(double duration_s, int cycles) {
   return a;
 }
 
-Eigen::MatrixXd stiffnessMatrix(const JellyfishBody& body, double t, const Markers& x) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  body.stiffness(t, x, 1.0, triplets);
-  const int n = 2 * static_cast<int>(x.size());
-  Eigen::SparseMatrix<double> k(n, n);
-  k.setFromTriplets(triplets.begin(), triplets.end());
-  return Eigen::MatrixXd(k);
-}
+using testing::stiffnessMatrix;
 
 Eigen::VectorXd forceVector(const JellyfishBody& body, double t, const Markers& x) {
   Markers f(x.size());

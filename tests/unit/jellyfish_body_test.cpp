@@ -4,6 +4,7 @@
 // operators (equilibrium at rest, momentum and angular momentum, gradient of the energy, finite
 // differences of the force) and the muscle timing (Spencer's synaptic delay, §3.1).
 #include "jellyfish/jellyfish_body.hpp"
+#include "jellyfish_stiffness_matrix.hpp"
 
 #include <gtest/gtest.h>
 
@@ -47,15 +48,7 @@ Markers forcesAt(const JellyfishBody& body, double t, const Markers& x) {
 
 double& coord(Markers& x, int c) { return c % 2 == 0 ? x[c / 2].x : x[c / 2].y; }
 
-// Dense scale * dF/dX from the body's triplets (numbering 2 * marker + axis).
-Eigen::MatrixXd stiffnessMatrix(const JellyfishBody& body, double t, const Markers& x) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  body.stiffness(t, x, 1.0, triplets);
-  const int n = 2 * static_cast<int>(x.size());
-  Eigen::SparseMatrix<double> k(n, n);
-  k.setFromTriplets(triplets.begin(), triplets.end());
-  return Eigen::MatrixXd(k);
-}
+using testing::stiffnessMatrix;
 
 // Central differences of the forces, column by column.
 Eigen::MatrixXd forceJacobianFd(const JellyfishBody& body, double t, const Markers& x, double h) {
