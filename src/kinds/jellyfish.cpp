@@ -1,6 +1,7 @@
 #include "kinds/jellyfish.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <limits>
 
@@ -361,6 +362,35 @@ std::string JellyfishKind::validate(const Params& p) const {
     return "bell_segments must be 0 (follow the grid) or even and at least 8, got " + std::to_string(segments);
   if (r.real("dt_s") > r.real("duration_s")) return "dt_s is longer than duration_s";
   return "";
+}
+
+// Steps from the schedule; memory: the fluid's arrays (the fluid kind's 280 bytes per cell, plus
+// MacCormack's four bound and two predictor arrays), the dense implicit system and its LU
+// (ib/coupling.cpp: (2 markers)² doubles, twice), and the recorded frames of markers, tracers and
+// vorticity fields.
+CostEstimate JellyfishKind::estimateCost(const Params& p) const {
+  try {
+    ParamReader r(p);
+    const Schedule plan = schedule(r);
+    const double cells = double(r.integer("cells")) * std::round(r.real("box_aspect") * double(r.integer("cells")));
+    const double segments = bellSegments(r);
+    const double markers = 1.5 * (segments + 1);  // tentacles add about half a bell's markers
+    const double steps = double(plan.total_steps);
+    const double frames = 1 + steps / double(plan.steps_per_frame);
+    const double fields = plan.steps_per_field > 0 ? 1 + steps / double(plan.steps_per_field) : 0;
+    const double tracers = double(r.integer("tracers_per_side")) * double(r.integer("tracers_per_side"));
+    CostEstimate cost;
+    cost.steps = steps;
+    cost.memory_bytes = 32.0 * (1 << 20) + cells * (280 + 48) + 2 * 8 * (2 * markers) * (2 * markers) +
+                        frames * 16 * (markers + tracers) + fields * 8 * cells;
+    char detail[160];
+    std::snprintf(detail, sizeof detail, "%.0f cells, %.0f markers, %.0f steps, %.0f field frames", cells, markers,
+                  steps, fields);
+    cost.detail = detail;
+    return cost;
+  } catch (const std::exception&) {
+    return {};
+  }
 }
 
 Result JellyfishKind::run(const Params& p) const {

@@ -12,6 +12,7 @@ class JellyfishKind : public SchemaKind {
   std::string doc() const override;
   std::string validate(const Params& params) const override;
   Result run(const Params& params) const override;
+  CostEstimate estimateCost(const Params& params) const override;
 
   // The largest number of Hermite knots the schema declares (knot0_* .. knot{N-1}_*).
   static constexpr int kMaxKnots = 6;

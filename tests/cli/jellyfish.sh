@@ -80,9 +80,14 @@ code=$?
 bad=$?
 "$bin" run "$scratch/jf.toml" params.bell_segments=31 --out "$scratch/e" >"$scratch/e.out" 2>&1
 odd=$?
+# A point whose fields would not fit is refused before it starts (about 13 GB of vorticity frames).
+(ulimit -v 4000000; "$bin" run "$scratch/jf.toml" params.cells=1024 params.field_rate_hz=100 params.duration_s=10 \
+  'sweep.expansion=["staggered"]' --out "$scratch/f" >"$scratch/f.out" 2>&1)
+huge=$?
 set -e
 [ "$code" = 1 ]
 [ "$bad" = 2 ] && grep -q "knot3_\* is set but contraction_knots = 2" "$scratch/d.out"
 [ "$odd" = 2 ] && grep -q "segments must be even" "$scratch/e.out"
-[ ! -e "$scratch/d" ] && [ ! -e "$scratch/e" ]
+[ "$huge" = 2 ] && grep -q "GB of memory" "$scratch/f.out"
+[ ! -e "$scratch/d" ] && [ ! -e "$scratch/e" ] && [ ! -e "$scratch/f" ]
 echo "jellyfish cli: ok"
