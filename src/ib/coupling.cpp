@@ -88,7 +88,7 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
 
 CouplingStepReport ImmersedBoundary2::step(double dt_s) {
   const double t1_s = fluid_.time_s() + dt_s;
-  transfer_.locate(fluid_.grid(), params_.kernel, markers_);
+  transfer_.locate(fluid_.grid(), params_.kernel, markers_, params_.kernel_scale);
   body_.forces(t1_s, markers_, force_);
   if (params_.semi_implicit) semiImplicitForce(t1_s, dt_s);
 

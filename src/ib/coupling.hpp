@@ -77,6 +77,9 @@ struct CouplingParams {
   // speed goal needs, only Peskin's kernel keeps the bell as smooth as small explicit steps do
   // ("Measured" above); the kernels experiment compares the two.
   Kernel kernel = Kernel::peskin4;
+  // The kernel stretched to kernel_scale cells per kernel unit (Transfer::locate): 1 is Peskin's
+  // grid-scaled delta; a fixed physical width (scale ∝ 1/dx) makes a grid study refine one body.
+  int kernel_scale = 1;
   bool semi_implicit = true;
   ImplicitMobility mobility = ImplicitMobility::stencil;
   double implicit_mass_factor = 1.0;  // local_mass only: m = factor · ρ dx², see above

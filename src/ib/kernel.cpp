@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace creaturelab::ib {
 
@@ -86,6 +88,31 @@ void kernel_weights_1d(Kernel kernel, double t, double (&weights)[kMaxKernelSupp
       return;
     }
   }
+}
+
+int stencil_faces(Kernel kernel, int scale) {
+  const int faces = scale * kernel_support_cells(kernel);
+  if (scale < 1 || faces > kMaxStencilFaces) {
+    throw std::invalid_argument("immersed-boundary kernel: a " + std::string(to_string(kernel)) +
+                                " kernel stretched " + std::to_string(scale) + " times is not supported (the scale must be " +
+                                "a whole number from 1 to " + std::to_string(kMaxStencilFaces / kernel_support_cells(kernel)) +
+                                ")");
+  }
+  return faces;
+}
+
+void stretched_kernel_weights_1d(Kernel kernel, int scale, double t, double (&weights)[kMaxStencilFaces]) {
+  const int faces = stencil_faces(kernel, scale);
+  if (scale == 1) {
+    double base[kMaxKernelSupportCells];
+    kernel_weights_1d(kernel, t, base);
+    for (int a = 0; a < kMaxStencilFaces; ++a) weights[a] = a < kMaxKernelSupportCells ? base[a] : 0.0;
+    return;
+  }
+  const double inv_scale = 1.0 / scale;
+  const double first = t + 0.5 * faces - 1.0;  // distance, in cells, from the point to the stencil's first face
+  for (int a = 0; a < kMaxStencilFaces; ++a)
+    weights[a] = a < faces ? kernel_weight_1d(kernel, (first - a) * inv_scale) * inv_scale : 0.0;
 }
 
 }  // namespace creaturelab::ib

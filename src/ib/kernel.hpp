@@ -42,8 +42,12 @@ std::optional<Kernel> parse_kernel(std::string_view name);
 /// faces per axis a marker's stencil covers: 2 (bilinear) or 4 (peskin4).
 int kernel_support_cells(Kernel kernel);
 
-/// The largest kernel_support_cells() of any kernel (fixed-size stencil storage).
+/// The largest kernel_support_cells() of any kernel.
 inline constexpr int kMaxKernelSupportCells = 4;
+
+/// The largest stencil width, in faces per axis, of a stretched kernel (stretched_kernel_weights_1d):
+/// scale × support ≤ 16, e.g. bilinear up to scale 8 or peskin4 up to scale 4 (fixed-size storage).
+inline constexpr int kMaxStencilFaces = 16;
 
 /// phi(r) with r = distance / dx in cells (dimensionless; symmetric in r). NaN for a NaN r.
 double kernel_weight_1d(Kernel kernel, double r_cells);
@@ -55,5 +59,19 @@ double kernel_weight_1d(Kernel kernel, double r_cells);
 /// written so that the weights sum to 1 (and, for peskin4, the even and odd ones to 1/2) up
 /// to a few roundings.
 void kernel_weights_1d(Kernel kernel, double t, double (&weights)[kMaxKernelSupportCells]);
+
+/// The kernel stretched by a whole factor m ≥ 1, phi_m(r) = phi(r / m) / m, whose support is
+/// m · support faces: a delta function of fixed physical width on any grid whose cell divides
+/// it (Peskin 2002 §6 scales the same phi by dx; here the width is m dx, so refining the grid
+/// at fixed width m dx converges to one regularised problem instead of a thinner one each time).
+/// Its faces, in units of r / m, fall into m interleaved sets of unit spacing, each of which has
+/// phi's partition of unity and zero first moment, so phi_m keeps both exactly for whole m.
+/// The stencil of a point at xs starts at face floor(xs) − m·s/2 + 1 and
+/// weights[a] = phi_m(t + m·s/2 − 1 − a), a = 0..m·s−1; for m = 1 these are kernel_weights_1d's
+/// weights, bit for bit. Throws std::invalid_argument if m < 1 or m · support > kMaxStencilFaces.
+void stretched_kernel_weights_1d(Kernel kernel, int scale, double t, double (&weights)[kMaxStencilFaces]);
+
+/// Faces per axis of the stretched kernel's stencil: scale · kernel_support_cells(kernel).
+int stencil_faces(Kernel kernel, int scale);
 
 }  // namespace creaturelab::ib

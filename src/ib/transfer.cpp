@@ -24,42 +24,45 @@ std::string marker_name(std::size_t k, fluid::Vec2 p) {
 // floor(xs) − s/2 + 1 (kernel_weights_1d); it must lie within the faces first_face..last_face.
 // Bounds are compared as doubles before any conversion to int, so that a huge position cannot
 // overflow the cast. False if the stencil does not fit.
-bool axis_stencil(Kernel kernel, int support, double xs, int first_face, int last_face, int& start,
-                  double (&weights)[kMaxKernelSupportCells]) {
+bool axis_stencil(Kernel kernel, int scale, int support, double xs, int first_face, int last_face, int& start,
+                  double (&weights)[kMaxStencilFaces]) {
   const double f = std::floor(xs);
   const double first = f - static_cast<double>(support / 2 - 1);
   if (!(first >= first_face && first + static_cast<double>(support - 1) <= last_face)) return false;
   start = static_cast<int>(first);
-  kernel_weights_1d(kernel, xs - f, weights);
+  stretched_kernel_weights_1d(kernel, scale, xs - f, weights);
   return true;
 }
 
-// Σ_k (F_k / dx²) wx[a] wy[b] into face (i0 + a, j0 + b), for one component (S = support).
-template <int S, double fluid::Vec2::*component>
+// Σ_k (F_k / dx²) wx[a] wy[b] into face (i0 + a, j0 + b), for one component (S = stencil faces;
+// a compile-time S for the common widths, so that the inner loops unroll).
+template <double fluid::Vec2::*component, int S = 0>
 void spread_component(const std::vector<FaceStencil>& stencils, std::span<const fluid::Vec2> forces,
-                      double inv_area, fluid::Array2& field) {
+                      double inv_area, fluid::Array2& field, int support = S) {
+  if constexpr (S != 0) support = S;
   for (std::size_t k = 0; k < stencils.size(); ++k) {
     const FaceStencil& s = stencils[k];
     const double density = forces[k].*component * inv_area;
-    for (int b = 0; b < S; ++b) {
+    for (int b = 0; b < support; ++b) {
       double* row = field.row(s.j0 + b) + s.i0;
       const double row_density = density * s.wy[b];
-      for (int a = 0; a < S; ++a) row[a] += row_density * s.wx[a];
+      for (int a = 0; a < support; ++a) row[a] += row_density * s.wx[a];
     }
   }
 }
 
-// U_k = Σ_b wy[b] Σ_a wx[a] u(i0 + a, j0 + b), for one component (S = support).
-template <int S, double fluid::Vec2::*component>
+// U_k = Σ_b wy[b] Σ_a wx[a] u(i0 + a, j0 + b), for one component (S as in spread_component).
+template <double fluid::Vec2::*component, int S = 0>
 void interpolate_component(const std::vector<FaceStencil>& stencils, const fluid::Array2& field,
-                           std::span<fluid::Vec2> velocities) {
+                           std::span<fluid::Vec2> velocities, int support = S) {
+  if constexpr (S != 0) support = S;
   for (std::size_t k = 0; k < stencils.size(); ++k) {
     const FaceStencil& s = stencils[k];
     double sum = 0.0;
-    for (int b = 0; b < S; ++b) {
+    for (int b = 0; b < support; ++b) {
       const double* row = field.row(s.j0 + b) + s.i0;
       double row_sum = 0.0;
-      for (int a = 0; a < S; ++a) row_sum += s.wx[a] * row[a];
+      for (int a = 0; a < support; ++a) row_sum += s.wx[a] * row[a];
       sum += s.wy[b] * row_sum;
     }
     velocities[k].*component = sum;
@@ -83,7 +86,8 @@ void require_count(std::size_t got, int markers, const char* what) {
 
 }  // namespace
 
-void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<const fluid::Vec2> positions_m) {
+void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<const fluid::Vec2> positions_m,
+                      int kernel_scale) {
   u_stencils_.clear();  // keeps the capacity: no allocation once the largest marker count was seen
   v_stencils_.clear();
   if (grid.nx < 1 || grid.ny < 1 || !(std::isfinite(grid.dx_m) && grid.dx_m > 0.0)) {
@@ -91,8 +95,9 @@ void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<cons
                                 std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " cells of " +
                                 show(grid.dx_m) + " m)");
   }
+  support_ = ib::stencil_faces(kernel, kernel_scale);  // throws for a scale out of range
   kernel_ = kernel;
-  support_ = kernel_support_cells(kernel);
+  scale_ = kernel_scale;
   nx_ = grid.nx;
   ny_ = grid.ny;
   dx_m_ = grid.dx_m;
@@ -113,10 +118,10 @@ void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<cons
     FaceStencil& v = v_stencils_[k];
     // u faces at (i, j + 1/2) cells: interior faces i = 1..nx−1, all rows j = 0..ny−1.
     // v faces at (i + 1/2, j) cells: all columns i = 0..nx−1, interior faces j = 1..ny−1.
-    const bool fits = axis_stencil(kernel, support_, xs, 1, nx_ - 1, u.i0, u.wx) &&
-                      axis_stencil(kernel, support_, ys - 0.5, 0, ny_ - 1, u.j0, u.wy) &&
-                      axis_stencil(kernel, support_, xs - 0.5, 0, nx_ - 1, v.i0, v.wx) &&
-                      axis_stencil(kernel, support_, ys, 1, ny_ - 1, v.j0, v.wy);
+    const bool fits = axis_stencil(kernel, scale_, support_, xs, 1, nx_ - 1, u.i0, u.wx) &&
+                      axis_stencil(kernel, scale_, support_, ys - 0.5, 0, ny_ - 1, u.j0, u.wy) &&
+                      axis_stencil(kernel, scale_, support_, xs - 0.5, 0, nx_ - 1, v.i0, v.wx) &&
+                      axis_stencil(kernel, scale_, support_, ys, 1, ny_ - 1, v.j0, v.wy);
     if (!fits) {
       u_stencils_.clear();
       v_stencils_.clear();
@@ -124,7 +129,9 @@ void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<cons
       const double margin_m = reach * grid.dx_m;
       throw std::invalid_argument(
           marker_name(k, p) + " is within " + std::to_string(reach) + (reach == 1 ? " cell" : " cells") +
-          " of the domain wall: the " + std::string(to_string(kernel)) + " kernel reaches " + std::to_string(reach) +
+          " of the domain wall: the " + std::string(to_string(kernel)) + " kernel" +
+          (scale_ > 1 ? " stretched " + std::to_string(scale_) + " times" : std::string()) + " reaches " +
+          std::to_string(reach) +
           " cells around a marker, so markers must stay in [" + show(margin_m) + ", " +
           show(grid.width_m() - margin_m) + ") x [" + show(margin_m) + ", " + show(grid.height_m() - margin_m) +
           ") m (cell size " + show(grid.dx_m) + " m)");
@@ -139,12 +146,17 @@ void Transfer::spread(std::span<const fluid::Vec2> forces_n_per_m,
   require_shape(force_density_n_per_m3.x, nx_ + 1, ny_, "the x force density (u faces)");
   require_shape(force_density_n_per_m3.y, nx_, ny_ + 1, "the y force density (v faces)");
   const double inv_area = inv_cell_area_per_m2_;
+  auto& fx = force_density_n_per_m3.x;
+  auto& fy = force_density_n_per_m3.y;
   if (support_ == 2) {
-    spread_component<2, &fluid::Vec2::x>(u_stencils_, forces_n_per_m, inv_area, force_density_n_per_m3.x);
-    spread_component<2, &fluid::Vec2::y>(v_stencils_, forces_n_per_m, inv_area, force_density_n_per_m3.y);
+    spread_component<&fluid::Vec2::x, 2>(u_stencils_, forces_n_per_m, inv_area, fx);
+    spread_component<&fluid::Vec2::y, 2>(v_stencils_, forces_n_per_m, inv_area, fy);
+  } else if (support_ == 4) {
+    spread_component<&fluid::Vec2::x, 4>(u_stencils_, forces_n_per_m, inv_area, fx);
+    spread_component<&fluid::Vec2::y, 4>(v_stencils_, forces_n_per_m, inv_area, fy);
   } else {
-    spread_component<4, &fluid::Vec2::x>(u_stencils_, forces_n_per_m, inv_area, force_density_n_per_m3.x);
-    spread_component<4, &fluid::Vec2::y>(v_stencils_, forces_n_per_m, inv_area, force_density_n_per_m3.y);
+    spread_component<&fluid::Vec2::x>(u_stencils_, forces_n_per_m, inv_area, fx, support_);
+    spread_component<&fluid::Vec2::y>(v_stencils_, forces_n_per_m, inv_area, fy, support_);
   }
 }
 
@@ -160,11 +172,14 @@ void Transfer::interpolate(const fluid::MacGrid2& grid, std::span<fluid::Vec2> v
   require_shape(grid.u_m_per_s, nx_ + 1, ny_, "the u velocity");
   require_shape(grid.v_m_per_s, nx_, ny_ + 1, "the v velocity");
   if (support_ == 2) {
-    interpolate_component<2, &fluid::Vec2::x>(u_stencils_, grid.u_m_per_s, velocities_m_per_s);
-    interpolate_component<2, &fluid::Vec2::y>(v_stencils_, grid.v_m_per_s, velocities_m_per_s);
+    interpolate_component<&fluid::Vec2::x, 2>(u_stencils_, grid.u_m_per_s, velocities_m_per_s);
+    interpolate_component<&fluid::Vec2::y, 2>(v_stencils_, grid.v_m_per_s, velocities_m_per_s);
+  } else if (support_ == 4) {
+    interpolate_component<&fluid::Vec2::x, 4>(u_stencils_, grid.u_m_per_s, velocities_m_per_s);
+    interpolate_component<&fluid::Vec2::y, 4>(v_stencils_, grid.v_m_per_s, velocities_m_per_s);
   } else {
-    interpolate_component<4, &fluid::Vec2::x>(u_stencils_, grid.u_m_per_s, velocities_m_per_s);
-    interpolate_component<4, &fluid::Vec2::y>(v_stencils_, grid.v_m_per_s, velocities_m_per_s);
+    interpolate_component<&fluid::Vec2::x>(u_stencils_, grid.u_m_per_s, velocities_m_per_s, support_);
+    interpolate_component<&fluid::Vec2::y>(v_stencils_, grid.v_m_per_s, velocities_m_per_s, support_);
   }
 }
 

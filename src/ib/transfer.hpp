@@ -44,8 +44,8 @@ namespace creaturelab::ib {
 struct FaceStencil {
   int i0 = 0;  ///< first face index along x
   int j0 = 0;  ///< first face index along y
-  double wx[kMaxKernelSupportCells] = {};
-  double wy[kMaxKernelSupportCells] = {};
+  double wx[kMaxStencilFaces] = {};
+  double wy[kMaxStencilFaces] = {};
 };
 
 /// Weights of every marker on u faces and v faces of one MacGrid2 (fluid/mac_grid2.hpp),
@@ -61,7 +61,12 @@ class Transfer {
   /// would reach outside the grid's interior faces (a marker too close to a wall) or is not
   /// finite, or if the grid has no cells or a cell size that is not a positive number.
   /// After a throw the transfer holds no markers.
-  void locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<const fluid::Vec2> positions_m);
+  ///
+  /// `kernel_scale` m stretches the kernel to m cells per kernel unit (stretched_kernel_weights_1d):
+  /// a delta function of width m · support · dx; 1 is Peskin's grid-scaled delta_h. Throws
+  /// std::invalid_argument for a scale stencil_faces() refuses.
+  void locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<const fluid::Vec2> positions_m,
+              int kernel_scale = 1);
 
   /// ADDS Σ_k F_k delta_h(x_face − X_k) into the face field; delta_h = phi(dx)phi(dy)/dx².
   /// Forces are per metre of depth (N/m, 2-D), so the density is N/m³.
@@ -86,13 +91,17 @@ class Transfer {
 
   /// The kernel of the last locate() (bilinear before the first).
   Kernel kernel() const { return kernel_; }
+  /// The stretch of the last locate() (1 before the first) and its stencil width in faces per axis.
+  int kernel_scale() const { return scale_; }
+  int stencil_faces() const { return support_; }
   /// Stencil of marker k on u faces (x components) and on v faces (y components).
   const FaceStencil& u_stencil(int marker) const { return u_stencils_.at(static_cast<std::size_t>(marker)); }
   const FaceStencil& v_stencil(int marker) const { return v_stencils_.at(static_cast<std::size_t>(marker)); }
 
  private:
   Kernel kernel_ = Kernel::bilinear;
-  int support_ = 2;            // kernel_support_cells(kernel_)
+  int scale_ = 1;
+  int support_ = 2;            // stencil faces per axis: scale_ · kernel_support_cells(kernel_)
   int nx_ = 0;                 // cells of the located grid
   int ny_ = 0;
   double dx_m_ = 0.0;          // its cell size

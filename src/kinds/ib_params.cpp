@@ -1,5 +1,8 @@
 #include "kinds/ib_params.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 namespace creaturelab::kinds {
 
 std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& d) {
@@ -18,6 +21,7 @@ std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& d) {
 std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& d) {
   return {
       choice("kernel", d.kernel, {"bilinear", "peskin4"}, d.kernel_doc),
+      real("kernel_radius_m", d.kernel_radius_m, "m", 0, 10, d.kernel_radius_doc),
       boolean("semi_implicit", true, "linearised implicit elastic forces (ib/coupling.hpp); false = explicit Peskin"),
       choice("implicit_mobility", "stencil", {"stencil", "local_mass"}, d.mobility_doc),
       real("implicit_mass_factor", 1.0, "", 1e-6, 100, "local_mass only: added mass per marker in rho dx^2"),
@@ -39,9 +43,30 @@ fluid::FluidParams fluidBoxParams(const ParamReader& r) {
   return f;
 }
 
+KernelScale kernelScale(const ParamReader& r) {
+  const double radius_m = r.real("kernel_radius_m");
+  if (radius_m == 0) return {};
+  const ib::Kernel kernel = *ib::parse_kernel(r.text("kernel"));
+  const int reach_cells = ib::kernel_support_cells(kernel) / 2;
+  const double dx_m = r.real("domain_m") / double(r.integer("cells"));
+  const double scale = radius_m / (reach_cells * dx_m);
+  const long whole = std::lround(scale);
+  const int largest = ib::kMaxStencilFaces / ib::kernel_support_cells(kernel);
+  if (whole < 1 || whole > largest || std::abs(scale - double(whole)) > 1e-6 * scale) {
+    char msg[400];
+    std::snprintf(msg, sizeof msg,
+                  "kernel_radius_m = %g m must be 1 to %d times the %s kernel's reach of %d cell(s) of %g m "
+                  "(domain_m / cells); it is %.4g times: change kernel_radius_m or cells",
+                  radius_m, largest, r.text("kernel").c_str(), reach_cells, dx_m, scale);
+    return {1, msg};
+  }
+  return {int(whole), ""};
+}
+
 ib::CouplingParams couplingParams(const ParamReader& r) {
   ib::CouplingParams c;
   c.kernel = *ib::parse_kernel(r.text("kernel"));
+  c.kernel_scale = kernelScale(r).scale;
   c.semi_implicit = r.boolean("semi_implicit");
   c.mobility = *ib::parse_implicit_mobility(r.text("implicit_mobility"));
   c.implicit_mass_factor = r.real("implicit_mass_factor");

@@ -32,14 +32,25 @@ struct CouplingDefaults {
   std::string kernel;  // "bilinear" | "peskin4"
   std::string kernel_doc;
   std::string mobility_doc;
+  double kernel_radius_m = 0;  // 0: the grid's own kernel
+  std::string kernel_radius_doc;
 };
 
-// kernel, semi_implicit, implicit_mobility, implicit_mass_factor.
+// kernel, kernel_radius_m, semi_implicit, implicit_mobility, implicit_mass_factor.
 std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& defaults);
 
 // The box's fluid from fluidBoxSpecs' parameters, dt_s (the fixed step) and blowup_speed_m_per_s,
 // which each kind declares itself: their ranges and defaults differ.
 fluid::FluidParams fluidBoxParams(const ParamReader& r);
+
+// The kernel stretch that makes the kernel's radius kernel_radius_m on this kind's grid (cell
+// domain_m / cells): 1 for radius 0. Empty error, or a message naming the parameters when the radius
+// is not a whole number (1 or more) of the kernel's reach in cells.
+struct KernelScale {
+  int scale = 1;
+  std::string error;
+};
+KernelScale kernelScale(const ParamReader& r);
 
 ib::CouplingParams couplingParams(const ParamReader& r);
 

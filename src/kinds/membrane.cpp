@@ -104,6 +104,8 @@ MembraneKind::MembraneKind() {
       .kernel_doc = "spreading/interpolation: the jellyfish paper's bilinear 4-face stencil or Peskin's 4-point kernel",
       .mobility_doc = "fluid response assumed by the semi-implicit force: through the markers' stencils, or each "
                       "marker alone (ib/coupling.hpp)",
+      .kernel_radius_doc = "radius of the kernel's support; 0 = the grid's own (1 cell bilinear, 2 peskin4); otherwise "
+                           "a whole multiple of that, the kernel stretched to a fixed width (ib/kernel.hpp)",
   });
   // --- fluid: a viscous liquid in a free-slip box (the test is of the method, not of sea water)
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
@@ -156,6 +158,7 @@ std::string MembraneKind::validate(const Params& p) const {
   ParamReader r(p);
   if (std::string err = fluidBoxParams(r).validate(); !err.empty()) return err;
   if (std::string err = membraneParams(r).validate(); !err.empty()) return err;
+  if (std::string err = kernelScale(r).error; !err.empty()) return err;
   const double half = 0.5 * r.real("domain_m");
   const double dx = r.real("domain_m") / double(r.integer("cells"));
   const double reach = std::max(r.real("semi_axis_x_m"), r.real("semi_axis_y_m"));

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include "ib/kernel.hpp"
@@ -143,6 +144,44 @@ TEST_P(KernelTest, StencilWeightsEqualTheKernelAndSumToOne) {
       EXPECT_NEAR(odd, 0.5, 2e-16) << "t = " << t;
     }
   }
+}
+
+// A kernel stretched m times (a fixed physical width on a finer grid): its stencil weights are
+// phi(r / m) / m at each face and keep the partition of unity and zero first moment for every
+// whole m; m = 1 is the grid kernel bit for bit.
+TEST_P(KernelTest, StretchedStencilKeepsTheMomentConditions) {
+  const Kernel kernel = GetParam();
+  std::mt19937_64 rng(16);
+  const int largest = kMaxStencilFaces / kernel_support_cells(kernel);
+  for (int m = 1; m <= largest; ++m) {
+    const int faces = stencil_faces(kernel, m);
+    ASSERT_EQ(faces, m * kernel_support_cells(kernel));
+    for (int n = 0; n < 2000; ++n) {
+      const double t = n == 0 ? 0.0 : uniform01(rng);
+      double w[kMaxStencilFaces];
+      stretched_kernel_weights_1d(kernel, m, t, w);
+      double sum = 0.0, first = 0.0;
+      for (int a = 0; a < kMaxStencilFaces; ++a) {
+        const double r = t + faces / 2 - 1 - a;
+        if (a < faces) {
+          EXPECT_NEAR(w[a], kernel_weight_1d(kernel, r / m) / m, 1e-15) << "m = " << m << ", t = " << t;
+        } else {
+          EXPECT_EQ(w[a], 0.0);
+        }
+        sum += w[a];
+        first += r * w[a];
+      }
+      EXPECT_NEAR(sum, 1.0, 1e-14) << "m = " << m << ", t = " << t;
+      EXPECT_NEAR(first, 0.0, 1e-13) << "m = " << m << ", t = " << t;
+      if (m == 1) {
+        double base[kMaxKernelSupportCells];
+        kernel_weights_1d(kernel, t, base);
+        for (int a = 0; a < kernel_support_cells(kernel); ++a) EXPECT_EQ(w[a], base[a]);
+      }
+    }
+  }
+  EXPECT_THROW(stencil_faces(kernel, 0), std::invalid_argument);
+  EXPECT_THROW(stencil_faces(kernel, largest + 1), std::invalid_argument);
 }
 
 INSTANTIATE_TEST_SUITE_P(Kernels, KernelTest, ::testing::Values(Kernel::bilinear, Kernel::peskin4),
