@@ -25,4 +25,20 @@ struct Ringdown {
 Ringdown measureRingdown(std::span<const double> time_s, std::span<const double> deviation, double relative_floor,
                          int max_half_periods);
 
+struct DampedFit {
+  double damped_hz = 0;        // f_d = ω / 2π; NaN when no oscillation fits
+  double damping_ratio = 0;    // ζ = σ / sqrt(σ² + ω²)
+  double natural_hz = 0;       // f_n = sqrt(σ² + ω²) / 2π
+  double residual_fraction = 0;  // rms(residual) / rms(deviation − its mean), in [0, 1]
+};
+
+/// Least-squares fit of the whole free decay to one damped mode on a slow drift,
+///   d(t) ≈ e^(−σ t) (a cos ω t + b sin ω t) + c + e t,
+/// linear in (a, b, c, e) for given (ω, σ): the best (ω, σ) of a grid (f_d from 2/T to a fifth of
+/// the sampling rate, ζ from 0 to 0.8), refined twice on finer grids about the best. Unlike the
+/// zero crossings it uses every sample, so a higher mode beating in the tail or a crossing lost
+/// below the hysteresis does not change the answer; the residual says how much of the decay is not
+/// that one mode. NaN fields for fewer than 8 samples or a signal without variation.
+DampedFit fitDampedOscillation(std::span<const double> time_s, std::span<const double> deviation);
+
 }  // namespace creaturelab::jellyfish

@@ -322,8 +322,10 @@ JellyfishKind::JellyfishKind() {
                                "frequency response's amplitude, once the start-up has died away)"},
       {"ringdown_hz", "Hz", "active_cycles > 0: damped frequency of the diameter's free decay after the last active "
                           "cycle (zero crossings of ratio - 1); NaN without two half periods"},
-      {"natural_hz", "Hz", "ringdown_hz / sqrt(1 - damping_ratio^2): the bell-water natural frequency f_n"},
-      {"damping_ratio", "", "from the logarithmic decrement of successive extrema of the free decay"},
+      {"natural_hz", "Hz", "active_cycles > 0: the bell-water natural frequency f_n from a fit of one damped mode "
+                         "to the whole free decay, sqrt(sigma^2 + omega^2) / 2 pi (jellyfish/ringdown.hpp)"},
+      {"damping_ratio", "", "the same fit's sigma / sqrt(sigma^2 + omega^2)"},
+      {"mode_residual", "", "rms residual of that fit over the decay's rms: how much of the decay is not one mode"},
       {"lateral_drift_m", "m", "x displacement of the centroid over the window"},
       {"muscle_work_j", "J/m",
        "muscles' net work over the whole cycles of the window, per metre of depth: the work the body did on the "
@@ -476,14 +478,20 @@ Result JellyfishKind::run(const Params& p) const {
   m["mean_speed_m_per_s"] = {distance / duration, "m/s"};
   m["min_diameter_ratio"] = {min_ratio, ""};
   m["stroke_amplitude"] = {late_max - late_min, ""};
-  // The first two periods after release, while the breathing mode dominates (the pluck's diameter
-  // shows higher modes beating with it after that); crossings count with a hysteresis of a fifth
-  // of the last extremum (jellyfish/ringdown.hpp).
+  // Two estimates of the free decay (jellyfish/ringdown.hpp): zero crossings of the first two periods
+  // after release, with a hysteresis of a fifth of the last extremum (ringdown_hz), and a fit of one
+  // damped mode to the whole decay at the frame rate (natural_hz, damping_ratio): the crossings lose
+  // a half period whenever a higher mode beating in the tail keeps the signal under the hysteresis.
   const jellyfish::Ringdown ring = jellyfish::measureRingdown(decay_t, decay_d, 0.2, 4);
+  std::vector<double> frame_t, frame_d;
+  for (std::size_t i = 0; i < decay_t.size(); i += std::size_t(std::max(1L, plan.steps_per_frame)))
+    frame_t.push_back(decay_t[i]), frame_d.push_back(decay_d[i]);
+  const jellyfish::DampedFit fit = jellyfish::fitDampedOscillation(frame_t, frame_d);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   m["ringdown_hz"] = {release_step >= 0 ? ring.damped_hz : nan, "Hz"};
-  m["natural_hz"] = {release_step >= 0 ? ring.natural_hz : nan, "Hz"};
-  m["damping_ratio"] = {release_step >= 0 ? ring.damping_ratio : nan, ""};
+  m["natural_hz"] = {release_step >= 0 ? fit.natural_hz : nan, "Hz"};
+  m["damping_ratio"] = {release_step >= 0 ? fit.damping_ratio : nan, ""};
+  m["mode_residual"] = {release_step >= 0 ? fit.residual_fraction : nan, ""};
   m["lateral_drift_m"] = {end.centroid_m.x - start.centroid_m.x, "m"};
   m["muscle_work_j"] = {end_fluid - start_fluid, "J/m"};
   m["muscle_work_direct_j"] = {work, "J/m"};

@@ -175,6 +175,32 @@ TEST(JellyfishRingdown, NoOscillationGivesNaN) {
   EXPECT_TRUE(std::isnan(r.natural_hz));
 }
 
+// The fit of one damped mode recovers f_n and ζ at the frame rate the kind samples (25 Hz), also
+// with a second, faster mode of a third of the amplitude beating in and a slow drift: the case
+// where the zero crossings of a real pluck lose half periods under their hysteresis.
+TEST(JellyfishRingdown, DampedFitRecoversTheModeUnderABeatAndADrift) {
+  for (double zeta : {0.05, 0.15, 0.3}) {
+    const double fn = 0.65, wn = 2 * M_PI * fn, wd = wn * std::sqrt(1 - zeta * zeta);
+    std::vector<double> t, d, clean;
+    for (int i = 0; i <= 150; ++i) {  // 6 s at 25 Hz
+      const double s = i / 25.0;
+      t.push_back(s);
+      clean.push_back(-0.15 * std::exp(-zeta * wn * s) * std::cos(wd * s));
+      d.push_back(clean.back() + 0.05 * std::exp(-0.5 * s) * std::sin(2 * M_PI * 2.1 * s) + 0.002 * s);
+    }
+    const DampedFit exact = fitDampedOscillation(t, clean);
+    EXPECT_NEAR(exact.natural_hz, fn, 2e-3 * fn) << "zeta " << zeta;
+    EXPECT_NEAR(exact.damping_ratio, zeta, 5e-3) << "zeta " << zeta;
+    EXPECT_LT(exact.residual_fraction, 1e-2);
+    const DampedFit beaten = fitDampedOscillation(t, d);
+    EXPECT_NEAR(beaten.natural_hz, fn, 0.05 * fn) << "zeta " << zeta;
+    EXPECT_NEAR(beaten.damping_ratio, zeta, 0.05) << "zeta " << zeta;
+    EXPECT_GT(beaten.residual_fraction, exact.residual_fraction);  // the beat is not the mode
+  }
+  const std::vector<double> few = {0, 1, 2};
+  EXPECT_TRUE(std::isnan(fitDampedOscillation(few, few).natural_hz));
+}
+
 // ---- continuum convergence (issue 13 §1) -----------------------------------------------------
 
 // Static equilibrium of the bell under a constant active tension, by Newton's method on the body's
