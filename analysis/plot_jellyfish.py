@@ -226,8 +226,9 @@ def vorticity(sweep, points, out):
 def resonance(sweep, points, out):
     """The pluck's free decay and the driven response against frequency, f_n marked."""
     plucks = [k for k, f in enumerate(points) if plucked(f)]
-    if not plucks:
-        return
+    several_sizes = len({float(param(f, "bell_diameter_m")) for f in points}) > 1
+    if not plucks or (several_sizes and len(plucks) < len(points)):
+        return  # several sizes driven: size_scaling() draws them
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
     for k in plucks:
         f = points[k]
@@ -260,6 +261,49 @@ def resonance(sweep, points, out):
         right.axis("off")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "resonance.png"), dpi=110)
+    plt.close(fig)
+
+
+def size_scaling(sweep, points, out):
+    """Several bell sizes, each with a pluck: distance per cycle against the driving frequency per
+    size with its f_n marked, and the frequency of the largest distance against f_n (issue 13 §3)."""
+    sizes = sorted({round(float(param(f, "bell_diameter_m")), 9) for f in points})
+    if len(sizes) < 2:
+        return
+    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
+    fn_all, peak_all = [], []
+    for i, d in enumerate(sizes):
+        mine = [f for f in points if round(float(param(f, "bell_diameter_m")), 9) == d]
+        plucks = [f for f in mine if plucked(f)]
+        driven = sorted((f for f in mine if not plucked(f)), key=lambda f: float(param(f, "contraction_hz")))
+        if not plucks or not driven:
+            continue
+        fn = metric(plucks[0], "natural_hz")
+        hz = np.array([float(param(f, "contraction_hz")) for f in driven])
+        dpc = np.array([metric(f, "distance_per_cycle_m") for f in driven]) * 1e3
+        colour = f"C{i}"
+        left.plot(hz, dpc, "o-", color=colour, ms=3, label=f"{d * 100:g} cm (f_n {fn:.3g} Hz)")
+        left.axvline(fn, color=colour, ls=":", lw=1)
+        fn_all.append(fn)
+        peak_all.append(hz[int(np.nanargmax(dpc))])
+    left.set_xscale("log")
+    left.set_xlabel("driving frequency (Hz)")
+    left.set_ylabel("distance per cycle (mm)")
+    left.set_title("distance against frequency; dotted: each size's f_n")
+    left.legend(fontsize=7)
+    if fn_all:
+        line = np.array([0.8 * min(fn_all), 1.25 * max(fn_all)])
+        right.fill_between(line, 0.8 * line, 1.2 * line, color="0.9", label="within 20% of f_n")
+        right.plot(line, line, color="0.5", lw=0.8)
+        right.plot(fn_all, peak_all, "ko", label="frequency of the largest distance")
+        right.set_xscale("log")
+        right.set_yscale("log")
+    right.set_xlabel("natural frequency f_n from the pluck (Hz)")
+    right.set_ylabel("distance peak (Hz)")
+    right.set_title("peak against f_n across sizes")
+    right.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "size_scaling.png"), dpi=110)
     plt.close(fig)
 
 
@@ -330,6 +374,7 @@ def main():
         morphology(sweep, points, out, a.cycles)
     vorticity(sweep, points, out)
     resonance(sweep, points, out)
+    size_scaling(sweep, points, out)
     convergence(sweep, points, out)
     print(f"figures in {out}")
 

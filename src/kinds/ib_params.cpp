@@ -50,13 +50,17 @@ KernelScale kernelScale(const ParamReader& r) {
   const int reach_cells = ib::kernel_support_cells(kernel) / 2;
   const double dx_m = r.real("domain_m") / double(r.integer("cells"));
   const double scale = radius_m / (reach_cells * dx_m);
+  // A grid too coarse for the radius keeps its own kernel (never narrower than the grid can
+  // carry); the kernel_cells metric records the stretch each point ran with.
+  if (scale <= 1.0 + 1e-6) return {};
   const long whole = std::lround(scale);
   const int largest = ib::kMaxStencilFaces / ib::kernel_support_cells(kernel);
-  if (whole < 1 || whole > largest || std::abs(scale - double(whole)) > 1e-6 * scale) {
+  if (whole > largest || std::abs(scale - double(whole)) > 1e-6 * scale) {
     char msg[400];
     std::snprintf(msg, sizeof msg,
-                  "kernel_radius_m = %g m must be 1 to %d times the %s kernel's reach of %d cell(s) of %g m "
-                  "(domain_m / cells); it is %.4g times: change kernel_radius_m or cells",
+                  "kernel_radius_m = %g m must be a whole multiple (at most %d) of the %s kernel's reach of %d "
+                  "cell(s) of %g m (domain_m / cells), or at most one reach; it is %.4g reaches: change "
+                  "kernel_radius_m or cells",
                   radius_m, largest, r.text("kernel").c_str(), reach_cells, dx_m, scale);
     return {1, msg};
   }

@@ -289,7 +289,8 @@ JellyfishKind::JellyfishKind() {
                            "boundary is as thick as the umbrella on every grid and a grid study refines one body (with "
                            "the grid's own kernel, 2-4 cells, the distance moved 2-5x per halving, issue 13). A whole "
                            "multiple of the kernel's reach in cells (1 bilinear, 2 peskin4): 1, 2, 4 cells on 100², "
-                           "200², 400²; 0 = the grid's own kernel",
+                           "200², 400²; a grid too coarse for it (50²) keeps its own kernel; 0 = the grid's own "
+                           "kernel. Metric kernel_cells",
   });
   const std::vector<ParamSpec> rest = {
       real("viscosity_tolerance", fluid::FluidParams{}.viscosity_tolerance, "", 1e-14, 1e-2,
@@ -340,6 +341,7 @@ JellyfishKind::JellyfishKind() {
       {"max_cfl", "", "largest max(|u|,|v|) dt / dx of any step"},
       {"max_marker_speed_m_per_s", "m/s", "largest marker speed of any step"},
       {"markers", "", "immersed-boundary markers (bell + tentacles)"},
+      {"kernel_cells", "", "the kernel's stretch: its radius in units of its own reach in cells (1 = the grid's kernel)"},
       {"segment_cells", "", "drawn bell segment length in fluid cells (bell_segments = 0 keeps it <= marker_spacing_cells)"},
       {"steps", "", "coupled steps taken"},
   };
@@ -500,6 +502,7 @@ Result JellyfishKind::run(const Params& p) const {
   m["max_cfl"] = {max_cfl, ""};
   m["max_marker_speed_m_per_s"] = {max_speed, "m/s"};
   m["markers"] = {double(swimmer.markers_m().size()), ""};
+  m["kernel_cells"] = {double(swimmer.config().coupling.kernel_scale), ""};
   m["segment_cells"] = {swimmer.body().model().segment_m / swimmer.fluid().grid().dx_m, ""};
   m["steps"] = {double(plan.total_steps), ""};
   return result;

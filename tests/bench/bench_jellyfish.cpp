@@ -120,7 +120,9 @@ BENCHMARK(BM_SimulatedSecondFluidThreads)
 
 // The grid study's bell (issue 13, experiments/jellyfish/convergence.toml): the kind's defaults,
 // active tension (5 N/m²) on the calibrated bell (B = 1e-4 N m), MacCormack advection, a box 1.5
-// times as tall as wide, markers half a cell apart (64 segments on 200², 128 on 400²), dt ∝ dx.
+// times as tall as wide, markers half a cell apart (64 segments on 200², 128 on 400²), dt ∝ dx,
+// the bilinear kernel stretched to the bell's 4 mm thickness (2 cells on 200², 4 on 400²) in
+// fluid ten times as viscous as water.
 // Issue 13 §4's goal: an 11 s point (10 s window + a 0.7 Hz warm-up cycle) in <= 60 s on one core,
 // i.e. >= 0.18 simulated s per CPU s at the converged grid. Measured 2026-11-24 at load 5 on the
 // 2-core machine: 200², 0.49 simulated s per CPU s (5.1 ms per step; an 11 s point in 23 s of
@@ -129,8 +131,10 @@ BENCHMARK(BM_SimulatedSecondFluidThreads)
 // 75% in the fluid (MacCormack 26%, FFT 19%, viscosity 13%) and 15% in the dense LU.
 void BM_SimulatedSecondGridStudy(benchmark::State& state) {
   const int cells = static_cast<int>(state.range(0));
-  SwimmerConfig c = paperConfig(cells, ib::Kernel::peskin4);
-  c.bell.segments = cells / 200 * 64;
+  SwimmerConfig c = paperConfig(cells, ib::Kernel::bilinear);
+  c.coupling.kernel_scale = cells / 100;
+  c.fluid.kinematic_viscosity_m2_per_s = 1.304e-5;
+  c.bell.segments = cells * 64 / 200;
   c.bell.muscle_model = MuscleModel::active_tension;
   c.bell.muscle_tension_n_per_m2 = 5.0;
   c.bell.bending_rigidity_n_m = 1.0e-4;
@@ -143,6 +147,7 @@ void BM_SimulatedSecondGridStudy(benchmark::State& state) {
 }
 BENCHMARK(BM_SimulatedSecondGridStudy)
     ->ArgNames({"cells"})
+    ->Arg(100)
     ->Arg(200)
     ->Arg(400)
     ->UseManualTime()

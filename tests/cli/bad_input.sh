@@ -70,6 +70,16 @@ mass_kg = 5.0
 EOF
 expect_bad out_of_range "params.mass_kg: got 5, expected a value in [1e-15, 1]" "$scratch/out_of_range.toml"
 
+# A kernel radius that is no whole number of the grid's reach (3 mm on 2 mm cells) is refused
+# before any point runs: a grid study must refine one body.
+write kernel_radius <<'EOF'
+kind = "jellyfish"
+[params]
+cells = 200
+kernel_radius_m = 0.003
+EOF
+expect_bad kernel_radius "kernel_radius_m = 0.003 m must be a whole multiple" "$scratch/kernel_radius.toml"
+
 write unknown_kind <<'EOF'
 kind = "jelyfish_xyz"
 EOF
