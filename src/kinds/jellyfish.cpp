@@ -31,10 +31,12 @@ std::vector<Knot> knots(const ParamReader& r) {
   return out;
 }
 
-// Calibrated parameters of the active-tension bell (issue 13; measured at 200², MacCormack, in
-// water and at ten times its viscosity): B = 1e-4 N m gives a pluck f_n of 0.73 / 0.76 Hz (the
-// paper's §3.3 gait runs at the resonance, 0.7 Hz, Fig. 5); T_max = 5 N/m² driven at 0.7 Hz gives
-// the smallest diameter ratio 0.54 / 0.58 (Fig. 3: "56% of its maximum diameter").
+// Calibrated parameters of the active-tension bell (issue 13). B = 1e-4 N m was chosen on 200² with
+// Peskin's grid kernel to put the pluck's f_n at the paper's resonant 0.7 Hz (§3.3, Fig. 5: 0.73 Hz
+// there). With the kind's converged defaults (hat kernel of the bell's 4 mm thickness, ν = 1.304e-5)
+// the same B rings at 0.641 / 0.629 Hz on 100² / 200² (frequency_sweep.toml), still inside Fig. 5's
+// 0.6-0.8 Hz, and was kept. T_max = 5 N/m² driven at 0.7 Hz gives the smallest diameter ratio 0.59
+// (0.53 at 0.6 Hz; Fig. 3: "56% of its maximum diameter").
 constexpr double kCalibratedBendingRigidity = 1.0e-4;
 constexpr double kCalibratedTension = 5.0;
 
@@ -238,7 +240,8 @@ JellyfishKind::JellyfishKind() {
       real("bell_modulus_pa", bell.bell_modulus_pa, "Pa", 1e-6, 1e12, "bell mesoglea, λ = 1186 Pa (Fig. 12); k = E t / L"),
       real("bending_rigidity_n_m", kCalibratedBendingRigidity, "N m", 0, 1e6,
            "bending rigidity B per metre of depth; a joint's angular spring is B / L. Calibrated: 1e-4 puts the 4 cm "
-           "bell's natural frequency in water at the 0.7 Hz of the paper's resonant gait (§3.3; natural_frequency.toml). "
+           "bell's natural frequency in the 0.6-0.8 Hz of the paper's resonant gait (§3.3, Fig. 5; 0.63 Hz on 200², "
+           "frequency_sweep.toml). "
            "Fig. 12's 1.186 N·m/rad has no depth or segment length: read per metre of depth on the 32-segment chain it "
            "is 2.352e-3 (f_n 2.9 Hz); the plate value E t^3/12 of the paper's mesoglea is 6.3e-6"),
       real("stiffness_scale", 1.0, "", 1e-3, 1e3,
@@ -255,7 +258,7 @@ JellyfishKind::JellyfishKind() {
            "every two 1.98 mm segments, see jellyfish_params.hpp)"),
       real("muscle_tension_n_per_m2", kCalibratedTension, "N/m^2", 0, 1e9,
            "active_tension: peak tension per metre of depth per metre of band arc. Not given by the paper; calibrated: 5 "
-           "contracts the 4 cm bell to about the paper's 0.56 of its diameter (Fig. 3) driven at 0.7 Hz"),
+           "contracts the 4 cm bell to about the paper's 0.56 of its diameter (Fig. 3): 0.53-0.59 driven at 0.6-0.7 Hz"),
       boolean("tentacles", bell.tentacles, "passive tentacle chains at the aperture (§3.2)"),
       real("tentacle_length_m", bell.tentacle_length_m, "m", 1e-5, 10, "not given; half a diameter"),
       real("tentacle_area_factor", bell.tentacle_area_factor, "", 1e-9, 10, "Fig. 12: 1/100 of the bell's section"),
