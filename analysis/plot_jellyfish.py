@@ -265,8 +265,9 @@ def resonance(sweep, points, out):
 
 
 def size_scaling(sweep, points, out):
-    """Several bell sizes, each with a pluck: distance per cycle against the driving frequency per
-    size with its f_n marked, and the frequency of the largest distance against f_n (issue 13 §3)."""
+    """Several bell sizes, each with a pluck: distance travelled in the window against the driving
+    frequency per size with its f_n marked, and the frequency of the largest distance against f_n
+    (issue 13 §3)."""
     sizes = sorted({round(float(param(f, "bell_diameter_m")), 9) for f in points})
     if len(sizes) < 2:
         return
@@ -280,15 +281,15 @@ def size_scaling(sweep, points, out):
             continue
         fn = metric(plucks[0], "natural_hz")
         hz = np.array([float(param(f, "contraction_hz")) for f in driven])
-        dpc = np.array([metric(f, "distance_per_cycle_m") for f in driven]) * 1e3
+        dist = np.array([metric(f, "distance_m") for f in driven]) * 1e3
         colour = f"C{i}"
-        left.plot(hz, dpc, "o-", color=colour, ms=3, label=f"{d * 100:g} cm (f_n {fn:.3g} Hz)")
+        left.plot(hz, dist, "o-", color=colour, ms=3, label=f"{d * 100:g} cm (f_n {fn:.3g} Hz)")
         left.axvline(fn, color=colour, ls=":", lw=1)
         fn_all.append(fn)
-        peak_all.append(hz[int(np.nanargmax(dpc))])
+        peak_all.append(hz[int(np.nanargmax(dist))])
     left.set_xscale("log")
     left.set_xlabel("driving frequency (Hz)")
-    left.set_ylabel("distance per cycle (mm)")
+    left.set_ylabel("distance in the window (mm)")
     left.set_title("distance against frequency; dotted: each size's f_n")
     left.legend(fontsize=7)
     if fn_all:
