@@ -8,7 +8,7 @@ namespace creaturelab::kinds {
 std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& d) {
   return {
       real("domain_m", d.domain_m, "m", 1e-3, 100, d.domain_doc),
-      integer("cells", 100, 8, 2048, d.cells_doc),
+      integer("cells", d.cells, 8, 2048, d.cells_doc),
       real("density_kg_per_m3", 1000.0, "kg/m^3", 1e-3, 1e6, d.density_doc),
       real("kinematic_viscosity_m2_per_s", d.kinematic_viscosity_m2_per_s, "m^2/s", 0, 10, d.viscosity_doc),
       choice("advection", d.advection, {"semi_lagrangian", "maccormack"}, d.advection_doc),

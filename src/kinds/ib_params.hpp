@@ -17,6 +17,7 @@ struct FluidBoxDefaults {
   double domain_m = 0;
   std::string domain_doc;
   std::string cells_doc;
+  long cells = 100;
   std::string density_doc;
   double kinematic_viscosity_m2_per_s = 0;
   std::string viscosity_doc;

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "fluid/mac_grid2.hpp"
 #include "ib/kernel.hpp"
 #include "ib/transfer.hpp"
@@ -244,6 +246,77 @@ TEST_P(TransferTest, InterpolationIsExactForLinearFields) {
     for (std::size_t k = 0; k < p.size(); ++k) {
       EXPECT_NEAR(velocity[k].x, a + b * p[k].x + c * p[k].y, 1e-13 * scale) << "marker " << k;
       EXPECT_NEAR(velocity[k].y, d + e * p[k].x + g * p[k].y, 1e-13 * scale) << "marker " << k;
+    }
+  }
+}
+
+// The kernel stretched to 2 and 4 cells per kernel unit (a fixed physical width on a finer grid,
+// Transfer::locate's kernel_scale): the total force is conserved, a linear field is interpolated
+// exactly, spreading is the adjoint of interpolation, and the Gram matrix is interpolate(spread).
+TEST_P(TransferTest, StretchedKernelKeepsConservationExactnessAndAdjointness) {
+  std::mt19937_64 rng(91);
+  for (int scale : {2, 4}) {
+    const double margin = 0.5 * scale * support() * kDx;
+    const double inset = 1e-9 * kDx;
+    std::vector<Vec2> p;
+    for (int k = 0; k < 60; ++k)
+      p.push_back({uniform(rng, margin, kNx * kDx - margin - inset), uniform(rng, margin, kNy * kDx - margin - inset)});
+    const std::vector<Vec2> f = random_vectors(92 + scale, static_cast<int>(p.size()), 1.0);
+    Transfer transfer;
+    transfer.locate(grid_, kernel(), p, scale);
+    ASSERT_EQ(transfer.stencil_faces(), scale * support());
+    ASSERT_EQ(transfer.kernel_scale(), scale);
+
+    FaceVectorField2 density(kNx, kNy);
+    transfer.spread(f, density);
+    CompensatedSum fx, fy, want_x, want_y;
+    for (std::size_t n = 0; n < density.x.size(); ++n) fx.add(kDx * kDx * density.x.data()[n]);
+    for (std::size_t n = 0; n < density.y.size(); ++n) fy.add(kDx * kDx * density.y.data()[n]);
+    for (const Vec2& v : f) want_x.add(v.x), want_y.add(v.y);
+    EXPECT_NEAR(fx.value(), want_x.value(), 1e-13) << "scale " << scale;
+    EXPECT_NEAR(fy.value(), want_y.value(), 1e-13) << "scale " << scale;
+
+    const double a = 0.3, b = -2.0, c = 1.5, d = -0.7, e = 4.0, g = 0.25;
+    for (int j = 0; j < kNy; ++j)
+      for (int i = 0; i <= kNx; ++i) {
+        const Vec2 x = grid_.u_position_m(i, j);
+        grid_.u_m_per_s(i, j) = a + b * x.x + c * x.y;
+      }
+    for (int j = 0; j <= kNy; ++j)
+      for (int i = 0; i < kNx; ++i) {
+        const Vec2 x = grid_.v_position_m(i, j);
+        grid_.v_m_per_s(i, j) = d + e * x.x + g * x.y;
+      }
+    std::vector<Vec2> velocity(p.size());
+    transfer.interpolate(grid_, velocity);
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      EXPECT_NEAR(velocity[k].x, a + b * p[k].x + c * p[k].y, 1e-13) << "scale " << scale << ", marker " << k;
+      EXPECT_NEAR(velocity[k].y, d + e * p[k].x + g * p[k].y, 1e-13) << "scale " << scale << ", marker " << k;
+    }
+
+    fill_random(grid_.u_m_per_s, rng, 0.3);
+    fill_random(grid_.v_m_per_s, rng, 0.3);
+    transfer.interpolate(grid_, velocity);
+    CompensatedSum grid_side, marker_side;
+    for (std::size_t n = 0; n < density.x.size(); ++n)
+      grid_side.add(kDx * kDx * density.x.data()[n] * grid_.u_m_per_s.data()[n]);
+    for (std::size_t n = 0; n < density.y.size(); ++n)
+      grid_side.add(kDx * kDx * density.y.data()[n] * grid_.v_m_per_s.data()[n]);
+    for (std::size_t k = 0; k < p.size(); ++k) marker_side.add(f[k].x * velocity[k].x + f[k].y * velocity[k].y);
+    EXPECT_NEAR(grid_side.value(), marker_side.value(), 1e-13) << "scale " << scale;
+
+    // G F / dx² = interpolate(spread(F)) on the located stencils.
+    grid_.u_m_per_s = density.x;
+    grid_.v_m_per_s = density.y;
+    transfer.interpolate(grid_, velocity);
+    Eigen::MatrixXd gram;
+    transfer.gram(gram);
+    Eigen::VectorXd fv(2 * p.size());
+    for (std::size_t k = 0; k < p.size(); ++k) fv[2 * k] = f[k].x, fv[2 * k + 1] = f[k].y;
+    const Eigen::VectorXd via_gram = gram * fv / (kDx * kDx);
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      EXPECT_NEAR(via_gram[2 * k], velocity[k].x, 1e-9 * via_gram.cwiseAbs().maxCoeff()) << "scale " << scale;
+      EXPECT_NEAR(via_gram[2 * k + 1], velocity[k].y, 1e-9 * via_gram.cwiseAbs().maxCoeff()) << "scale " << scale;
     }
   }
 }
