@@ -268,7 +268,7 @@ JellyfishKind::JellyfishKind() {
       .domain_m = 0.4,
       .domain_doc = "side of the square free-slip box: ten diameters (§3.2)",
       .cells_doc = "fluid cells across the box (Fig. 12: 100; also 50). 200 by default: at and below the bell's "
-                   "natural frequency its distance per cycle is within 2-5% of 400²'s and its stroke within 0.3-2.4% "
+                   "natural frequency its distance per cycle is within 1.7-8.5% of 400²'s and its stroke within 0.3-4% "
                    "(convergence.toml); 100² is the paper's quick grid (40-70% off)",
       .cells = 200,
       .density_doc = "paper: '1' without units, read as g/cm^3",
