@@ -12,6 +12,7 @@
 #include "cli/render_commands.hpp"
 #include "io/hdf5.hpp"
 #include "kinds/param_toml.hpp"
+#include "kinds/render_params.hpp"
 #include "runner/checks.hpp"
 #include "runner/compare.hpp"
 #include "runner/experiment.hpp"
@@ -95,9 +96,20 @@ int Commands::run(const RunArgs& args) const {
   return report.exitCode();
 }
 
+namespace {
+
+void printSpecs(const std::vector<kinds::ParamSpec>& specs) {
+  for (const auto& p : specs)
+    std::printf("  %-26s %-8s default %-14s range %-34s %s\n", p.name.c_str(), p.unit.empty() ? "-" : p.unit.c_str(),
+                kinds::describeValue(p.default_value).c_str(), kinds::describeRange(p).c_str(), p.doc.c_str());
+}
+
+}  // namespace
+
 int Commands::list(const std::string& kind_name) const {
   if (kind_name == "render") {
-    listRenderSettings();
+    std::printf("render: settings of `creaturelab render` (key=value; Rudolf & Mould 2009 §3.4-3.5, Fig. 12)\n");
+    printSpecs(kinds::renderParamSpecs());
     return 0;
   }
   if (!kind_name.empty() && !registry_.find(kind_name))
@@ -105,9 +117,7 @@ int Commands::list(const std::string& kind_name) const {
   for (const auto& kind : registry_.all()) {
     if (!kind_name.empty() && kind->name() != kind_name) continue;
     std::printf("%s: %s\n", kind->name().c_str(), kind->doc().c_str());
-    for (const auto& p : kind->params())
-      std::printf("  %-26s %-8s default %-14s range %-34s %s\n", p.name.c_str(), p.unit.empty() ? "-" : p.unit.c_str(),
-                  kinds::describeValue(p.default_value).c_str(), kinds::describeRange(p).c_str(), p.doc.c_str());
+    printSpecs(kind->params());
     std::printf("  metrics:\n");
     for (const auto& m : kind->metrics())
       std::printf("  %-26s %-8s %s\n", m.name.c_str(), m.unit.empty() ? "-" : m.unit.c_str(), m.doc.c_str());

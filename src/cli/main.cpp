@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
 
   std::string kind_name;
   auto* list = app.add_subcommand("list", "every kind and each parameter with unit, default, range and doc");
-  list->add_option("kind", kind_name, "only this kind");
+  list->add_option("kind", kind_name, "only this kind; `render` for the settings of creaturelab render");
 
   std::string file;
   std::vector<std::string> overrides;

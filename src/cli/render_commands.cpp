@@ -2,7 +2,6 @@
 
 #include <cstdio>
 
-#include "kinds/render_params.hpp"
 #include "runner/experiment.hpp"
 
 namespace creaturelab::cli {
@@ -30,14 +29,6 @@ int render(const runner::RenderRunOptions& options) {
               r.frames, r.vertices, r.triangles, r.render_ms_per_frame);
   std::printf("  wrote%s%s\n", others.c_str(), obj ? (" and " + std::to_string(obj) + " OBJ frame(s) in obj/").c_str() : "");
   return 0;
-}
-
-void listRenderSettings() {
-  std::printf("render: settings of `creaturelab render` (key=value; Rudolf & Mould 2009 §3.4-3.5, Fig. 12)\n");
-  for (const auto& p : kinds::renderParamSpecs())
-    std::printf("  %-26s %-8s default %-14s range %-34s %s\n", p.name.c_str(), p.unit.empty() ? "-" : p.unit.c_str(),
-                kinds::describeValue(p.default_value).c_str(), kinds::describeRange(p).c_str(), p.doc.c_str());
-  std::printf("\n");
 }
 
 }  // namespace creaturelab::cli

@@ -8,7 +8,4 @@ namespace creaturelab::cli {
 /// its input was accepted (a write, povray). Bad input is thrown (ExperimentError: exit 2).
 int render(const runner::RenderRunOptions& options);
 
-/// `creaturelab list render`: every render setting with unit, default, range and doc.
-void listRenderSettings();
-
 }  // namespace creaturelab::cli
