@@ -32,7 +32,8 @@ test-asan: deps
 reproduce: build
 	@$(BUILD)/creaturelab reproduce; status=$$?; \
 	  /usr/bin/python3 analysis/draw_runs.py results/runs/reproduce || status=$$((status ? status : 4)); \
-	  echo "figures: results/runs/reproduce/*/figures/"; exit $$status
+	  echo "figures: results/runs/reproduce/*/figures/ (Figs. 7, 9, 10 and the 3-D swim: results/runs/reproduce/render_swim/render_point_000000/)"; \
+	  exit $$status
 
 bench: build
 	@for b in $(BUILD)/tests/bench_*; do [ -x "$$b" ] && "$$b"; done

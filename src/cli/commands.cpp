@@ -6,9 +6,13 @@
 #include <fstream>
 #include <iostream>
 #include <new>
+#include <sstream>
 #include <toml++/toml.h>
 
+#include "cli/render_commands.hpp"
 #include "io/hdf5.hpp"
+#include "kinds/param_toml.hpp"
+#include "kinds/render_params.hpp"
 #include "runner/checks.hpp"
 #include "runner/compare.hpp"
 #include "runner/experiment.hpp"
@@ -92,15 +96,28 @@ int Commands::run(const RunArgs& args) const {
   return report.exitCode();
 }
 
+namespace {
+
+void printSpecs(const std::vector<kinds::ParamSpec>& specs) {
+  for (const auto& p : specs)
+    std::printf("  %-26s %-8s default %-14s range %-34s %s\n", p.name.c_str(), p.unit.empty() ? "-" : p.unit.c_str(),
+                kinds::describeValue(p.default_value).c_str(), kinds::describeRange(p).c_str(), p.doc.c_str());
+}
+
+}  // namespace
+
 int Commands::list(const std::string& kind_name) const {
+  if (kind_name == "render") {
+    std::printf("render: settings of `creaturelab render` (key=value; Rudolf & Mould 2009 §3.4-3.5, Fig. 12)\n");
+    printSpecs(kinds::renderParamSpecs());
+    return 0;
+  }
   if (!kind_name.empty() && !registry_.find(kind_name))
-    throw UsageError("unknown kind '" + kind_name + "'");
+    throw UsageError("unknown kind '" + kind_name + "' (`creaturelab list render` shows the render settings)");
   for (const auto& kind : registry_.all()) {
     if (!kind_name.empty() && kind->name() != kind_name) continue;
     std::printf("%s: %s\n", kind->name().c_str(), kind->doc().c_str());
-    for (const auto& p : kind->params())
-      std::printf("  %-26s %-8s default %-14s range %-34s %s\n", p.name.c_str(), p.unit.empty() ? "-" : p.unit.c_str(),
-                  kinds::describeValue(p.default_value).c_str(), kinds::describeRange(p).c_str(), p.doc.c_str());
+    printSpecs(kind->params());
     std::printf("  metrics:\n");
     for (const auto& m : kind->metrics())
       std::printf("  %-26s %-8s %s\n", m.name.c_str(), m.unit.empty() ? "-" : m.unit.c_str(), m.doc.c_str());
@@ -166,6 +183,42 @@ int Commands::digest(const std::string& run_dir) const {
   return 0;
 }
 
+// The list's [[render]] entries, after its experiments: `creaturelab render RUN --figures ...` on
+// recorded swims (run = the run folder under results/runs/reproduce; frames, settings, figures).
+int Commands::reproduceRenders(const toml::table& list, const std::string& file) const {
+  const auto* renders = list["render"].as_array();
+  if (!renders) return 0;
+  int code = 0;
+  for (auto&& entry : *renders) {
+    const auto* t = entry.as_table();
+    if (!t || !(*t)["run"].is_string()) throw UsageError(file + ": each [[render]] needs run = \"<experiment stem>\"");
+    for (auto&& [key, value] : *t)
+      if (std::string problem = kinds::unknownKeyText(std::string(key.str()), {"run", "frames", "figures", "settings"});
+          !problem.empty())
+        throw UsageError(file + ": [[render]]: " + problem);
+    runner::RenderRunOptions o;
+    o.source = "results/runs/reproduce/" + (*t)["run"].value_or(std::string());
+    o.frames = (*t)["frames"].value_or(std::string());
+    o.figures = (*t)["figures"].value_or(false);
+    o.force = true;
+    if (const auto* settings = (*t)["settings"].as_table())
+      for (auto&& [key, value] : *settings) {
+        std::ostringstream text;
+        if (value.is_string()) text << *value.value<std::string>();
+        else text << toml::json_formatter{value};
+        o.overrides.push_back(std::string(key.str()) + "=" + text.str());
+      }
+    std::fprintf(stderr, "== render %s\n", o.source.c_str());
+    try {
+      code = std::max(code, render(o));
+    } catch (const runner::ExperimentError& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      code = std::max(code, 2);
+    }
+  }
+  return code;
+}
+
 int Commands::reproduce(const ReproduceArgs& args) const {
   toml::table list;
   if (fs::is_directory(args.list)) throw UsageError(args.list + ": is a folder; expected a TOML file listing experiments");
@@ -195,6 +248,7 @@ int Commands::reproduce(const ReproduceArgs& args) const {
     code = std::max(code, r.exitCode());
   }
   if (primary()) std::printf("\n== checks of every experiment\n%s", runner::formatCheckTable(all).c_str());
+  if (primary()) code = std::max(code, reproduceRenders(list, args.list));
   return code;
 }
 

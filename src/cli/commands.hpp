@@ -1,6 +1,7 @@
 #pragma once
 // The verbs of the creaturelab command line. Each returns the process exit code.
 #include <functional>
+#include <toml++/toml.h>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,7 @@ class Commands {
  private:
   bool primary() const { return cluster_.rank() == 0; }
   void printReport(const runner::RunReport& report) const;
+  int reproduceRenders(const toml::table& list, const std::string& file) const;
 
   const runner::Cluster& cluster_;
   kinds::Registry registry_;

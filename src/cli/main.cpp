@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/fit_commands.hpp"
+#include "cli/render_commands.hpp"
 #include "runner/cluster.hpp"
 #include "runner/experiment.hpp"
 
@@ -32,7 +33,7 @@ int main(int argc, char** argv) {
 
   std::string kind_name;
   auto* list = app.add_subcommand("list", "every kind and each parameter with unit, default, range and doc");
-  list->add_option("kind", kind_name, "only this kind");
+  list->add_option("kind", kind_name, "only this kind; `render` for the settings of creaturelab render");
 
   std::string file;
   std::vector<std::string> overrides;
@@ -69,6 +70,22 @@ int main(int argc, char** argv) {
   auto* reproduce = app.add_subcommand("reproduce", "run the default experiments and print their checks");
   reproduce->add_option("--list", rep.list, "file listing the experiments")->capture_default_str();
   reproduce->add_option("-j,--jobs", rep.jobs, "points run in parallel (default: the cores)");
+
+  runner::RenderRunOptions ren;
+  auto* render = app.add_subcommand("render", "a recorded jellyfish swim as a 3-D animated mesh: HDF5 + XDMF, .glb, "
+                                              "OBJ frames; --figures draws Figs. 7, 9, 10 with POV-Ray");
+  render->add_option("source", ren.source, "a jellyfish point file (.h5) or run folder")->required();
+  render->add_option("settings", ren.overrides, "render settings key=value, e.g. rings=48 noise=false "
+                                                "(`creaturelab list render`)");
+  render->add_option("--point", ren.point, "point index when SOURCE is a run folder")->capture_default_str();
+  render->add_option("--frames", ren.frames, "frames A:B or A:B:STEP (B exclusive), or one frame K (default: all)");
+  render->add_option("-o,--out", ren.out_dir, "output folder (default: beside the point file, render_point_NNNNNN)");
+  render->add_flag("--force", ren.force, "replace an existing output folder");
+  render->add_flag("--figures", ren.figures, "also draw Figs. 7, 9, 10 (PNG, POV-Ray headless) into OUT/figures");
+  render->add_option("--figure-scale", ren.figure_scale, "multiplies the figures' pixel sizes")->capture_default_str();
+  bool no_obj = false, no_glb = false;
+  render->add_flag("--no-obj", no_obj, "skip the OBJ frames");
+  render->add_flag("--no-glb", no_glb, "skip the .glb");
 
   cli::FitSplineArgs fsa;
   cli::FitControllerArgs fca;
@@ -108,6 +125,11 @@ int main(int argc, char** argv) {
   return commands.guard([&] {
     if (*run) return commands.run(run_args);
     if (*list) return commands.list(kind_name);
+    if (*render) {
+      ren.obj = !no_obj;
+      ren.glb = !no_glb;
+      return cli::render(ren);
+    }
     if (*show) return commands.show(file, overrides);
     if (*check) return commands.check(run_dir, !check_no_verify);
     if (*compare) return commands.compare(cmp);

@@ -111,6 +111,37 @@ Dataset writeArray(const Group& group, const std::string& name, const double* da
   return writeNumeric(group, name, data, dims, chunk_dims, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE);
 }
 
+Dataset writeArray(const Group& group, const std::string& name, const std::int64_t* data, std::vector<hsize_t> dims,
+                   std::optional<std::vector<hsize_t>> chunk_dims) {
+  return writeNumeric(group, name, data, dims, chunk_dims, H5T_STD_I64LE, H5T_NATIVE_INT64);
+}
+
+Dataset createArray(const Group& group, const std::string& name, std::vector<hsize_t> dims,
+                    std::optional<std::vector<hsize_t>> chunk_dims) {
+  auto lock = lockHdf5();
+  return createDataset(group, name, H5T_IEEE_F64LE, dims, chunk_dims);
+}
+
+void writeSlab(const Dataset& dataset, hsize_t first, hsize_t count, const double* data) {
+  auto lock = lockHdf5();
+  Handle file_space(detail::check(H5Dget_space(dataset.id()), dataset.id(), "", "get the shape of dataset"));
+  std::vector<hsize_t> dims = detail::extentOf(file_space.id());
+  if (dims.empty() || first + count > dims[0]) {
+    detail::failAt(dataset.id(), "", "write rows of dataset",
+                   "rows " + std::to_string(first) + ".." + std::to_string(first + count) + " are outside its " +
+                       std::to_string(dims.empty() ? 0 : dims[0]) + " rows");
+  }
+  std::vector<hsize_t> start(dims.size(), 0), extent = dims;
+  start[0] = first;
+  extent[0] = count;
+  detail::check(H5Sselect_hyperslab(file_space.id(), H5S_SELECT_SET, start.data(), nullptr, extent.data(), nullptr),
+                dataset.id(), "", "select rows of dataset");
+  Handle memory_space = detail::dataspaceOf(extent);
+  if (count == 0) return;
+  detail::check(H5Dwrite(dataset.id(), H5T_NATIVE_DOUBLE, memory_space.id(), file_space.id(), H5P_DEFAULT, data),
+                dataset.id(), "", "write rows of dataset");
+}
+
 std::vector<double> readVectorDouble(const Group& group, const std::string& name) {
   return readNumeric<double>(group, name, 1, H5T_NATIVE_DOUBLE);
 }

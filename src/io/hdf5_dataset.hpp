@@ -29,6 +29,17 @@ Dataset writeScalar(const Group& group, const std::string& name, double value);
 Dataset writeArray(const Group& group, const std::string& name, const double* data, std::vector<hsize_t> dims,
                    std::optional<std::vector<hsize_t>> chunk_dims = std::nullopt);
 
+// The same for integers (e.g. a mesh's (triangles, 3) vertex indices).
+Dataset writeArray(const Group& group, const std::string& name, const std::int64_t* data, std::vector<hsize_t> dims,
+                   std::optional<std::vector<hsize_t>> chunk_dims = std::nullopt);
+
+// A dataset of doubles written later in slabs along its first dimension (frames written as they
+// are made): createArray makes it (contents 0 until written), writeSlab writes `count` rows from
+// row `first`, each row the product of the other dimensions.
+Dataset createArray(const Group& group, const std::string& name, std::vector<hsize_t> dims,
+                    std::optional<std::vector<hsize_t>> chunk_dims = std::nullopt);
+void writeSlab(const Dataset& dataset, hsize_t first, hsize_t count, const double* data);
+
 // 1-D readers (a rank other than 1 is an error).
 std::vector<double> readVectorDouble(const Group& group, const std::string& name);
 std::vector<std::int64_t> readVectorInt64(const Group& group, const std::string& name);

@@ -150,6 +150,12 @@ class Recorder {
     tracers_ = &result.lagrangian["tracers_m"];
     tracers_->points = int(s.fluid().tracers_m().size());
     tracers_->dim = 2;
+    // Each muscle element's activation a in [0, 1] (0 relaxed, 1 fully contracted): the muscle
+    // state the renderer's compression ridges follow (Rudolf & Mould 2009 §3.5; src/render/).
+    activation_ = &result.lagrangian["muscle_activation"];
+    activation_->points = int(s.body().model().muscles.size());
+    activation_->dim = 1;
+    activation_->unit = "";
     const auto& g = s.fluid().grid();
     result.fields.nx = g.nx;
     result.fields.ny = g.ny;
@@ -165,6 +171,10 @@ class Recorder {
     work_->values.push_back(s.fluid_work_j_per_m());
     markers_->time_s.push_back(o.time_s);
     for (const auto& p : s.markers_m()) markers_->data.insert(markers_->data.end(), {p.x, p.y});
+    if (activation_->points > 0) {
+      activation_->time_s.push_back(o.time_s);
+      for (int m = 0; m < activation_->points; ++m) activation_->data.push_back(s.body().activation(m, o.time_s));
+    }
     if (tracers_->points > 0) {
       tracers_->time_s.push_back(o.time_s);
       for (const auto& p : s.fluid().tracers_m()) tracers_->data.insert(tracers_->data.end(), {p.x, p.y});
@@ -181,7 +191,7 @@ class Recorder {
  private:
   Result& result_;
   Series *time_, *cx_, *cy_, *ratio_, *factor_, *work_;
-  Tracks *markers_, *tracers_;
+  Tracks *markers_, *tracers_, *activation_;
   fluid::Array2 w_;
 };
 

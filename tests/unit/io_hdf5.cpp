@@ -310,3 +310,26 @@ TEST(Hdf5Handle, IsMoveOnlyAndClosesOnce) {
   EXPECT_FALSE(second.valid());
   EXPECT_LE(H5Iis_valid(raw), 0);
 }
+
+TEST_F(Hdf5Test, SlabsAndIntegerArrays) {
+  // A (frames, rows, 3) array written a frame at a time, and an integer table (a mesh's triangles).
+  const std::vector<std::int64_t> table = {0, 1, 2, 2, 1, 3};
+  {
+    auto f = io::File::create(file("s.h5"));
+    const io::Dataset d = io::createArray(f.root(), "frames", {3, 2, 3}, std::vector<hsize_t>{1, 2, 3});
+    for (int k = 0; k < 3; ++k) {
+      const std::vector<double> frame = {k + 0.0, k + 0.1, k + 0.2, k + 0.3, k + 0.4, k + 0.5};
+      io::writeSlab(d, hsize_t(k), 1, frame.data());
+    }
+    const std::vector<double> beyond(6, 0.0);
+    EXPECT_THROW(io::writeSlab(d, 3, 1, beyond.data()), io::Hdf5Error);  // the fourth frame of three
+    io::writeArray(f.root(), "table", table.data(), {2, 3});
+  }
+  auto f = io::File::openReadOnly(file("s.h5"));
+  EXPECT_EQ(io::datasetShape(f.root(), "frames"), (std::vector<hsize_t>{3, 2, 3}));
+  const auto all = io::readArrayDouble(f.root(), "frames");
+  EXPECT_EQ(all[0], 0.0);
+  EXPECT_EQ(all[6 + 4], 1.4);
+  EXPECT_EQ(all[12 + 5], 2.5);
+  EXPECT_EQ(io::datasetShape(f.root(), "table"), (std::vector<hsize_t>{2, 3}));
+}

@@ -1,0 +1,46 @@
+#pragma once
+// POV-Ray 3.7 scene text for the paper's figures (Rudolf & Mould 2009 Figs. 7, 9, 10), written from
+// the meshes; the caller writes the files and runs povray headless (runner/render_run.cpp). Surfaces
+// are Lambertian (§4: "rendered with a simple Lambertian surface lighting model"): diffuse only, no
+// highlights. POV-Ray is left-handed: a point (x, y, z) of the render frame is <x, y, −z> there.
+#include <string>
+#include <vector>
+
+#include "render/slice_model2.hpp"
+#include "render/triangle_mesh.hpp"
+
+namespace creaturelab::render {
+
+/// An include file declaring `name` as the mesh (mesh2 with per-vertex normals).
+std::string povMeshInclude(const TriangleMesh& mesh, const std::string& name);
+
+struct Bounds {
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  void add(Vec3 p);
+  Vec3 centre() const { return 0.5 * (lo + hi); }
+};
+Bounds boundsOf(const TriangleMesh& mesh);
+
+struct PovView {
+  int width_px = 1600, height_px = 900;
+  double elevation_deg = 18;  // camera above the horizontal
+  double azimuth_deg = 0;     // about the vertical, 0 = looking at the slice plane's front
+  double margin = 0.08;       // blank border, as a fraction of the framed size
+};
+
+/// A mesh declared in `include_file` as `name`, moved by `offset` (render frame, m), with a caption.
+struct PovPlacement {
+  std::string include_file, name, caption;
+  Bounds bounds;  // of the mesh before the offset
+  Vec3 offset;
+};
+
+/// Meshes side by side on white, lit from above left, framed by an orthographic camera.
+std::string povGalleryScene(const std::vector<PovPlacement>& items, const PovView& view, const std::string& title);
+
+/// Fig. 7: the 2-D slice (markers, generated exumbrellar points, resampled outline) in its plane,
+/// with the pairs of the listed rings, each pair's axis and its disc.
+std::string povSliceDiscsScene(const Slice2& slice, const std::vector<int>& rings, const PovView& view,
+                               const std::string& title);
+
+}  // namespace creaturelab::render

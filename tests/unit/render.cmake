@@ -1,0 +1,12 @@
+# tests for unit/render: the jellyfish's render model (Rudolf & Mould 2009 §3.4-3.5): the 2-D slice
+# (splines, thickness, degenerate outlines), the disc extrapolation (surfaces of revolution, closed
+# oriented meshes), the variations of Eq. 2 and the exporters (.glb round trip with tinygltf, OBJ,
+# XDMF, POV-Ray). Each test well under 1 s.
+creaturelab_test(render_unit_test unit
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/render_slice_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/render_mesh_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/render_variation_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/render_export_test.cpp
+  LIBS cl_render cl_io
+)
