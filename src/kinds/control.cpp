@@ -172,15 +172,22 @@ ControlKind::ControlKind() {
       {"flow_angle_deg", "deg", "line of the first controlled joint's body (anchor to centre of mass) against the wind, "
                                 "in [0, 90], mean over the last average_frames"},
       {"load_line_angle_deg", "deg",
-       "line from the first controlled joint's anchor to the centre of mass it carries against the net external force "
-       "on those bodies (gravity + wind at zero velocity), in [0, 90], mean over the last average_frames (Fig. 4: 0 at zero effort)"},
+       "|lean_deg - net_force_lean_deg|: the line from the first controlled joint's anchor to the centre of mass it "
+       "carries against the net external force on those bodies (gravity + wind at zero velocity), from the signed "
+       "means over the last average_frames (Fig. 4: 0 at zero effort)"},
       {"com_offset_m", "m", "distance of that centre of mass from the line through the anchor along the net force"},
       {"com_arm_m", "m", "distance of that centre of mass from the anchor (the scale of com_offset_m)"},
-      {"lean_deg", "deg", "signed angle of anchor->centre of mass from straight up (-z), positive towards +x, mean over the last average_frames"},
-      {"net_force_lean_deg", "deg", "signed angle of minus the net external force from straight up, positive towards +x"},
+      {"lean_deg", "deg", "angle of anchor->centre of mass from the vertical line, positive towards +x, mean over the "
+                          "last average_frames"},
+      {"net_force_lean_deg", "deg", "angle of the net external force's line through the anchor from the vertical, on the "
+                                    "centre of mass's side, positive towards +x, mean over the last average_frames"},
       {"final_effort_n_m_s", "N m s", "first controlled joint: mean effort (Eq. 1) over the last average_frames"},
       {"gravity_effort_n_m_s", "N m s", "the same joint's effort if the bodies it carries were held horizontal: "
                                         "m g |arm| dt, the scale of final_effort"},
+      {"effort_ratio", "", "final_effort_n_m_s / gravity_effort_n_m_s (the mean |torque|: the chatter of the fixed "
+                           "step about the optimum, proportional to strength)"},
+      {"mean_torque_ratio", "", "|mean torque| over the last average_frames / (m g |arm|): the sustained load, near 0 "
+                                "where the load passes through the joint"},
       {"final_drag_n", "N", "first controlled joint: mean |F_d| over its bodies over the last average_frames"},
       {"mean_speed_deg_per_s", "deg/s", "first controlled joint: mean angular velocity over the last average_frames"},
       {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
@@ -307,8 +314,12 @@ Result ControlKind::run(const Params& params) const {
     }
     flow.values.push_back(norm(wind(r)) > 0 ? lineAngleDeg(arm, wind(r)) : nan);
     load.values.push_back(nn > 0 ? lineAngleDeg(arm, net) : nan);
-    lean.values.push_back(std::atan2(arm[0], arm[2]) * kDeg);
-    force_lean.values.push_back(nn > 0 ? std::atan2(-net[0], -net[2]) * kDeg : nan);
+    // Leans from the vertical line through the anchor, positive towards +x: the carried centre of
+    // mass, and the point of the load line on the same side (below the anchor for a hanging
+    // block, above it for an upright trunk).
+    lean.values.push_back(std::atan2(arm[0], std::abs(arm[2])) * kDeg);
+    const double side = arm[0] * net[0] + arm[1] * net[1] + arm[2] * net[2] >= 0 ? 1.0 : -1.0;
+    force_lean.values.push_back(nn > 0 ? std::atan2(side * net[0], std::abs(net[2])) * kDeg : nan);
     offset.values.push_back(off);
     arm_length.values.push_back(norm(arm));
   };
@@ -354,13 +365,17 @@ Result ControlKind::run(const Params& params) const {
   m["final_angle_deg"] = {tailMean(angle[0]->values), "deg"};
   m["converged_frame"] = {convergedFrame(angles, r.real("convergence_tolerance_deg"), tail), ""};
   m["flow_angle_deg"] = {tailMean(flow.values), "deg"};
-  m["load_line_angle_deg"] = {tailMean(load.values), "deg"};
+  // Signed means: the strength-limited step chatters about the optimum, and the steady state is
+  // the mean pose of that chatter.
+  m["load_line_angle_deg"] = {std::abs(tailMean(lean.values) - tailMean(force_lean.values)), "deg"};
   m["com_offset_m"] = {tailMean(offset.values), "m"};
   m["com_arm_m"] = {tailMean(arm_length.values), "m"};
   m["lean_deg"] = {tailMean(lean.values), "deg"};
   m["net_force_lean_deg"] = {tailMean(force_lean.values), "deg"};
   m["final_effort_n_m_s"] = {tailMean(effort[0]->values), "N m s"};
   m["gravity_effort_n_m_s"] = {mass * g * tailMean(arm_length.values) * p.frame_s, "N m s"};
+  m["effort_ratio"] = {m["final_effort_n_m_s"].value / m["gravity_effort_n_m_s"].value, ""};
+  m["mean_torque_ratio"] = {std::abs(tailMean(torque[0]->values)) / (mass * g * tailMean(arm_length.values)), ""};
   m["final_drag_n"] = {tailMean(drag[0]->values), "N"};
   const auto& a0 = angle[0]->values;
   m["mean_speed_deg_per_s"] = {tail > 1 ? (a0.back() - a0[a0.size() - tail]) / ((tail - 1) * p.frame_s) : 0.0, "deg/s"};
