@@ -31,7 +31,14 @@ RigidModel RigidModel::load(const std::string& path) {
   installMujocoHandlers();
   char error[1024] = "";
   mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
-  if (m == nullptr) throw RigidError(path + ": " + (error[0] ? error : "MuJoCo could not load the model"));
+  if (m == nullptr) {
+    // MuJoCo's message may span lines; an error is one line on the console.
+    std::string message = error[0] ? error : "MuJoCo could not load the model";
+    for (char& c : message)
+      if (c == '\n' || c == '\r') c = ' ';
+    while (!message.empty() && message.back() == ' ') message.pop_back();
+    throw RigidError(path + ": " + message);
+  }
   RigidModel out;
   out.model_.reset(m);
   out.path_ = path;
