@@ -3,7 +3,7 @@
 
 usage: /usr/bin/python3 analysis/plot_control.py RUN_DIR [--out DIR]
 
-frames.png: the creature in the x-z plane at a few frames (light to dark, last frame bold), one panel
+frames.png: the creature in the x-z plane (geom_frames_m: centre and axis tips at the half-extents) at a few frames (light to dark, last frame bold), one panel
 per point (Lentine et al. 2010 Figs. 3, 4, 6, 9, 5): boxes as rectangles, capsules as thick segments,
 spheres as circles, the wind as an arrow. angles.png: every controlled joint's angle and its target
 against time, and its objective (per point). Figures go to RUN_DIR/figures/ as PNG.

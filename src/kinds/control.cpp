@@ -1,5 +1,6 @@
 #include "kinds/control.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -166,6 +167,9 @@ ControlKind::ControlKind() {
   };
   metrics_ = {
       {"final_angle_deg", "deg", "first controlled joint: mean angle over the last average_frames"},
+      {"final_angle_deg_2", "deg", "second controlled joint: mean angle over the last average_frames (NaN if none)"},
+      {"final_angle_deg_3", "deg", "third controlled joint: mean angle over the last average_frames (NaN if none)"},
+      {"max_contacts", "", "most contacts MuJoCo held at once over the run (e.g. arm against leg)"},
       {"converged_frame", "", "first frame from which every controlled angle stays within the tolerance of its final "
                               "mean (Fig. 2); frames + 1 if never"},
       {"flow_angle_deg", "deg", "line of the first controlled joint's body (anchor to centre of mass) against the wind, "
@@ -187,6 +191,8 @@ ControlKind::ControlKind() {
                            "step about the optimum, proportional to strength)"},
       {"mean_torque_ratio", "", "|mean torque| over the last average_frames / (m g |arm|): the sustained load, near 0 "
                                 "where the load passes through the joint"},
+      {"median_torque_ratio", "", "median |torque| over the last average_frames / (m g |arm|): the sustained load without "
+                                  "the rare contact impulses (an arm servoed into a leg) that dominate a mean"},
       {"final_drag_n", "N", "first controlled joint: mean |F_d| over its bodies over the last average_frames"},
       {"mean_speed_deg_per_s", "deg/s", "first controlled joint: mean angular velocity over the last average_frames"},
       {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
@@ -256,7 +262,7 @@ Result ControlKind::run(const Params& params) const {
     drag.push_back(&(ts["drag_n_" + j] = {{}, "N"}));
     drag_along.push_back(&(ts["drag_along_n_" + j] = {{}, "N"}));
   }
-  // Geom frames for drawing: centre and the three axis tips scaled by the half-sizes.
+  // Geom frames for drawing: centre and the three axis tips scaled by the half-extents.
   Tracks& geoms = result.lagrangian["geom_frames_m"];
   geoms.points = 4 * model.geoms();
   geoms.dim = 3;
@@ -272,7 +278,11 @@ Result ControlKind::run(const Params& params) const {
     for (int g = 0; g < model.geoms(); ++g) {
       const double* c = d.geomPosition(g);
       const double* R = d.geomRotation(g);
-      const Vec3 s = model.geomSize(g);
+      // Half-extents along the geom's axes: MuJoCo's sizes are (radius, half-length) for
+      // capsules and cylinders (along z), (radius) for spheres.
+      Vec3 s = model.geomSize(g);
+      if (types[g] == 3 || types[g] == 5) s = {s[0], s[0], s[1]};
+      if (types[g] == 2) s = {s[0], s[0], s[0]};
       geoms.data.insert(geoms.data.end(), c, c + 3);
       for (int a = 0; a < 3; ++a)
         for (int k = 0; k < 3; ++k) geoms.data.push_back(c[k] + s[a] * R[3 * k + a]);
@@ -325,12 +335,14 @@ Result ControlKind::run(const Params& params) const {
   };
 
   double max_residual = 0;
+  int max_contacts = 0;
   try {
     for (long f = 0; f < frames; ++f) {
       const control::FrameRecord fr = controller.frame();
       time.values.push_back(fr.time_s);
       residual.values.push_back(fr.servo_residual_rad);
       max_residual = std::max(max_residual, fr.servo_residual_rad);
+      max_contacts = std::max(max_contacts, controller.data().contacts());
       for (int i = 0; i < n; ++i) {
         angle[i]->values.push_back(fr.angle_rad[i] * kDeg);
         target[i]->values.push_back(fr.target_rad[i] * kDeg);
@@ -361,6 +373,9 @@ Result ControlKind::run(const Params& params) const {
 
   auto& m = result.metrics;
   m["final_angle_deg"] = {tailMean(angle[0]->values), "deg"};
+  m["final_angle_deg_2"] = {n > 1 ? tailMean(angle[1]->values) : nan, "deg"};
+  m["final_angle_deg_3"] = {n > 2 ? tailMean(angle[2]->values) : nan, "deg"};
+  m["max_contacts"] = {double(max_contacts), ""};
   m["converged_frame"] = {convergedFrame(angles, r.real("convergence_tolerance_deg"), tail), ""};
   m["flow_angle_deg"] = {tailMean(flow.values), "deg"};
   // Signed means: the strength-limited step chatters about the optimum, and the steady state is
@@ -374,6 +389,13 @@ Result ControlKind::run(const Params& params) const {
   m["gravity_effort_n_m_s"] = {mass * g * tailMean(arm_length.values) * p.frame_s, "N m s"};
   m["effort_ratio"] = {m["final_effort_n_m_s"].value / m["gravity_effort_n_m_s"].value, ""};
   m["mean_torque_ratio"] = {std::abs(tailMean(torque[0]->values)) / (mass * g * tailMean(arm_length.values)), ""};
+  {
+    std::vector<double> last(torque[0]->values.end() - tail, torque[0]->values.end());
+    for (double& x : last) x = std::abs(x);
+    std::sort(last.begin(), last.end());
+    const double median = tail % 2 ? last[tail / 2] : 0.5 * (last[tail / 2 - 1] + last[tail / 2]);
+    m["median_torque_ratio"] = {median / (mass * g * tailMean(arm_length.values)), ""};
+  }
   m["final_drag_n"] = {tailMean(drag[0]->values), "N"};
   const auto& a0 = angle[0]->values;
   m["mean_speed_deg_per_s"] = {tail > 1 ? (a0.back() - a0[a0.size() - tail]) / ((tail - 1) * p.frame_s) : 0.0, "deg/s"};
