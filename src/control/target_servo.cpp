@@ -48,16 +48,17 @@ ServoReport advanceFrame(rigid::RigidData& data, const Prescribed& p, const Forc
       }
       if (np == 0 || worst <= tolerance_rad || it >= max_iterations || !std::isfinite(worst)) break;
       if (it == 0) {
-        // Jacobian h^2 (M^-1)_PP; M was factorised at the substep's start by the step.
+        // Jacobian h^2 [(M + h D)^-1]_PP of the Euler step (damping implicit), with M at the
+        // substep's start: exact without contacts.
+        data.eulerMatrix(s.jacobian);
+        const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> A(
+            s.jacobian.data(), nv, nv);
+        Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nv, np);
+        for (int c = 0; c < np; ++c) rhs(p.dof[c], c) = 1.0;
+        const Eigen::MatrixXd cols = Eigen::MatrixXd(A).ldlt().solve(rhs);
         Eigen::MatrixXd J(np, np);
-        s.unit.assign(nv, 0.0);
-        s.column.assign(nv, 0.0);
-        for (int c = 0; c < np; ++c) {
-          s.unit[p.dof[c]] = 1.0;
-          data.solveMass(s.column.data(), s.unit.data(), 1);
-          s.unit[p.dof[c]] = 0.0;
-          for (int r = 0; r < np; ++r) J(r, c) = h * h * s.column[p.dof[r]];
-        }
+        for (int c = 0; c < np; ++c)
+          for (int r = 0; r < np; ++r) J(r, c) = h * h * cols(p.dof[r], c);
         lu.compute(J);
       }
       const Eigen::VectorXd dtau = lu.solve(Eigen::Map<const Eigen::VectorXd>(s.residual.data(), np));

@@ -33,7 +33,7 @@ struct ServoReport {
 // Scratch of one servo (per thread): reused between frames so that a frame does not allocate.
 struct ServoScratch {
   std::vector<Vec3> body_force_n;
-  std::vector<double> base_force, start, tau, residual, unit, column, jacobian;
+  std::vector<double> base_force, start, tau, residual, jacobian;
 };
 
 // Advances `data` one frame of `substeps` MuJoCo steps: the prescribed angles move linearly from

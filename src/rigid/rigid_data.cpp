@@ -72,6 +72,13 @@ void RigidData::solveMass(double* x, const double* y, int n) const {
   mj_solveM(model_->raw(), data_.get(), x, y, n);
 }
 
+void RigidData::eulerMatrix(std::vector<double>& out) const {
+  const mjModel* m = model_->raw();
+  out.assign(std::size_t(m->nv) * m->nv, 0.0);
+  mj_fullM(m, out.data(), data_->qM);
+  for (int i = 0; i < m->nv; ++i) out[std::size_t(i) * m->nv + i] += m->opt.timestep * m->dof_damping[i];
+}
+
 void RigidData::applyForceAt(int body, const Vec3& force_n, const Vec3& point_m) {
   const mjtNum torque[3] = {0, 0, 0};
   mj_applyFT(model_->raw(), data_.get(), force_n.data(), torque, point_m.data(), body, data_->qfrc_applied);

@@ -59,6 +59,9 @@ class RigidData {
   void actuatorForcesFor(const double* qacc, double* out);
   // x = M^-1 y for n columns of length nv, with M factorised at the last step's start.
   void solveMass(double* x, const double* y, int n) const;
+  // The dense nv x nv matrix of the last Euler step, M + h D (MuJoCo's Euler integrator treats
+  // joint damping D implicitly), row-major into out (resized).
+  void eulerMatrix(std::vector<double>& out) const;
 
   // Adds a force (N) acting at a world point (m) on `body` to the applied generalized forces.
   void applyForceAt(int body, const Vec3& force_n, const Vec3& point_m);

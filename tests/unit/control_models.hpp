@@ -17,13 +17,14 @@ inline std::string blockXml(double thickness_m, double gravity) {
          "</body></worldbody></mujoco>";
 }
 
-// A planar chain of `links` capsules 0.4 m long, hinges j0, j1, ... about y, hanging along +x.
+// A planar chain of `links` capsules 0.4 m long, hinges j0, j1, ... about y (damped: MuJoCo's Euler
+// step takes the damping implicitly, which the servo's Jacobian must include), hanging along +x.
 inline std::string chainXml(int links) {
   std::string body;
   for (int k = links - 1; k >= 0; --k) {
     const std::string pos = k == 0 ? "0 0 0" : "0.4 0 0";
     body = "<body name=\"b" + std::to_string(k) + "\" pos=\"" + pos + "\"><joint name=\"j" + std::to_string(k) +
-           "\" type=\"hinge\" axis=\"0 1 0\"/><geom type=\"capsule\" fromto=\"0 0 0 0.4 0 0\" size=\"0.04\" mass=\"2\"/>" +
+           "\" type=\"hinge\" axis=\"0 1 0\" damping=\"0.5\"/><geom type=\"capsule\" fromto=\"0 0 0 0.4 0 0\" size=\"0.04\" mass=\"2\"/>" +
            body + "</body>";
   }
   return "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.01\"/><default><geom contype=\"0\" "
