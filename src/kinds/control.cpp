@@ -197,7 +197,6 @@ ControlKind::ControlKind() {
       {"mean_speed_deg_per_s", "deg/s", "first controlled joint: mean angular velocity over the last average_frames"},
       {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
       {"triangles", "", "wind surface triangles on moving bodies"},
-      {"frames", "", "frames run"},
   };
 }
 
@@ -401,7 +400,6 @@ Result ControlKind::run(const Params& params) const {
   m["mean_speed_deg_per_s"] = {tail > 1 ? (a0.back() - a0[a0.size() - tail]) / ((tail - 1) * p.frame_s) : 0.0, "deg/s"};
   m["max_servo_residual_rad"] = {max_residual, "rad"};
   m["triangles"] = {double(force.triangles()), ""};
-  m["frames"] = {double(frames), ""};
   return result;
 }
 
