@@ -13,9 +13,16 @@ struct Controller::Worker {
   Prescribed prescribed;
 };
 
+namespace {
+// Validated before anything reads the model by the parameters' joint names.
+const ControllerParams& checked(const ControllerParams& p, const rigid::RigidModel& model) {
+  if (std::string err = validate(p, model); !err.empty()) throw std::invalid_argument(err);
+  return p;
+}
+}  // namespace
+
 Controller::Controller(const rigid::RigidModel& model, ControllerParams p, const ForceModel& force)
-    : model_(model), p_(std::move(p)), force_(force), layout_(makeLayout(p_, model)), main_(model) {
-  if (std::string err = validate(p_, model); !err.empty()) throw std::invalid_argument(err);
+    : model_(model), p_(checked(p, model)), force_(force), layout_(makeLayout(p_, model)), main_(model) {
   const int n = int(p_.controlled.size());
   for (const auto& name : p_.controlled) {
     const auto j = model.joint(model.findJoint(name));

@@ -157,6 +157,11 @@ TEST_F(ControllerTest, ValidationNamesWhatIsWrong) {
   p.strength_rad_per_s = 1;
   p.delta_rad = 0;
   EXPECT_NE(validate(p, model).find("delta_rad"), std::string::npos);
+  // The controller refuses them too, before it reads the model by name.
+  const NoForce none;
+  p.delta_rad = 0.01;
+  p.controlled = {"j0", "elbow"};
+  EXPECT_THROW(Controller(model, p, none), std::invalid_argument);
 }
 
 }  // namespace
