@@ -11,6 +11,7 @@ packages=(
   libopenmpi-dev openmpi-bin
   zlib1g-dev
   libtinygltf-dev povray
+  libmujoco-dev libmujoco-samples
   python3-h5py python3-numpy python3-matplotlib
 )
 

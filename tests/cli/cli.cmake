@@ -16,6 +16,7 @@ creaturelab_cli_test(check_compare)  # check, baseline, compare (exit 1 and OUTS
 creaturelab_cli_test(h5py)           # /usr/bin/python3 + h5py reads index, columns, strings, links
 creaturelab_cli_test(show_list)      # --dry-run writes nothing; show; list
 creaturelab_cli_test(fluid_fields)   # /fields shape and chunks, XDMF sidecar, --jobs determinism
+creaturelab_cli_test(control)        # block_effort checks, figures, --jobs/threads determinism, bad MJCF and controller input
 creaturelab_cli_test(jellyfish)      # metrics, series, tracks, fields; --jobs determinism; KNOWN; bad input
 creaturelab_cli_test(run_folder)     # --points shares, --force, --resume with another configuration
 creaturelab_cli_test(folder_lock)    # one writer per folder (fcntl lock, holder's pid); configurations never mix

@@ -1,0 +1,145 @@
+#!/usr/bin/python3
+"""Draws creature-controller runs (kind `control`, experiments/control/*.toml) from their HDF5 alone.
+
+usage: /usr/bin/python3 analysis/plot_control.py RUN_DIR [--out DIR]
+
+frames.png: the creature in the x-z plane (geom_frames_m: centre and axis tips at the half-extents) at a few frames (light to dark, last frame bold), one panel
+per point (Lentine et al. 2010 Figs. 3, 4, 6, 9, 5): boxes as rectangles, capsules as thick segments,
+spheres as circles, the wind as an arrow. angles.png: every controlled joint's angle and its target
+against time, and its objective (per point). Figures go to RUN_DIR/figures/ as PNG.
+"""
+import argparse
+import glob
+import os
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+BOX, SPHERE, CAPSULE, ELLIPSOID, CYLINDER = 6, 2, 3, 4, 5
+
+
+def text(f, name):
+    v = f.attrs.get(name, "")
+    return v.decode() if isinstance(v, bytes) else str(v)
+
+
+def title(f):
+    parts = [text(f, "label")] if text(f, "label") else []
+    parts.append(f"{text(f, 'objectives')} {text(f, 'senses')}")
+    parts.append(f"strength {float(f.attrs['strength_rad_per_s']):g} rad/s")
+    return ", ".join(p for p in parts if p)
+
+
+def draw_pose(ax, frames, types, k, alpha, lw):
+    """Frame k of geom_frames_m (points: centre, then the x, y, z axis tips scaled by half-sizes)."""
+    g = frames[k].reshape(-1, 4, 3)
+    for j, t in enumerate(types):
+        c, ex, ey, ez = g[j, 0], g[j, 1] - g[j, 0], g[j, 2] - g[j, 0], g[j, 3] - g[j, 0]
+        colour = "0.5" if t == BOX and np.allclose(frames[0].reshape(-1, 4, 3)[j], g[j]) and k > 0 else "tab:blue"
+        if t == BOX:
+            corners = [c + sx * ex + sz * ez for sx, sz in ((-1, -1), (1, -1), (1, 1), (-1, 1), (-1, -1))]
+            xs = [p[0] for p in corners]
+            zs = [p[2] for p in corners]
+            ax.plot(xs, zs, color=colour, alpha=alpha, lw=lw)
+        elif t in (CAPSULE, CYLINDER):
+            a, b = c - ez, c + ez
+            radius = np.linalg.norm(ex)
+            ax.plot([a[0], b[0]], [a[2], b[2]], color="tab:blue", alpha=alpha, lw=max(lw, 400 * radius / 10))
+        elif t in (SPHERE, ELLIPSOID):
+            ax.add_patch(plt.Circle((c[0], c[2]), np.linalg.norm(ex), color="tab:blue", alpha=alpha * 0.6, fill=True))
+
+
+def frames_figure(points, png):
+    n = len(points)
+    cols = min(n, 4)
+    rows = (n + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(3.6 * cols, 3.6 * rows), squeeze=False)
+    for ax in axes.flat[n:]:
+        ax.axis("off")
+    for ax, f in zip(axes.flat, points):
+        frames = f["lagrangian/geom_frames_m"][...]
+        types = f["topology/geom_type"][...]
+        count = frames.shape[0]
+        # Denser early, where the creature moves; the last frame bold.
+        for i, k in enumerate(np.unique(np.round(np.linspace(0, 1, 6) ** 2 * (count - 1)).astype(int))):
+            last = k == count - 1
+            draw_pose(ax, frames, types, k, 0.25 + 0.75 * i / 5, 2.0 if last else 0.8)
+        wind = np.array([float(f.attrs[f"wind_{a}_m_per_s"]) for a in "xyz"])
+        if np.linalg.norm(wind) > 0 and float(f.attrs["density_kg_per_m3"]) > 0:
+            lo, hi = ax.get_xlim(), ax.get_ylim()
+            direction = wind[[0, 2]] / np.linalg.norm(wind[[0, 2]]) if np.linalg.norm(wind[[0, 2]]) > 0 else np.zeros(2)
+            start = np.array([lo[0], hi[1]])
+            ax.annotate("", xy=start + 0.25 * (lo[1] - lo[0]) * direction, xytext=start,
+                        arrowprops=dict(arrowstyle="->", color="tab:red"))
+            ax.text(lo[0], hi[1], f" wind {np.linalg.norm(wind):g} m/s", color="tab:red", fontsize=7, va="bottom")
+        m = f["metrics"]
+        ax.set_title(f"{title(f)}\nfinal {float(m['final_angle_deg'][()]):.1f} deg, converged frame "
+                     f"{int(m['converged_frame'][()])}", fontsize=7)
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_xlabel("x (m)", fontsize=7)
+        ax.set_ylabel("z (m)", fontsize=7)
+        ax.tick_params(labelsize=6)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
+def angles_figure(points, png):
+    fig, (ax_angle, ax_obj) = plt.subplots(1, 2, figsize=(12, 4.2))
+    for f in points:
+        t = f["timeseries/time_s"][...]
+        joints = [k[len("angle_deg_"):] for k in f["timeseries"] if k.startswith("angle_deg_")]
+        for j in joints:
+            line, = ax_angle.plot(t, f[f"timeseries/angle_deg_{j}"][...], lw=1, label=f"{title(f)}: {j}")
+            ax_obj.plot(t, f[f"timeseries/objective_{j}"][...], lw=1, color=line.get_color())
+    ax_angle.set_xlabel("time (s)")
+    ax_angle.set_ylabel("joint angle (deg)")
+    ax_obj.set_xlabel("time (s)")
+    ax_obj.set_ylabel("objective J_i (effort N m s, drag N)")
+    ax_obj.set_yscale("symlog", linthresh=1e-3)
+    ax_angle.legend(fontsize=5, ncol=2)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
+def timing_table(points, path):
+    """Fig. 10's table: wall seconds per frame against controlled joints, per thread count (from each
+    point's wall_time_s attribute: provenance, not a dataset)."""
+    rows = {}
+    for f in points:
+        joints = sum(1 for k in f["timeseries"] if k.startswith("angle_deg_"))
+        per_frame = float(f.attrs["wall_time_s"]) / float(f.attrs["frames"])
+        rows.setdefault(joints, {})[int(f.attrs["threads"])] = per_frame
+    threads = sorted({t for r in rows.values() for t in r})
+    with open(path, "w") as out:
+        out.write("joints  " + "  ".join(f"{t} thread(s) s/frame" for t in threads) + "\n")
+        for j in sorted(rows):
+            out.write(f"{j:6d}  " + "  ".join(f"{rows[j].get(t, float('nan')):19.6f}" for t in threads) + "\n")
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("run")
+    parser.add_argument("--out")
+    args = parser.parse_args()
+    out = args.out or os.path.join(args.run, "figures")
+    os.makedirs(out, exist_ok=True)
+    files = [h5py.File(p, "r") for p in sorted(glob.glob(os.path.join(args.run, "point_*.h5")))]
+    points = [f for f in files if "lagrangian/geom_frames_m" in f]
+    if not points:
+        raise SystemExit(f"{args.run}: no control points with geom frames")
+    frames_figure(points, os.path.join(out, "frames.png"))
+    angles_figure(points, os.path.join(out, "angles.png"))
+    if len({int(f.attrs["threads"]) for f in points}) > 1:
+        timing_table(points, os.path.join(out, "parallel_dofs.txt"))
+    for f in files:
+        f.close()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,46 @@
+#pragma once
+// The servo that moves prescribed joints to their targets "irrespective of all external forces"
+// (Lentine et al. 2010 §2.2, seeds/creature-control-lentine-2010.txt; the paper uses the
+// post-stabilisation projections of Weinstein et al. 2008). Here: over each MuJoCo step the
+// prescribed angles must land exactly on their targets while every other degree of freedom
+// moves under the full dynamics (gravity, wind, contacts, the reaction of the prescribed
+// torques). The generalized forces tau_P on the prescribed DOFs that do this solve
+//     q_P(t + h; tau_P) = target_P,
+// by Newton's method: q_P(t+h) = q_P + h qdot_P + h^2 qacc_P with qacc = M^-1 (... + tau), so the
+// Jacobian is h^2 (M^-1)_PP, exact without contacts and damping (one iteration, then a check);
+// contacts and implicit joint damping only make it approximate, and the iteration goes on until
+// the residual is below a tolerance. The remaining residual (reported) is then projected away,
+// which is the post-stabilisation of the paper. The torques tau_P are the PD impulses of §2.2
+// over the step (tau_P h), recorded as the servo's work.
+#include <vector>
+
+#include "control/force_model.hpp"
+#include "rigid/rigid_data.hpp"
+
+namespace creaturelab::control {
+
+// Prescribed degrees of freedom (hinges: qpos and dof addresses) and where they go over a frame.
+struct Prescribed {
+  std::vector<int> qpos, dof;
+  std::vector<double> target;  // angle at the end of the frame, rad
+};
+
+struct ServoReport {
+  double residual_rad = 0;  // largest |q - target| before the final projection, over the frame
+  int iterations = 0;       // most Newton iterations any substep needed
+};
+
+// Scratch of one servo (per thread): reused between frames so that a frame does not allocate.
+struct ServoScratch {
+  std::vector<Vec3> body_force_n;
+  std::vector<double> base_force, start, tau, residual, jacobian;
+};
+
+// Advances `data` one frame of `substeps` MuJoCo steps: the prescribed angles move linearly from
+// where they are to their targets, reaching each substep's share exactly; `force` is evaluated at
+// the start of every substep (explicit). Throws std::runtime_error when the state stops being
+// finite (a diverging model) or MuJoCo warns of a bad acceleration.
+ServoReport advanceFrame(rigid::RigidData& data, const Prescribed& p, const ForceModel& force, int substeps,
+                         int max_iterations, double tolerance_rad, ServoScratch& scratch);
+
+}  // namespace creaturelab::control

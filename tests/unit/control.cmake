@@ -1,0 +1,11 @@
+# tests for unit/rigid and unit/control: the MuJoCo face, Eq. 2 wind, the target servo under load,
+# central-difference derivatives against an analytic objective, the strength limit, rigidified
+# perturbations and determinism across thread counts (issue 15). Each test well under 1 s; also
+# run under ASan/UBSan.
+creaturelab_test(control_unit_test unit
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/rigid_model_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/control_wind_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/control_controller_test.cpp
+  LIBS cl_control
+)

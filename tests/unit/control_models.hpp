@@ -1,0 +1,39 @@
+#pragma once
+// Small MJCF creatures for the control tests, written to a scratch folder.
+#include <fstream>
+#include <string>
+
+#include "scratch_dir_test.hpp"
+
+namespace creaturelab::testing {
+
+// The block of experiments/control/models/block.xml: hinge "hinge" about y at the origin, a
+// 1 x 1 x thickness box of mass 24 kg whose centre is 0.5 m along +x at angle 0.
+inline std::string blockXml(double thickness_m, double gravity) {
+  return "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.016666666666666666\" gravity=\"0 0 " +
+         std::to_string(-gravity) + "\"/><default><geom contype=\"0\" conaffinity=\"0\"/></default><worldbody>"
+         "<body name=\"block\"><joint name=\"hinge\" type=\"hinge\" axis=\"0 1 0\"/>"
+         "<geom type=\"box\" size=\"0.5 0.5 " + std::to_string(thickness_m / 2) + "\" pos=\"0.5 0 0\" mass=\"24\"/>"
+         "</body></worldbody></mujoco>";
+}
+
+// A planar chain of `links` capsules 0.4 m long, hinges j0, j1, ... about y (damped: MuJoCo's Euler
+// step takes the damping implicitly, which the servo's Jacobian must include), hanging along +x.
+inline std::string chainXml(int links) {
+  std::string body;
+  for (int k = links - 1; k >= 0; --k) {
+    const std::string pos = k == 0 ? "0 0 0" : "0.4 0 0";
+    body = "<body name=\"b" + std::to_string(k) + "\" pos=\"" + pos + "\"><joint name=\"j" + std::to_string(k) +
+           "\" type=\"hinge\" axis=\"0 1 0\" damping=\"0.5\"/><geom type=\"capsule\" fromto=\"0 0 0 0.4 0 0\" size=\"0.04\" mass=\"2\"/>" +
+           body + "</body>";
+  }
+  return "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.01\"/><default><geom contype=\"0\" "
+         "conaffinity=\"0\"/></default><worldbody>" + body + "</worldbody></mujoco>";
+}
+
+inline std::string writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+}  // namespace creaturelab::testing
