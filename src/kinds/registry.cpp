@@ -1,4 +1,5 @@
 #include "kinds/charlotte.hpp"
+#include "kinds/fish.hpp"
 #include "kinds/fluid.hpp"
 #include "kinds/jellyfish.hpp"
 #include "kinds/kind.hpp"
@@ -18,6 +19,7 @@ Registry defaultRegistry() {
   r.add(std::make_unique<CharlotteKind>());
   r.add(std::make_unique<MembraneKind>());
   r.add(std::make_unique<JellyfishKind>());
+  r.add(std::make_unique<FishKind>());
   return r;
 }
 
