@@ -103,15 +103,17 @@ FishModel buildFish(const FishGeometry& g, const UnitParams& u) {
 
   // Faces: side k of a segment lies between ring nodes k and k+1 (0 left, 1 bottom, 2 right, 3 top).
   int f = 0;
+  // A triangle repeats the vertex that lies on the mirror planes (the snout, a tail tip), so that a
+  // face's mean velocity and its split among corners are mirror-symmetric left-right and top-bottom.
   for (int k = 0; k < 4; ++k)
-    fish.faces[f++] = {{kSnout, ringNode(0, k), ringNode(0, k + 1), ringNode(0, k + 1)}, 0};
+    fish.faces[f++] = {{kSnout, ringNode(0, k), ringNode(0, k + 1), kSnout}, 0};
   for (int r = 0; r < 4; ++r)
     for (int k = 0; k < 4; ++k)
       fish.faces[f++] = {{ringNode(r, k), ringNode(r + 1, k), ringNode(r + 1, k + 1), ringNode(r, k + 1)}, r + 1};
   fish.faces[f++] = {{ringNode(4, 0), kDorsalTip, kVentralTip, ringNode(4, 1)}, 5};      // left
-  fish.faces[f++] = {{ringNode(4, 1), kVentralTip, ringNode(4, 2), ringNode(4, 2)}, 5};  // bottom
+  fish.faces[f++] = {{ringNode(4, 1), ringNode(4, 2), kVentralTip, kVentralTip}, 5};    // bottom
   fish.faces[f++] = {{ringNode(4, 2), kVentralTip, kDorsalTip, ringNode(4, 3)}, 5};      // right
-  fish.faces[f++] = {{ringNode(4, 3), kDorsalTip, ringNode(4, 0), ringNode(4, 0)}, 5};   // top
+  fish.faces[f++] = {{ringNode(4, 3), ringNode(4, 0), kDorsalTip, kDorsalTip}, 5};      // top
   // Orient every face outward: its normal must point away from its segment's centre on the axis.
   for (Face& face : fish.faces) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();

@@ -87,6 +87,8 @@ StepReport FishSolver::step(FishState& s) {
   unitForces(s);
   waterForce(s);
   const NodeMatrix force = fw_ + g_;
+  if (!force.allFinite() || !s.v_m_per_s.allFinite())
+    return {StepStatus::non_finite, "a unit or water force (or a velocity) is not finite"};
   if (params_.scheme == Scheme::semi_implicit) {
     assemble();
     ldlt_.compute(a_);

@@ -43,8 +43,8 @@ std::string actionName(Action a);
 double scheduleDurationS(const std::vector<ScheduleItem>& schedule);
 
 struct SwimCommand {
-  double amplitude_anterior = 0.8, rate_anterior = 0.04;
-  double amplitude_posterior = 0.8, rate_posterior = 0.04;
+  double amplitude_anterior = 0.7, rate_anterior = 0.004;  // the kind's defaults (kinds/fish.cpp)
+  double amplitude_posterior = 0.7, rate_posterior = 0.004;
 };
 
 // swim-MC from a desired speed, as a fraction of the top speed (alpha = r / r_max = 1) in (0, 1]:
@@ -52,11 +52,11 @@ struct SwimCommand {
 SwimCommand swimFromSpeed(double speed_fraction, double r_max);
 
 struct MotorParams {
-  double contracted_fraction = 0.6;  // fully contracted length / rest length (ours: thesis value not in text)
+  double contracted_fraction = 0.7;  // fully contracted length / rest length (ours: thesis value not in text)
   SwimCommand swim;
   double posterior_lag_rad = 1.5707963267948966;  // pi/2 (spec §3 [choose])
-  double turn_amplitude = 0.8;
-  double turn_rate = 0.04;
+  double turn_amplitude = 0.7;
+  double turn_rate = 0.016;
   // A turn contracts at turn_rate and relaxes at turn_rate x this (ours: 0.25). A symmetric pulse
   // bends the body and unbends it along the same path, and the water gives back most of the turn;
   // a slow release lets the bent body glide round (the thesis's turns: a quick bend, a slow return).

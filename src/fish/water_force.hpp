@@ -15,8 +15,8 @@ namespace creaturelab::fish {
 enum class WaterLaw { linear, quadratic };
 
 struct WaterParams {
-  double mu = 0.0;  // 0 = fish in air (spec §2)
-  WaterLaw law = WaterLaw::quadratic;
+  double mu = 100.0;  // the kind's default (kinds/fish.cpp); 0 = fish in air (spec §2)
+  WaterLaw law = WaterLaw::linear;
   Eigen::Vector3d current_m_per_s = Eigen::Vector3d::Zero();  // uniform water velocity (still by default)
 };
 
