@@ -11,6 +11,7 @@
 #include "fish/fish_run.hpp"
 #include "fish/fish_solver.hpp"
 #include "fish/motor.hpp"
+#include "fish/skin.hpp"
 
 namespace creaturelab::fish {
 namespace {
@@ -33,6 +34,24 @@ void BM_FishStep(benchmark::State& state) {
                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_FishStep);
+
+// The skin of one fish from its node positions: control points (24 face frames, 408 bound control
+// points), then both body halves sampled 32 around x 64 along plus the two fins, with vertex normals.
+void BM_Skin32x64(benchmark::State& state) {
+  const FishModel fish = buildFish({}, {});
+  FishSkin skin(fish, {});
+  NodeMatrix x = fish.rest_positions_m;
+  x(13, 1) += 0.05;  // a bent peduncle: not the rest shape
+  SkinMesh mesh;
+  skin.mesh(32, 64, mesh);  // the sampled basis is cached after the first call
+  for (auto _ : state) {
+    skin.update(x);
+    skin.mesh(32, 64, mesh);
+    benchmark::DoNotOptimize(mesh.positions.data());
+  }
+  state.counters["vertices"] = double(mesh.positions.size());
+}
+BENCHMARK(BM_Skin32x64)->Unit(benchmark::kMicrosecond);
 
 // A school of N independent fish, stepped one after the other: one iteration is one step of all N.
 void BM_School(benchmark::State& state) {
