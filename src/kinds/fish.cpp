@@ -1,10 +1,13 @@
 #include "kinds/fish.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
+#include "fish/export.hpp"
 #include "fish/fish_measure.hpp"
 #include "fish/fish_run.hpp"
+#include "fish/skin.hpp"
 
 namespace creaturelab::kinds {
 namespace {
@@ -12,6 +15,7 @@ namespace {
 const char* kSpec = "../shared/specs/artificial-fish.md";
 
 struct FishSetup {
+  fish::SkinParams skin;
   fish::FishGeometry geometry;
   fish::UnitParams units;
   fish::SolverParams solver;
@@ -52,6 +56,11 @@ FishSetup setupOf(const ParamReader& r) {
     m.swim = {r.real("swim_amplitude"), r.real("swim_rate"), r.real("swim_amplitude"), r.real("swim_rate")};
   }
   if (auto e = fish::validate(m); !e.empty()) throw std::invalid_argument(e);
+  s.skin.degree_around = int(r.integer("skin_degree_around"));
+  s.skin.degree_along = int(r.integer("skin_degree_along"));
+  s.skin.inflate = r.real("skin_inflate");
+  s.skin.fins = r.boolean("skin_fins");
+  if (auto e = fish::validate(s.skin); !e.empty()) throw std::invalid_argument(e);
   if (auto e = fish::validate(s.geometry, s.units); !e.empty()) throw std::invalid_argument(e);
   if (auto e = fish::validate(s.solver); !e.empty()) throw std::invalid_argument(e);
   try {
@@ -63,6 +72,81 @@ FishSetup setupOf(const ParamReader& r) {
 }
 
 std::vector<std::int64_t> flat(const std::vector<int>& v) { return {v.begin(), v.end()}; }
+
+// The skin on every recorded frame (quality metrics), stored and exported on export_frames of them.
+void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& model, const fish::FishRecord& rec,
+             Result& result) {
+  fish::FishSkin skin(model, s.skin);
+  const int around = int(r.integer("skin_samples_around")), along = int(r.integer("skin_samples_along"));
+  fish::SkinMesh mesh;
+  skin.mesh(around, along, mesh);
+  result.metrics["skin_rest_inward"] = {double(fish::checkOutward(mesh).inward), ""};
+  const int n = rec.frames();
+  // The exported frames: export_frames evenly spaced over [export_start_s, end].
+  std::vector<int> exported;
+  int first = 0;
+  while (first < n - 1 && rec.time_s[first] < r.real("export_start_s") - 1e-9) ++first;
+  const int count = std::min<int>(int(r.integer("export_frames")), n - first);
+  for (int k = 0; k < count; ++k)
+    exported.push_back(count > 1 ? first + int(std::lround(double(k) * (n - 1 - first) / (count - 1))) : n - 1);
+  double creases = 0, worst = 1, gap = 0;
+  std::vector<fish::SkinFrame> frames;
+  Tracks& net = result.lagrangian["skin_control_points_m"];
+  Tracks& vertices = result.lagrangian["skin_vertices_m"];
+  size_t next = 0;
+  for (int f = 0; f < n; ++f) {
+    fish::NodeMatrix x;
+    for (int k = 0; k < fish::kNodes; ++k)
+      for (int d = 0; d < 3; ++d) x(k, d) = rec.nodes_m[(size_t(f) * fish::kNodes + k) * 3 + d];
+    skin.update(x);
+    skin.mesh(around, along, mesh);
+    const fish::FoldCheck fold = fish::checkOutward(mesh);
+    creases += fold.creases;
+    worst = std::min(worst, fold.worst_neighbour_cosine);
+    const int half = around * along;
+    for (int iv = 0; iv < along; ++iv)
+      for (int iu : {0, around - 1}) gap = std::max(gap, (mesh.positions[iu * along + iv] - mesh.positions[half + iu * along + iv]).norm());
+    for (int iu = 0; iu < around; ++iu)
+      gap = std::max(gap, (mesh.positions[iu * along + along - 1] - mesh.positions[half + iu * along + along - 1]).norm());
+    if (next < exported.size() && exported[next] == f) {
+      ++next;
+      net.time_s.push_back(rec.time_s[f]);
+      for (const auto& p : skin.controlPoints()) net.data.insert(net.data.end(), {p.x(), p.y(), p.z()});
+      vertices.time_s.push_back(rec.time_s[f]);
+      for (const auto& p : mesh.positions) vertices.data.insert(vertices.data.end(), {p.x(), p.y(), p.z()});
+      frames.push_back({rec.time_s[f], mesh});
+    }
+  }
+  net.points = int(skin.controlPoints().size());
+  net.dim = 3;
+  vertices.points = int(mesh.positions.size());
+  vertices.dim = 3;
+  std::vector<std::int64_t> tris;
+  for (const auto& t : mesh.triangles) tris.insert(tris.end(), t.begin(), t.end());
+  result.topology["skin_triangles"] = tris;
+  result.topology["skin_body_triangles"] = {mesh.body_triangles};
+  result.metrics["skin_creases"] = {creases, ""};
+  result.metrics["skin_worst_neighbour_cosine"] = {worst, ""};
+  result.metrics["skin_seam_gap_m"] = {gap, "m"};
+
+  // Artifacts: the animation, OBJ frames and POV-Ray scenes (rendered by analysis/plot_fish.py).
+  auto bytes = [](const std::string& text) { return std::vector<std::uint8_t>(text.begin(), text.end()); };
+  result.artifacts["skin.glb"] = fish::exportGlb(frames);
+  char name[64];
+  for (size_t k = 0; k < frames.size(); ++k) {
+    std::snprintf(name, sizeof name, "skin_%03zu.obj", k);
+    result.artifacts[name] = bytes(fish::exportObj(frames[k].mesh, "t = " + std::to_string(frames[k].time_s) + " s"));
+  }
+  const int pov = std::min<int>(int(r.integer("pov_frames")), int(frames.size()));
+  for (int k = 0; k < pov; ++k) {
+    const size_t i = pov > 1 ? size_t(std::lround(double(k) * (frames.size() - 1) / (pov - 1))) : frames.size() - 1;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& p : frames[i].mesh.positions) centre += p / double(frames[i].mesh.positions.size());
+    std::snprintf(name, sizeof name, "skin_%03d.pov", k);
+    result.artifacts[name] =
+        bytes(fish::exportPov(frames[i].mesh, centre, model.body_length_m, "t = " + std::to_string(frames[i].time_s) + " s"));
+  }
+}
 
 }  // namespace
 
@@ -108,6 +192,17 @@ FishKind::FishKind() {
       choice("on_blowup", "fail", {"fail", "record"},
              "fail: a blow-up fails the point (exit 3); record: the run stops there and the step is a metric (air experiment)"),
       integer("frame_every_steps", 1, 1, 1000000, "record a frame every this many steps"),
+      boolean("skin", false,
+              "NURBS skin (seed; spec §4): check it on every frame, store it on export_frames frames, write .glb/.obj/.pov artifacts"),
+      integer("skin_degree_around", 3, 1, 15, "NURBS degree around the body (9 control points; spec §4 [choose]: cubic)"),
+      integer("skin_degree_along", 3, 1, 15, "NURBS degree along the body (21 control points; cubic)"),
+      real("skin_inflate", 1.15, "", 1e-3, 100, "control-net section / body section (ours: the surface lies inside its net)"),
+      boolean("skin_fins", true, "dorsal and ventral fin surfaces sharing the midline control points"),
+      integer("skin_samples_around", 32, 2, 1024, "mesh samples around each half body"),
+      integer("skin_samples_along", 64, 2, 4096, "mesh samples along the body"),
+      integer("export_frames", 16, 1, 1000, "frames stored and exported (glb animation, OBJ), evenly spaced from export_start_s to the end"),
+      real("export_start_s", 0.0, "s", 0, 1e6, "start of the exported window"),
+      integer("pov_frames", 4, 0, 100, "POV-Ray scenes written, evenly spaced over the exported frames"),
       real("stable_lo_s", 1e-4, "s", 1e-9, 100, "stable_step: the smallest step tried"),
       real("stable_hi_s", 5.0, "s", 1e-9, 1000, "stable_step: the largest step tried"),
       integer("stable_iterations", 30, 1, 200, "stable_step: bisection steps (on a log scale)"),
@@ -133,6 +228,10 @@ FishKind::FishKind() {
       {"blowup_step", "", "the step that blew up, -1 if none"},
       {"blowup_time_s", "s", "its time, -1 if none"},
       {"max_stable_dt_s", "s", "stable_step: the largest step that survives the schedule"},
+      {"skin_rest_inward", "", "skin: body triangles pointing into the body on the undeformed skin"},
+      {"skin_creases", "", "skin: neighbouring triangles more than 90 degrees apart, summed over all frames (fold-overs)"},
+      {"skin_worst_neighbour_cosine", "", "skin: smallest cosine between neighbouring triangles' normals over all frames"},
+      {"skin_seam_gap_m", "m", "skin: largest distance between the two halves along the midlines and the tail edge, over all frames"},
   };
 }
 
@@ -180,6 +279,8 @@ Result FishKind::run(const Params& p) const {
   result.metrics["body_length_m"] = {L, "m"};
   result.metrics["mass_kg"] = {model.totalMassKg(), "kg"};
   for (const char* m : {"max_stable_dt_s"}) result.metrics[m] = {nan, "s"};
+  for (const char* m : {"skin_rest_inward", "skin_creases", "skin_worst_neighbour_cosine"}) result.metrics[m] = {nan, ""};
+  result.metrics["skin_seam_gap_m"] = {nan, "m"};
 
   // The model's topology: unit ends and classes, muscles (unit, segment, side), faces.
   {
@@ -249,6 +350,7 @@ Result FishKind::run(const Params& p) const {
   result.metrics["blew_up"] = {rec.blew_up ? 1.0 : 0.0, ""};
   result.metrics["blowup_step"] = {double(rec.blowup_step), ""};
   result.metrics["blowup_time_s"] = {rec.blew_up ? rec.blowup_time_s : -1.0, "s"};
+  if (r.boolean("skin")) addSkin(r, s, model, rec, result);
   if (rec.blew_up && r.text("on_blowup") == "fail")
     throw RunFailure("fish blew up at step " + std::to_string(rec.blowup_step) + " (t = " +
                          std::to_string(rec.blowup_time_s) + " s): " + rec.blowup_cause,
