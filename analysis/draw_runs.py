@@ -20,6 +20,7 @@ SCRIPTS = {
     "jellyfish": ["plot_jellyfish.py"],
     "membrane": ["plot_membrane.py"],
     "charlotte": ["charlotte_sheet.py"],
+    "fish": ["plot_fish.py"],
 }
 
 

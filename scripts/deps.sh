@@ -10,6 +10,7 @@ packages=(
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libopenmpi-dev openmpi-bin
   zlib1g-dev
+  libtinygltf-dev povray
   python3-h5py python3-numpy python3-matplotlib
 )
 

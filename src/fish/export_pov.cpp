@@ -16,7 +16,7 @@ std::string exportPov(const SkinMesh& m, const Eigen::Vector3d& c, double L, con
   };
   out << "// " << comment << "\n#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n"
       << "background { rgb <0.05, 0.22, 0.35> }\n"
-      << "camera { perspective location " << vec(c + Eigen::Vector3d(0.25 * L, 0.9 * L, 0.55 * L)) << " look_at "
+      << "camera { perspective location " << vec(c + Eigen::Vector3d(0.2 * L, 0.55 * L, 1.0 * L)) << " look_at "
       << vec(c) << " angle 50 right x*image_width/image_height }\n"
       << "light_source { " << vec(c + Eigen::Vector3d(0.5 * L, 1.5 * L, 3 * L)) << " color rgb <1, 1, 0.95> }\n"
       << "light_source { " << vec(c + Eigen::Vector3d(-2 * L, -1 * L, 1 * L)) << " color rgb <0.3, 0.35, 0.45> shadowless }\n"

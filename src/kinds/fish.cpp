@@ -81,6 +81,11 @@ void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& mo
   fish::SkinMesh mesh;
   skin.mesh(around, along, mesh);
   result.metrics["skin_rest_inward"] = {double(fish::checkOutward(mesh).inward), ""};
+  Tracks& rest_net = result.lagrangian["skin_rest_control_points_m"];  // the undeformed net (coupling figure)
+  rest_net.time_s = {0.0};
+  for (const auto& p : skin.controlPoints()) rest_net.data.insert(rest_net.data.end(), {p.x(), p.y(), p.z()});
+  rest_net.points = int(skin.controlPoints().size());
+  rest_net.dim = 3;
   const int n = rec.frames();
   // The exported frames: export_frames evenly spaced over [export_start_s, end].
   std::vector<int> exported;
@@ -124,6 +129,8 @@ void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& mo
   std::vector<std::int64_t> tris;
   for (const auto& t : mesh.triangles) tris.insert(tris.end(), t.begin(), t.end());
   result.topology["skin_triangles"] = tris;
+  // The runner writes one /lagrangian/time_s (all frames): the skin tracks' frames are these indices into it.
+  result.topology["skin_frames"] = std::vector<std::int64_t>(exported.begin(), exported.end());
   result.topology["skin_body_triangles"] = {mesh.body_triangles};
   result.metrics["skin_creases"] = {creases, ""};
   result.metrics["skin_worst_neighbour_cosine"] = {worst, ""};
@@ -152,8 +159,10 @@ void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& mo
 
 FishKind::FishKind() {
   params_ = {
-      text("task", "simulate", "",
-           "simulate (run the schedule) | stable_step (bisect the largest step that survives the schedule)"),
+      choice("task", "simulate", {"simulate", "stable_step"},
+             "simulate (run the schedule) | stable_step (bisect the largest step that survives the schedule)"),
+      integer("school_size", 1, 1, 100000,
+              "fish simulated (independent; fish k swims at amplitude x (1 - 0.05 (k mod 5))); the first is recorded, the rest counted"),
       text("schedule", "swim 30", "",
            "controller schedule, \"NAME SECONDS; ...\" with NAME swim | left | right | glide (spec §3)"),
       real("body_length_m", 2.0, "m", 1e-3, 1e3,
@@ -228,6 +237,10 @@ FishKind::FishKind() {
       {"blowup_step", "", "the step that blew up, -1 if none"},
       {"blowup_time_s", "s", "its time, -1 if none"},
       {"max_stable_dt_s", "s", "stable_step: the largest step that survives the schedule"},
+      {"school_count", "", "fish simulated (= school_size)"},
+      {"school_fish_steps", "", "steps summed over the school (steps per second: this / the point's wall_time_s attribute)"},
+      {"school_mean_speed_body_lengths_per_s", "1/s", "mean speed over the school"},
+      {"school_blowups", "", "fish of the school that blew up"},
       {"skin_rest_inward", "", "skin: body triangles pointing into the body on the undeformed skin"},
       {"skin_creases", "", "skin: neighbouring triangles more than 90 degrees apart, summed over all frames (fold-overs)"},
       {"skin_worst_neighbour_cosine", "", "skin: smallest cosine between neighbouring triangles' normals over all frames"},
@@ -243,8 +256,6 @@ std::string FishKind::doc() const {
 std::string FishKind::validate(const Params& p) const {
   try {
     ParamReader r(p);
-    const std::string task = r.text("task");
-    if (task != "simulate" && task != "stable_step") return "task: unknown task \"" + task + "\" (expected simulate or stable_step)";
     setupOf(r);
     if (!(r.real("stable_lo_s") < r.real("stable_hi_s"))) return "stable_lo_s must be below stable_hi_s";
   } catch (const std::invalid_argument& e) {
@@ -259,11 +270,12 @@ CostEstimate FishKind::estimateCost(const Params& p) const {
     const FishSetup s = setupOf(r);
     const double steps = std::ceil(fish::scheduleDurationS(s.schedule) / s.solver.dt_s);
     CostEstimate c;
-    const double runs = r.text("task") == "stable_step" ? double(r.integer("stable_iterations") + 2) : 1.0;
+    const double runs =
+        r.text("task") == "stable_step" ? double(r.integer("stable_iterations") + 2) : double(r.integer("school_size"));
     c.steps = steps * runs;
     c.memory_bytes = 8.0 * (1 << 20) + steps / double(r.integer("frame_every_steps")) * 8.0 * (fish::kNodes * 3 + 30);
     c.detail = std::to_string(long(steps)) + " steps of " + std::to_string(s.solver.dt_s) + " s" +
-               (runs > 1 ? " x " + std::to_string(long(runs)) + " runs" : "");
+               (runs > 1 ? " x " + std::to_string(long(runs)) + " runs (or fish)" : "");
     return c;
   } catch (const std::exception&) {
     return {};
@@ -302,6 +314,8 @@ Result FishKind::run(const Params& p) const {
     const auto st = fish::largestStableStep(model, s.solver, s.motor, s.schedule, r.real("stable_lo_s"),
                                             r.real("stable_hi_s"), int(r.integer("stable_iterations")));
     result.metrics["max_stable_dt_s"] = {st.dt_s, "s"};
+    for (const char* m : {"school_count", "school_fish_steps", "school_mean_speed_body_lengths_per_s", "school_blowups"})
+      result.metrics[m] = {nan, ""};
     result.timeseries["time_s"] = {{0.0}, "s"};
     return result;
   }
@@ -350,6 +364,26 @@ Result FishKind::run(const Params& p) const {
   result.metrics["blew_up"] = {rec.blew_up ? 1.0 : 0.0, ""};
   result.metrics["blowup_step"] = {double(rec.blowup_step), ""};
   result.metrics["blowup_time_s"] = {rec.blew_up ? rec.blowup_time_s : -1.0, "s"};
+  // The school: independent fish, each its own solver and controller, stepped one after the other
+  // (the thesis animates up to 5; the speed goal is 1,000 in real time). Only counted, not recorded.
+  const long school = r.integer("school_size");
+  double speed_sum = sw.speed_body_lengths_per_s, fish_steps = double(rec.steps), school_blowups = rec.blew_up;
+  fish::RunOptions quiet;
+  quiet.frame_every_steps = 20;  // enough frames for measureSwim, little recording
+  for (long k = 1; k < school; ++k) {
+    fish::MotorParams mk = s.motor;
+    const double scale = 1.0 - 0.05 * double(k % 5);
+    mk.swim.amplitude_anterior *= scale;
+    mk.swim.amplitude_posterior *= scale;
+    const fish::FishRecord other = fish::runSchedule(model, s.solver, mk, s.schedule, quiet);
+    fish_steps += double(other.steps);
+    school_blowups += other.blew_up;
+    speed_sum += fish::measureSwim(other, L, r.real("warmup_s")).speed_body_lengths_per_s;
+  }
+  result.metrics["school_count"] = {double(school), ""};
+  result.metrics["school_fish_steps"] = {fish_steps, ""};
+  result.metrics["school_mean_speed_body_lengths_per_s"] = {speed_sum / double(school), "1/s"};
+  result.metrics["school_blowups"] = {school_blowups, ""};
   if (r.boolean("skin")) addSkin(r, s, model, rec, result);
   if (rec.blew_up && r.text("on_blowup") == "fail")
     throw RunFailure("fish blew up at step " + std::to_string(rec.blowup_step) + " (t = " +
