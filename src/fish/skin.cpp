@@ -270,7 +270,15 @@ FoldCheck checkOutward(const SkinMesh& m) {
     const auto& t = m.triangles[k];
     const Eigen::Vector3d n = (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]);
     if (n.norm() <= 1e-12 * largest) continue;  // degenerate (the snout's pole)
-    const Station& s = st[(t[0] % (nu * nv)) % nv];  // the station of the triangle's first vertex
+    // The section at the triangle: its vertices' stations averaged (a triangle spans two stations,
+    // and near the thin tail the midline moves sideways between them by more than the fin is thick).
+    Station s;
+    s.lateral = s.up = Eigen::Vector3d::Zero();
+    for (int v : t) {
+      const Station& sv = st[(v % (nu * nv)) % nv];
+      s.centre += sv.centre / 3.0, s.lateral += sv.lateral / 3.0, s.up += sv.up / 3.0;
+      s.a += sv.a / 3.0, s.b += sv.b / 3.0;
+    }
     if (s.a <= 1e-9 * extent && s.b <= 1e-9 * extent) continue;
     const Eigen::Vector3d d = (m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3.0 - s.centre;
     const double a2 = std::max(s.a * s.a, 1e-18), b2 = std::max(s.b * s.b, 1e-18);

@@ -104,9 +104,13 @@ TEST(FishSkin, ClosedAndOutwardOverASwim) {
   skin.mesh(32, 64, mesh);
   const FoldCheck rest = checkOutward(mesh);
   EXPECT_EQ(rest.inward, 0);
-  EXPECT_EQ(rest.checked, 2 * 2 * 31 * 63 - 2 * 2 * 31);  // all but the cells at the snout's pole (a section of zero size)
+  EXPECT_EQ(rest.checked, 2 * 2 * 31 * 63 - 2 * 31);  // all but one degenerate triangle per cell at the snout's pole
   EXPECT_GT(rest.worst_cosine, -1e-9);
   // Over the swim and a turn: closed, and no neighbouring triangles more than 90 degrees apart.
+  // (The section-ellipse test is not used here: where the caudal fin thins to its zero-thickness
+  // trailing edge and swings sideways by more than it is thick between two stations, the section's
+  // outward direction is ill-defined; it flags up to 17 of 7,812 triangles in the last two stations
+  // while their neighbours stay within 25 degrees of them.)
   double worst = 1;
   for (int f = 0; f < rec.frames(); ++f) {
     NodeMatrix x;
