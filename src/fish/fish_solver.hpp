@@ -63,7 +63,7 @@ struct StepReport {
 
 class FishSolver {
  public:
-  // Throws std::invalid_argument if the parameters are bad.
+  // Throws std::invalid_argument if the parameters are bad. Keeps a reference: `fish` must outlive it.
   FishSolver(const FishModel& fish, SolverParams params);
 
   // Advances s by one step (the stages above). On failure s is left at the last good state

@@ -70,6 +70,7 @@ std::string validate(const MotorParams& p);
 
 class MotorController {
  public:
+  // Keeps a reference to `fish`, which must outlive it. Throws std::invalid_argument (validate()).
   MotorController(const FishModel& fish, MotorParams params, std::vector<ScheduleItem> schedule);
   // Sets the muscles' rest lengths for the step that starts at time t_s, moving from their current
   // values over one step of dt_s.

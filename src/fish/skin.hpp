@@ -63,7 +63,8 @@ struct SkinBinding {
 
 class FishSkin {
  public:
-  // Binds the skin to the undeformed fish. Throws std::invalid_argument on bad parameters.
+  // Binds the skin to the undeformed fish (kept by reference: it must outlive the skin). Throws
+  // std::invalid_argument on bad parameters.
   FishSkin(const FishModel& fish, SkinParams params);
 
   // Control points from node positions (homogeneous, weight 1).
