@@ -21,6 +21,7 @@ SCRIPTS = {
     "membrane": ["plot_membrane.py"],
     "charlotte": ["charlotte_sheet.py"],
     "control": ["plot_control.py"],
+    "fish": ["plot_fish.py"],
 }
 
 

@@ -1,5 +1,6 @@
 #include "kinds/charlotte.hpp"
 #include "kinds/control.hpp"
+#include "kinds/fish.hpp"
 #include "kinds/fluid.hpp"
 #include "kinds/jellyfish.hpp"
 #include "kinds/kind.hpp"
@@ -20,6 +21,7 @@ Registry defaultRegistry() {
   r.add(std::make_unique<MembraneKind>());
   r.add(std::make_unique<JellyfishKind>());
   r.add(std::make_unique<ControlKind>());
+  r.add(std::make_unique<FishKind>());
   return r;
 }
 

@@ -1,0 +1,249 @@
+#!/usr/bin/python3
+"""Draws runs of Tu's artificial fish (kind "fish") from their HDF5 files, and renders the
+POV-Ray scenes the skinned runs wrote beside them.
+
+usage: /usr/bin/python3 analysis/plot_fish.py RUN_DIR [--out DIR]
+
+Writes to RUN_DIR/figures/ (or --out), each when the run has what it needs:
+  trajectories.png  top view of the centre of mass of every point (swim and turn sweeps), the
+                    fish's outline (its 23 nodes) at the end of each.
+  speed.png         speed in body lengths per second against the swim-MC rate, one line per
+                    amplitude (swim.toml).
+  stability.png     the largest stable step per scheme (stability.toml).
+  school.png        fish-steps per second and the school's real-time factor against its size
+                    (school.toml; wall time from the point files' wall_time_s attribute).
+  air.png           sum m v and the centre of mass against time, and the blow-up step (air.toml).
+  coupling.png      the 23 nodes and 91 units with the NURBS control net bound to them, undeformed
+                    and at the last exported frame (the thesis's coupling figure, ch. 7).
+  skin_cycle.png    the skinned fish over the exported swim cycle, rendered by POV-Ray (headless)
+                    from the point's .pov scenes; skin_NNN.png each.
+"""
+import argparse
+import glob
+import os
+import shutil
+import subprocess
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def text(v):
+    return v.decode() if isinstance(v, bytes) else str(v)
+
+
+def attr(f, name, default=None):
+    return f.attrs[name] if name in f.attrs else default
+
+
+def label(f, axes):
+    return ", ".join(f"{a}={text(attr(f, a))}" for a in axes)
+
+
+def sweep_axes(run):
+    import json
+    with h5py.File(os.path.join(run, "index.h5"), "r") as index:
+        return json.loads(text(index["sweep"].attrs["columns_json"]))
+
+
+def metric(f, name):
+    return float(f["metrics"][name][()]) if name in f["metrics"] else float("nan")
+
+
+def trajectories(points, axes, out):
+    fig, ax = plt.subplots(figsize=(8, 6))
+    for f in points:
+        if "com_x_m" not in f["timeseries"]:
+            continue
+        x, y = f["timeseries/com_x_m"][...], f["timeseries/com_y_m"][...]
+        line, = ax.plot(x, y, lw=1, label=label(f, axes))
+        nodes = f["lagrangian/nodes_m"]
+        last = nodes[nodes.shape[0] - 1]
+        ends = f["topology/unit_nodes"][...].reshape(-1, 2)
+        for a, b in ends:
+            ax.plot([last[a, 0], last[b, 0]], [last[a, 1], last[b, 1]], color=line.get_color(), lw=0.4, alpha=0.5)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m), left of the initial heading")
+    ax.set_title("centre of mass, top view (fish outline at the end)")
+    if len(points) > 1:
+        ax.legend(fontsize=6, loc="best")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "trajectories.png"), dpi=130)
+    plt.close(fig)
+
+
+def speed(points, out):
+    rows = [(float(attr(f, "swim_amplitude")), float(attr(f, "swim_rate")), metric(f, "speed_body_lengths_per_s"))
+            for f in points]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for a in sorted({r[0] for r in rows}):
+        pts = sorted((r[1], r[2]) for r in rows if r[0] == a)
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"alpha = {a:g}")
+    ax.set_xlabel("swim-MC rate r (rest-length fraction per 0.055 s)")
+    ax.set_ylabel("speed (body lengths / s)")
+    ax.legend()
+    ax.set_title("swim-MC: speed against amplitude and rate")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "speed.png"), dpi=130)
+    plt.close(fig)
+
+
+def stability(points, out):
+    names = [text(attr(f, "scheme")) for f in points]
+    dts = [metric(f, "max_stable_dt_s") for f in points]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.bar(names, dts, color=["#4a7", "#c54", "#58c"][: len(names)])
+    ax.set_yscale("log")
+    for k, v in enumerate(dts):
+        ax.text(k, v, f"{v:.3g} s", ha="center", va="bottom")
+    ax.set_ylabel("largest stable step (s)")
+    ax.set_title("same fish, same swim: largest stable step per scheme")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "stability.png"), dpi=130)
+    plt.close(fig)
+
+
+def air(points, axes, out):
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
+    for f in points:
+        t = f["timeseries/time_s"][...]
+        p = np.sqrt(sum(f[f"timeseries/momentum_{c}_kg_m_per_s"][...] ** 2 for c in "xyz"))
+        com = np.sqrt(sum((f[f"timeseries/com_{c}_m"][...] - f[f"timeseries/com_{c}_m"][0]) ** 2 for c in "xyz"))
+        lab = label(f, axes)
+        step = metric(f, "blowup_step")
+        if step > 0:
+            lab += f" (blows up at step {int(step)})"
+        a1.plot(t, p + 1e-300, label=lab)
+        a2.plot(t, com + 1e-300, label=lab)
+    a1.set_yscale("log")
+    a2.set_yscale("log")
+    a1.set_ylabel("|sum m v| (kg m/s)")
+    a2.set_ylabel("centre-of-mass travel (m)")
+    a2.set_xlabel("time (s)")
+    a1.legend(fontsize=7)
+    a1.set_title("fish in air (mu = 0): momentum and centre of mass stay at round-off")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "air.png"), dpi=130)
+    plt.close(fig)
+
+
+def coupling(f, out):
+    nodes = f["lagrangian/nodes_m"]
+    ends = f["topology/unit_nodes"][...].reshape(-1, 2)
+    cls = f["topology/unit_class"][...]
+    colours = {0: "#888", 1: "#d22", 2: "#26c"}
+    net = f["lagrangian/skin_control_points_m"]
+    times = f["lagrangian/time_s"][...]
+    last = net.shape[0] - 1
+    i_last = int(f["topology/skin_frames"][last])  # the recorded frame of the last exported one
+    net_t = float(times[i_last])
+    views = [(nodes[0], f["lagrangian/skin_rest_control_points_m"][0], "undeformed"),
+             (nodes[i_last], net[last], "last exported frame" + (f" (t = {net_t:.2f} s)" if net_t is not None else ""))]
+    fig = plt.figure(figsize=(12, 5))
+    for k, (x, c, title) in enumerate(views):
+        ax = fig.add_subplot(1, 2, k + 1, projection="3d")
+        for (a, b), kind in zip(ends, cls):
+            ax.plot(*[[x[a, d], x[b, d]] for d in range(3)], color=colours[int(kind)], lw=1)
+        ax.scatter(x[:, 0], x[:, 1], x[:, 2], color="k", s=8)
+        body = 9 * 21
+        for half in range(2):
+            g = c[half * body:(half + 1) * body].reshape(9, 21, 3)
+            for i in range(9):
+                ax.plot(g[i, :, 0], g[i, :, 1], g[i, :, 2], color="#3a3", lw=0.4)
+            for j in range(21):
+                ax.plot(g[:, j, 0], g[:, j, 1], g[:, j, 2], color="#3a3", lw=0.4)
+        ax.set_title(title + "\nunits: red muscle, grey cross, blue other; green: NURBS control net", fontsize=8)
+        span = np.ptp(c, axis=0)
+        ax.set_box_aspect(tuple(max(v, 0.05 * span.max()) for v in span))
+        ax.view_init(elev=25, azim=-60)
+        ax.set_axis_off()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "coupling.png"), dpi=130)
+    plt.close(fig)
+
+
+def school(points, out):
+    rows = sorted((int(attr(f, "school_size")), metric(f, "school_fish_steps") / float(attr(f, "wall_time_s")))
+                  for f in points)
+    n = np.array([r[0] for r in rows])
+    rate = np.array([r[1] for r in rows])
+    # real-time factor: simulated seconds of the whole school per wall second
+    realtime = rate * float(attr(points[0], "dt_s")) / n
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.loglog(n, rate, "o-", label="fish-steps per second")
+    ax.loglog(n, realtime, "s--", label="real-time factor of the school (sim s / wall s)")
+    ax.axhline(1.0, color="grey", lw=0.8)
+    for x, y, z in zip(n, rate, realtime):
+        ax.annotate(f"{y:.3g}/s, x{z:.3g}", (x, y), fontsize=7, textcoords="offset points", xytext=(4, 4))
+    ax.set_xlabel("fish in the school")
+    ax.legend(fontsize=8)
+    ax.set_title("school: one core, 0.055 s steps (wall time from the point files' wall_time_s)", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "school.png"), dpi=130)
+    plt.close(fig)
+
+
+def render_skin(run, out):
+    scenes = sorted(glob.glob(os.path.join(run, "point_*_skin_*.pov")))
+    if not scenes:
+        return
+    povray = shutil.which("povray")
+    if povray is None:
+        raise SystemExit("povray is not installed (scripts/deps.sh installs it): cannot render " + scenes[0])
+    images = []
+    for scene in scenes:
+        name = os.path.basename(scene).replace(".pov", ".png").split("_", 2)[-1]
+        png = os.path.join(out, name)
+        subprocess.run([povray, "+I" + scene, "+O" + png, "+W800", "+H450", "-D", "+A0.3", "+FN", "-V", "+WT1"],
+                       check=True, capture_output=True)
+        images.append(png)
+    fig, axes = plt.subplots(1, len(images), figsize=(4 * len(images), 2.6))
+    axes = np.atleast_1d(axes)
+    for ax, png in zip(axes, images):
+        ax.imshow(plt.imread(png))
+        ax.set_axis_off()
+        ax.set_title(os.path.basename(png), fontsize=8)
+    fig.suptitle("the skinned fish over one tail-beat cycle (POV-Ray)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "skin_cycle.png"), dpi=110)
+    plt.close(fig)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("run")
+    parser.add_argument("--out")
+    args = parser.parse_args()
+    out = args.out or os.path.join(args.run, "figures")
+    os.makedirs(out, exist_ok=True)
+    axes = sweep_axes(args.run)
+    points = [h5py.File(p, "r") for p in sorted(glob.glob(os.path.join(args.run, "point_*.h5")))]
+    if not points:
+        raise SystemExit("no point files in " + args.run)
+    task = text(attr(points[0], "task", "simulate"))
+    if task == "stable_step":
+        stability(points, out)
+        return
+    if all("lagrangian/nodes_m" in f for f in points):
+        trajectories(points, axes, out)
+    if "school_size" in axes:
+        school(points, out)
+        return
+    if "swim_amplitude" in axes and "swim_rate" in axes:
+        speed(points, out)
+    if float(attr(points[0], "water_mu", 1.0)) == 0.0:
+        air(points, axes, out)
+    for f in points:
+        if "lagrangian/skin_control_points_m" in f:
+            coupling(f, out)
+            break
+    render_skin(args.run, out)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,100 @@
+#pragma once
+// The dynamic fish of Tu (1996): 23 point masses joined by 91 Voigt units, 12 of them muscles, and
+// the 24 faces that meet the water. Topology from ../shared/specs/artificial-fish.md §1 (thesis
+// ch. 4, counts; the node / unit numbering of the public reimplementation); the node coordinates
+// are ours (FishGeometry below). The masses, units and rest lengths are stored in a
+// springs::Network<3> (src/springs), the project's spring-mass data, so that its validate() and
+// its force convention are shared; the fish's own solver (semi_implicit.hpp) reads them.
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "springs/network.hpp"
+
+namespace creaturelab::fish {
+
+constexpr int kNodes = 23;
+constexpr int kUnits = 91;
+constexpr int kFaces = 24;
+constexpr int kMuscles = 12;
+constexpr int kSegments = 6;  // body segments S0 (head) .. S5 (tail), four faces each (seed, §"six segments")
+
+// Node positions or velocities: one row per node (x, y, z), so one n x n matrix acts on all three
+// coordinate columns at once (spec §2: "one n x n effective-stiffness matrix shared by x, y, z").
+using NodeMatrix = Eigen::Matrix<double, kNodes, 3>;
+
+// Unit classes: each has its own stiffness (spec §1, thesis: "cross units stiffest, muscles and the
+// rest each their own").
+enum class UnitClass : int { cross = 0, muscle = 1, other = 2 };
+
+// The fish is built with its snout at the origin, the body along -x (it swims towards +x), +y to
+// its left and +z up. Ring nodes go around the cross-section as upper-left, lower-left,
+// lower-right, upper-right, so the two left longitudinal units of a gap are nodes 0 and 1 of the ring.
+struct FishGeometry {
+  double body_length_m = 1.0;  // snout to tail tip
+  // Ours (no coordinates survive in text, spec §1): a laterally compressed, fusiform body, deepest
+  // at ring 2, narrowing to a caudal peduncle at rings 4-5 and a forked tail. Fractions of the body
+  // length: station (distance behind the snout), half-width (y) and half-height (z) of rings 1-5.
+  std::array<double, 5> ring_station = {0.19, 0.38, 0.58, 0.77, 0.85};
+  std::array<double, 5> ring_half_width = {0.06, 0.09, 0.06, 0.03, 0.025};
+  std::array<double, 5> ring_half_height = {0.08, 0.12, 0.08, 0.04, 0.032};
+  double tail_half_height = 0.12;  // the dorsal and ventral tail-fin tips (nodes 21, 22) at the tail end
+};
+
+struct UnitParams {
+  // [reimpl] (spec §1): c = 38 cross, 30 other, 28 muscle; gamma = 0.1 for all.
+  double stiffness_cross_n_per_m = 38.0;
+  double stiffness_other_n_per_m = 30.0;
+  double stiffness_muscle_n_per_m = 28.0;
+  double damping_ns_per_m = 0.1;
+  // Masses [reimpl] in units of m = 1.1 kg: snout 1, ring 1: 6, ring 2: 10, ring 3: 6, rings 4-5: 1,
+  // tail nodes 0.15.
+  double mass_unit_kg = 1.1;
+  std::array<double, 7> mass_units = {1.0, 6.0, 10.0, 6.0, 1.0, 1.0, 0.15};  // snout, rings 1-5, tail nodes
+};
+
+// One muscle: its unit, its segment (0 anterior, 1 middle, 2 posterior: ring gaps 1-2, 2-3, 3-4),
+// and its side (0 left, 1 right).
+struct Muscle {
+  int unit;
+  int segment;
+  int side;
+};
+
+// A face: four node indices (a triangle repeats a vertex), ordered so that
+// (c2 - c0) x (c3 - c1) points out of the body (spec §4 "faces oriented outward").
+struct Face {
+  std::array<int, 4> node;
+  int segment;  // S0 .. S5
+};
+
+struct FishModel {
+  springs::Network<3> network;       // masses, units (spring_a/b, rest, c, gamma)
+  std::vector<UnitClass> unit_class;  // per unit
+  std::array<Muscle, kMuscles> muscles;
+  std::array<Face, kFaces> faces;
+  NodeMatrix rest_positions_m;  // the undeformed fish, snout at the origin
+  double body_length_m = 1.0;
+  double totalMassKg() const { return network.mass_kg.sum(); }
+};
+
+// "" if the geometry and unit parameters describe a fish that can be built, else what is wrong,
+// naming the parameter.
+std::string validate(const FishGeometry& g, const UnitParams& u);
+
+// Builds the fish; throws std::invalid_argument with validate()'s message on bad input.
+FishModel buildFish(const FishGeometry& g, const UnitParams& u);
+
+// Unit normal and area of a face from its corners: n = normalize((c2 - c0) x (c3 - c1)),
+// area = |(c2 - c0) x (c3 - c1)| / 2 (exact for planar quads and for a triangle with a repeated
+// vertex; robust for non-planar quads, spec §4 "choices").
+struct FaceFrame {
+  Eigen::Vector3d normal;
+  double area_m2;
+};
+FaceFrame faceNormal(const NodeMatrix& x, const Face& f);
+
+}  // namespace creaturelab::fish

@@ -1,0 +1,145 @@
+#include "fish/motor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace creaturelab::fish {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\n"), e = s.find_last_not_of(" \t\n");
+  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
+}
+
+// A triangle wave that starts at 0 at t = 0, rises at `slope` to `peak`, falls back, and repeats;
+// 0 before t = 0.
+double triangle(double t, double peak, double slope) {
+  if (t <= 0 || peak <= 0) return 0;
+  const double half = peak / slope, phase = std::fmod(t, 2 * half);
+  return phase < half ? slope * phase : peak - slope * (phase - half);
+}
+
+}  // namespace
+
+std::string actionName(Action a) {
+  switch (a) {
+    case Action::swim: return "swim";
+    case Action::left: return "left";
+    case Action::right: return "right";
+    case Action::glide: return "glide";
+  }
+  return "?";
+}
+
+std::vector<ScheduleItem> parseSchedule(const std::string& text) {
+  std::vector<ScheduleItem> out;
+  std::stringstream all(text);
+  std::string part;
+  double start = 0;
+  while (std::getline(all, part, ';')) {
+    part = trim(part);
+    if (part.empty()) continue;
+    std::istringstream in(part);
+    std::string name, extra;
+    double duration = 0;
+    in >> name;
+    if (!(in >> duration) || (in >> extra))
+      throw std::invalid_argument("schedule item \"" + part + "\": expected a controller name and a duration in seconds");
+    Action a;
+    if (name == "swim") a = Action::swim;
+    else if (name == "left") a = Action::left;
+    else if (name == "right") a = Action::right;
+    else if (name == "glide") a = Action::glide;
+    else throw std::invalid_argument("schedule item \"" + part + "\": unknown controller \"" + name +
+                                     "\" (expected swim, left, right or glide)");
+    if (!(duration > 0) || !std::isfinite(duration))
+      throw std::invalid_argument("schedule item \"" + part + "\": the duration must be positive");
+    out.push_back({a, duration, start});
+    start += duration;
+  }
+  if (out.empty()) throw std::invalid_argument("schedule is empty (expected e.g. \"swim 10; left 3\")");
+  return out;
+}
+
+double scheduleDurationS(const std::vector<ScheduleItem>& s) { return s.back().start_s + s.back().duration_s; }
+
+SwimCommand swimFromSpeed(double f, double r_max) {
+  const double a = std::sqrt(std::clamp(f, 0.0, 1.0));
+  return {a, a * r_max, a, a * r_max};
+}
+
+std::string validate(const MotorParams& p) {
+  auto amp = [](const char* name, double a) {
+    return a > 0 && a <= 1 ? std::string() : std::string(name) + " must be in (0, 1] (got " + std::to_string(a) + ")";
+  };
+  auto rate = [&](const char* name, double r) {
+    return r > 0 && r <= p.r_max ? std::string()
+                                 : std::string(name) + " must be in (0, r_max = " + std::to_string(p.r_max) +
+                                       "] (got " + std::to_string(r) + ")";
+  };
+  for (const auto& m : {amp("swim_amplitude", p.swim.amplitude_anterior), amp("swim_amplitude", p.swim.amplitude_posterior),
+                        amp("turn_amplitude", p.turn_amplitude), rate("swim_rate", p.swim.rate_anterior),
+                        rate("swim_rate", p.swim.rate_posterior), rate("turn_rate", p.turn_rate)})
+    if (!m.empty()) return m;
+  if (!(p.contracted_fraction > 0 && p.contracted_fraction < 1))
+    return "contracted_fraction must be in (0, 1) (got " + std::to_string(p.contracted_fraction) + ")";
+  if (!(p.reference_step_s > 0)) return "reference_step_s must be positive";
+  if (!std::isfinite(p.posterior_lag_rad)) return "posterior_lag_rad must be finite";
+  if (!(p.turn_relax_fraction > 0 && p.turn_relax_fraction <= 1))
+    return "turn_relax_fraction must be in (0, 1] (got " + std::to_string(p.turn_relax_fraction) + ")";
+  return "";
+}
+
+MotorController::MotorController(const FishModel& fish, MotorParams params, std::vector<ScheduleItem> schedule)
+    : fish_(fish), params_(params), schedule_(std::move(schedule)) {
+  if (auto m = validate(params_); !m.empty()) throw std::invalid_argument(m);
+  if (schedule_.empty()) throw std::invalid_argument("schedule is empty");
+  for (int k = 0; k < kMuscles; ++k) rest_m_[k] = fish.network.rest_length_m[fish.muscles[k].unit];
+}
+
+const ScheduleItem& MotorController::itemAt(double t) const {
+  for (const auto& item : schedule_)
+    if (t < item.start_s + item.duration_s) return item;
+  return schedule_.back();
+}
+
+std::array<double, kMuscles> MotorController::targetContraction(double t) const {
+  std::array<double, kMuscles> c{};
+  if (t >= scheduleDurationS(schedule_)) return c;  // after the schedule: relax
+  const ScheduleItem& item = itemAt(t);
+  const double local = t - item.start_s, per_s = 1.0 / params_.reference_step_s;
+  for (int k = 0; k < kMuscles; ++k) {
+    const Muscle& m = fish_.muscles[k];
+    const double full = rest_m_[k] * (1.0 - params_.contracted_fraction);
+    if (item.action == Action::swim && m.segment >= 1) {
+      const bool posterior = m.segment == 2;
+      const double alpha = posterior ? params_.swim.amplitude_posterior : params_.swim.amplitude_anterior;
+      const double r = posterior ? params_.swim.rate_posterior : params_.swim.rate_anterior;
+      const double peak = alpha * full, slope = r * rest_m_[k] * per_s, period = 2 * peak / slope;
+      double delay = posterior ? params_.posterior_lag_rad / (2 * M_PI) * period : 0.0;
+      if (m.side == 1) delay += 0.5 * period;  // right side: exactly out of phase
+      c[k] = triangle(local - delay, peak, slope);
+    } else if ((item.action == Action::left && m.side == 0) || (item.action == Action::right && m.side == 1)) {
+      if (m.segment <= 1) {
+        const double peak = params_.turn_amplitude * full, slope = params_.turn_rate * rest_m_[k] * per_s;
+        const double rise = peak / slope, fall = rise / params_.turn_relax_fraction;  // one pulse
+        if (local < rise) c[k] = slope * local;
+        else if (local < rise + fall) c[k] = peak * (1.0 - (local - rise) / fall);
+      }
+    }
+  }
+  return c;
+}
+
+void MotorController::apply(double t, double dt, std::array<double, kUnits>& rest_m) {
+  const auto target = targetContraction(t + dt);
+  for (int k = 0; k < kMuscles; ++k) {
+    const double limit = params_.r_max * rest_m_[k] / params_.reference_step_s * dt;
+    contraction_m_[k] += std::clamp(target[k] - contraction_m_[k], -limit, limit);
+    rest_m[fish_.muscles[k].unit] = rest_m_[k] - contraction_m_[k];
+  }
+}
+
+}  // namespace creaturelab::fish

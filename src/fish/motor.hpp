@@ -1,0 +1,92 @@
+#pragma once
+// Motor controllers (spec §3; thesis ch. 5). A muscle acts only through its rest length l (spec §2).
+// Its contraction is c = l_rest - l, between 0 (rest) and l_rest - l_contracted (fully contracted).
+//
+// Amplitude alpha in (0, 1]: the fraction of the full contraction a controller reaches,
+//   c_max = alpha (l_rest - l_contracted).
+// (Ours. The spec words it as "0 the fully contracted length, 1 the rest length", which read
+// literally would make alpha = 1 no contraction; it also says speed grows with amplitude, which
+// fixes the direction we take.)
+// Rate r in (0, r_max]: the rest-length change per time step as a fraction of the rest length
+// (r_max = 0.075 [reimpl]), per *reference* step dt_ref = 0.055 s, so that the motion is the same
+// in time whatever step the solver takes (the stability experiment changes it):
+//   dc/dt = r l_rest / dt_ref,
+// rest lengths ramp at that constant rate: a triangle wave of period 2 c_max / (dc/dt).
+//
+// swim-MC: the middle and posterior muscle segments (spec §1: the two posterior segments swim);
+// left and right exactly out of phase (the right side starts half a period later); the posterior
+// segment lags the anterior one by posterior_lag_rad of its period (ours: pi/2, a travelling wave).
+// turn-MCs: the left (or right) muscles of the anterior and middle segments contract once at
+// turn_rate and relax more slowly (turn_relax_fraction); the fish bends and turns towards that side.
+// Between controllers every muscle's contraction moves towards its new target at no more than the
+// fastest rate (r_max), so switching never jerks a rest length.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "fish/fish_model.hpp"
+
+namespace creaturelab::fish {
+
+enum class Action { swim, left, right, glide };
+
+struct ScheduleItem {
+  Action action;
+  double duration_s;
+  double start_s;  // filled by parseSchedule: the sum of the durations before
+};
+
+// "swim 10; left 3; glide 2" -> items. Names: swim, left, right, glide; durations in seconds, > 0.
+// Throws std::invalid_argument naming the item that is wrong (unknown controller, bad duration).
+std::vector<ScheduleItem> parseSchedule(const std::string& text);
+std::string actionName(Action a);
+double scheduleDurationS(const std::vector<ScheduleItem>& schedule);
+
+struct SwimCommand {
+  double amplitude_anterior = 0.7, rate_anterior = 0.004;  // the kind's defaults (kinds/fish.cpp)
+  double amplitude_posterior = 0.7, rate_posterior = 0.004;
+};
+
+// swim-MC from a desired speed, as a fraction of the top speed (alpha = r / r_max = 1) in (0, 1]:
+// speed grows roughly as amplitude x rate (spec §3), so both scale with its square root (ours).
+SwimCommand swimFromSpeed(double speed_fraction, double r_max);
+
+struct MotorParams {
+  double contracted_fraction = 0.7;  // fully contracted length / rest length (ours: thesis value not in text)
+  SwimCommand swim;
+  double posterior_lag_rad = 1.5707963267948966;  // pi/2 (spec §3 [choose])
+  double turn_amplitude = 0.7;
+  double turn_rate = 0.016;
+  // A turn contracts at turn_rate and relaxes at turn_rate x this (ours: 0.25). A symmetric pulse
+  // bends the body and unbends it along the same path, and the water gives back most of the turn;
+  // a slow release lets the bent body glide round (the thesis's turns: a quick bend, a slow return).
+  double turn_relax_fraction = 0.25;
+  double r_max = 0.075;             // [reimpl]
+  double reference_step_s = 0.055;  // the step r is defined per ([reimpl] dt)
+};
+
+// "" or what is wrong, naming the parameter (alpha outside (0, 1], r outside (0, r_max], ...).
+std::string validate(const MotorParams& p);
+
+class MotorController {
+ public:
+  // Keeps a reference to `fish`, which must outlive it. Throws std::invalid_argument (validate()).
+  MotorController(const FishModel& fish, MotorParams params, std::vector<ScheduleItem> schedule);
+  // Sets the muscles' rest lengths for the step that starts at time t_s, moving from their current
+  // values over one step of dt_s.
+  void apply(double t_s, double dt_s, std::array<double, kUnits>& rest_m);
+  // The contraction each muscle aims at, at time t_s (before the rate limit).
+  std::array<double, kMuscles> targetContraction(double t_s) const;
+  const std::vector<ScheduleItem>& schedule() const { return schedule_; }
+  // The schedule item active at t_s (the last one after the end).
+  const ScheduleItem& itemAt(double t_s) const;
+
+ private:
+  const FishModel& fish_;
+  MotorParams params_;
+  std::vector<ScheduleItem> schedule_;
+  std::array<double, kMuscles> rest_m_{};         // each muscle's rest length
+  std::array<double, kMuscles> contraction_m_{};  // current contraction
+};
+
+}  // namespace creaturelab::fish

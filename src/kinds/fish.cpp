@@ -1,0 +1,400 @@
+#include "kinds/fish.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "fish/export.hpp"
+#include "fish/fish_measure.hpp"
+#include "fish/fish_run.hpp"
+#include "fish/skin.hpp"
+
+namespace creaturelab::kinds {
+namespace {
+
+const char* kSpec = "../shared/specs/artificial-fish.md";
+
+struct FishSetup {
+  fish::SkinParams skin;
+  fish::FishGeometry geometry;
+  fish::UnitParams units;
+  fish::SolverParams solver;
+  fish::MotorParams motor;
+  std::vector<fish::ScheduleItem> schedule;
+};
+
+// Throws std::invalid_argument naming the key for what the per-key ranges cannot catch.
+FishSetup setupOf(const ParamReader& r) {
+  FishSetup s;
+  s.geometry.body_length_m = r.real("body_length_m");
+  s.units.mass_unit_kg = r.real("mass_unit_kg");
+  s.units.stiffness_cross_n_per_m = r.real("stiffness_cross_n_per_m");
+  s.units.stiffness_other_n_per_m = r.real("stiffness_other_n_per_m");
+  s.units.stiffness_muscle_n_per_m = r.real("stiffness_muscle_n_per_m");
+  s.units.damping_ns_per_m = r.real("damping_ns_per_m");
+  s.solver.dt_s = r.real("dt_s");
+  const std::string scheme = r.text("scheme");
+  s.solver.scheme = scheme == "explicit_euler"     ? fish::Scheme::explicit_euler
+                    : scheme == "symplectic_euler" ? fish::Scheme::symplectic_euler
+                                                   : fish::Scheme::semi_implicit;
+  s.solver.water.mu = r.real("water_mu");
+  s.solver.water.law = r.text("water_law") == "quadratic" ? fish::WaterLaw::quadratic : fish::WaterLaw::linear;
+  s.solver.water.current_m_per_s = {r.real("current_x_m_per_s"), r.real("current_y_m_per_s"), r.real("current_z_m_per_s")};
+  s.solver.blowup_strain = r.real("blowup_strain");
+  auto& m = s.motor;
+  m.contracted_fraction = r.real("contracted_fraction");
+  m.r_max = r.real("r_max");
+  m.reference_step_s = r.real("reference_step_s");
+  m.posterior_lag_rad = r.real("posterior_lag_rad");
+  m.turn_amplitude = r.real("turn_amplitude");
+  m.turn_rate = r.real("turn_rate");
+  m.turn_relax_fraction = r.real("turn_relax_fraction");
+  const double speed = r.real("swim_desired_speed");
+  if (speed > 0) {
+    m.swim = fish::swimFromSpeed(speed, m.r_max);
+  } else {
+    m.swim = {r.real("swim_amplitude"), r.real("swim_rate"), r.real("swim_amplitude"), r.real("swim_rate")};
+  }
+  if (auto e = fish::validate(m); !e.empty()) throw std::invalid_argument(e);
+  s.skin.degree_around = int(r.integer("skin_degree_around"));
+  s.skin.degree_along = int(r.integer("skin_degree_along"));
+  s.skin.inflate = r.real("skin_inflate");
+  s.skin.fins = r.boolean("skin_fins");
+  if (auto e = fish::validate(s.skin); !e.empty()) throw std::invalid_argument(e);
+  if (auto e = fish::validate(s.geometry, s.units); !e.empty()) throw std::invalid_argument(e);
+  if (auto e = fish::validate(s.solver); !e.empty()) throw std::invalid_argument(e);
+  try {
+    s.schedule = fish::parseSchedule(r.text("schedule"));
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("schedule: ") + e.what());
+  }
+  return s;
+}
+
+std::vector<std::int64_t> flat(const std::vector<int>& v) { return {v.begin(), v.end()}; }
+
+// The skin on every recorded frame (quality metrics), stored and exported on export_frames of them.
+void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& model, const fish::FishRecord& rec,
+             Result& result) {
+  fish::FishSkin skin(model, s.skin);
+  const int around = int(r.integer("skin_samples_around")), along = int(r.integer("skin_samples_along"));
+  fish::SkinMesh mesh;
+  skin.mesh(around, along, mesh);
+  result.metrics["skin_rest_inward"] = {double(fish::checkOutward(mesh).inward), ""};
+  Tracks& rest_net = result.lagrangian["skin_rest_control_points_m"];  // the undeformed net (coupling figure)
+  rest_net.time_s = {0.0};
+  for (const auto& p : skin.controlPoints()) rest_net.data.insert(rest_net.data.end(), {p.x(), p.y(), p.z()});
+  rest_net.points = int(skin.controlPoints().size());
+  rest_net.dim = 3;
+  const int n = rec.frames();
+  // The exported frames: export_frames evenly spaced over [export_start_s, end].
+  std::vector<int> exported;
+  int first = 0;
+  while (first < n - 1 && rec.time_s[first] < r.real("export_start_s") - 1e-9) ++first;
+  const int count = std::min<int>(int(r.integer("export_frames")), n - first);
+  for (int k = 0; k < count; ++k)
+    exported.push_back(count > 1 ? first + int(std::lround(double(k) * (n - 1 - first) / (count - 1))) : n - 1);
+  double creases = 0, worst = 1, gap = 0, inward = 0;
+  std::vector<fish::SkinFrame> frames;
+  Tracks& net = result.lagrangian["skin_control_points_m"];
+  Tracks& vertices = result.lagrangian["skin_vertices_m"];
+  size_t next = 0;
+  for (int f = 0; f < n; ++f) {
+    fish::NodeMatrix x;
+    for (int k = 0; k < fish::kNodes; ++k)
+      for (int d = 0; d < 3; ++d) x(k, d) = rec.nodes_m[(size_t(f) * fish::kNodes + k) * 3 + d];
+    skin.update(x);
+    skin.mesh(around, along, mesh);
+    const fish::FoldCheck fold = fish::checkOutward(mesh);
+    creases += fold.creases;
+    inward = std::max(inward, double(fold.inward));
+    worst = std::min(worst, fold.worst_neighbour_cosine);
+    const int half = around * along;
+    for (int iv = 0; iv < along; ++iv)
+      for (int iu : {0, around - 1}) gap = std::max(gap, (mesh.positions[iu * along + iv] - mesh.positions[half + iu * along + iv]).norm());
+    for (int iu = 0; iu < around; ++iu)
+      gap = std::max(gap, (mesh.positions[iu * along + along - 1] - mesh.positions[half + iu * along + along - 1]).norm());
+    if (next < exported.size() && exported[next] == f) {
+      ++next;
+      net.time_s.push_back(rec.time_s[f]);
+      for (const auto& p : skin.controlPoints()) net.data.insert(net.data.end(), {p.x(), p.y(), p.z()});
+      vertices.time_s.push_back(rec.time_s[f]);
+      for (const auto& p : mesh.positions) vertices.data.insert(vertices.data.end(), {p.x(), p.y(), p.z()});
+      frames.push_back({rec.time_s[f], mesh});
+    }
+  }
+  net.points = int(skin.controlPoints().size());
+  net.dim = 3;
+  vertices.points = int(mesh.positions.size());
+  vertices.dim = 3;
+  std::vector<std::int64_t> tris;
+  for (const auto& t : mesh.triangles) tris.insert(tris.end(), t.begin(), t.end());
+  result.topology["skin_triangles"] = tris;
+  // The runner writes one /lagrangian/time_s (all frames): the skin tracks' frames are these indices into it.
+  result.topology["skin_frames"] = std::vector<std::int64_t>(exported.begin(), exported.end());
+  result.topology["skin_body_triangles"] = {mesh.body_triangles};
+  result.metrics["skin_creases"] = {creases, ""};
+  result.metrics["skin_inward_max"] = {inward, ""};
+  result.metrics["skin_worst_neighbour_cosine"] = {worst, ""};
+  result.metrics["skin_seam_gap_m"] = {gap, "m"};
+
+  // Artifacts: the animation, OBJ frames and POV-Ray scenes (rendered by analysis/plot_fish.py).
+  auto bytes = [](const std::string& text) { return std::vector<std::uint8_t>(text.begin(), text.end()); };
+  result.artifacts["skin.glb"] = fish::exportGlb(frames);
+  char name[64];
+  for (size_t k = 0; k < frames.size(); ++k) {
+    std::snprintf(name, sizeof name, "skin_%03zu.obj", k);
+    result.artifacts[name] = bytes(fish::exportObj(frames[k].mesh, "t = " + std::to_string(frames[k].time_s) + " s"));
+  }
+  const int pov = std::min<int>(int(r.integer("pov_frames")), int(frames.size()));
+  for (int k = 0; k < pov; ++k) {
+    const size_t i = pov > 1 ? size_t(std::lround(double(k) * (frames.size() - 1) / (pov - 1))) : frames.size() - 1;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& p : frames[i].mesh.positions) centre += p / double(frames[i].mesh.positions.size());
+    std::snprintf(name, sizeof name, "skin_%03d.pov", k);
+    result.artifacts[name] =
+        bytes(fish::exportPov(frames[i].mesh, centre, model.body_length_m, "t = " + std::to_string(frames[i].time_s) + " s"));
+  }
+}
+
+}  // namespace
+
+FishKind::FishKind() {
+  params_ = {
+      choice("task", "simulate", {"simulate", "stable_step"},
+             "simulate (run the schedule) | stable_step (bisect the largest step that survives the schedule)"),
+      integer("school_size", 1, 1, 100000,
+              "fish simulated (independent; fish k swims at amplitude x (1 - 0.05 (k mod 5))); the first is recorded, the rest counted"),
+      text("schedule", "swim 30", "",
+           "controller schedule, \"NAME SECONDS; ...\" with NAME swim | left | right | glide (spec §3)"),
+      real("body_length_m", 2.0, "m", 1e-3, 1e3,
+           "snout to tail (ours: with the [reimpl] masses, 107 kg, our shape then has about the density of water)"),
+      real("mass_unit_kg", 1.1, "kg", 1e-9, 1e9, "mass unit m of the [reimpl] masses (snout 1, rings 6/10/6/1/1, tail 0.15 m)"),
+      real("stiffness_cross_n_per_m", 38.0, "N/m", 1e-9, 1e9, "cross units (spec §1 [reimpl])"),
+      real("stiffness_other_n_per_m", 30.0, "N/m", 1e-9, 1e9, "other passive units (spec §1 [reimpl])"),
+      real("stiffness_muscle_n_per_m", 28.0, "N/m", 1e-9, 1e9, "muscle units (spec §1 [reimpl])"),
+      real("damping_ns_per_m", 0.1, "N*s/m", 0, 1e9, "Voigt damping gamma of every unit (spec §1 [reimpl])"),
+      real("contracted_fraction", 0.7, "", 1e-6, 1 - 1e-6,
+           "fully contracted length / rest length of a muscle (ours: the thesis value is not in text; 0.7 keeps the tail from folding at alpha = 1)"),
+      real("water_mu", 100.0, "", 0, 1e9,
+           "water force coefficient mu (linear: N*s/m^3; quadratic: N*s^2/m^4). Ours: the caudal face (0.092 m^2) moving as one gives a tail-fin tip (0.165 kg) mu A dt / (4 m) = 0.77 at 0.055 s, under the explicit drag limit 2; 0 = in air"),
+      choice("water_law", "linear", {"linear", "quadratic"},
+             "f = min(0, -mu A (n.v)) n (linear) or min(0, -mu A |v| (n.v)) n (quadratic, [reimpl]); spec §2"),
+      real("current_x_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, x (still water by default)"),
+      real("current_y_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, y"),
+      real("current_z_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, z"),
+      real("dt_s", 0.055, "s", 1e-9, 100, "time step ([reimpl] 0.055 s, spec §2)"),
+      choice("scheme", "semi_implicit", {"semi_implicit", "explicit_euler", "symplectic_euler"},
+             "time integrator (spec §2: semi-implicit Euler; the explicit ones for the stability comparison)"),
+      real("blowup_strain", 2.0, "", 1e-3, 1e3,
+           "a unit longer than (1 + this) or shorter than 1/(1 + this) times its undeformed length counts as a blow-up"),
+      real("swim_amplitude", 0.7, "", 0, 1, "swim-MC amplitude alpha in (0, 1]: the fraction of full contraction reached (spec §3)"),
+      real("swim_rate", 0.004, "", 0, 1,
+           "swim-MC rate r in (0, r_max]: rest-length change per reference step as a fraction of the rest length (spec §3)"),
+      real("swim_desired_speed", 0.0, "", 0, 1,
+           "if > 0: desired speed as a fraction of the top one; alpha = r / r_max = sqrt(it) (ours), overriding swim_amplitude/rate"),
+      real("posterior_lag_rad", M_PI / 2, "rad", -100, 100, "phase lag of the posterior swim segment (spec §3 [choose]: pi/2)"),
+      real("turn_amplitude", 0.7, "", 0, 1, "turn-MC amplitude alpha in (0, 1]"),
+      real("turn_rate", 0.016, "", 0, 1, "turn-MC rate r in (0, r_max] of the contraction"),
+      real("turn_relax_fraction", 0.25, "", 0, 1, "turn-MC: relaxation rate / contraction rate (ours: a quick bend, a slow return)"),
+      real("r_max", 0.075, "", 1e-9, 1, "the largest rate ([reimpl] 0.075)"),
+      real("reference_step_s", 0.055, "s", 1e-9, 100, "the step the rates are defined per (the [reimpl] step)"),
+      real("warmup_s", 10.0, "s", 0, 1e6, "speed is measured from this time to the end (the gait settles first)"),
+      choice("on_blowup", "fail", {"fail", "record"},
+             "fail: a blow-up fails the point (exit 3); record: the run stops there and the step is a metric (air experiment)"),
+      integer("frame_every_steps", 1, 1, 1000000, "record a frame every this many steps"),
+      boolean("skin", false,
+              "NURBS skin (seed; spec §4): check it on every frame, store it on export_frames frames, write .glb/.obj/.pov artifacts"),
+      integer("skin_degree_around", 3, 1, 15, "NURBS degree around the body (9 control points; spec §4 [choose]: cubic)"),
+      integer("skin_degree_along", 3, 1, 15, "NURBS degree along the body (21 control points; cubic)"),
+      real("skin_inflate", 1.15, "", 1e-3, 100, "control-net section / body section (ours: the surface lies inside its net)"),
+      boolean("skin_fins", true, "dorsal and ventral fin surfaces sharing the midline control points"),
+      integer("skin_samples_around", 32, 2, 1024, "mesh samples around each half body"),
+      integer("skin_samples_along", 64, 2, 4096, "mesh samples along the body"),
+      integer("export_frames", 16, 1, 1000, "frames stored and exported (glb animation, OBJ), evenly spaced from export_start_s to the end"),
+      real("export_start_s", 0.0, "s", 0, 1e6, "start of the exported window"),
+      integer("pov_frames", 4, 0, 100, "POV-Ray scenes written, evenly spaced over the exported frames"),
+      real("stable_lo_s", 1e-4, "s", 1e-9, 100, "stable_step: the smallest step tried"),
+      real("stable_hi_s", 5.0, "s", 1e-9, 1000, "stable_step: the largest step tried"),
+      integer("stable_iterations", 30, 1, 200, "stable_step: bisection steps (on a log scale)"),
+  };
+  metrics_ = {
+      {"fish_length_m", "m", "snout to tail (= body_length_m)"},
+      {"mass_kg", "kg", "total mass"},
+      {"steps", "", "steps taken"},
+      {"speed_body_lengths_per_s", "1/s", "centre-of-mass speed from warmup_s to the end, in body lengths per second"},
+      {"speed_m_per_s", "m/s", "the same in metres per second"},
+      {"forward_distance_m", "m", "centre-of-mass displacement along the initial heading (+x) over the run"},
+      {"lateral_drift_m", "m", "|sideways displacement| of the centre of mass over the run"},
+      {"lateral_drift_fraction", "", "lateral_drift_m / forward_distance_m"},
+      {"vertical_drift_m", "m", "|vertical displacement| of the centre of mass"},
+      {"com_travel_m", "m", "|com(end) - com(0)|"},
+      {"com_travel_body_lengths", "", "com_travel_m / body length"},
+      {"heading_change_deg", "deg", "heading change over the first turn item (left > 0)"},
+      {"turn_path_m", "m", "centre-of-mass path over the first turn item"},
+      {"turn_radius_m", "m", "turn_path_m / |heading change|"},
+      {"turn_radius_body_lengths", "", "turn_radius_m / body length"},
+      {"momentum_drift_rel", "", "max |sum m v - sum m v(0)| / max sum m |v| over the run (conserved when water_mu = 0)"},
+      {"blew_up", "", "1 if the run stopped at a blow-up (on_blowup = record)"},
+      {"blowup_step", "", "the step that blew up, -1 if none"},
+      {"blowup_time_s", "s", "its time, -1 if none"},
+      {"max_stable_dt_s", "s", "stable_step: the largest step that survives the schedule"},
+      {"school_count", "", "fish simulated (= school_size)"},
+      {"school_fish_steps", "", "steps summed over the school (steps per second: this / the point's wall_time_s attribute)"},
+      {"school_mean_speed_body_lengths_per_s", "1/s", "mean speed over the school"},
+      {"school_blowups", "", "fish of the school that blew up"},
+      {"skin_rest_inward", "", "skin: body triangles pointing into the body on the undeformed skin"},
+      {"skin_inward_max", "",
+       "skin: most body triangles on one frame pointing into their section (a section-ellipse test; near the zero-thickness caudal edge it misjudges)"},
+      {"skin_creases", "", "skin: neighbouring triangles more than 90 degrees apart, summed over all frames (fold-overs)"},
+      {"skin_worst_neighbour_cosine", "", "skin: smallest cosine between neighbouring triangles' normals over all frames"},
+      {"skin_seam_gap_m", "m", "skin: largest distance between the two halves along the midlines and the tail edge, over all frames"},
+  };
+}
+
+std::string FishKind::doc() const {
+  return std::string("Tu's artificial fish: 23 masses, 91 Voigt units, semi-implicit Euler, swim/turn motor controllers (") +
+         kSpec + ")";
+}
+
+std::string FishKind::validate(const Params& p) const {
+  try {
+    ParamReader r(p);
+    setupOf(r);
+    if (!(r.real("stable_lo_s") < r.real("stable_hi_s"))) return "stable_lo_s must be below stable_hi_s";
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+CostEstimate FishKind::estimateCost(const Params& p) const {
+  try {
+    ParamReader r(p);
+    const FishSetup s = setupOf(r);
+    const double steps = std::ceil(fish::scheduleDurationS(s.schedule) / s.solver.dt_s);
+    CostEstimate c;
+    const double runs =
+        r.text("task") == "stable_step" ? double(r.integer("stable_iterations") + 2) : double(r.integer("school_size"));
+    c.steps = steps * runs;
+    c.memory_bytes = 8.0 * (1 << 20) + steps / double(r.integer("frame_every_steps")) * 8.0 * (fish::kNodes * 3 + 30);
+    c.detail = std::to_string(long(steps)) + " steps of " + std::to_string(s.solver.dt_s) + " s" +
+               (runs > 1 ? " x " + std::to_string(long(runs)) + " runs (or fish)" : "");
+    return c;
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
+Result FishKind::run(const Params& p) const {
+  ParamReader r(p);
+  const FishSetup s = setupOf(r);
+  const fish::FishModel model = fish::buildFish(s.geometry, s.units);
+  const double L = model.body_length_m, nan = std::nan("");
+  Result result;
+  result.metrics["fish_length_m"] = {L, "m"};
+  result.metrics["mass_kg"] = {model.totalMassKg(), "kg"};
+  for (const char* m : {"max_stable_dt_s"}) result.metrics[m] = {nan, "s"};
+  for (const char* m : {"skin_rest_inward", "skin_inward_max", "skin_creases", "skin_worst_neighbour_cosine"})
+    result.metrics[m] = {nan, ""};
+  result.metrics["skin_seam_gap_m"] = {nan, "m"};
+
+  // The model's topology: unit ends and classes, muscles (unit, segment, side), faces.
+  {
+    std::vector<int> ends, cls, muscles, faces;
+    for (int e = 0; e < fish::kUnits; ++e) {
+      ends.push_back(model.network.spring_a[e]);
+      ends.push_back(model.network.spring_b[e]);
+      cls.push_back(int(model.unit_class[e]));
+    }
+    for (const auto& m : model.muscles) muscles.insert(muscles.end(), {m.unit, m.segment, m.side});
+    for (const auto& f : model.faces) faces.insert(faces.end(), f.node.begin(), f.node.end());
+    result.topology["unit_nodes"] = flat(ends);
+    result.topology["unit_class"] = flat(cls);  // 0 cross, 1 muscle, 2 other
+    result.topology["muscles"] = flat(muscles);
+    result.topology["faces"] = flat(faces);
+  }
+
+  if (r.text("task") == "stable_step") {
+    const auto st = fish::largestStableStep(model, s.solver, s.motor, s.schedule, r.real("stable_lo_s"),
+                                            r.real("stable_hi_s"), int(r.integer("stable_iterations")));
+    result.metrics["max_stable_dt_s"] = {st.dt_s, "s"};
+    for (const char* m : {"school_count", "school_fish_steps", "school_mean_speed_body_lengths_per_s", "school_blowups"})
+      result.metrics[m] = {nan, ""};
+    result.timeseries["time_s"] = {{0.0}, "s"};
+    return result;
+  }
+
+  fish::RunOptions opt;
+  opt.frame_every_steps = int(r.integer("frame_every_steps"));
+  const fish::FishRecord rec = fish::runSchedule(model, s.solver, s.motor, s.schedule, opt);
+
+  result.timeseries["time_s"] = {rec.time_s, "s"};
+  const int n = rec.frames();
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<double> c(n), mom(n);
+    for (int f = 0; f < n; ++f) c[f] = rec.com_m[3 * f + axis], mom[f] = rec.momentum_kg_m_per_s[3 * f + axis];
+    const std::string xyz(1, char('x' + axis));
+    result.timeseries["com_" + xyz + "_m"] = {c, "m"};
+    result.timeseries["momentum_" + xyz + "_kg_m_per_s"] = {mom, "kg*m/s"};
+  }
+  result.timeseries["heading_rad"] = {rec.heading_rad, "rad"};
+  Tracks& nodes = result.lagrangian["nodes_m"];
+  nodes.time_s = rec.time_s;
+  nodes.data = rec.nodes_m;
+  nodes.points = fish::kNodes;
+  nodes.dim = 3;
+  Tracks& muscles = result.lagrangian["muscle_rest_m"];
+  muscles.time_s = rec.time_s;
+  muscles.data = rec.muscle_rest_m;
+  muscles.points = fish::kMuscles;
+  muscles.dim = 1;
+
+  const fish::SwimMeasures sw = fish::measureSwim(rec, L, r.real("warmup_s"));
+  const fish::TurnMeasures tu = fish::measureTurn(rec, s.schedule);
+  result.metrics["steps"] = {double(rec.steps), ""};
+  result.metrics["speed_body_lengths_per_s"] = {sw.speed_body_lengths_per_s, "1/s"};
+  result.metrics["speed_m_per_s"] = {sw.speed_m_per_s, "m/s"};
+  result.metrics["forward_distance_m"] = {sw.forward_distance_m, "m"};
+  result.metrics["lateral_drift_m"] = {sw.lateral_drift_m, "m"};
+  result.metrics["lateral_drift_fraction"] = {sw.lateral_drift_fraction, ""};
+  result.metrics["vertical_drift_m"] = {sw.vertical_drift_m, "m"};
+  result.metrics["com_travel_m"] = {sw.com_travel_m, "m"};
+  result.metrics["com_travel_body_lengths"] = {sw.com_travel_m / L, ""};
+  result.metrics["heading_change_deg"] = {tu.found ? tu.heading_change_deg : nan, "deg"};
+  result.metrics["turn_path_m"] = {tu.found ? tu.path_m : nan, "m"};
+  result.metrics["turn_radius_m"] = {tu.found ? tu.radius_m : nan, "m"};
+  result.metrics["turn_radius_body_lengths"] = {tu.found ? tu.radius_m / L : nan, ""};
+  result.metrics["momentum_drift_rel"] = {rec.momentum_drift_rel, ""};
+  result.metrics["blew_up"] = {rec.blew_up ? 1.0 : 0.0, ""};
+  result.metrics["blowup_step"] = {double(rec.blowup_step), ""};
+  result.metrics["blowup_time_s"] = {rec.blew_up ? rec.blowup_time_s : -1.0, "s"};
+  // The school: independent fish, each its own solver and controller, stepped one after the other
+  // (the thesis animates up to 5; the speed goal is 1,000 in real time). Only counted, not recorded.
+  const long school = r.integer("school_size");
+  double speed_sum = sw.speed_body_lengths_per_s, fish_steps = double(rec.steps), school_blowups = rec.blew_up;
+  fish::RunOptions quiet;
+  quiet.frame_every_steps = 20;  // enough frames for measureSwim, little recording
+  for (long k = 1; k < school; ++k) {
+    fish::MotorParams mk = s.motor;
+    const double scale = 1.0 - 0.05 * double(k % 5);
+    mk.swim.amplitude_anterior *= scale;
+    mk.swim.amplitude_posterior *= scale;
+    const fish::FishRecord other = fish::runSchedule(model, s.solver, mk, s.schedule, quiet);
+    fish_steps += double(other.steps);
+    school_blowups += other.blew_up;
+    speed_sum += fish::measureSwim(other, L, r.real("warmup_s")).speed_body_lengths_per_s;
+  }
+  result.metrics["school_count"] = {double(school), ""};
+  result.metrics["school_fish_steps"] = {fish_steps, ""};
+  result.metrics["school_mean_speed_body_lengths_per_s"] = {speed_sum / double(school), "1/s"};
+  result.metrics["school_blowups"] = {school_blowups, ""};
+  if (r.boolean("skin")) addSkin(r, s, model, rec, result);
+  if (rec.blew_up && r.text("on_blowup") == "fail")
+    throw RunFailure("fish blew up at step " + std::to_string(rec.blowup_step) + " (t = " +
+                         std::to_string(rec.blowup_time_s) + " s): " + rec.blowup_cause,
+                     result);
+  return result;
+}
+
+}  // namespace creaturelab::kinds

@@ -1,0 +1,116 @@
+// Motor controllers and schedules (spec §3; Tu 1996 ch. 5).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fish/motor.hpp"
+
+namespace creaturelab::fish {
+namespace {
+
+TEST(Schedule, ParsesAndRejectsWithTheItemNamed) {
+  const auto s = parseSchedule(" swim 10; left 3 ;glide 2.5;right 1");
+  ASSERT_EQ(s.size(), 4u);
+  EXPECT_EQ(s[1].action, Action::left);
+  EXPECT_DOUBLE_EQ(s[2].start_s, 13.0);
+  EXPECT_DOUBLE_EQ(scheduleDurationS(s), 16.5);
+  for (const char* bad : {"swim 10; dance 3", "swim", "swim -1", "swim 2 3", ""}) {
+    try {
+      parseSchedule(bad);
+      ADD_FAILURE() << bad;
+    } catch (const std::invalid_argument& e) {
+      if (std::string(bad).find("dance") != std::string::npos) {
+        EXPECT_NE(std::string(e.what()).find("dance"), std::string::npos);
+      }
+    }
+  }
+}
+
+TEST(Motor, ValidateNamesAlphaAndR) {
+  MotorParams p;
+  p.swim.amplitude_anterior = 0;
+  EXPECT_NE(validate(p).find("swim_amplitude"), std::string::npos);
+  p = {};
+  p.swim.amplitude_posterior = 1.2;
+  EXPECT_NE(validate(p).find("swim_amplitude"), std::string::npos);
+  p = {};
+  p.turn_rate = 0.08;  // above r_max = 0.075
+  EXPECT_NE(validate(p).find("turn_rate"), std::string::npos);
+  p = {};
+  EXPECT_EQ(validate(p), "");
+}
+
+// The swim-MC's triangle wave: the left middle muscle peaks at alpha (1 - f) l after half a period,
+// the right side is still at rest then and peaks a half period later (out of phase); the posterior
+// segment lags by lag / 2 pi of a period.
+TEST(Motor, SwimWaveOutOfPhaseAndLagged) {
+  const FishModel fish = buildFish({}, {});
+  MotorParams p;
+  p.swim = {0.5, 0.01, 0.5, 0.01};
+  MotorController mc(fish, p, parseSchedule("swim 100"));
+  int left_mid = -1, right_mid = -1, left_post = -1;
+  for (int k = 0; k < kMuscles; ++k) {
+    const auto& m = fish.muscles[k];
+    if (m.segment == 1 && m.side == 0 && left_mid < 0) left_mid = k;
+    if (m.segment == 1 && m.side == 1 && right_mid < 0) right_mid = k;
+    if (m.segment == 2 && m.side == 0 && left_post < 0) left_post = k;
+  }
+  const double l = fish.network.rest_length_m[fish.muscles[left_mid].unit];
+  const double peak = 0.5 * (1 - p.contracted_fraction) * l, slope = 0.01 * l / 0.055;
+  const double half = peak / slope;
+  auto c = mc.targetContraction(half);
+  EXPECT_NEAR(c[left_mid], peak, 1e-12);
+  EXPECT_NEAR(c[right_mid], 0.0, 1e-15);  // the right side starts at exactly t = half (round-off)
+  c = mc.targetContraction(2 * half);
+  EXPECT_NEAR(c[left_mid], 0.0, 1e-12);
+  EXPECT_NEAR(c[right_mid], peak, 1e-12);
+  // posterior: a quarter period (half a half-period) later
+  const double lp = fish.network.rest_length_m[fish.muscles[left_post].unit];
+  const double peak_p = 0.5 * (1 - p.contracted_fraction) * lp;
+  EXPECT_NEAR(mc.targetContraction(half + 0.5 * half)[left_post], peak_p, 1e-12);
+  // anterior muscles do not swim
+  for (int k = 0; k < kMuscles; ++k)
+    if (fish.muscles[k].segment == 0) {
+      EXPECT_EQ(c[k], 0.0);
+    }
+}
+
+// A turn contracts the left anterior and middle muscles only; rest lengths never jump by more than
+// r_max per reference step, also when the controller switches.
+TEST(Motor, TurnLeftAndRateLimit) {
+  const FishModel fish = buildFish({}, {});
+  MotorParams p;
+  MotorController mc(fish, p, parseSchedule("swim 4; left 4; swim 4"));
+  const auto c = mc.targetContraction(4.5);
+  for (int k = 0; k < kMuscles; ++k) {
+    const auto& m = fish.muscles[k];
+    if (m.side == 0 && m.segment <= 1) {
+      EXPECT_GT(c[k], 0.0);
+    } else {
+      EXPECT_EQ(c[k], 0.0);
+    }
+  }
+  std::array<double, kUnits> rest{};
+  for (int e = 0; e < kUnits; ++e) rest[e] = fish.network.rest_length_m[e];
+  const double dt = 0.02;
+  auto prev = rest;
+  for (int n = 0; n < 600; ++n) {
+    mc.apply(n * dt, dt, rest);
+    for (const auto& m : fish.muscles) {
+      const double l0 = fish.network.rest_length_m[m.unit];
+      EXPECT_LE(std::fabs(rest[m.unit] - prev[m.unit]), p.r_max * l0 / p.reference_step_s * dt * (1 + 1e-12));
+      EXPECT_GE(rest[m.unit], p.contracted_fraction * l0 - 1e-15);
+    }
+    prev = rest;
+  }
+}
+
+TEST(Motor, DesiredSpeedScalesAmplitudeAndRate) {
+  const SwimCommand half = swimFromSpeed(0.25, 0.075), full = swimFromSpeed(1.0, 0.075);
+  EXPECT_DOUBLE_EQ(half.amplitude_anterior, 0.5);
+  EXPECT_DOUBLE_EQ(full.rate_posterior, 0.075);
+  EXPECT_NEAR(half.amplitude_anterior * half.rate_anterior / (full.amplitude_anterior * full.rate_anterior), 0.25, 1e-15);
+}
+
+}  // namespace
+}  // namespace creaturelab::fish
