@@ -9,7 +9,8 @@ packages=(
   libbenchmark-dev libbenchmark-tools libgtest-dev libgmock-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libopenmpi-dev openmpi-bin
-  zlib1g-dev
+  libssl-dev
+  libcairo2-dev libpango1.0-dev fonts-dejavu-core
   python3-h5py python3-numpy python3-matplotlib
 )
 
