@@ -69,6 +69,7 @@ int main(int argc, char** argv) {
   auto* reproduce = app.add_subcommand("reproduce", "run the default experiments and print their checks");
   reproduce->add_option("--list", rep.list, "file listing the experiments")->capture_default_str();
   reproduce->add_option("-j,--jobs", rep.jobs, "points run in parallel (default: the cores)");
+  reproduce->add_option("-o,--out", rep.out_root, "folder holding one run folder per experiment")->capture_default_str();
 
   cli::FitSplineArgs fsa;
   cli::FitControllerArgs fca;

@@ -20,6 +20,7 @@ creaturelab_cli_test(jellyfish)      # metrics, series, tracks, fields; --jobs d
 creaturelab_cli_test(run_folder)     # --points shares, --force, --resume with another configuration
 creaturelab_cli_test(folder_lock)    # one writer per folder (fcntl lock, holder's pid); configurations never mix
 creaturelab_cli_test(interrupt)      # SIGINT/SIGTERM: 130/143, no *.tmp, a consistent index; stale *.tmp removed
+creaturelab_cli_test(report)         # reproduce --list/--out, draw_runs, report.html: every image a PNG, every check shown
 creaturelab_cli_test(verify)         # check/compare name truncated, garbage, swapped, foreign point files; --no-verify
 # Disk full on a 300 KiB tmpfs: exit 3 and a message, never a signal. Skipped (77) without mount rights.
 creaturelab_cli_test(disk_full SKIP_RETURN_CODE 77)

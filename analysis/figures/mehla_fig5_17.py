@@ -1,0 +1,18 @@
+"""Mehla 2005 Fig. 5.17, orb webs of varying sizes (sizes): every web of the sweep as
+settled, the sweep's measures per point and the settling curves, from the run's HDF5 alone.
+"""
+if __package__ in (None, ""):  # run as a script: make `figures` importable
+    import os
+    import sys
+
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from figures import runs  # noqa: E402
+from figures import webs  # noqa: E402
+
+
+def draw(run, out):
+    return [webs.sweep_grid(run, out, "mehla_fig5_17", f"Mehla {'Fig. 5.17, orb webs of varying sizes'.split(',')[0]}: {run.title}")]
+
+
+if __name__ == "__main__":
+    runs.main(draw, __doc__)
