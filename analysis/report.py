@@ -181,13 +181,15 @@ def write_html(root, papers, others, extra):
                      "figure their kind drew.</p>")
         parts += [html_section(s, root) for s in others]
     if extra:
-        parts.append("<h2>More figures of the reproduced runs</h2>")
+        parts.append("<h2>More figures of the reproduced runs</h2><p>What each kind's plotter drew besides the "
+                     "paper figures (per point, per sweep).</p>")
         for name, pngs in extra.items():
-            parts.append(f"<h3>{html.escape(name)}</h3><div class=\"thumbs\">")
+            parts.append(f"<details><summary>{html.escape(name)}: {len(pngs)} figure(s)</summary><div class=\"thumbs\">")
             for p in pngs:
                 r = html.escape(rel(p, root))
-                parts.append(f"<a href=\"{r}\"><img src=\"{r}\" alt=\"{html.escape(os.path.basename(p))}\"></a>")
-            parts.append("</div>")
+                parts.append(f"<a href=\"{r}\"><img src=\"{r}\" loading=\"lazy\" "
+                             f"alt=\"{html.escape(os.path.basename(p))}\"></a>")
+            parts.append("</div></details>")
     parts.append("</body></html>\n")
     path = os.path.join(root, "report.html")
     with open(path + ".tmp", "w") as fh:

@@ -74,9 +74,11 @@ FIGURES = [
            "The solver converges to the analytic decaying Taylor-Green vortex as the grid is refined.",
            "taylor_green", "fluid_taylor_green", None),
     Figure("fits", "§3.3 (spline fit)",
-           "A Hermite curve with four knots over one period fits the bell's simulated diameter ratio.",
+           "A Hermite curve with four knots over one period fits the staggered bell's diameter ratio at 0.7 Hz "
+           "(the cycles after the warm-up of the stagger run).",
            "fit_spline", "fit_spline", None,
-           "build/creaturelab fit spline results/runs/reproduce/morphology --knots 4 --out RUN"),
+           "rm -rf RUN && build/creaturelab fit spline results/runs/reproduce/stagger --point 0 --knots 4 "
+           "--from 1.4285714285714286 --out RUN"),
 ]
 
 

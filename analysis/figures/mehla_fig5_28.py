@@ -1,5 +1,5 @@
-"""Mehla 2005 Figs. 5.24-5.28, varying spirals (spiral spacing): every web of the sweep as
-settled, the sweep's measures per point and the settling curves, from the run's HDF5 alone.
+"""Mehla 2005 Figs. 5.24-5.28, varying spirals (spoke mass spacing): every web of the sweep as settled, the sweep's measures
+per point and the settling curves, from the run's HDF5 alone.
 """
 if __package__ in (None, ""):  # run as a script: make `figures` importable
     import os
@@ -9,9 +9,11 @@ if __package__ in (None, ""):  # run as a script: make `figures` importable
 from figures import runs  # noqa: E402
 from figures import webs  # noqa: E402
 
+METRICS = ("spiral_segments", "spiral_coverage", "silk_length_m", "settling_time_s")
+
 
 def draw(run, out):
-    return [webs.sweep_grid(run, out, "mehla_fig5_28", f"Mehla {'Figs. 5.24-5.28, varying spirals'.split(',')[0]}: {run.title}")]
+    return [webs.sweep_grid(run, out, "mehla_fig5_28", f"Mehla Figs. 5.24-5.28: {run.title}", METRICS)]
 
 
 if __name__ == "__main__":

@@ -56,13 +56,13 @@ def draw(run, out):
         sel = (t >= warm) & (t <= warm + 1.0 / hz)
         phase = (t[sel] - warm) * hz
         line = right.plot(phase, f["timeseries/aperture_muscle_factor"][sel], lw=1.2,
-                          label=f"{labels[k]}: aperture muscle rest-length factor")[0]
+                          label=f"{labels[k]}: aperture muscle curve")[0]
         right.plot(phase, f["timeseries/diameter_ratio"][sel], ls="--", color=line.get_color(), lw=1,
                    label=f"{labels[k]}: diameter ratio")
     right.axhline(0.56, color="0.6", lw=0.6, ls=":")
     right.set_xlabel("phase in the cycle after the warm-up")
     right.set_ylabel("factor / ratio")
-    right.set_title("contraction curve and response (0.56: Fig. 3's closed diameter)", fontsize=8)
+    right.set_title("the aperture muscle's curve (aperture_muscle_factor) and the diameter it gives (0.56: Fig. 3)", fontsize=8)
     right.legend(fontsize=7)
     fig.suptitle(run.title, fontsize=9)
     fig.tight_layout()

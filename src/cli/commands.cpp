@@ -213,7 +213,7 @@ int Commands::reproduce(const ReproduceArgs& args) const {
   for (auto&& f : *files)
     if (const auto* t = f.as_table()) minutes += (*t)["minutes"].value_or(0.0);
   if (minutes > 0 && primary())
-    std::fprintf(stderr, "== %zu experiments from %s: about %.0f minutes on 2 cores (the measured times it lists)\n",
+    std::fprintf(stderr, "== %zu experiments from %s: about %.0f minutes on 2 cores (the sum of the times it lists)\n",
                  planned.size(), args.list.c_str(), minutes);
   std::vector<runner::CheckOutcome> all;
   int code = 0;
