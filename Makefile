@@ -4,7 +4,7 @@ ASAN_BUILD ?= build-asan
 JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
 
-.PHONY: all deps configure build test test-asan reproduce bench clean
+.PHONY: all deps configure build test test-asan reproduce reproduce-full bench clean
 
 all: build
 
@@ -28,12 +28,30 @@ test-asan: deps
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=0 ctest --test-dir $(ASAN_BUILD) -L unit --output-on-failure -j $(JOBS)
 
-# The runs, then their figures from the HDF5 alone (analysis/draw_runs.py); the runs' exit code stands.
-reproduce: build
-	@$(BUILD)/creaturelab reproduce; status=$$?; \
-	  /usr/bin/python3 analysis/draw_runs.py results/runs/reproduce || status=$$((status ? status : 4)); \
-	  echo "figures: results/runs/reproduce/*/figures/ (Figs. 7, 9, 10 and the 3-D swim: results/runs/reproduce/render_swim/render_point_000000/)"; \
+# The runs; the contraction spline fitted to the reproduced bell; every figure drawn from the HDF5
+# alone (analysis/draw_runs.py); report.html + REPORT.md (analysis/report.py), whose paths are the
+# last lines printed. The runs' exit code stands (4 when only drawing or the report failed).
+REPRO_OUT ?= results/runs/reproduce
+# The Hermite contraction curve (Rudolf & Mould §3.3) fitted to the staggered bell's diameter over
+# the cycles after its warm-up at 0.7 Hz (analysis/figures/catalog.py repeats this command).
+FIT_SPLINE = fit spline
+FIT_SPLINE_ARGS = --point 0 --knots 4 --from 1.4285714285714286
+define reproduce_in
+	@$(BUILD)/creaturelab reproduce --list $(1) --out $(2); status=$$?; \
+	  if [ -f $(2)/stagger/index.h5 ]; then rm -rf $(2)/fit_spline; \
+	    $(BUILD)/creaturelab $(FIT_SPLINE) $(2)/stagger $(FIT_SPLINE_ARGS) --out $(2)/fit_spline >/dev/null \
+	      || status=$$((status ? status : 4)); fi; \
+	  /usr/bin/python3 analysis/draw_runs.py $(2) >/dev/null || status=$$((status ? status : 4)); \
+	  /usr/bin/python3 analysis/report.py $(2) || status=$$((status ? status : 4)); \
 	  exit $$status
+endef
+
+reproduce: build
+	$(call reproduce_in,experiments/reproduce.toml,$(REPRO_OUT))
+
+# The resolved (long) versions; the list says how long it takes before it starts.
+reproduce-full: build
+	$(call reproduce_in,experiments/reproduce_full.toml,results/runs/reproduce_full)
 
 bench: build
 	@for b in $(BUILD)/tests/bench_*; do [ -x "$$b" ] && "$$b"; done

@@ -12,6 +12,8 @@ packages=(
   zlib1g-dev
   libtinygltf-dev povray
   libmujoco-dev libmujoco-samples
+  libssl-dev
+  libcairo2-dev libpango1.0-dev fonts-dejavu-core
   python3-h5py python3-numpy python3-matplotlib
 )
 

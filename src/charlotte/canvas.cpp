@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "io/cairo_image.hpp"
+
 namespace creaturelab::charlotte {
 
 CanvasMap canvasOver(const springs::Points<3>& x_m, int size_px, double margin_fraction) {
@@ -19,40 +21,51 @@ CanvasMap canvasOver(const springs::Points<3>& x_m, int size_px, double margin_f
   return m;
 }
 
-void forEachLinePixel(const Eigen::Vector2d& a_px, const Eigen::Vector2d& b_px,
-                      const std::function<void(int, int, bool)>& f) {
-  const Eigen::Vector2d d = b_px - a_px;
-  const bool major_is_x = std::fabs(d.x()) >= std::fabs(d.y());
-  const int m = major_is_x ? 0 : 1, n = 1 - m;
-  // Walk the major axis from the end with the smaller coordinate, so a-b and b-a give the same pixels.
-  const Eigen::Vector2d p = a_px[m] <= b_px[m] ? a_px : b_px, q = a_px[m] <= b_px[m] ? b_px : a_px;
-  const int i0 = int(std::floor(p[m])), i1 = int(std::floor(q[m]));
-  const double span = q[m] - p[m];
-  for (int i = i0; i <= i1; ++i) {
-    const double t = span > 0 ? std::clamp((i + 0.5 - p[m]) / span, 0.0, 1.0) : 0.0;
-    const int j = int(std::floor(p[n] + t * (q[n] - p[n])));
-    if (major_is_x) f(i, j, true);
-    else f(j, i, false);
+Raster captureLines(int width, int height, const std::vector<LinePx>& lines, double width_px) {
+  io::CairoImage img(width, height, io::PixelFormat::grey8);
+  cairo_t* cr = img.cr();
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+  cairo_set_line_width(cr, width_px);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  cairo_set_source_rgba(cr, 0, 0, 0, 1);
+  // One path: cairo strokes every sub-path and unites them, so where strands cross the ink stays 1.
+  for (const auto& [a, b] : lines) {
+    cairo_move_to(cr, a.x(), a.y());
+    cairo_line_to(cr, b.x(), b.y());
   }
+  cairo_stroke(cr);
+  Raster r(width, height);
+  r.ink = img.coverage();
+  return r;
 }
 
-void forEachBandPixel(const Eigen::Vector2d& a_px, const Eigen::Vector2d& b_px, int band_px, int width, int height,
-                      const std::function<void(int, int)>& f) {
-  const int half = (band_px - 1) / 2;
-  forEachLinePixel(a_px, b_px, [&](int x, int y, bool major_is_x) {
-    // Pixels across the line: along y for a shallow line, along x for a steep one. Consecutive line
-    // pixels differ in the major coordinate, so no pixel is visited twice.
-    for (int k = -half; k <= half; ++k) {
-      const int u = major_is_x ? x : x + k, v = major_is_x ? y + k : y;
-      if (u >= 0 && v >= 0 && u < width && v < height) f(u, v);
-    }
-  });
-}
-
-void drawLine(Raster& r, const Eigen::Vector2d& a_px, const Eigen::Vector2d& b_px, float ink) {
-  forEachLinePixel(a_px, b_px, [&](int x, int y, bool) {
-    if (r.contains(x, y)) r.at(x, y) = std::max(r.at(x, y), ink);
-  });
+std::vector<int> bandPixels(const Eigen::Vector2d& a_px, const Eigen::Vector2d& b_px, int band_px, int width,
+                            int height) {
+  if (band_px < 1) throw std::invalid_argument("bandPixels: the band must be at least one pixel wide");
+  // Stroke on a small image over the band's bounding box only (a segment is tens of pixels long on a
+  // 600-pixel canvas); the same orientation for a-b and b-a, so both give the same pixels.
+  const bool swap = b_px.x() < a_px.x() || (b_px.x() == a_px.x() && b_px.y() < a_px.y());
+  const Eigen::Vector2d p = swap ? b_px : a_px, q = swap ? a_px : b_px;
+  const double reach = band_px / 2.0 + 1.0;
+  const int x0 = std::max(0, int(std::floor(std::min(p.x(), q.x()) - reach)));
+  const int y0 = std::max(0, int(std::floor(std::min(p.y(), q.y()) - reach)));
+  const int x1 = std::min(width, int(std::ceil(std::max(p.x(), q.x()) + reach)));
+  const int y1 = std::min(height, int(std::ceil(std::max(p.y(), q.y()) + reach)));
+  std::vector<int> out;
+  if (x1 <= x0 || y1 <= y0) return out;
+  io::CairoImage img(x1 - x0, y1 - y0, io::PixelFormat::grey8);
+  cairo_t* cr = img.cr();
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+  cairo_set_line_width(cr, band_px);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  cairo_move_to(cr, p.x() - x0, p.y() - y0);
+  cairo_line_to(cr, q.x() - x0, q.y() - y0);
+  cairo_stroke(cr);
+  const std::vector<float> c = img.coverage();
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x)
+      if (c[std::size_t(y - y0) * std::size_t(x1 - x0) + std::size_t(x - x0)] >= 0.5f) out.push_back(y * width + x);
+  return out;
 }
 
 Raster placePicture(const Raster& picture, const CanvasMap& map, const Eigen::Vector2d& centre_m, double width_m,
@@ -65,21 +78,16 @@ Raster placePicture(const Raster& picture, const CanvasMap& map, const Eigen::Ve
     w = h * picture.width / picture.height;
   }
   const Eigen::Vector2d c = map.toPx(centre_m);
-  const double x0 = c.x() - w / 2, y0 = c.y() - h / 2;
-  const int px0 = std::max(0, int(std::floor(x0))), px1 = std::min(map.size_px - 1, int(std::floor(x0 + w)));
-  const int py0 = std::max(0, int(std::floor(y0))), py1 = std::min(map.size_px - 1, int(std::floor(y0 + h)));
-  constexpr int kSub = 4;
-  for (int y = py0; y <= py1; ++y)
-    for (int x = px0; x <= px1; ++x) {
-      double sum = 0;
-      for (int sy = 0; sy < kSub; ++sy)
-        for (int sx = 0; sx < kSub; ++sx) {
-          const double u = (x + (sx + 0.5) / kSub - x0) / w * picture.width;
-          const double v = (y + (sy + 0.5) / kSub - y0) / h * picture.height;
-          if (u >= 0 && v >= 0 && u < picture.width && v < picture.height) sum += picture.at(int(u), int(v));
-        }
-      out.at(x, y) = float(sum / (kSub * kSub));
-    }
+  io::CairoImage pic = io::CairoImage::fromCoverage(picture.width, picture.height, picture.ink);
+  io::CairoImage canvas(map.size_px, map.size_px, io::PixelFormat::grey8);
+  cairo_t* cr = canvas.cr();
+  cairo_translate(cr, c.x() - w / 2, c.y() - h / 2);
+  cairo_scale(cr, w / picture.width, h / picture.height);
+  cairo_set_source_surface(cr, pic.surface(), 0, 0);
+  cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_BILINEAR);
+  cairo_pattern_set_extend(cairo_get_source(cr), CAIRO_EXTEND_NONE);
+  cairo_paint(cr);
+  out.ink = canvas.coverage();
   return out;
 }
 

@@ -2,8 +2,10 @@
 // The canvas the web is captured on (thesis §6: "we first capture the current orb web image from the
 // screen to obtain the source image"), 600 x 600 pixels as every image of the thesis (§5.3.1: "the
 // standard canvas size in all these images was kept constant at 600 by 600 pixels"), and the pixel
-// geometry of a strand: its one-pixel line and its five-pixel neighbourhood (§6, Fig. 6.2).
-#include <functional>
+// sets the procedure works on: the capture of the strands, a strand's five-pixel neighbourhood
+// (§6, Fig. 6.2) and a picture placed on the canvas. All drawn by cairo (io/cairo_image.hpp).
+#include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -13,7 +15,7 @@
 namespace creaturelab::charlotte {
 
 // Web (x right, y up, metres) to canvas pixels (x right, y down; pixel (i, j) covers [i, i+1) x
-// [j, j+1)). Square pixels.
+// [j, j+1), its centre at (i + 1/2, j + 1/2)). Square pixels.
 struct CanvasMap {
   int size_px = 600;
   double left_m = 0, top_m = 0;  // web coordinates of the canvas's top-left corner
@@ -31,27 +33,26 @@ struct CanvasMap {
 // centred on it, its side the box's larger side times (1 + 2 margin_fraction).
 CanvasMap canvasOver(const springs::Points<3>& x_m, int size_px, double margin_fraction = 0.02);
 
-// The pixels of the one-pixel-wide line from a to b (canvas pixels, continuous coordinates): one pixel
-// per column (or per row when the line is steeper than 45 degrees), the one the line crosses at that
-// column's centre. Calls f(x, y, major_is_x) for each, also those off the canvas. Deterministic.
-void forEachLinePixel(const Eigen::Vector2d& a_px, const Eigen::Vector2d& b_px,
-                      const std::function<void(int x, int y, bool major_is_x)>& f);
+using LinePx = std::pair<Eigen::Vector2d, Eigen::Vector2d>;  // ends in canvas pixels
+
+// The capture (§6): the lines stroked width_px wide, not anti-aliased, as a screen grab of the
+// thesis's one-pixel OpenGL lines is: a pixel is ink 1 when its centre lies inside some stroke
+// (butt ends), else 0. Binary on purpose: dilation then grows every strand to a full-ink 7 x 7 band,
+// which is what the score's ratio assumes (score.hpp). Deterministic.
+Raster captureLines(int width, int height, const std::vector<LinePx>& lines, double width_px = 1.0);
 
 // The neighbourhood of a segment (§6): "a rectangular region, five pixels wide (including the single
 // pixel width of the spiral segment itself), running along the length of the spiral line segment":
-// each line pixel and the (band_px - 1) / 2 pixels either side of it across the line. Pixels off the
-// canvas are left out; each pixel is visited once. band_px odd >= 1.
-void forEachBandPixel(const Eigen::Vector2d& a_px, const Eigen::Vector2d& b_px, int band_px, int width, int height,
-                      const std::function<void(int x, int y)>& f);
+// the pixels whose centres lie inside the band_px-wide rectangle on a-b (no end caps), clipped to the
+// width x height canvas. Returned as row-major pixel indices y * width + x, ascending, each once;
+// the same for a-b and b-a. band_px >= 1.
+std::vector<int> bandPixels(const Eigen::Vector2d& a_px, const Eigen::Vector2d& b_px, int band_px, int width,
+                            int height);
 
-// Draws the line a-b into r with the given ink (max with what is there).
-void drawLine(Raster& r, const Eigen::Vector2d& a_px, const Eigen::Vector2d& b_px, float ink = 1.0f);
-
-// Places a picture (text or image, one raster pixel per picture pixel) on a canvas of size_px:
+// Places a picture (a target image, one raster pixel per picture pixel) on a canvas of size_px:
 // centred on centre_m, width_m wide, the height following the picture's aspect ratio but at most
-// max_height_m (the width shrinks to keep the aspect then). Each canvas pixel gets the mean ink of
-// 4 x 4 samples (nearest picture pixel each), so edges are anti-aliased and the result does not
-// depend on anything but these numbers.
+// max_height_m (the width shrinks to keep the aspect then). Scaled by cairo with bilinear
+// filtering, so edges are anti-aliased.
 Raster placePicture(const Raster& picture, const CanvasMap& map, const Eigen::Vector2d& centre_m, double width_m,
                     double max_height_m);
 

@@ -10,6 +10,7 @@
 #include "charlotte/morphology.hpp"
 #include "charlotte/score.hpp"
 #include "core/rng.hpp"
+#include "io/cairo_image.hpp"
 
 namespace creaturelab::charlotte {
 namespace {
@@ -59,11 +60,11 @@ std::string InscribeParams::validate() const {
 
 Raster captureSource(const springs::Network<3>& net, const springs::Points<3>& x_m, const CanvasMap& map,
                      const std::vector<std::pair<int, int>>& extra_lines) {
-  Raster r(map.size_px, map.size_px);
-  for (int s = 0; s < net.springCount(); ++s)
-    drawLine(r, px(map, x_m, net.spring_a[s]), px(map, x_m, net.spring_b[s]));
-  for (const auto& [a, b] : extra_lines) drawLine(r, px(map, x_m, a), px(map, x_m, b));
-  return r;
+  std::vector<LinePx> lines;
+  lines.reserve(std::size_t(net.springCount()) + extra_lines.size());
+  for (int s = 0; s < net.springCount(); ++s) lines.emplace_back(px(map, x_m, net.spring_a[s]), px(map, x_m, net.spring_b[s]));
+  for (const auto& [a, b] : extra_lines) lines.emplace_back(px(map, x_m, a), px(map, x_m, b));
+  return captureLines(map.size_px, map.size_px, lines);
 }
 
 std::vector<std::pair<int, int>> crossHatchPairs(const std::vector<std::vector<int>>& radii,
@@ -133,23 +134,20 @@ std::vector<std::pair<int, int>> randomAttachmentPairs(const std::vector<std::ve
 
 Raster randomGapsTarget(const CanvasMap& map, const Eigen::Vector2d& centre_m, double region_radius_m, int count,
                         double radius_m, std::uint64_t seed) {
-  Raster r(map.size_px, map.size_px);
-  constexpr int kSub = 4;
+  io::CairoImage img(map.size_px, map.size_px, io::PixelFormat::grey8);
+  cairo_t* cr = img.cr();
+  cairo_set_source_rgba(cr, 0, 0, 0, 1);
   for (int g = 0; g < count; ++g) {
     // Uniform over the disc: radius R sqrt(u), angle 2 pi v.
     const double rr = region_radius_m * std::sqrt(core::uniform01(seed, kGapsPurpose, 2 * std::uint64_t(g)));
     const double th = 2 * std::numbers::pi * core::uniform01(seed, kGapsPurpose, 2 * std::uint64_t(g) + 1);
     const Eigen::Vector2d c_px = map.toPx(centre_m + rr * Eigen::Vector2d(std::cos(th), std::sin(th)));
-    const double rad_px = radius_m * map.px_per_m;
-    for (int y = std::max(0, int(c_px.y() - rad_px) - 1); y <= std::min(r.height - 1, int(c_px.y() + rad_px) + 1); ++y)
-      for (int x = std::max(0, int(c_px.x() - rad_px) - 1); x <= std::min(r.width - 1, int(c_px.x() + rad_px) + 1); ++x) {
-        int hits = 0;
-        for (int sy = 0; sy < kSub; ++sy)
-          for (int sx = 0; sx < kSub; ++sx)
-            hits += (Eigen::Vector2d(x + (sx + 0.5) / kSub, y + (sy + 0.5) / kSub) - c_px).norm() <= rad_px;
-        r.at(x, y) = std::max(r.at(x, y), float(hits) / float(kSub * kSub));
-      }
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, c_px.x(), c_px.y(), radius_m * map.px_per_m, 0, 2 * std::numbers::pi);
   }
+  cairo_fill(cr);  // one path, non-zero winding: overlapping discs unite
+  Raster r(map.size_px, map.size_px);
+  r.ink = img.coverage();
   return r;
 }
 

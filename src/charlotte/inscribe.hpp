@@ -81,7 +81,7 @@ Inscription inscribe(const web::WebModel& model, const springs::State<3>& settle
 
 // --- stages, exposed for tests ------------------------------------------------------------------
 
-// Stage 3: every spring of the network drawn as a one-pixel line (ink 1), plus the given extra lines
+// Stage 3: every spring of the network captured as a one-pixel line (canvas.hpp captureLines), plus the given extra lines
 // between particles (the cross-hatch candidates: the web "modified by introducing additional strand
 // segments", Fig. 6.12).
 Raster captureSource(const springs::Network<3>& network, const springs::Points<3>& x_m, const CanvasMap& map,
@@ -106,7 +106,7 @@ std::vector<std::pair<int, int>> randomAttachmentPairs(const std::vector<std::ve
 
 // Random gaps (Fig. 6.18: "we have introduced random gaps in the spiral"): a target of `count` discs
 // of radius_m, centres uniform over the disc of region_radius_m around centre_m, drawn from the seeded
-// generator (purpose "charlotte.random_gaps"); anti-aliased by 4 x 4 samples per pixel.
+// generator (purpose "charlotte.random_gaps"); filled by cairo, anti-aliased.
 Raster randomGapsTarget(const CanvasMap& map, const Eigen::Vector2d& centre_m, double region_radius_m, int count,
                         double radius_m, std::uint64_t seed);
 

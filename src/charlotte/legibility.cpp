@@ -9,14 +9,16 @@ Legibility measureLegibility(const Inscription& ins, const CanvasMap& map, const
                              const springs::Points<3>& final_x_m, int dilation_px) {
   const auto& x = ins.state.x_m;
   auto at = [&](int p) { return map.toPx(x.col(p).head<2>()); };
-  Raster before(map.size_px, map.size_px), final_silk(map.size_px, map.size_px);
+  std::vector<LinePx> before_lines, final_lines;
   for (const auto& s : ins.segments)
     if (s.origin == SegmentOrigin::spiral)
-      for (int k : s.springs) drawLine(before, at(ins.network.spring_a[k]), at(ins.network.spring_b[k]));
+      for (int k : s.springs) before_lines.emplace_back(at(ins.network.spring_a[k]), at(ins.network.spring_b[k]));
   for (int k = 0; k < final_network.springCount(); ++k)
     if (final_type[k] == web::StrandType::spiral)
-      drawLine(final_silk, map.toPx(final_x_m.col(final_network.spring_a[k]).head<2>()),
-               map.toPx(final_x_m.col(final_network.spring_b[k]).head<2>()));
+      final_lines.emplace_back(map.toPx(final_x_m.col(final_network.spring_a[k]).head<2>()),
+                               map.toPx(final_x_m.col(final_network.spring_b[k]).head<2>()));
+  const Raster before = captureLines(map.size_px, map.size_px, before_lines);
+  const Raster final_silk = captureLines(map.size_px, map.size_px, final_lines);
   const Raster omega = dilate(before, dilation_px), kept = dilate(final_silk, dilation_px);
 
   double e = 0, t_in_omega = 0, both = 0, either = 0, in_n = 0, in_ink = 0, out_n = 0, out_ink = 0;

@@ -4,7 +4,6 @@
 // dilations (Figs. 6.7-6.8). Values are "ink": 0 = empty background, 1 = a strand or the dark part of
 // the target, so dilation (a max filter) grows the strands and the letters as in Fig. 6.8.
 #include <cstddef>
-#include <cstdint>
 #include <vector>
 
 namespace creaturelab::charlotte {
@@ -23,31 +22,6 @@ struct Raster {
     for (float v : ink) s += v;
     return s;
   }
-};
-
-// Each pixel becomes a factor x factor block (nearest neighbour); factor >= 1.
-inline Raster scaleUp(const Raster& in, int factor) {
-  Raster out(in.width * factor, in.height * factor);
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x) out.at(x, y) = in.at(x / factor, y / factor);
-  return out;
-}
-
-// The raster with `margin` empty pixels added on every side.
-inline Raster padded(const Raster& in, int margin) {
-  Raster out(in.width + 2 * margin, in.height + 2 * margin);
-  for (int y = 0; y < in.height; ++y)
-    for (int x = 0; x < in.width; ++x) out.at(x + margin, y + margin) = in.at(x, y);
-  return out;
-}
-
-// An 8-bit RGB picture for the renders (row 0 at the top, 3 bytes per pixel).
-struct RgbImage {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> rgb;
-
-  RgbImage() = default;
-  RgbImage(int w, int h, std::uint8_t grey) : width(w), height(h), rgb(std::size_t(w) * std::size_t(h) * 3, grey) {}
 };
 
 }  // namespace creaturelab::charlotte

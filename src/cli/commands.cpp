@@ -228,21 +228,55 @@ int Commands::reproduce(const ReproduceArgs& args) const {
     throw UsageError(args.list + ": " + std::string(e.description()));
   }
   const auto* files = list["experiments"].as_array();
-  if (!files) throw UsageError(args.list + ": expected experiments = [\"experiments/...toml\", ...]");
-  std::vector<runner::CheckOutcome> all;
-  int code = 0;
+  if (!files)
+    throw UsageError(args.list + ": expected experiments = [\"experiments/...toml\", {file = \"...\", set = [...]}, ...]");
+  // Each entry: a path, or a table {file = "...", set = ["params.x=1", ...], name = "..."} whose
+  // overrides make a quick version of a longer experiment; the run goes to results/runs/reproduce/NAME
+  // (default: the file's stem).
+  std::vector<runner::RunOptions> planned;
   for (auto&& f : *files) {
     runner::RunOptions o;
-    o.experiment_path = f.value_or(std::string());
-    o.out_dir = "results/runs/reproduce/" + fs::path(o.experiment_path).stem().string();
+    std::string name;
+    if (const auto* path = f.as_string()) {
+      o.experiment_path = path->get();
+    } else if (const auto* t = f.as_table()) {
+      for (auto&& [key, value] : *t)
+        if (key != "file" && key != "set" && key != "name" && key != "minutes")
+          throw UsageError(args.list + ": unknown key \"" + std::string(key.str()) +
+                           "\" in an experiments entry; expected file, set, name, minutes");
+      o.experiment_path = (*t)["file"].value_or(std::string());
+      name = (*t)["name"].value_or(std::string());
+      if (const auto* set = (*t)["set"].as_array())
+        for (auto&& v : *set) {
+          if (!v.is_string()) throw UsageError(args.list + ": " + o.experiment_path + ": set holds strings \"key=value\"");
+          o.overrides.push_back(v.value_or(std::string()));
+        }
+    } else {
+      throw UsageError(args.list + ": an experiments entry is neither a path nor a table {file = \"...\"}");
+    }
+    if (o.experiment_path.empty())
+      throw UsageError(args.list + ": an experiments entry names no file (a path, or {file = \"...\"})");
+    o.out_dir = args.out_root + "/" + (name.empty() ? fs::path(o.experiment_path).stem().string() : name);
     o.force = true;
     o.jobs = args.jobs;
+    planned.push_back(std::move(o));
+  }
+  // A list may say how long it takes (minutes = measured wall time of each entry): say so first.
+  double minutes = 0;
+  for (auto&& f : *files)
+    if (const auto* t = f.as_table()) minutes += (*t)["minutes"].value_or(0.0);
+  if (minutes > 0 && primary())
+    std::fprintf(stderr, "== %zu experiments from %s: about %.0f minutes on 2 cores (the sum of the times it lists)\n",
+                 planned.size(), args.list.c_str(), minutes);
+  std::vector<runner::CheckOutcome> all;
+  int code = 0;
+  for (runner::RunOptions& o : planned) {
     if (primary()) std::fprintf(stderr, "== %s\n", o.experiment_path.c_str());
     const runner::RunReport r = runner::runExperiment(o, registry_, cluster_);
     if (!primary()) continue;
     printReport(r);
     for (auto c : r.checks) {
-      c.name = fs::path(o.experiment_path).stem().string() + ": " + c.name;
+      c.name = fs::path(o.out_dir).filename().string() + ": " + c.name;
       all.push_back(c);
     }
     code = std::max(code, r.exitCode());

@@ -30,6 +30,7 @@ struct BaselineArgs {
 
 struct ReproduceArgs {
   std::string list = "experiments/reproduce.toml";
+  std::string out_root = "results/runs/reproduce";  // each experiment runs into OUT_ROOT/<name>
   int jobs = 0;
 };
 

@@ -70,6 +70,7 @@ int main(int argc, char** argv) {
   auto* reproduce = app.add_subcommand("reproduce", "run the default experiments and print their checks");
   reproduce->add_option("--list", rep.list, "file listing the experiments")->capture_default_str();
   reproduce->add_option("-j,--jobs", rep.jobs, "points run in parallel (default: the cores)");
+  reproduce->add_option("-o,--out", rep.out_root, "folder holding one run folder per experiment")->capture_default_str();
 
   runner::RenderRunOptions ren;
   auto* render = app.add_subcommand("render", "a recorded jellyfish swim as a 3-D animated mesh: HDF5 + XDMF, .glb, "

@@ -1,33 +1,36 @@
 #pragma once
-// SHA-256 (FIPS 180-4, same function as FIPS 180-2). Used for config hashes and
-// the HDF5 content digests that the determinism tests compare.
+// SHA-256 (FIPS 180-4) for config hashes and the HDF5 content digests that the determinism tests
+// compare. A thin face over OpenSSL's EVP digest API (libssl-dev), a maintained, validated
+// implementation; nothing of the hash itself is written here.
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
+
+struct evp_md_ctx_st;  // OpenSSL's EVP_MD_CTX, kept out of this header
 
 namespace creaturelab::core {
 
 // Incremental hasher: update() any number of times, then digest()/hexDigest().
 // The first digest call finalises: later update() calls are ignored and later digest
-// calls return the same value. Hash something else with a new Sha256.
+// calls return the same value. Hash something else with a new Sha256. Move-only.
 class Sha256 {
 public:
-  Sha256();
+  Sha256();  // throws std::runtime_error if OpenSSL cannot set up SHA-256
   void update(const void* data, std::size_t size);
   void update(std::string_view bytes) { update(bytes.data(), bytes.size()); }
   std::array<std::uint8_t, 32> digest();  // finalises
   std::string hexDigest();                // finalises; 64 lowercase hex characters
 
 private:
-  void compressBlock(const std::uint8_t* block);
-
-  std::array<std::uint32_t, 8> state_;
-  std::array<std::uint8_t, 64> buffer_{};
-  std::size_t buffered_ = 0;
-  std::uint64_t total_bytes_ = 0;
+  struct FreeCtx {
+    void operator()(evp_md_ctx_st* ctx) const;
+  };
+  std::unique_ptr<evp_md_ctx_st, FreeCtx> ctx_;
+  std::array<std::uint8_t, 32> digest_{};
   bool finished_ = false;
 };
 

@@ -4,13 +4,12 @@
 #include <optional>
 
 #include "charlotte/canvas.hpp"
-#include "charlotte/font5x7.hpp"
 #include "charlotte/inscribe.hpp"
 #include "charlotte/legibility.hpp"
 #include "charlotte/morphology.hpp"
 #include "charlotte/netpbm.hpp"
-#include "charlotte/png.hpp"
 #include "charlotte/render.hpp"
+#include "charlotte/text_target.hpp"
 #include "kinds/spring_run.hpp"
 #include "springs/equilibrium.hpp"
 #include "springs/provot.hpp"
@@ -63,12 +62,8 @@ ch::Raster targetOnCanvas(const ParamReader& r, const ch::CanvasMap& map, const 
   if (kind == "image")
     return ch::placePicture(ch::readNetpbmFile(r.text("image_file")), map, centre, r.real("target_width_m"),
                             r.real("target_max_height_m"));
-  // Bold: each font dot split into 4 x 4 and the strokes grown by text_bold dots on each side (a 7 x 7
-  // dilation of the font grows them by 3/4 dot at most), like the heavy letters of Fig. 6.10.
-  constexpr int kSplit = 4;
-  const int grow = int(std::lround(r.real("text_bold") * kSplit));
-  const ch::Raster picture = ch::dilate(ch::padded(ch::scaleUp(ch::renderText(r.text("text")), kSplit), grow), 2 * grow + 1);
-  return ch::placePicture(picture, map, centre, r.real("target_width_m"), r.real("target_max_height_m"));
+  return ch::textTarget(r.text("text"), r.text("font"), map, centre, r.real("target_width_m"),
+                        r.real("target_max_height_m"));
 }
 
 // Shades on a light page (the book's Fig. 6.5 look): frames darkest, spiral lightest; the emphasis
@@ -95,8 +90,6 @@ constexpr ch::Rgb kPage{0.97f, 0.96f, 0.93f};
 
 ch::Rgb grey(float g) { return {g, g, g}; }
 
-std::vector<std::uint8_t> png(const ch::Painter& p) { return ch::encodePng(p.image()); }
-
 }  // namespace
 
 CharlotteKind::CharlotteKind() {
@@ -115,9 +108,10 @@ CharlotteKind::CharlotteKind() {
               "seed of every random choice (web, random attachments, random gaps)"),
       // the target (§6, Figs. 6.1, 6.6, 6.16, 6.18)
       choice("target", "text", {"text", "image", "random_gaps"},
-             "inscribe text in the built-in 5x7 font, a PBM/PGM image, or random gaps (Fig. 6.18)"),
-      text("text", "PIG", "", "the text (A-Z, 0-9, space, . , ! ? ' -; \\n breaks a line) (Fig. 6.11: P, I, G)"),
-      real("text_bold", 0.25, "", 0, 2, "thicken the font's strokes by this many dots on each side (0 = plain 5x7)"),
+             "inscribe text (set in `font`), a PBM/PGM image, or random gaps (Fig. 6.18)"),
+      text("text", "PIG", "", "the text, UTF-8; \\n breaks a line (Fig. 6.11: P, I, G)"),
+      text("font", std::string(ch::kDefaultFont), "",
+           "pango font description of the text, installed (fc-list); heavy capitals as in Fig. 6.10 (thesis names none)"),
       text("image_file", "", "", "PBM/PGM target image (P1/P2/P4/P5; dark = target), path from the working folder"),
       real("target_width_m", 0.85, "m", 1e-3, 100,
            "width of the target on the web, the height following its aspect (the default inner frame is ~0.85 m wide)"),
@@ -182,7 +176,7 @@ std::string CharlotteKind::validate(const Params& params) const {
   ParamReader r(params);
   if (std::string e = webParams(r).validate(); !e.empty()) return e;
   if (std::string e = inscribeParams(r).validate(); !e.empty()) return e;
-  if (r.text("target") == "text") return ch::checkText(r.text("text"));
+  if (r.text("target") == "text") return ch::checkText(r.text("text"), r.text("font"));
   if (r.text("target") == "image") {
     try {
       (void)ch::readNetpbmFile(r.text("image_file"));
@@ -348,7 +342,7 @@ Result CharlotteKind::run(const Params& params) const {
     };
     ch::Painter before(n, n, kPage);
     for (int k = 0; k < model.network.springCount(); ++k) strand(before, model.network, settled.x_m, k, styleOf(model.spring_type[k]));
-    result.artifacts["web.png"] = png(before);
+    result.artifacts["web.png"] = before.png();
 
     ch::Painter overlay(n, n, kPage);
     overlay.wash(ins.target_dilated, {0.95f, 0.55f, 0.45f}, 0.5f);  // the dilated target ...
@@ -361,7 +355,7 @@ Result CharlotteKind::run(const Params& params) const {
         overlay.line(map.toPx(ins.state.x_m.col(ins.network.spring_a[k]).head<2>()),
                      map.toPx(ins.state.x_m.col(ins.network.spring_b[k]).head<2>()), 1.2f, {0.75f, 0.05f, 0.05f}, 1.0f);
     }
-    result.artifacts["overlay.png"] = png(overlay);
+    result.artifacts["overlay.png"] = overlay.png();
 
     // The web after removal at the positions x: emphasis strands drawn last, so they lie on top.
     auto pruned_web = [&](const springs::Points<3>& x) {
@@ -375,7 +369,7 @@ Result CharlotteKind::run(const Params& params) const {
           if ((strong || hatch) != (pass == 1)) continue;
           strand(p, pruned.network, x, k, strong ? kEmphasis : hatch ? kHatch : styleOf(pruned.type[k]));
         }
-      return png(p);
+      return p.png();
     };
     result.artifacts["cut.png"] = pruned_web(pruned.state.x_m);
     result.artifacts["result.png"] = pruned_web(state.x_m);

@@ -23,6 +23,7 @@ creaturelab_cli_test(run_folder)     # --points shares, --force, --resume with a
 creaturelab_cli_test(folder_lock)    # one writer per folder (fcntl lock, holder's pid); configurations never mix
 creaturelab_cli_test(interrupt)      # SIGINT/SIGTERM: 130/143, no *.tmp, a consistent index; stale *.tmp removed
 creaturelab_cli_test(render)         # recorded swim -> render.h5/.xdmf, .glb, OBJ, Figs. 7, 9, 10; bad input exits 2
+creaturelab_cli_test(report)         # reproduce --list/--out, draw_runs, report.html: every image a PNG, every check shown
 creaturelab_cli_test(verify)         # check/compare name truncated, garbage, swapped, foreign point files; --no-verify
 # Disk full on a 300 KiB tmpfs: exit 3 and a message, never a signal. Skipped (77) without mount rights.
 creaturelab_cli_test(disk_full SKIP_RETURN_CODE 77)

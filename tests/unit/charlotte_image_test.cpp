@@ -1,9 +1,12 @@
 // The image stages of the Charlotte's-web procedure (thesis seeds/orb-webs-mehla-2005.txt ch. 6):
-// the built-in font, the Netpbm reader and its errors, dilation by a square (Figs. 6.7-6.8), the
-// five-pixel band of a segment and its score (Fig. 6.9), and the PNG encoder.
+// text targets (pango), the Netpbm reader and its errors, dilation by a square (Figs. 6.7-6.8), the
+// capture, the five-pixel band of a segment and its score (Fig. 6.9) (cairo), and the renders' PNG.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,11 +16,11 @@
 #include <vector>
 
 #include "charlotte/canvas.hpp"
-#include "charlotte/font5x7.hpp"
 #include "charlotte/morphology.hpp"
 #include "charlotte/netpbm.hpp"
-#include "charlotte/png.hpp"
+#include "charlotte/render.hpp"
 #include "charlotte/score.hpp"
+#include "charlotte/text_target.hpp"
 
 namespace ch = creaturelab::charlotte;
 
@@ -36,46 +39,64 @@ std::string errorOf(F&& f) {
   return "";
 }
 
-std::string rows(const ch::Raster& r) {
-  std::string s;
-  for (int y = 0; y < r.height; ++y) {
-    for (int x = 0; x < r.width; ++x) s += r.at(x, y) > 0.5f ? '#' : '.';
-    s += '\n';
-  }
-  return s;
+}  // namespace
+
+namespace {
+
+// A 200-pixel canvas over 1 m, centred on the origin.
+ch::CanvasMap unitCanvas() {
+  ch::CanvasMap m;
+  m.size_px = 200;
+  m.left_m = -0.5, m.top_m = 0.5, m.px_per_m = 200;
+  return m;
+}
+
+// Bounding box (x0, y0, x1, y1) of the pixels with ink >= 0.5.
+std::array<int, 4> inkBox(const ch::Raster& r) {
+  std::array<int, 4> b{r.width, r.height, -1, -1};
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x)
+      if (r.at(x, y) >= 0.5f) b = {std::min(b[0], x), std::min(b[1], y), std::max(b[2], x), std::max(b[3], y)};
+  return b;
 }
 
 }  // namespace
 
-TEST(CharlotteFont, PigIsThreeGlyphsWithOneColumnBetween) {
-  const ch::Raster r = ch::renderText("PIG");
-  EXPECT_EQ(r.width, 3 * 5 + 2);
-  EXPECT_EQ(r.height, 7);
-  EXPECT_EQ(rows(r),
-            "####...###...###.\n"
-            "#...#...#...#...#\n"
-            "#...#...#...#....\n"
-            "####....#...#.###\n"
-            "#.......#...#...#\n"
-            "#.......#...#...#\n"
-            "#......###...####\n");
+TEST(CharlotteText, PigFillsTheBoxAskedForCentredAndAntiAliased) {
+  const auto map = unitCanvas();
+  const ch::Raster r = ch::textTarget("PIG", ch::kDefaultFont, map, {0, 0}, 0.6, 0.5);
+  // 0.6 m wide = 120 px, centred on pixel 100; capitals are wider than tall here, so the width binds.
+  const auto b = inkBox(r);
+  EXPECT_NEAR(b[0], 40, 2);
+  EXPECT_NEAR(b[2], 159, 2);
+  EXPECT_NEAR(0.5 * (b[1] + b[3]), 100, 2);
+  EXPECT_LT(b[3] - b[1], 120);
+  // Anti-aliased edges (grey levels) and solid strokes; letters cover a good part of their box.
+  int grey = 0, solid = 0;
+  for (float v : r.ink) grey += v > 0.05f && v < 0.95f, solid += v >= 0.95f;
+  EXPECT_GT(grey, 50);
+  EXPECT_GT(solid, 0.25 * (b[2] - b[0]) * (b[3] - b[1]));
+  // Deterministic: the same call gives the same pixels.
+  EXPECT_EQ(ch::textTarget("PIG", ch::kDefaultFont, map, {0, 0}, 0.6, 0.5).ink, r.ink);
+  // Two lines are taller than one; max_height binds then and the width shrinks.
+  const auto two = inkBox(ch::textTarget("SOME\nPIG", ch::kDefaultFont, map, {0, 0}, 0.6, 0.3));
+  EXPECT_NEAR(two[3] - two[1], 60, 2);
+  EXPECT_LT(two[2] - two[0], 119);
 }
 
-TEST(CharlotteFont, LowerCaseIsDrawnAsCapitalsAndLinesAreCentred) {
-  EXPECT_EQ(ch::renderText("pig").ink, ch::renderText("PIG").ink);
-  const ch::Raster two = ch::renderText("SOME\nPIG");
-  EXPECT_EQ(two.width, 4 * 6 - 1);
-  EXPECT_EQ(two.height, 15);
-  for (char c : std::string("ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789 .,!?'-")) EXPECT_EQ(ch::checkText(std::string("A") + c), "") << c;
-}
-
-TEST(CharlotteFont, ACharacterTheFontLacksIsNamed) {
-  EXPECT_EQ(ch::checkText("PIG#"),
-            "text \"PIG#\": the built-in font has no glyph for '#' (character 4); it draws " +
-                std::string(ch::kFontRepertoire));
-  EXPECT_NE(errorOf([] { ch::renderText("caf\xc3\xa9"); }).find("byte 0xC3 (character 4)"), std::string::npos);
+TEST(CharlotteText, BadTextOrFontIsNamed) {
+  EXPECT_EQ(ch::checkText("PIG"), "");
+  EXPECT_EQ(ch::checkText("caf\xc3\xa9 #1"), "");  // a real font draws accents and symbols
   EXPECT_NE(ch::checkText("   ").find("no letters"), std::string::npos);
   EXPECT_NE(ch::checkText("").find("no letters"), std::string::npos);
+  EXPECT_NE(ch::checkText("PI\xff").find("not valid UTF-8 at byte 0xFF (byte 3)"), std::string::npos);
+  const std::string missing = ch::checkText("PIG", "No Such Font Family Bold");
+  EXPECT_NE(missing.find("\"No Such Font Family\" is not installed"), std::string::npos) << missing;
+  // Private-use code point U+E000: no glyph in DejaVu.
+  const std::string lacks = ch::checkText("PI\xee\x80\x80G");
+  EXPECT_NE(lacks.find("has no glyph for"), std::string::npos) << lacks;
+  EXPECT_NE(lacks.find("(character 3)"), std::string::npos) << lacks;
+  EXPECT_THROW(ch::textTarget("", ch::kDefaultFont, unitCanvas(), {0, 0}, 0.5, 0.5), std::invalid_argument);
 }
 
 TEST(CharlotteNetpbm, TextFormatsWithComments) {
@@ -153,39 +174,48 @@ TEST(CharlotteDilate, OnePixelBecomesTheStructuringElement) {
   EXPECT_EQ(ch::dilate(ch::dilate(g, 3), 3).ink, ch::dilate(g, 5).ink);
 }
 
-TEST(CharlotteBand, FivePixelsAcrossEachLinePixelEachOnce) {
-  // A horizontal segment through pixel row 10 from x = 3.5 to x = 12.5: columns 3..12, rows 8..12.
+TEST(CharlotteBand, ThePixelsWhoseCentresLieInTheFivePixelRectangle) {
+  // A horizontal segment on y = 10.5 from x = 3 to x = 13: centres 3.5..12.5 along, 8.5..12.5 across.
   std::set<std::pair<int, int>> seen;
-  int count = 0;
-  ch::forEachBandPixel({3.5, 10.5}, {12.5, 10.5}, 5, 100, 100, [&](int x, int y) {
+  for (int i : ch::bandPixels({3.0, 10.5}, {13.0, 10.5}, 5, 100, 100)) {
+    const int x = i % 100, y = i / 100;
     seen.insert({x, y});
-    ++count;
     EXPECT_TRUE(x >= 3 && x <= 12 && y >= 8 && y <= 12) << x << "," << y;
-  });
-  EXPECT_EQ(count, 50);
+  }
   EXPECT_EQ(seen.size(), 50u);
-  // Steep lines are widened along x; a-b and b-a give the same pixels; the canvas clips.
-  std::set<std::pair<int, int>> ab, ba;
-  ch::forEachBandPixel({2.2, 1.0}, {7.9, 30.0}, 5, 100, 100, [&](int x, int y) { ab.insert({x, y}); });
-  ch::forEachBandPixel({7.9, 30.0}, {2.2, 1.0}, 5, 100, 100, [&](int x, int y) { ba.insert({x, y}); });
-  EXPECT_EQ(ab, ba);
-  EXPECT_EQ(ab.size(), 30u * 5u);
-  int clipped = 0;
-  ch::forEachBandPixel({0.5, 0.5}, {0.5, 9.5}, 5, 100, 100, [&](int, int) { ++clipped; });
-  EXPECT_EQ(clipped, 10 * 3);
+  // A slanted band holds about length x width pixels (a rotated rectangle, not a sheared one);
+  // a-b and b-a give the same pixels; the canvas clips.
+  const auto ab = ch::bandPixels({2.2, 1.0}, {7.9, 30.0}, 5, 100, 100);
+  EXPECT_EQ(ab, ch::bandPixels({7.9, 30.0}, {2.2, 1.0}, 5, 100, 100));
+  const double area = std::hypot(5.7, 29.0) * 5;
+  EXPECT_NEAR(double(ab.size()), area, 0.06 * area);
+  EXPECT_TRUE(std::is_sorted(ab.begin(), ab.end()));
+  EXPECT_EQ(ch::bandPixels({0.5, 0.0}, {0.5, 10.0}, 5, 100, 100).size(), 10u * 3u);
+}
+
+TEST(CharlotteCapture, OnePixelLinesNotAntiAliased) {
+  // A horizontal and a vertical line through pixel centres: exactly one pixel thick, ink 1, crossing once.
+  const ch::Raster r = ch::captureLines(40, 40, {{{5.0, 10.5}, {35.0, 10.5}}, {{20.5, 2.0}, {20.5, 30.0}}});
+  for (float v : r.ink) EXPECT_TRUE(v == 0.0f || v == 1.0f);
+  EXPECT_FLOAT_EQ(r.sum(), 30 + 28 - 1);
+  EXPECT_FLOAT_EQ(r.at(20, 10), 1);
+  EXPECT_FLOAT_EQ(r.at(21, 11), 0);
+  EXPECT_FLOAT_EQ(r.at(21, 9), 0);
 }
 
 TEST(CharlotteScore, TheShareOfTheBandTheTargetCovers) {
   // Fig. 6.9 with the ratio read as target over source (score.hpp): a segment in a bar scores 10,
   // one beside it 0, one half in it 5.
   ch::Raster source(60, 40), target(60, 40);
+  std::vector<ch::LinePx> lines;
   auto segment = [&](double x0, double x1, double y) {
-    ch::drawLine(source, {x0, y}, {x1, y});
-    return std::pair<Eigen::Vector2d, Eigen::Vector2d>{{x0, y}, {x1, y}};
+    lines.push_back({{x0, y}, {x1, y}});
+    return lines.back();
   };
   for (int y = 0; y < 40; ++y)
     for (int x = 20; x < 40; ++x) target.at(x, y) = 1;
-  const auto inside = segment(22.5, 37.5, 10.5), outside = segment(45.5, 55.5, 20.5), half = segment(10.5, 29.5, 30.5);
+  const auto inside = segment(22.0, 38.0, 10.5), outside = segment(45.0, 56.0, 20.5), half = segment(10.0, 30.0, 30.5);
+  source = ch::captureLines(60, 40, lines);
   const ch::Raster sd = ch::dilate(source, 7), td = ch::dilate(target, 7);
   auto score = [&](const auto& s) { return ch::scoreSegment(sd, td, s.first, s.second, 5).score; };
   EXPECT_EQ(score(inside), 10);
@@ -197,21 +227,24 @@ TEST(CharlotteScore, TheShareOfTheBandTheTargetCovers) {
   EXPECT_DOUBLE_EQ(s.source_total, s.band_pixels);  // the dilated strand fills its own band
 }
 
-TEST(CharlottePng, ChunksAndChecksums) {
-  // CRC-32 check value of "123456789" (ISO 3309).
-  const std::string digits = "123456789";
-  EXPECT_EQ(ch::crc32(reinterpret_cast<const std::uint8_t*>(digits.data()), digits.size()), 0xCBF43926u);
-  ch::RgbImage img(3, 2, 200);
-  img.rgb[0] = 255;
-  const auto png = ch::encodePng(img);
-  ASSERT_GT(png.size(), 8u + 25u + 12u + 12u);
+TEST(CharlotteRender, AlphaBlendedStrandsOnABackgroundAsPng) {
+  ch::Painter p(20, 10, {1.0f, 1.0f, 1.0f});
+  p.line({2.0, 5.0}, {18.0, 5.0}, 2.0f, {0.0f, 0.0f, 0.0f}, 0.5f);  // half-transparent black on white
+  ch::Raster ink(20, 10);
+  ink.at(0, 0) = 1;
+  p.wash(ink, {1.0f, 0.0f, 0.0f}, 1.0f);  // one red pixel
+  const auto rgb = p.rgb();
+  auto at = [&](int x, int y, int c) { return int(rgb[(std::size_t(y) * 20 + std::size_t(x)) * 3 + std::size_t(c)]); };
+  EXPECT_NEAR(at(10, 4, 0), 128, 1);  // inside the stroke: white halfway to black
+  EXPECT_EQ(at(10, 0, 1), 255);       // background untouched
+  EXPECT_EQ(at(0, 0, 0), 255);        // washed red
+  EXPECT_EQ(at(0, 0, 1), 0);
+  const auto png = p.png();
+  ASSERT_GT(png.size(), 8u + 25u + 12u);
   EXPECT_EQ(std::vector<std::uint8_t>(png.begin(), png.begin() + 8),
             (std::vector<std::uint8_t>{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}));
   EXPECT_EQ(std::string(png.begin() + 12, png.begin() + 16), "IHDR");
-  EXPECT_EQ(png[19], 3);  // width 3
-  EXPECT_EQ(png[23], 2);  // height 2
-  // The file ends with the empty IEND chunk and its well-known CRC AE 42 60 82.
-  EXPECT_EQ(std::vector<std::uint8_t>(png.end() - 12, png.end()),
-            (std::vector<std::uint8_t>{0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82}));
-  EXPECT_THROW(ch::encodePng(ch::RgbImage{}), std::invalid_argument);
+  EXPECT_EQ(png[19], 20);  // width
+  EXPECT_EQ(png[23], 10);  // height
+  EXPECT_EQ(std::string(png.end() - 8, png.end() - 4), "IEND");
 }

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "charlotte/canvas.hpp"
-#include "charlotte/font5x7.hpp"
+#include "charlotte/text_target.hpp"
 #include "charlotte/inscribe.hpp"
 #include "charlotte/score.hpp"
 #include "springs/equilibrium.hpp"
@@ -66,7 +66,7 @@ ch::Raster bar(int x0, int x1) {
 
 ch::Raster pig() {
   const auto& w = smallWeb();
-  return ch::placePicture(ch::renderText("PIG"), w.map, w.map.toM(w.hub_px), 0.3, 0.2);
+  return ch::textTarget("PIG", ch::kDefaultFont, w.map, w.map.toM(w.hub_px), 0.3, 0.2);
 }
 
 Eigen::Vector2d px(const ch::Inscription& ins, int particle) {

@@ -76,9 +76,10 @@ TEST(CharlotteKind, RunsAreDeterministic) {
 }
 
 TEST(CharlotteKind, BadTargetsAreClearErrorsBeforeAnyWork) {
-  EXPECT_EQ(charlotte().validate(smallParams({{"text", std::string("PIG!#")}})),
-            "text \"PIG!#\": the built-in font has no glyph for '#' (character 5); it draws A-Z (a-z are drawn as "
-            "capitals), 0-9, space and . , ! ? ' -");
+  EXPECT_EQ(charlotte().validate(smallParams({{"text", std::string("PIG!\xee\x80\x80")}})),
+            "text \"PIG!\xee\x80\x80\": the font \"DejaVu Sans Bold\" has no glyph for '\xee\x80\x80' (character 5)");
+  EXPECT_NE(charlotte().validate(smallParams({{"font", std::string("Nonexistent Grotesk")}})).find("is not installed"),
+            std::string::npos);
   EXPECT_EQ(charlotte().validate(smallParams({{"target", std::string("image")},
                                               {"image_file", std::string("/nonexistent/emblem.pbm")}})),
             "image_file: /nonexistent/emblem.pbm: cannot be read (No such file or directory)");

@@ -5,6 +5,7 @@
 #include "runner/cost.hpp"
 
 #include <gtest/gtest.h>
+#include <toml++/toml.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -644,8 +645,29 @@ TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
   } restore{here};
   int n = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
-    if (entry.path().extension() != ".toml" || entry.path().filename() == "reproduce.toml") continue;
+    if (entry.path().extension() != ".toml") continue;
     if (entry.path().parent_path().filename() == "fit") continue;
+    if (entry.path().filename().string().rfind("reproduce", 0) == 0) {
+      // The reproduce lists: each entry (a path, or {file, set = overrides}) loads with its overrides.
+      const toml::table list = toml::parse_file(entry.path().string());
+      const auto* files = list["experiments"].as_array();
+      ASSERT_NE(files, nullptr) << entry.path();
+      for (auto&& f : *files) {
+        std::string file = f.value_or(std::string());
+        std::vector<std::string> set;
+        if (const auto* t = f.as_table()) {
+          file = (*t)["file"].value_or(std::string());
+          if (const auto* a = (*t)["set"].as_array())
+            for (auto&& v : *a) set.push_back(v.value_or(std::string()));
+        }
+        try {
+          EXPECT_FALSE(points(runner::loadExperiment(file, set, registry())).empty()) << entry.path() << ": " << file;
+        } catch (const ExperimentError& err) {
+          ADD_FAILURE() << entry.path() << ": " << err.what();
+        }
+      }
+      continue;
+    }
     ++n;
     try {
       EXPECT_FALSE(points(runner::loadExperiment(entry.path().string(), {}, registry())).empty()) << entry.path();

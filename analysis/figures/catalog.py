@@ -1,0 +1,91 @@
+"""Which paper figure each reproduced experiment draws, and what the paper claims there.
+
+One row per figure: the paper (seed file), its figure number, the claim in one line, the run
+folder it is drawn from (the experiment file's stem under results/runs/reproduce), the figure
+module (analysis/figures/<module>.py), and which of the run's checks belong to it (substrings of
+their names; None = all of the run's checks not claimed by an earlier row). A run this table does
+not name still appears in the report (under "Other runs") with its checks and every PNG its
+kind's plotter drew, so a new kind needs no edit here to be reported; a row only adds the paper's
+words and figure number.
+"""
+from collections import namedtuple
+
+Paper = namedtuple("Paper", "key title seed")
+Figure = namedtuple("Figure", "paper figure claim run module checks command", defaults=[None])
+# command: how to remake the run when it is not an experiment run (the fit); None = from index.h5.
+
+PAPERS = [
+    Paper("mehla", "Mehla 2005, Physically based orb webs (MSc thesis)", "orb-webs-mehla-2005.txt"),
+    Paper("rm", "Rudolf & Mould 2009, An interactive fluid model of jellyfish for animation",
+          "jellyfish-rudolf-mould-2009.txt"),
+    Paper("fluid", "Fluid solver (Rudolf & Mould 2009 §3.2, after Stam 1999)", "jellyfish-rudolf-mould-2009.txt"),
+    Paper("fits", "Fits (Rudolf & Mould 2009 §3.3: the Hermite contraction curve)", "jellyfish-rudolf-mould-2009.txt"),
+]
+
+FIGURES = [
+    # --- Mehla 2005 (seeds/orb-webs-mehla-2005.txt)
+    Figure("mehla", "Figs. 5.1-5.2",
+           "A strand laid at rest length sags, laid 75-250% over rest it stays taut, Provot's limit caps the "
+           "stretch; strands settle in seconds (§5.1).",
+           "strand_layouts", "mehla_fig5_2", None),
+    Figure("mehla", "Figs. 5.7-5.14",
+           "The default web (5,000-7,000 particles, ch. 3) is built frame, spokes, hub, spiral and settles in "
+           "5-10 s (§5.1).",
+           "default", "mehla_fig5_14", None),
+    Figure("mehla", "Fig. 5.17", "Webs of varying sizes: smaller frames hold fewer radii and less spiral.",
+           "sizes", "mehla_fig5_17", None),
+    Figure("mehla", "Fig. 5.18", "Webs of varying shapes (the frame's attachment points) all settle.",
+           "shapes", "mehla_fig5_18", None),
+    Figure("mehla", "Figs. 5.19-5.23",
+           "Reducing a strand type's spring constant elongates those strands (outer frame, inner frame, radials).",
+           "spring_constants", "mehla_fig5_23", None),
+    Figure("mehla", "Figs. 5.24-5.28", "Spreading the spoke masses thins the spiral and its coverage.",
+           "spiral_spacing", "mehla_fig5_28", None),
+    Figure("mehla", "Figs. 5.29-5.33", "Spreading the frame masses gives fewer radial spokes.",
+           "spoke_spacing", "mehla_fig5_33", None),
+    Figure("mehla", "Figs. 5.34-5.38", "Fewer spokes together with a less dense spiral.",
+           "combined", "mehla_fig5_38", None),
+    Figure("mehla", "Figs. 5.39-5.44",
+           "Backgrounds, alpha blending and shading by strand type (§5.3.7-5.3.8) change how the web reads.",
+           "default", "mehla_fig5_44", []),
+    Figure("mehla", "Figs. 5.45-5.47", "windgen makes the web billow (§5.3.9).", "wind", "mehla_fig5_46", None),
+    Figure("mehla", "Figs. 6.10-6.18",
+           "Removing spiral segments that score above 8 inscribes PIG (6.11), with cross-hatch (6.12), random "
+           "attachments (6.13) or strong outlines (6.14), an image (6.16) or random gaps (6.18); the web still "
+           "settles.",
+           "charlotte", "mehla_fig6_11", None),
+    # --- Rudolf & Mould 2009 (seeds/jellyfish-rudolf-mould-2009.txt)
+    Figure("rm", "Fig. 4",
+           "The spring network of a bell slice and its staggered contraction curves; staggered expansion travels "
+           "about 68% farther per stroke than unison, and unison still swims (§3.3).",
+           "stagger", "rm_fig4", None),
+    Figure("rm", "Fig. 5",
+           "Distance travelled against contraction frequency has a large maximum at 0.7 Hz, the resonant gait "
+           "(§3.3).",
+           "frequency_sweep", "rm_fig5", None),
+    Figure("rm", "Fig. 6", "Trace particles show the fluid flow around the jellyfish through a contraction cycle.",
+           "morphology", "rm_fig6", []),
+    Figure("rm", "Fig. 11",
+           "The morphology of a 4 cm bell through a cycle at 0.7 Hz; it contracts to about 56% of its diameter "
+           "(Fig. 3).",
+           "morphology", "rm_fig11", None),
+    # --- the fluid solver and the fits
+    Figure("fluid", "§3.2 (Taylor-Green)",
+           "The solver converges to the analytic decaying Taylor-Green vortex as the grid is refined.",
+           "taylor_green", "fluid_taylor_green", None),
+    Figure("fits", "§3.3 (spline fit)",
+           "A Hermite curve with four knots over one period fits the staggered bell's diameter ratio at 0.7 Hz "
+           "(the cycles after the warm-up of the stagger run).",
+           "fit_spline", "fit_spline", None,
+           "rm -rf RUN && build/creaturelab fit spline results/runs/reproduce/stagger --point 0 --knots 4 "
+           "--from 1.4285714285714286 --out RUN"),
+]
+
+
+def figures_of_run(run_name):
+    return [f for f in FIGURES if f.run == run_name]
+
+
+def module_of_run(run_name):
+    """The figure modules that draw a run folder named run_name."""
+    return [f.module for f in figures_of_run(run_name)]

@@ -1,0 +1,35 @@
+"""Mehla 2005 Figs. 5.7-5.14: the default orb web as built and settled: its parts by strand type
+(frame, spokes, hub, spiral), the web in grey shades, and its settling curve (§5.1: 5-10 s).
+"""
+if __package__ in (None, ""):  # run as a script: make `figures` importable
+    import os
+    import sys
+
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from figures import runs  # noqa: E402
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from figures import webs  # noqa: E402
+
+
+def draw(run, out):
+    pngs = []
+    for k, f in enumerate(run.ok_points()):
+        fig, (types, grey, energy) = plt.subplots(1, 3, figsize=(15, 5), gridspec_kw={"width_ratios": [1, 1, 0.9]})
+        webs.draw_web(f, types, by_type=True)
+        types.set_title("strand types (Figs. 5.7-5.14)", fontsize=9)
+        webs.draw_web(f, grey)
+        grey.set_title(f"settled, {int(f['metrics/particles'][()])} particles", fontsize=9)
+        webs.settling_curve(f, energy)
+        energy.set_title("settling (dashed: settled)", fontsize=9)
+        fig.suptitle(run.title, fontsize=9)
+        fig.tight_layout()
+        pngs.append(runs.savefig(fig, out, "mehla_fig5_14" + (f"_{k}" if k else "")))
+    return pngs
+
+
+if __name__ == "__main__":
+    runs.main(draw, __doc__)

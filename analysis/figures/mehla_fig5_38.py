@@ -1,0 +1,20 @@
+"""Mehla 2005 Figs. 5.34-5.38, fewer spokes with a less dense spiral: every web of the sweep as settled, the sweep's measures
+per point and the settling curves, from the run's HDF5 alone.
+"""
+if __package__ in (None, ""):  # run as a script: make `figures` importable
+    import os
+    import sys
+
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from figures import runs  # noqa: E402
+from figures import webs  # noqa: E402
+
+METRICS = ("spokes", "spiral_segments", "silk_length_m", "settling_time_s")
+
+
+def draw(run, out):
+    return [webs.sweep_grid(run, out, "mehla_fig5_38", f"Mehla Figs. 5.34-5.38: {run.title}", METRICS)]
+
+
+if __name__ == "__main__":
+    runs.main(draw, __doc__)

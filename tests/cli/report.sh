@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# The reproduction report (issue 18), end to end on quick runs: `creaturelab reproduce --list --out`
+# runs a list (a path and an {file, set, name} entry); a fit folder beside them; analysis/draw_runs.py
+# draws them; analysis/report.py writes report.html and REPORT.md and names them last.
+# tests/cli/check_report.py then parses report.html with html.parser: every image exists and is a
+# valid PNG, every check of every run is in a row with its status (ok, FAILED and KNOWN all occur
+# here). A run the catalog does not know (an oscillator with a made-up name) appears under "Other
+# runs" with the figures its kind's plotter drew. A bad list entry exits 2.
+# usage: report.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
+set -euo pipefail
+bin=$1 src=$2 scratch=$3
+cd "$src"
+rm -rf "$scratch"
+mkdir -p "$scratch"
+py=/usr/bin/python3
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# An oscillator run with one check that passes, one that fails and one known deviation.
+cat >"$scratch/osc.toml" <<'TOML'
+kind = "oscillator"
+title = "three statuses"
+[params]
+end_time_s = 2.0
+[sweep]
+integrator = ["symplectic_euler", "rk4"]
+[[check]]
+name = "rk4 is the most accurate"
+type = "argmin"
+metric = "max_abs_error_m"
+axis = "integrator"
+expect = "rk4"
+[[check]]
+name = "symplectic Euler is the most accurate (it is not)"
+type = "argmin"
+metric = "max_abs_error_m"
+axis = "integrator"
+expect = "symplectic_euler"
+[[check]]
+name = "a deviation we know about"
+type = "argmin"
+metric = "max_abs_error_m"
+axis = "integrator"
+expect = "symplectic_euler"
+known_deviation = "rk4 is more accurate; kept to show KNOWN in the report"
+TOML
+cat >"$scratch/list.toml" <<TOML
+experiments = [
+  "experiments/web/strand_layouts.toml",
+  { file = "$scratch/osc.toml", name = "made_up_oscillator", set = ["params.end_time_s=1.5"] },
+]
+TOML
+rc=0
+"$bin" reproduce --list "$scratch/list.toml" --out "$scratch/root" --jobs 2 >"$scratch/reproduce.stdout" 2>/dev/null || rc=$?
+[[ $rc == 1 ]] || fail "reproduce exit code $rc, expected 1 (one check fails)"
+[[ -f $scratch/root/strand_layouts/index.h5 && -f $scratch/root/made_up_oscillator/index.h5 ]] ||
+  fail "run folders not named as the list says: $(ls "$scratch/root")"
+grep -q "made_up_oscillator: a deviation we know about" "$scratch/reproduce.stdout" || fail "check table lacks the run name"
+
+# A fit folder: the spline fitted to a CSV over 3 periods.
+$py - "$scratch/profile.csv" <<'PY'
+import sys, math
+with open(sys.argv[1], "w") as out:
+    out.write("time_s,value\n")
+    for i in range(200):
+        t = 3.6 * i / 199
+        out.write(f"{t!r},{0.78 + 0.22 * math.cos(2 * math.pi * t / 1.2)!r}\n")
+PY
+"$bin" fit spline "$scratch/profile.csv" --knots 4 --period 1.2 --out "$scratch/root/fit_spline" >/dev/null ||
+  fail "fit spline failed"
+
+$py analysis/draw_runs.py "$scratch/root" >"$scratch/draw.stdout" 2>&1 || { cat "$scratch/draw.stdout" >&2; fail "draw_runs failed"; }
+grep -q "figures ok: .*strand_layouts (figures/mehla_fig5_2.py)" "$scratch/draw.stdout" || fail "Fig. 5.2 not drawn"
+grep -q "figures ok: .*fit_spline (figures/fit_spline.py)" "$scratch/draw.stdout" || fail "fit figure not drawn"
+$py analysis/report.py "$scratch/root" >"$scratch/report.stdout" || fail "report.py failed"
+[[ $(tail -n 1 "$scratch/report.stdout") == "report: $scratch/root/REPORT.md" ]] ||
+  fail "the last line does not name the report: $(tail -n 2 "$scratch/report.stdout")"
+tail -n 2 "$scratch/report.stdout" | head -n 1 | grep -qF "report: $scratch/root/report.html" || fail "report.html not named"
+
+$py tests/cli/check_report.py "$scratch/root" || fail "report.html does not show every figure and check"
+grep -q "<h2>Other runs</h2>" "$scratch/root/report.html" || fail "no Other runs section"
+grep -q "made_up_oscillator/figures/point_000000.png" "$scratch/root/report.html" ||
+  fail "the uncatalogued run's figures are not in the report"
+grep -q "mehla_fig5_2.png" "$scratch/root/report.html" || fail "Fig. 5.2 is not in the report"
+grep -q 'class="known">KNOWN</td>' "$scratch/root/report.html" || fail "no KNOWN row"
+grep -q 'class="failed">FAILED</td>' "$scratch/root/report.html" || fail "no FAILED row"
+grep -q "rk4 is more accurate; kept to show KNOWN" "$scratch/root/report.html" || fail "the KNOWN reason is missing"
+grep -q "not reproduced" "$scratch/root/report.html" || fail "catalogued figures without runs are not marked"
+
+# The checker fails on a broken image and on a missing check.
+cp "$scratch/root/report.html" "$scratch/report.good"
+png=$(ls "$scratch"/root/strand_layouts/figures/mehla_fig5_2.png)
+printf 'not a png' >"$png"
+! $py tests/cli/check_report.py "$scratch/root" >"$scratch/bad.stdout" || fail "a broken PNG passed"
+grep -q "mehla_fig5_2.png: not a PNG" "$scratch/bad.stdout" || fail "the broken PNG is not named: $(cat "$scratch/bad.stdout")"
+$py analysis/figures/mehla_fig5_2.py "$scratch/root/strand_layouts" >/dev/null
+sed 's/rk4 is the most accurate/rk4 is accurate/' "$scratch/report.good" >"$scratch/root/report.html"
+! $py tests/cli/check_report.py "$scratch/root" >"$scratch/bad.stdout" || fail "a missing check passed"
+grep -q 'check "rk4 is the most accurate" (ok) is not in report.html' "$scratch/bad.stdout" || fail "missing check not named"
+
+# A bad list entry: exit 2, nothing run.
+printf 'experiments = [{ file = "experiments/web/default.toml", sett = [] }]\n' >"$scratch/bad.toml"
+rc=0
+"$bin" reproduce --list "$scratch/bad.toml" --out "$scratch/bad_root" >/dev/null 2>"$scratch/bad.stderr" || rc=$?
+[[ $rc == 2 ]] || fail "bad list: exit $rc, expected 2"
+grep -q 'unknown key "sett"' "$scratch/bad.stderr" || fail "bad list: $(cat "$scratch/bad.stderr")"
+[[ ! -e $scratch/bad_root ]] || fail "bad list: something was written"
+echo "ok"
