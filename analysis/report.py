@@ -32,8 +32,13 @@ def regenerate(run, root, module, row_command=None):
     folder = os.path.join(root, run.name) if run else os.path.join(root, "RUN")
     draw = (f"/usr/bin/python3 analysis/figures/{module}.py {shlex.quote(folder)}" if module
             else f"/usr/bin/python3 analysis/draw_runs.py {shlex.quote(folder)}")
+    # A figure another tool draws (the 3-D renders: `creaturelab render --figures`) has no module.
+    if module and not os.path.exists(os.path.join(os.path.dirname(os.path.abspath(__file__)), "figures",
+                                                  module + ".py")):
+        draw = None
     if row_command:
-        return row_command.replace("RUN", shlex.quote(folder)) + " && " + draw
+        command = row_command.replace("RUN", shlex.quote(folder))
+        return command if draw is None else command + " && " + draw
     if run is None or not run.experiment:
         return draw
     make = ["build/creaturelab", "run", run.experiment, *run.overrides, "--out", folder, "--force"]

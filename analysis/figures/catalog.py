@@ -14,6 +14,10 @@ Paper = namedtuple("Paper", "key title seed")
 Figure = namedtuple("Figure", "paper figure claim run module checks command", defaults=[None])
 # command: how to remake the run when it is not an experiment run (the fit); None = from index.h5.
 
+# How make reproduce draws the render figures (reproduce.toml's [[render]] entry).
+_RENDER = ("build/creaturelab run experiments/jellyfish/render_swim.toml --out RUN --force && "
+           "build/creaturelab render RUN --frames 36::3 --figures --force")
+
 PAPERS = [
     Paper("mehla", "Mehla 2005, Physically based orb webs (MSc thesis)", "orb-webs-mehla-2005.txt"),
     Paper("rm", "Rudolf & Mould 2009, An interactive fluid model of jellyfish for animation",
@@ -69,6 +73,18 @@ FIGURES = [
            "The morphology of a 4 cm bell through a cycle at 0.7 Hz; it contracts to about 56% of its diameter "
            "(Fig. 3).",
            "morphology", "rm_fig11", None),
+    # The 3-D render model (§3.4-3.5), drawn by POV-Ray from a recorded swim (`creaturelab render`).
+    Figure("rm", "Fig. 7",
+           "Each pair of opposing points of the 2-D slice is revolved into a disc about its own axis; the discs "
+           "make the 3-D umbrella (§3.5).",
+           "render_swim", "fig07", [], _RENDER),
+    Figure("rm", "Fig. 9",
+           "Naive extrapolation expanded and contracted, then structural variation, compression ridges and noise "
+           "(Eq. 2), and all combined (§3.5).",
+           "render_swim", "fig09", [], _RENDER),
+    Figure("rm", "Fig. 10",
+           "One contraction-expansion cycle of the rendered jellyfish (§3.5).",
+           "render_swim", "fig10", None, _RENDER),
     # --- the fluid solver and the fits
     Figure("fluid", "§3.2 (Taylor-Green)",
            "The solver converges to the analytic decaying Taylor-Green vortex as the grid is refined.",

@@ -130,8 +130,10 @@ class Run:
         return sorted(glob.glob(os.path.join(self.folder, "point_*_*.png")))
 
     def figures(self):
-        """Every PNG drawn into RUN/figures, sorted."""
-        return sorted(glob.glob(os.path.join(self.folder, FIGURES_DIR, "*.png")))
+        """Every PNG drawn into RUN/figures, then those `creaturelab render --figures` drew into
+        RUN/render_point_NNNNNN/figures, sorted."""
+        return (sorted(glob.glob(os.path.join(self.folder, FIGURES_DIR, "*.png"))) +
+                sorted(glob.glob(os.path.join(self.folder, "render_point_*", FIGURES_DIR, "*.png"))))
 
     def close(self):
         for f in self._points or []:
