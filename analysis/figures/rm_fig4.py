@@ -1,7 +1,8 @@
 """Rudolf & Mould 2009 Fig. 4: the spring-mass network of the bell slice (left; the muscle springs
 coloured from the aperture to the apex) and the contraction curves (right): the aperture muscle's
 rest-length factor over one cycle after the warm-up and the diameter ratio it produces, for each
-point of the run (staggered and unison expansion, §3.3). The run records the aperture muscle's
+point of the run (staggered and unison expansion, §3.3), and, when the run recorded them
+(/lagrangian/muscle_activation), every muscle element's activation curve. The run records the aperture muscle's
 curve only; with staggered expansion the springs toward the apex finish their expansion sooner
 (src/jellyfish/contraction_curve.hpp).
 """
@@ -42,12 +43,41 @@ def network(f, ax):
     ax.set_title("spring network: chain (grey), muscles aperture → apex (dark → light)", fontsize=8)
 
 
+def muscle_curves(points, labels, ax):
+    """Each muscle element's activation over the cycle after the warm-up (/lagrangian/muscle_activation,
+    frames x muscles x 1), coloured aperture -> apex as in the network panel: Fig. 4 right's family of
+    staggered curves. Solid: the first point (staggered); dashed: the second (unison)."""
+    cmap = plt.get_cmap("plasma")
+    for k, f in enumerate(points[:2]):
+        t = f["lagrangian/time_s"][...]
+        act = f["lagrangian/muscle_activation"][...][:, :, 0]
+        hz = float(attr(f, "contraction_hz", 1.0))
+        warm = float(attr(f, "warmup_cycles", 0.0)) / hz
+        sel = (t >= warm) & (t <= warm + 1.0 / hz)
+        xy = f["lagrangian/markers_m"][0]
+        muscles = f["topology/muscles"][...].reshape(-1, 2)
+        height = np.array([xy[[a, b], 1].mean() for a, b in muscles])
+        order = np.argsort(np.argsort(height))
+        for m in range(act.shape[1]):
+            ax.plot((t[sel] - warm) * hz, act[sel, m], color=cmap(order[m] / max(1, act.shape[1] - 1)),
+                    lw=0.8, ls="-" if k == 0 else "--", label=labels[k] if m == 0 else None)
+    ax.set_xlabel("phase in the cycle after the warm-up")
+    ax.set_ylabel("muscle activation a(t)")
+    ax.set_title("each muscle's activation, aperture → apex (dark → light)", fontsize=8)
+    ax.legend(fontsize=7)
+
+
 def draw(run, out):
     points = run.ok_points()
     if not points or "topology/muscles" not in points[0]:
         return []
     labels = run.labels()
-    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.6), gridspec_kw={"width_ratios": [1, 1.3]})
+    has_curves = "lagrangian/muscle_activation" in points[0]
+    if has_curves:
+        fig, (left, middle, right) = plt.subplots(1, 3, figsize=(17, 4.6), gridspec_kw={"width_ratios": [1, 1.2, 1.3]})
+        muscle_curves(points, labels, middle)
+    else:
+        fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.6), gridspec_kw={"width_ratios": [1, 1.3]})
     network(points[0], left)
     for k, f in enumerate(points):
         t = f["timeseries/time_s"][...]
