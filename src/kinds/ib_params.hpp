@@ -45,8 +45,9 @@ std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& defaults);
 fluid::FluidParams fluidBoxParams(const ParamReader& r);
 
 // The kernel stretch that makes the kernel's radius kernel_radius_m on this kind's grid (cell
-// domain_m / cells): 1 for radius 0. Empty error, or a message naming the parameters when the radius
-// is not a whole number (1 or more) of the kernel's reach in cells.
+// domain_m / cells): 1 for radius 0 and for a radius within one reach (a grid too coarse for it keeps
+// its own kernel). Empty error, or a message naming the parameters when a larger radius is not a
+// whole multiple of the kernel's reach in cells, or needs a stencil wider than kMaxStencilFaces.
 struct KernelScale {
   int scale = 1;
   std::string error;

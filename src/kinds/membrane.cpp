@@ -105,7 +105,8 @@ MembraneKind::MembraneKind() {
       .mobility_doc = "fluid response assumed by the semi-implicit force: through the markers' stencils, or each "
                       "marker alone (ib/coupling.hpp)",
       .kernel_radius_doc = "radius of the kernel's support; 0 = the grid's own (1 cell bilinear, 2 peskin4); otherwise "
-                           "a whole multiple of that, the kernel stretched to a fixed width (ib/kernel.hpp)",
+                           "a whole multiple of that, the kernel stretched to a fixed width (ib/kernel.hpp); a grid too "
+                           "coarse for the radius keeps its own kernel",
   });
   // --- fluid: a viscous liquid in a free-slip box (the test is of the method, not of sea water)
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
