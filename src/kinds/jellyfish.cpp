@@ -277,9 +277,10 @@ JellyfishKind::JellyfishKind() {
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
       .domain_m = 0.4,
       .domain_doc = "side of the square free-slip box: ten diameters (§3.2)",
-      .cells_doc = "fluid cells across the box (Fig. 12: 100; also 50). 200 by default: at and below the bell's "
-                   "natural frequency its distance per cycle is within 1.7-8.5% of 400²'s and its stroke within 0.3-4% "
-                   "(convergence.toml); 100² is the paper's quick grid (40-70% off)",
+      .cells_doc = "fluid cells across the box (Fig. 12: 100; also 50). 200 by default, with dt_s 0.00125: at "
+                   "0.5-0.8 Hz, around the bell's resonance, its distance per cycle is within 1.2-3.7% of 400²'s (at "
+                   "half the step) and its stroke within 0.3-1.8% (convergence.toml); above 0.9 Hz it is not "
+                   "converged (Stokes layer thinner than a cell); 100² is the paper's quick grid (40-70% off)",
       .cells = 200,
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 1.304e-5,
@@ -311,9 +312,12 @@ JellyfishKind::JellyfishKind() {
       real("viscosity_tolerance", fluid::FluidParams{}.viscosity_tolerance, "", 1e-14, 1e-2,
            "relative residual of the implicit viscous solve (fluid/diffusion2.hpp); raising it perturbs the flow "
            "slightly, a test of how sensitive a distance over several cycles is"),
-      real("dt_s", 0.0025, "s", 1e-7, 0.1,
-           "coupled step; the grid study halves it with the cell (dt ∝ dx: 0.005, 0.0025, 0.00125 s on 100², 200², "
-           "400²; convergence.toml). The paper's 0.01 s is stable with the semi-implicit step"),
+      real("dt_s", 0.00125, "s", 1e-7, 0.1,
+           "coupled step; the grid study halves it with the cell (dt ∝ dx: 0.0025, 0.00125, 0.000625 s on 100², "
+           "200², 400²; convergence.toml). 0.00125 rather than 0.0025 on 200²: the coupled step is first order in "
+           "time and at the resonance 0.0025 s was 9% off in distance per cycle (1.603 against 1.460 mm at 0.6 Hz, "
+           "1.419 at 0.000625 s), the grid only 0.4% (400², same step: 1.466). The paper's 0.01 s is stable with "
+           "the semi-implicit step"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
       real("start_y_fraction", 0.2, "", 0.05, 0.95, "aperture's starting height in the box (the bell swims up)"),
       real("box_aspect", 1.5, "", 0.25, 8,

@@ -142,7 +142,7 @@ void BM_SimulatedSecondGridStudy(benchmark::State& state) {
   c.fluid.cells_y = cells * 3 / 2;
   c.fluid.domain_height_m = 1.5 * c.fluid.domain_width_m;
   c.start_y_fraction = 0.2;
-  c.fluid.fixed_step_s = c.dt_s = 0.0025 * 200.0 / cells;
+  c.fluid.fixed_step_s = c.dt_s = 0.00125 * 200.0 / cells;
   measure(state, c);
 }
 BENCHMARK(BM_SimulatedSecondGridStudy)
