@@ -124,11 +124,13 @@ BENCHMARK(BM_SimulatedSecondFluidThreads)
 // the bilinear kernel stretched to the bell's 4 mm thickness (2 cells on 200², 4 on 400²) in
 // fluid ten times as viscous as water.
 // Issue 13 §4's goal: an 11 s point (10 s window + a 0.7 Hz warm-up cycle) in <= 60 s on one core,
-// i.e. >= 0.18 simulated s per CPU s at the converged grid. Measured 2026-11-24 at load 5 on the
-// 2-core machine: 200², 0.49 simulated s per CPU s (5.1 ms per step; an 11 s point in 23 s of
-// CPU). 400² (128 segments, 338 implicit unknowns): runs of the grid study took 18-21 minutes of
-// wall time per 11 s point at load 4-5, far from the goal; a callgrind profile of that step puts
-// 75% in the fluid (MacCormack 26%, FFT 19%, viscosity 13%) and 15% in the dense LU.
+// i.e. >= 0.18 simulated s per CPU s at the converged setting: 200² at dt 0.00125 s (dt/dx 0.625
+// s/m; convergence.toml). Measured 2026-11-25 at load 12.6 on the 2-core machine: 200², 0.283
+// simulated s per CPU s (4.41 ms per step; an 11 s point in 39 s of CPU). Before the step was
+// halved (0.0025 s): 0.49. 400² at 0.000625 s: 20-22 minutes of wall time per point at load 9-17
+// with two points sharing the cores (about 10 minutes of CPU); a profile of a 400² step (perf,
+// 2026-11-25) puts 85-90% in the fluid (viscosity 30%, MacCormack 35%, pressure 13%) and under 10%
+// in the implicit IB solve.
 void BM_SimulatedSecondGridStudy(benchmark::State& state) {
   const int cells = static_cast<int>(state.range(0));
   SwimmerConfig c = paperConfig(cells, ib::Kernel::bilinear);
