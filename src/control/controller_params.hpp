@@ -37,7 +37,7 @@ struct ControllerParams {
   double delta_rad = 0.01;          // perturbation of each central difference (§2.1, Fig. 3)
   bool one_sided = false;           // forward difference; off by default (§2.1: biased)
   int search_every_frames = 1;      // re-determine the direction only every k frames (§2.1)
-  bool steady_state = false;        // §3.3: velocities zeroed before evaluating the objective
+  bool steady_state = false;        // §3.3: shape frozen (RigidData::freezeShape) before evaluating
   bool rigidify_outboard = true;    // §5: bodies outboard of a perturbed joint held with it
   int threads = 1;                  // per-DOF evaluations in parallel (§5, Fig. 10)
   int servo_iterations = 8;         // Newton iterations of the target servo per substep

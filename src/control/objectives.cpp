@@ -27,7 +27,7 @@ void measure(rigid::RigidData& data, const ObjectiveLayout& l, const ForceModel&
              JointMeasures& out) {
   const int nv = data.model().dofs();
   const int n = int(l.dof.size());
-  if (l.steady_state) std::fill(data.qvel(), data.qvel() + nv, 0.0);
+  if (l.steady_state) data.freezeShape();
   data.kinematics();
   std::fill(data.appliedForces(), data.appliedForces() + nv, 0.0);
   force.apply(data, s.body_force_n);

@@ -38,9 +38,10 @@ struct MeasureScratch {
   std::vector<double> zero, torque;
 };
 
-// Evaluates every joint's measures at data's state. With steady_state the velocities are zeroed
-// first (§3.3: "setting the object velocities to zero before calculating F_d"), which changes
-// data. The force stage is applied to data as it would be in a step.
+// Evaluates every joint's measures at data's state. With steady_state the shape is frozen first
+// (§3.3, RigidData::freezeShape: "setting the object velocities to zero before calculating F_d"
+// for a creature rooted in a stationary object; for a free creature the relative joint
+// velocities zeroed with its momentum kept), which changes data. The force stage is applied to data as it would be in a step.
 void measure(rigid::RigidData& data, const ObjectiveLayout& layout, const ForceModel& force, MeasureScratch& s,
              JointMeasures& out);
 

@@ -157,7 +157,9 @@ ControlKind::ControlKind() {
            "the objectives' curvature)"),
       boolean("one_sided", false, "forward differences (§2.1: biased, off in the paper)"),
       integer("search_every_frames", 1, 1, 100000, "re-determine the direction every k frames (§2.1)"),
-      boolean("steady_state", false, "§3.3: zero the velocities before evaluating objectives (else §3.2, dynamic)"),
+      boolean("steady_state", false,
+              "§3.3: freeze the shape before evaluating objectives: a rooted creature stops, a free one keeps "
+              "the rigid velocity with its momentum (relative joint velocities zeroed); else §3.2, dynamic"),
       boolean("rigidify_outboard", true, "§5: hold the bodies outboard of a perturbed joint rigid with it"),
       integer("threads", 1, 1, 16, "threads for the per-DOF evaluations (§5, Fig. 10); results do not depend on it"),
       integer("surface_slices", 12, 3, 256, "segments around round geoms in the wind's surface triangles"),
