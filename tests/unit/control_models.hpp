@@ -52,6 +52,27 @@ inline std::string freeCreatureXml() {
          "</body></worldbody></mujoco>";
 }
 
+// The block of blockXml on a ball joint "ball" at the origin (centre 0.5 m along +x at rest):
+// 24 kg, 1 x 1 x 0.1 m.
+inline std::string ballBlockXml(double gravity) {
+  return "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.016666666666666666\" gravity=\"0 0 " +
+         std::to_string(-gravity) + "\"/><default><geom contype=\"0\" conaffinity=\"0\"/></default><worldbody>"
+         "<body name=\"block\"><joint name=\"ball\" type=\"ball\"/>"
+         "<geom type=\"box\" size=\"0.5 0.5 0.05\" pos=\"0.5 0 0\" mass=\"24\"/>"
+         "</body></worldbody></mujoco>";
+}
+
+// A hinge j0 about y carrying a capsule, then a ball joint "wrist" carrying a second capsule
+// (damped, 2 kg each, 0.4 m), hanging along +x.
+inline std::string wristXml() {
+  return "<mujoco><compiler angle=\"radian\"/><option timestep=\"0.01\"/><default><geom contype=\"0\" "
+         "conaffinity=\"0\"/></default><worldbody><body name=\"b0\"><joint name=\"j0\" type=\"hinge\" "
+         "axis=\"0 1 0\" damping=\"0.5\"/><geom type=\"capsule\" fromto=\"0 0 0 0.4 0 0\" size=\"0.04\" mass=\"2\"/>"
+         "<body name=\"hand\" pos=\"0.4 0 0\"><joint name=\"wrist\" type=\"ball\" damping=\"0.2\"/>"
+         "<geom type=\"capsule\" fromto=\"0 0 0 0.4 0.05 0\" size=\"0.04\" mass=\"2\"/></body></body>"
+         "</worldbody></mujoco>";
+}
+
 inline std::string writeText(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
   return path.string();
