@@ -21,6 +21,14 @@ class JointsTest : public testing::ScratchDirTest {
 
 rigid::Quat quatAt(const double* q) { return {q[0], q[1], q[2], q[3]}; }
 
+ControllerParams minimiseEffort(const std::string& joint) {
+  ControllerParams p;
+  p.controlled = {joint};
+  p.objectives = {Objective::effort};
+  p.senses = {Sense::minimize};
+  return p;
+}
+
 Pattern sine(double mean, double amplitude, double hz, double phase) {
   Pattern p;
   p.kind = Pattern::Kind::sine;
@@ -60,10 +68,7 @@ TEST_F(JointsTest, PatternsInterpolateAndHold) {
 TEST_F(JointsTest, KinematicJointTracksItsPatternUnderLoad) {
   const auto model = rigid::RigidModel::load(testing::writeText(file("chain.xml"), testing::chainXml(3)));
   const SimpleWind wind(rigid::geomSurfaces(model, 8), 1.2, constantWind({20, 0, 0}));
-  ControllerParams p;
-  p.controlled = {"j1"};
-  p.objectives = {Objective::effort};
-  p.senses = {Sense::minimize};
+  ControllerParams p = minimiseEffort("j1");
   p.kinematic = {"j0"};
   p.kinematic_patterns = {sine(0.3, 0.6, 1.5, 0.0)};
   p.substeps = 3;
@@ -88,10 +93,7 @@ TEST_F(JointsTest, PdDrivenJointFollowsItsPatternLoosely) {
   const auto model = rigid::RigidModel::load(testing::writeText(file("chain.xml"), testing::chainXml(3)));
   const NoForce none;
   auto worst = [&](double kp) {
-    ControllerParams p;
-    p.controlled = {"j0"};
-    p.objectives = {Objective::effort};
-    p.senses = {Sense::minimize};
+    ControllerParams p = minimiseEffort("j0");
     p.pd_driven = {"j2"};
     p.pd_patterns = {sine(0.0, 0.5, 1.0, 0.0)};
     p.pd_kp_n_m_per_rad = kp;
@@ -114,10 +116,7 @@ TEST_F(JointsTest, PdDrivenJointFollowsItsPatternLoosely) {
 TEST_F(JointsTest, BallJointDerivativeMatchesAnalyticEffort) {
   const auto model = rigid::RigidModel::load(testing::writeText(file("ball.xml"), testing::ballBlockXml(9.81)));
   const NoForce none;
-  ControllerParams p;
-  p.controlled = {"ball"};
-  p.objectives = {Objective::effort};
-  p.senses = {Sense::minimize};
+  ControllerParams p = minimiseEffort("ball");
   p.steady_state = true;
   Controller c(model, p, none);
   ASSERT_EQ(c.controlledDofs(), 3);
