@@ -57,7 +57,8 @@ ServoReport advanceFrame(rigid::RigidData& data, const Prescribed& p, const Forc
   s.unknown_dof.assign(p.dof.begin(), p.dof.end());
   for (const auto& b : p.balls)
     for (int a = 0; a < 3; ++a) s.unknown_dof.push_back(b.dof + a);
-  std::vector<double> goal(ns);
+  std::vector<double>& goal = s.goal;
+  goal.resize(ns);
   const int warnings_before = data.warnings();
 
   for (int sub = 1; sub <= substeps; ++sub) {

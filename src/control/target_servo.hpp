@@ -55,7 +55,7 @@ struct ServoReport {
 // Scratch of one servo (per thread): reused between frames so that a frame does not allocate.
 struct ServoScratch {
   std::vector<Vec3> body_force_n;
-  std::vector<double> base_force, start, tau, residual, jacobian;
+  std::vector<double> base_force, start, goal, tau, residual, jacobian;
   std::vector<rigid::Quat> ball_start, ball_goal;
   std::vector<int> unknown_dof;
 };
