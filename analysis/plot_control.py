@@ -3,10 +3,13 @@
 
 usage: /usr/bin/python3 analysis/plot_control.py RUN_DIR [--out DIR]
 
-frames.png: the creature in the x-z plane (geom_frames_m: centre and axis tips at the half-extents) at a few frames (light to dark, last frame bold), one panel
-per point (Lentine et al. 2010 Figs. 3, 4, 6, 9, 5): boxes as rectangles, capsules as thick segments,
-spheres as circles, the wind as an arrow. angles.png: every controlled joint's angle and its target
-against time, and its objective (per point). Figures go to RUN_DIR/figures/ as PNG.
+frames.png: the creature in the x-z plane (geom_frames_m: centre and axis tips at the half-extents) at
+a few frames (light to dark, last frame bold), one panel per point (Lentine et al. 2010 Figs. 3, 4,
+6, 9, 5): boxes as their 12 edges, capsules as thick segments, spheres as circles, the wind as an
+arrow; frames_top.png the same seen from above (x-y) when the creature moves out of the x-z plane
+(ball joints, block_ball.toml). angles.png: every controlled DOF's angle (a ball joint's three:
+its rotation vector's components) against time, and every controlled joint's objective (per
+point). Figures go to RUN_DIR/figures/ as PNG.
 """
 import argparse
 import glob
@@ -34,26 +37,38 @@ def title(f):
     return ", ".join(p for p in parts if p)
 
 
-def draw_pose(ax, frames, types, k, alpha, lw):
-    """Frame k of geom_frames_m (points: centre, then the x, y, z axis tips scaled by half-sizes)."""
+def draw_pose(ax, frames, types, k, alpha, lw, plane=(0, 2)):
+    """Frame k of geom_frames_m (points: centre, then the x, y, z axis tips scaled by half-sizes),
+    projected on the plane of world axes `plane`."""
+    u, v = plane
     g = frames[k].reshape(-1, 4, 3)
     for j, t in enumerate(types):
         c, ex, ey, ez = g[j, 0], g[j, 1] - g[j, 0], g[j, 2] - g[j, 0], g[j, 3] - g[j, 0]
         colour = "0.5" if t == BOX and np.allclose(frames[0].reshape(-1, 4, 3)[j], g[j]) and k > 0 else "tab:blue"
         if t == BOX:
-            corners = [c + sx * ex + sz * ez for sx, sz in ((-1, -1), (1, -1), (1, 1), (-1, 1), (-1, -1))]
-            xs = [p[0] for p in corners]
-            zs = [p[2] for p in corners]
-            ax.plot(xs, zs, color=colour, alpha=alpha, lw=lw)
+            signs = [(a, b, d) for a in (-1, 1) for b in (-1, 1) for d in (-1, 1)]
+            corner = {s: c + s[0] * ex + s[1] * ey + s[2] * ez for s in signs}
+            for s in signs:
+                for axis in range(3):
+                    if s[axis] < 0:
+                        other = tuple(-x if i == axis else x for i, x in enumerate(s))
+                        p, q = corner[s], corner[other]
+                        ax.plot([p[u], q[u]], [p[v], q[v]], color=colour, alpha=alpha, lw=lw)
         elif t in (CAPSULE, CYLINDER):
             a, b = c - ez, c + ez
             radius = np.linalg.norm(ex)
-            ax.plot([a[0], b[0]], [a[2], b[2]], color="tab:blue", alpha=alpha, lw=max(lw, 400 * radius / 10))
+            ax.plot([a[u], b[u]], [a[v], b[v]], color="tab:blue", alpha=alpha, lw=max(lw, 400 * radius / 10))
         elif t in (SPHERE, ELLIPSOID):
-            ax.add_patch(plt.Circle((c[0], c[2]), np.linalg.norm(ex), color="tab:blue", alpha=alpha * 0.6, fill=True))
+            ax.add_patch(plt.Circle((c[u], c[v]), np.linalg.norm(ex), color="tab:blue", alpha=alpha * 0.6, fill=True))
 
 
-def frames_figure(points, png):
+def has_ball(f):
+    """A controlled ball joint: its three angle series beside its one objective."""
+    ts = f["timeseries"]
+    return any(f"angle_deg_{k[len('objective_'):]}_x" in ts for k in ts if k.startswith("objective_"))
+
+
+def frames_figure(points, png, plane=(0, 2)):
     n = len(points)
     cols = min(n, 4)
     rows = (n + cols - 1) // cols
@@ -67,11 +82,12 @@ def frames_figure(points, png):
         # Denser early, where the creature moves; the last frame bold.
         for i, k in enumerate(np.unique(np.round(np.linspace(0, 1, 6) ** 2 * (count - 1)).astype(int))):
             last = k == count - 1
-            draw_pose(ax, frames, types, k, 0.25 + 0.75 * i / 5, 2.0 if last else 0.8)
+            draw_pose(ax, frames, types, k, 0.25 + 0.75 * i / 5, 2.0 if last else 0.8, plane)
         wind = np.array([float(f.attrs[f"wind_{a}_m_per_s"]) for a in "xyz"])
         if np.linalg.norm(wind) > 0 and float(f.attrs["density_kg_per_m3"]) > 0:
             lo, hi = ax.get_xlim(), ax.get_ylim()
-            direction = wind[[0, 2]] / np.linalg.norm(wind[[0, 2]]) if np.linalg.norm(wind[[0, 2]]) > 0 else np.zeros(2)
+            w2 = wind[list(plane)]
+            direction = w2 / np.linalg.norm(w2) if np.linalg.norm(w2) > 0 else np.zeros(2)
             start = np.array([lo[0], hi[1]])
             ax.annotate("", xy=start + 0.25 * (lo[1] - lo[0]) * direction, xytext=start,
                         arrowprops=dict(arrowstyle="->", color="tab:red"))
@@ -80,8 +96,8 @@ def frames_figure(points, png):
         ax.set_title(f"{title(f)}\nfinal {float(m['final_angle_deg'][()]):.1f} deg, converged frame "
                      f"{int(m['converged_frame'][()])}", fontsize=7)
         ax.set_aspect("equal", adjustable="datalim")
-        ax.set_xlabel("x (m)", fontsize=7)
-        ax.set_ylabel("z (m)", fontsize=7)
+        ax.set_xlabel(f"{'xyz'[plane[0]]} (m)", fontsize=7)
+        ax.set_ylabel(f"{'xyz'[plane[1]]} (m)", fontsize=7)
         ax.tick_params(labelsize=6)
     fig.tight_layout()
     fig.savefig(png, dpi=110)
@@ -92,10 +108,14 @@ def angles_figure(points, png):
     fig, (ax_angle, ax_obj) = plt.subplots(1, 2, figsize=(12, 4.2))
     for f in points:
         t = f["timeseries/time_s"][...]
-        joints = [k[len("angle_deg_"):] for k in f["timeseries"] if k.startswith("angle_deg_")]
+        dofs = [k[len("angle_deg_"):] for k in f["timeseries"] if k.startswith("angle_deg_")]
+        joints = [k[len("objective_"):] for k in f["timeseries"] if k.startswith("objective_")]
+        colour = {}
+        for d in dofs:
+            line, = ax_angle.plot(t, f[f"timeseries/angle_deg_{d}"][...], lw=1, label=f"{title(f)}: {d}")
+            colour.setdefault(d, line.get_color())
         for j in joints:
-            line, = ax_angle.plot(t, f[f"timeseries/angle_deg_{j}"][...], lw=1, label=f"{title(f)}: {j}")
-            ax_obj.plot(t, f[f"timeseries/objective_{j}"][...], lw=1, color=line.get_color())
+            ax_obj.plot(t, f[f"timeseries/objective_{j}"][...], lw=1, color=colour.get(j, colour.get(j + "_x")))
     ax_angle.set_xlabel("time (s)")
     ax_angle.set_ylabel("joint angle (deg)")
     ax_obj.set_xlabel("time (s)")
@@ -112,7 +132,7 @@ def timing_table(points, path):
     point's wall_time_s attribute: provenance, not a dataset)."""
     rows = {}
     for f in points:
-        joints = sum(1 for k in f["timeseries"] if k.startswith("angle_deg_"))
+        joints = sum(1 for k in f["timeseries"] if k.startswith("objective_"))
         per_frame = float(f.attrs["wall_time_s"]) / float(f.attrs["frames"])
         rows.setdefault(joints, {})[int(f.attrs["threads"])] = per_frame
     threads = sorted({t for r in rows.values() for t in r})
@@ -134,6 +154,8 @@ def main():
     if not points:
         raise SystemExit(f"{args.run}: no control points with geom frames")
     frames_figure(points, os.path.join(out, "frames.png"))
+    if any(has_ball(f) for f in points):
+        frames_figure(points, os.path.join(out, "frames_top.png"), plane=(0, 1))
     angles_figure(points, os.path.join(out, "angles.png"))
     if len({int(f.attrs["threads"]) for f in points}) > 1:
         timing_table(points, os.path.join(out, "parallel_dofs.txt"))

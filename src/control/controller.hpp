@@ -9,7 +9,12 @@
 //       (g) steepest descent with the fixed step of the creature's strength: the target moves by
 //           strength x frame against the gradient (with it to maximise) (§2.1);
 //   (a, c) advance the creature one frame towards those targets under all external forces.
-// With one DOF per joint the normalised steepest-descent direction of joint i is -sign(g_i).
+// A hinge is one DOF; a ball joint three, the rotations about its body's own axes (q * exp(+-delta
+// e_a), the body frame MuJoCo's ball velocities live in), each differenced and stepped on its own:
+// the steepest-descent direction per DOF is -sign(g), so every DOF (each ball axis) moves by the
+// strength's step. Kinematic joints follow their patterns exactly, PD-driven ones are pulled
+// towards theirs (§2.2); both go on doing so while a controlled joint is perturbed, unless they
+// lie outboard of it, where they are held rigid with it (§5).
 #include <memory>
 #include <vector>
 
@@ -23,13 +28,17 @@ namespace creaturelab::control {
 
 struct FrameRecord {
   double time_s = 0;
-  std::vector<double> angle_rad;    // controlled joints after the frame
+  // Per controlled DOF (a ball joint's three: the components of its rotation vector log(q), rad):
+  std::vector<double> angle_rad;    // after the frame
   std::vector<double> target_rad;   // the servo's targets for the frame (PD targets, §2.2)
-  std::vector<double> derivative;   // dJ_i/dq_i used for the frame's direction (per rad)
+  std::vector<double> derivative;   // dJ_i/dq used for the frame's direction (per rad)
+  // Per controlled joint:
   std::vector<double> objective;    // J_i = sum_j w_ij F_j after the frame
   JointMeasures measures;           // effort, drag per joint after the frame
   double servo_residual_rad = 0;    // largest servo residual before projection (this frame)
   bool searched = false;            // derivatives re-evaluated this frame (search_every_frames)
+  double kinematic_error_rad = 0;   // largest |q - pattern(t)| of the kinematic joints after the frame
+  double pd_error_rad = 0;          // largest |q - pattern(t)| of the PD-driven joints after the frame
 };
 
 class Controller {
@@ -39,34 +48,45 @@ class Controller {
   Controller(const rigid::RigidModel& model, ControllerParams p, const ForceModel& force);
   ~Controller();
 
-  // Sets a controlled or kinematic joint's angle before the first frame.
+  // Sets a hinge's angle, or a ball joint's rotation (vector, rad, from the identity), before the
+  // first frame; kinematic and PD joints holding a pose hold this one.
   void setAngle(const std::string& joint, double rad);
+  void setRotation(const std::string& joint, const Vec3& rotation_rad);
   FrameRecord frame();
 
   rigid::RigidData& data() { return main_; }
   const ControllerParams& params() const { return p_; }
-  // Joint i's objective at `offset` rad from its current angle, as the derivative sees it
-  // (rigidified, held, one frame of the servo): for tests of the derivative.
-  double evaluate(int joint, double offset_rad);
+  // The objective of the joint owning controlled DOF `dof` at `offset` rad from the current pose
+  // along that DOF, as the derivative sees it (rigidified, held, one frame of the servo): for tests.
+  double evaluate(int dof, double offset_rad);
   // Per-DOF derivatives at the current state (evaluated in parallel).
   std::vector<double> derivatives();
+  int controlledDofs() const { return int(dof_joint_.size()); }
   // The measures at the current state (steady_state as configured), without changing it.
   JointMeasures measureNow();
-  int evaluationsPerFrame() const { return 2 * int(p_.controlled.size()); }
+  int evaluationsPerFrame() const { return 2 * controlledDofs(); }
 
  private:
   struct Worker;
-  double evaluate(Worker& w, const rigid::RigidState& start, int joint, double offset_rad);
+  // A controlled or kinematic joint: where it is, and its slot in prescribed_ (scalar or ball).
+  struct Slot {
+    int qpos = 0, dof = 0, index = 0;
+    bool ball = false;
+  };
+  double evaluate(Worker& w, const rigid::RigidState& start, int dof, double offset_rad);
+  void captureHolds();
+  Slot slotOf(const std::string& joint, bool kinematic);
 
   const rigid::RigidModel& model_;
   ControllerParams p_;
   const ForceModel& force_;
   ObjectiveLayout layout_;
   rigid::RigidData main_;
-  Prescribed prescribed_;                 // controlled joints first (in order), then kinematic
-  std::vector<std::vector<int>> holds_;   // per controlled joint: passive hinge/slide joints outboard
-  std::vector<double> kinematic_rad_;     // held angles of the kinematic joints
-  std::vector<double> direction_;         // -1, 0, +1 per controlled joint
+  Prescribed prescribed_;                 // controlled joints first (in order), then kinematic; PD
+  std::vector<Slot> controlled_, kinematic_;
+  std::vector<int> dof_joint_, dof_axis_;  // per controlled DOF: its joint, its axis (ball: 0-2)
+  std::vector<std::vector<int>> holds_;   // per controlled joint: passive joints outboard (incl. PD)
+  std::vector<double> direction_;         // -1, 0, +1 per controlled DOF
   std::vector<double> derivative_;
   std::unique_ptr<fluid::WorkerPool> pool_;
   std::vector<std::unique_ptr<Worker>> workers_;  // one per pool part

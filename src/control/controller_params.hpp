@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "control/pattern.hpp"
 #include "rigid/rigid_model.hpp"
 
 namespace creaturelab::control {
@@ -21,13 +22,24 @@ enum class Objective { effort, drag, drag_along };
 enum class Sense { minimize, maximize };
 
 struct ControllerParams {
-  std::vector<std::string> controlled;  // hinge joints the controller drives, one DOF each
-  std::vector<std::string> kinematic;   // hinge joints held at their reference angle (prescribed)
+  // Joints the controller drives: hinges (one DOF) and ball joints (three DOFs, each perturbed
+  // and stepped on its own axis of the body frame).
+  std::vector<std::string> controlled;
+  // Joints that follow a prescribed motion exactly whatever the load (the paper's kinematic legs):
+  // hinges with a pattern each (empty = all hold their initial angle), ball joints held.
+  std::vector<std::string> kinematic;
+  std::vector<Pattern> kinematic_patterns;
+  // Hinges PD-driven to a pattern (§2.2: "PD targets ... can be pre-specified"): they yield to loads.
+  std::vector<std::string> pd_driven;
+  std::vector<Pattern> pd_patterns;  // one per pd_driven joint
+  double pd_kp_n_m_per_rad = 200;
+  double pd_kd_n_m_s_per_rad = 10;
   // Per controlled joint j: its objective F_j and sense.
   std::vector<Objective> objectives;
   std::vector<Sense> senses;
   // weights[i][j]: joint i descends sum_j weights[i][j] F_j (§5's weighted average; the weights
-  // carry the unit conversion between N m s and N). Empty = identity (each joint its own).
+  // carry the unit conversion between N m s and N). Empty = identity (each joint its own). One
+  // row and column per controlled joint: a ball joint counts once (its three axes share its objective).
   std::vector<std::vector<double>> weights;
   Vec3 drag_direction{1, 0, 0};
 
@@ -37,7 +49,7 @@ struct ControllerParams {
   double delta_rad = 0.01;          // perturbation of each central difference (§2.1, Fig. 3)
   bool one_sided = false;           // forward difference; off by default (§2.1: biased)
   int search_every_frames = 1;      // re-determine the direction only every k frames (§2.1)
-  bool steady_state = false;        // §3.3: velocities zeroed before evaluating the objective
+  bool steady_state = false;        // §3.3: shape frozen (RigidData::freezeShape) before evaluating
   bool rigidify_outboard = true;    // §5: bodies outboard of a perturbed joint held with it
   int threads = 1;                  // per-DOF evaluations in parallel (§5, Fig. 10)
   int servo_iterations = 8;         // Newton iterations of the target servo per substep

@@ -10,6 +10,7 @@ ObjectiveLayout makeLayout(const ControllerParams& p, const rigid::RigidModel& m
   for (const auto& name : p.controlled) {
     const rigid::JointInfo j = model.joint(model.findJoint(name));
     l.dof.push_back(j.dof);
+    l.ndof.push_back(j.type == rigid::JointType::ball ? 3 : 1);
     std::vector<char> moves(model.bodies(), 0);
     for (int b = 0; b < model.bodies(); ++b) moves[b] = model.inSubtree(b, j.body) ? 1 : 0;
     l.moves.push_back(std::move(moves));
@@ -27,7 +28,7 @@ void measure(rigid::RigidData& data, const ObjectiveLayout& l, const ForceModel&
              JointMeasures& out) {
   const int nv = data.model().dofs();
   const int n = int(l.dof.size());
-  if (l.steady_state) std::fill(data.qvel(), data.qvel() + nv, 0.0);
+  if (l.steady_state) data.freezeShape();
   data.kinematics();
   std::fill(data.appliedForces(), data.appliedForces() + nv, 0.0);
   force.apply(data, s.body_force_n);
@@ -43,8 +44,14 @@ void measure(rigid::RigidData& data, const ObjectiveLayout& l, const ForceModel&
   out.objective.assign(n, 0);
   out.drag_vector_n.assign(n, Vec3{});
   for (int j = 0; j < n; ++j) {
-    out.torque_n_m[j] = s.torque[l.dof[j]];
-    out.effort_n_m_s[j] = std::abs(s.torque[l.dof[j]]) * l.frame_s;
+    if (l.ndof[j] == 1) {
+      out.torque_n_m[j] = s.torque[l.dof[j]];
+    } else {
+      double t2 = 0;
+      for (int a = 0; a < l.ndof[j]; ++a) t2 += s.torque[l.dof[j] + a] * s.torque[l.dof[j] + a];
+      out.torque_n_m[j] = std::sqrt(t2);
+    }
+    out.effort_n_m_s[j] = std::abs(out.torque_n_m[j]) * l.frame_s;
     Vec3 f{};  // Eq. 3 over the bodies joint j moves, summed in body order
     for (int b = 0; b < int(s.body_force_n.size()); ++b)
       if (l.moves[j][b])

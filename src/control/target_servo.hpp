@@ -15,29 +15,54 @@
 #include <vector>
 
 #include "control/force_model.hpp"
+#include "control/pattern.hpp"
+#include "rigid/rotation.hpp"
 #include "rigid/rigid_data.hpp"
 
 namespace creaturelab::control {
 
-// Prescribed degrees of freedom (hinges: qpos and dof addresses) and where they go over a frame.
+// Prescribed joints and where they go over a frame. Hinges and slides (one qpos, one dof): the
+// angle at the end of the frame, reached linearly over the substeps, or, when a pattern is given,
+// the pattern's angle at the end of every substep. Ball joints (four qpos, three dofs): the
+// quaternion at the end of the frame, reached along the shortest rotation (slerp).
+struct PrescribedBall {
+  int qpos = 0, dof = 0;
+  rigid::Quat target{1, 0, 0, 0};
+};
+
+// A joint driven towards a pattern by PD torques (§2.2), not prescribed: it yields to loads.
+// tau = kp (pattern(t + h) - q) + kd (pattern'(t + h) - qdot), explicit at each substep's start.
+struct PdDrive {
+  int qpos = 0, dof = 0;
+  const Pattern* pattern = nullptr;
+  double hold_rad = 0;  // the angle a hold pattern keeps
+  double kp_n_m_per_rad = 0, kd_n_m_s_per_rad = 0;
+};
+
 struct Prescribed {
   std::vector<int> qpos, dof;
-  std::vector<double> target;  // angle at the end of the frame, rad
+  std::vector<double> target;             // angle at the end of the frame, rad
+  std::vector<const Pattern*> pattern;    // empty, or per scalar joint: nullptr or its pattern
+  std::vector<PrescribedBall> balls;
+  std::vector<PdDrive> pd;
 };
 
 struct ServoReport {
-  double residual_rad = 0;  // largest |q - target| before the final projection, over the frame
+  double residual_rad = 0;  // largest |q - target| (ball: rotation angle) before the final projection
   int iterations = 0;       // most Newton iterations any substep needed
 };
 
 // Scratch of one servo (per thread): reused between frames so that a frame does not allocate.
 struct ServoScratch {
   std::vector<Vec3> body_force_n;
-  std::vector<double> base_force, start, tau, residual, jacobian;
+  std::vector<double> base_force, start, goal, tau, residual, jacobian;
+  std::vector<rigid::Quat> ball_start, ball_goal;
+  std::vector<int> unknown_dof;
 };
 
 // Advances `data` one frame of `substeps` MuJoCo steps: the prescribed angles move linearly from
-// where they are to their targets, reaching each substep's share exactly; `force` is evaluated at
+// where they are to their targets (or follow their patterns), reaching each substep's goal exactly;
+// PD-driven joints get their torques; `force` is evaluated at
 // the start of every substep (explicit). Throws std::runtime_error when the state stops being
 // finite (a diverging model) or MuJoCo warns of a bad acceleration.
 ServoReport advanceFrame(rigid::RigidData& data, const Prescribed& p, const ForceModel& force, int substeps,

@@ -7,6 +7,7 @@
 
 #include "control/controller.hpp"
 #include "control/simple_wind.hpp"
+#include "kinds/control_params.hpp"
 #include "rigid/geom_surface.hpp"
 
 namespace creaturelab::kinds {
@@ -14,80 +15,6 @@ namespace {
 
 using control::Vec3;
 constexpr double kDeg = 180.0 / std::numbers::pi;
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  const auto e = s.find_last_not_of(" \t");
-  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
-}
-
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  if (trim(s).empty()) return out;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, sep)) out.push_back(trim(item));
-  return out;
-}
-
-double number(const std::string& text, const std::string& what) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || !std::isfinite(v))
-    throw std::invalid_argument(what + ": '" + text + "' is not a number");
-  return v;
-}
-
-// Parses the text parameters into controller parameters; throws std::invalid_argument naming
-// the parameter.
-control::ControllerParams controllerParams(const ParamReader& r) {
-  control::ControllerParams p;
-  p.controlled = split(r.text("controlled"), ',');
-  p.kinematic = split(r.text("kinematic"), ',');
-  for (const auto& o : split(r.text("objectives"), ',')) {
-    if (o == "effort") p.objectives.push_back(control::Objective::effort);
-    else if (o == "drag") p.objectives.push_back(control::Objective::drag);
-    else if (o == "drag_along") p.objectives.push_back(control::Objective::drag_along);
-    else throw std::invalid_argument("objectives: '" + o + "' is not one of effort | drag | drag_along");
-  }
-  for (const auto& s : split(r.text("senses"), ',')) {
-    if (s == "min") p.senses.push_back(control::Sense::minimize);
-    else if (s == "max") p.senses.push_back(control::Sense::maximize);
-    else throw std::invalid_argument("senses: '" + s + "' is not min or max");
-  }
-  for (const auto& row : split(r.text("weights"), ';')) {
-    std::vector<double> w;
-    for (const auto& x : split(row, ',')) w.push_back(number(x, "weights"));
-    p.weights.push_back(w);
-  }
-  p.drag_direction = {r.real("drag_direction_x"), r.real("drag_direction_y"), r.real("drag_direction_z")};
-  p.frame_s = r.real("frame_s");
-  p.substeps = int(r.integer("substeps"));
-  p.strength_rad_per_s = r.real("strength_rad_per_s");
-  p.delta_rad = r.real("delta_rad");
-  p.one_sided = r.boolean("one_sided");
-  p.search_every_frames = int(r.integer("search_every_frames"));
-  p.steady_state = r.boolean("steady_state");
-  p.rigidify_outboard = r.boolean("rigidify_outboard");
-  p.threads = int(r.integer("threads"));
-  return p;
-}
-
-// "joint=deg, joint=deg"
-std::vector<std::pair<std::string, double>> initialAngles(const ParamReader& r) {
-  std::vector<std::pair<std::string, double>> out;
-  for (const auto& item : split(r.text("initial_deg"), ',')) {
-    const auto eq = item.find('=');
-    if (eq == std::string::npos) throw std::invalid_argument("initial_deg: '" + item + "' is not joint=degrees");
-    out.push_back({trim(item.substr(0, eq)), number(trim(item.substr(eq + 1)), "initial_deg")});
-  }
-  return out;
-}
 
 rigid::RigidModel loadModel(const ParamReader& r) {
   auto model = rigid::RigidModel::load(r.text("model_file"));
@@ -128,15 +55,28 @@ ControlKind::ControlKind() {
   params_ = {
       text("model_file", "experiments/control/models/block.xml", "",
            "MJCF creature (path from the working folder); 2-D creatures live in the x-z plane"),
-      text("controlled", "hinge", "", "controlled hinge joints, comma-separated (one DOF each)"),
-      text("kinematic", "", "", "hinge joints held at their initial angle (prescribed motion), comma-separated"),
+      text("controlled", "hinge", "",
+           "controlled joints, comma-separated: hinges (one DOF) or ball joints (three, about the body's axes)"),
+      text("kinematic", "", "",
+           "joints that follow kinematic_pattern exactly whatever the load (hinges; ball joints hold), comma-separated"),
+      text("kinematic_pattern", "", "",
+           "'joint = pattern; ...' for kinematic hinges, pattern hold | sine(mean_deg, amplitude_deg, frequency_hz, "
+           "phase_deg) | table(t_s angle_deg, t_s angle_deg, ...) (piecewise linear, held past its ends); joints not "
+           "named hold their initial angle (§2.2; the paper's legs follow motion capture)"),
+      text("pd_driven", "", "", "hinges PD-driven to pd_pattern (§2.2: pre-specified PD targets), comma-separated"),
+      text("pd_pattern", "", "", "'joint = pattern; ...' for pd_driven hinges, as kinematic_pattern (default hold)"),
+      real("pd_kp_n_m_per_rad", 200, "N m/rad", 0, 1e7,
+           "PD stiffness of pd_driven joints (the paper gives none; explicit at each substep, keep kp h^2 / I small)"),
+      real("pd_kd_n_m_s_per_rad", 10, "N m s/rad", 0, 1e6, "PD damping of pd_driven joints"),
       text("objectives", "effort", "",
            "per controlled joint: effort (Eq. 1, N m s) | drag (|Eq. 3|, N) | drag_along (Eq. 4 along drag_direction, N)"),
       text("senses", "min", "", "per controlled joint: min | max"),
       text("weights", "", "",
            "rows 'w11,w12,..; w21,..': joint i descends sum_j w_ij F_j (§5); the weights carry the unit "
-           "conversion; empty = each joint its own objective"),
-      text("initial_deg", "", "", "initial angles 'joint=degrees, ...' (default: the model's reference)"),
+           "conversion; one row and column per controlled joint (a ball joint counts once); empty = each joint its own"),
+      text("initial_deg", "", "",
+           "initial poses 'hinge=degrees, ball=x y z, ...' (ball: rotation vector in degrees; default: the model's "
+           "reference)"),
       real("drag_direction_x", 1, "", -1e9, 1e9, "w of Eq. 4 (normalised); lift = drag along up"),
       real("drag_direction_y", 0, "", -1e9, 1e9, "w of Eq. 4"),
       real("drag_direction_z", 0, "", -1e9, 1e9, "w of Eq. 4"),
@@ -157,7 +97,9 @@ ControlKind::ControlKind() {
            "the objectives' curvature)"),
       boolean("one_sided", false, "forward differences (§2.1: biased, off in the paper)"),
       integer("search_every_frames", 1, 1, 100000, "re-determine the direction every k frames (§2.1)"),
-      boolean("steady_state", false, "§3.3: zero the velocities before evaluating objectives (else §3.2, dynamic)"),
+      boolean("steady_state", false,
+              "§3.3: freeze the shape before evaluating objectives: a rooted creature stops, a free one keeps "
+              "the rigid velocity with its momentum (relative joint velocities zeroed); else §3.2, dynamic"),
       boolean("rigidify_outboard", true, "§5: hold the bodies outboard of a perturbed joint rigid with it"),
       integer("threads", 1, 1, 16, "threads for the per-DOF evaluations (§5, Fig. 10); results do not depend on it"),
       integer("surface_slices", 12, 3, 256, "segments around round geoms in the wind's surface triangles"),
@@ -166,9 +108,10 @@ ControlKind::ControlKind() {
       integer("average_frames", 30, 1, 100000, "frames at the end over which final angles are averaged"),
   };
   metrics_ = {
-      {"final_angle_deg", "deg", "first controlled joint: mean angle over the last average_frames"},
-      {"final_angle_deg_2", "deg", "second controlled joint: mean angle over the last average_frames (NaN if none)"},
-      {"final_angle_deg_3", "deg", "third controlled joint: mean angle over the last average_frames (NaN if none)"},
+      {"final_angle_deg", "deg", "first controlled DOF (a ball: its rotation vector's x): mean angle over the last "
+                                 "average_frames"},
+      {"final_angle_deg_2", "deg", "second controlled DOF: mean angle over the last average_frames (NaN if none)"},
+      {"final_angle_deg_3", "deg", "third controlled DOF: mean angle over the last average_frames (NaN if none)"},
       {"max_contacts", "", "most contacts MuJoCo held at once over the run (e.g. arm against leg)"},
       {"converged_frame", "", "first frame from which every controlled angle stays within the tolerance of its final "
                               "mean (Fig. 2); frames + 1 if never"},
@@ -196,6 +139,10 @@ ControlKind::ControlKind() {
       {"final_drag_n", "N", "first controlled joint: mean |F_d| over its bodies over the last average_frames"},
       {"mean_speed_deg_per_s", "deg/s", "first controlled joint: mean angular velocity over the last average_frames"},
       {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
+      {"max_kinematic_error_rad", "rad", "largest |q - pattern(t)| of the kinematic joints at a frame's end over the run"},
+      {"max_pd_error_rad", "rad", "largest |q - pattern(t)| of the PD-driven joints at a frame's end over the run"},
+      {"load_line_angle_3d_deg", "deg", "angle between the mean line anchor->centre of mass of the first controlled "
+                                        "joint and the mean net external force over the last average_frames, in 3-D"},
       {"triangles", "", "wind surface triangles on moving bodies"},
   };
 }
@@ -210,8 +157,14 @@ std::string ControlKind::validate(const Params& params) const {
     const auto model = loadModel(r);
     const auto p = controllerParams(r);
     if (auto e = control::validate(p, model); !e.empty()) return e;
-    for (const auto& [joint, deg] : initialAngles(r))
-      if (model.findJoint(joint) < 0) return "initial_deg: joint '" + joint + "' is not in the model " + model.path();
+    for (const auto& pose : initialPoses(r)) {
+      const int id = model.findJoint(pose.joint);
+      if (id < 0) return "initial_deg: joint '" + pose.joint + "' is not in the model " + model.path();
+      const auto type = model.joint(id).type;
+      if (type == rigid::JointType::free) return "initial_deg: joint '" + pose.joint + "' is a free joint";
+      if ((type == rigid::JointType::ball) != (pose.deg.size() == 3))
+        return "initial_deg: joint '" + pose.joint + "' takes " + (type == rigid::JointType::ball ? "three numbers (a ball)" : "one angle");
+    }
     if (r.integer("average_frames") > r.integer("frames")) return "average_frames is larger than frames";
   } catch (const rigid::RigidError& e) {
     return std::string("model_file: ") + e.what();
@@ -225,7 +178,7 @@ CostEstimate ControlKind::estimateCost(const Params& params) const {
   try {
     ParamReader r(params);
     CostEstimate c;
-    const double evals = 2.0 * double(split(r.text("controlled"), ',').size()) + 1;
+    const double evals = 2.0 * double(splitList(r.text("controlled"), ',').size()) + 1;
     c.steps = double(r.integer("frames")) * double(r.integer("substeps")) * evals;
     c.memory_bytes = 64.0 * (1 << 20) + double(r.integer("frames")) * 2048;
     c.detail = std::to_string(r.integer("frames")) + " frames x " + std::to_string(int(evals)) + " frame evaluations";
@@ -242,20 +195,33 @@ Result ControlKind::run(const Params& params) const {
   const control::SimpleWind force(rigid::geomSurfaces(model, int(r.integer("surface_slices"))),
                                   r.real("density_kg_per_m3"), control::constantWind(wind(r)));
   control::Controller controller(model, p, force);
-  for (const auto& [joint, deg] : initialAngles(r)) controller.setAngle(joint, deg / kDeg);
+  for (const auto& pose : initialPoses(r)) {
+    if (pose.deg.size() == 3) controller.setRotation(pose.joint, {pose.deg[0] / kDeg, pose.deg[1] / kDeg, pose.deg[2] / kDeg});
+    else controller.setAngle(pose.joint, pose.deg[0] / kDeg);
+  }
 
   const int n = int(p.controlled.size());
+  const int nd = controller.controlledDofs();
+  // Per controlled DOF a name: the hinge's, or the ball's with _x, _y, _z (its rotation vector).
+  std::vector<std::string> dof_names;
+  for (const auto& j : p.controlled) {
+    if (model.joint(model.findJoint(j)).type != rigid::JointType::ball) dof_names.push_back(j);
+    else
+      for (const char* axis : {"_x", "_y", "_z"}) dof_names.push_back(j + axis);
+  }
   const long frames = r.integer("frames");
   Result result;
   auto& ts = result.timeseries;
   Series& time = ts["time_s"] = {{}, "s"};
   Series& residual = ts["servo_residual_rad"] = {{}, "rad"};
   std::vector<Series*> angle, target, objective, derivative, effort, torque, drag, drag_along;
+  for (const auto& d : dof_names) {
+    angle.push_back(&(ts["angle_deg_" + d] = {{}, "deg"}));
+    target.push_back(&(ts["target_deg_" + d] = {{}, "deg"}));
+    derivative.push_back(&(ts["derivative_per_rad_" + d] = {{}, "1/rad"}));
+  }
   for (const auto& j : p.controlled) {
-    angle.push_back(&(ts["angle_deg_" + j] = {{}, "deg"}));
-    target.push_back(&(ts["target_deg_" + j] = {{}, "deg"}));
     objective.push_back(&(ts["objective_" + j] = {{}, ""}));
-    derivative.push_back(&(ts["derivative_per_rad_" + j] = {{}, "1/rad"}));
     effort.push_back(&(ts["effort_n_m_s_" + j] = {{}, "N m s"}));
     torque.push_back(&(ts["torque_n_m_" + j] = {{}, "N m"}));
     drag.push_back(&(ts["drag_n_" + j] = {{}, "N"}));
@@ -306,6 +272,7 @@ Result ControlKind::run(const Params& params) const {
   Series& offset = ts["com_offset_m"] = {{}, "m"};
   Series& arm_length = ts["com_arm_m"] = {{}, "m"};
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> arm_x, arm_y, arm_z, net_x, net_y, net_z;
   auto recordLoad = [&]() {
     auto& d = controller.data();
     d.kinematics();
@@ -331,9 +298,15 @@ Result ControlKind::run(const Params& params) const {
     force_lean.values.push_back(nn > 0 ? std::atan2(side * net[0], std::abs(net[2])) * kDeg : nan);
     offset.values.push_back(off);
     arm_length.values.push_back(norm(arm));
+    arm_x.push_back(arm[0]);
+    arm_y.push_back(arm[1]);
+    arm_z.push_back(arm[2]);
+    net_x.push_back(net[0]);
+    net_y.push_back(net[1]);
+    net_z.push_back(net[2]);
   };
 
-  double max_residual = 0;
+  double max_residual = 0, max_kinematic = 0, max_pd = 0;
   int max_contacts = 0;
   try {
     for (long f = 0; f < frames; ++f) {
@@ -342,11 +315,15 @@ Result ControlKind::run(const Params& params) const {
       residual.values.push_back(fr.servo_residual_rad);
       max_residual = std::max(max_residual, fr.servo_residual_rad);
       max_contacts = std::max(max_contacts, controller.data().contacts());
+      max_kinematic = std::max(max_kinematic, fr.kinematic_error_rad);
+      max_pd = std::max(max_pd, fr.pd_error_rad);
+      for (int t = 0; t < nd; ++t) {
+        angle[t]->values.push_back(fr.angle_rad[t] * kDeg);
+        target[t]->values.push_back(fr.target_rad[t] * kDeg);
+        derivative[t]->values.push_back(fr.derivative[t]);
+      }
       for (int i = 0; i < n; ++i) {
-        angle[i]->values.push_back(fr.angle_rad[i] * kDeg);
-        target[i]->values.push_back(fr.target_rad[i] * kDeg);
         objective[i]->values.push_back(fr.objective[i]);
-        derivative[i]->values.push_back(fr.derivative[i]);
         effort[i]->values.push_back(fr.measures.effort_n_m_s[i]);
         torque[i]->values.push_back(fr.measures.torque_n_m[i]);
         drag[i]->values.push_back(fr.measures.drag_n[i]);
@@ -368,12 +345,12 @@ Result ControlKind::run(const Params& params) const {
     return sum;
   };
   std::vector<std::vector<double>> angles;
-  for (int i = 0; i < n; ++i) angles.push_back(angle[i]->values);
+  for (int t = 0; t < nd; ++t) angles.push_back(angle[t]->values);
 
   auto& m = result.metrics;
   m["final_angle_deg"] = {tailMean(angle[0]->values), "deg"};
-  m["final_angle_deg_2"] = {n > 1 ? tailMean(angle[1]->values) : nan, "deg"};
-  m["final_angle_deg_3"] = {n > 2 ? tailMean(angle[2]->values) : nan, "deg"};
+  m["final_angle_deg_2"] = {nd > 1 ? tailMean(angle[1]->values) : nan, "deg"};
+  m["final_angle_deg_3"] = {nd > 2 ? tailMean(angle[2]->values) : nan, "deg"};
   m["max_contacts"] = {double(max_contacts), ""};
   m["converged_frame"] = {convergedFrame(angles, r.real("convergence_tolerance_deg"), tail), ""};
   m["flow_angle_deg"] = {tailMean(flow.values), "deg"};
@@ -399,6 +376,11 @@ Result ControlKind::run(const Params& params) const {
   const auto& a0 = angle[0]->values;
   m["mean_speed_deg_per_s"] = {tail > 1 ? (a0.back() - a0[a0.size() - tail]) / ((tail - 1) * p.frame_s) : 0.0, "deg/s"};
   m["max_servo_residual_rad"] = {max_residual, "rad"};
+  m["max_kinematic_error_rad"] = {max_kinematic, "rad"};
+  m["max_pd_error_rad"] = {max_pd, "rad"};
+  // The 3-D angle between the mean carried arm and the mean net force (a ball joint's Fig. 4).
+  m["load_line_angle_3d_deg"] = {lineAngleDeg({tailMean(arm_x), tailMean(arm_y), tailMean(arm_z)},
+                                              {tailMean(net_x), tailMean(net_y), tailMean(net_z)}), "deg"};
   m["triangles"] = {double(force.triangles()), ""};
   return result;
 }

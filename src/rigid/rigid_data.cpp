@@ -55,6 +55,46 @@ void RigidData::kinematics() {
   mj_fwdVelocity(model_->raw(), data_.get());
 }
 
+void RigidData::freezeShape() {
+  const mjModel* m = model_->raw();
+  mjData* d = data_.get();
+  std::vector<int> root;  // DOFs of the free joints (6 each)
+  for (int j = 0; j < m->njnt; ++j)
+    if (m->jnt_type[j] == mjJNT_FREE)
+      for (int k = 0; k < 6; ++k) root.push_back(m->jnt_dofadr[j] + k);
+  if (root.empty()) {
+    mju_zero(d->qvel, m->nv);
+    return;
+  }
+  mj_fwdPosition(m, d);  // the mass matrix at this pose
+  const int nr = int(root.size());
+  std::vector<mjtNum> momentum(m->nv), full(std::size_t(m->nv) * m->nv), block(std::size_t(nr) * nr), v(nr);
+  mj_mulM(m, d, momentum.data(), d->qvel);
+  mj_fullM(m, full.data(), d->qM);
+  // Free trees are independent blocks of M, so one solve over all root DOFs is each tree's.
+  for (int r = 0; r < nr; ++r)
+    for (int c = 0; c < nr; ++c) block[std::size_t(r) * nr + c] = full[std::size_t(root[r]) * m->nv + root[c]];
+  std::vector<mjtNum> rhs(nr);
+  for (int r = 0; r < nr; ++r) rhs[r] = momentum[root[r]];
+  if (mju_cholFactor(block.data(), nr, mjMINVAL) < nr)
+    throw RigidError(model_->path() + ": the free bodies' mass matrix is singular (massless free body?)");
+  mju_cholSolve(v.data(), block.data(), rhs.data(), nr);
+  mju_zero(d->qvel, m->nv);
+  for (int r = 0; r < nr; ++r) d->qvel[root[r]] = v[r];
+}
+
+void RigidData::subtreeMomentum(int body, Vec3& linear, Vec3& angular) {
+  const mjModel* m = model_->raw();
+  mjData* d = data_.get();
+  mj_fwdPosition(m, d);
+  mj_fwdVelocity(m, d);
+  mj_subtreeVel(m, d);
+  for (int k = 0; k < 3; ++k) {
+    linear[k] = m->body_subtreemass[body] * d->subtree_linvel[3 * body + k];
+    angular[k] = d->subtree_angmom[3 * body + k];
+  }
+}
+
 void RigidData::step() { mj_step(model_->raw(), data_.get()); }
 
 void RigidData::actuatorForcesFor(const double* qacc, double* out) {

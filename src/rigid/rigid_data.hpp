@@ -51,6 +51,17 @@ class RigidData {
 
   // Stage: positions and velocities of bodies and geoms from qpos, qvel (no dynamics).
   void kinematics();
+  // Lentine et al. 2010 §3.3 (seeds/creature-control-lentine-2010.txt): the creature's shape
+  // frozen, i.e. every relative joint velocity set to zero, "treating the entire creature ... as a
+  // unified rigid body ... in a way that conserves both linear and angular momentum". A tree
+  // rooted to the world (no free joint) comes to rest; a tree with a free root keeps the rigid
+  // velocity v_R of its free joint that carries the same generalized momentum along the root's
+  // DOFs, M_RR v_R = (M qvel)_R, which is its total linear momentum and its angular momentum
+  // about the root (the root DOFs move every body of the tree rigidly). Positions are not changed.
+  void freezeShape();
+  // Momentum of `body` and everything outboard of it: linear (kg m/s) and angular about the
+  // subtree's centre of mass (kg m^2/s), world frame, at the current qpos, qvel.
+  void subtreeMomentum(int body, Vec3& linear, Vec3& angular);
   // One MuJoCo step (forward dynamics + semi-implicit Euler) with the applied forces as they are.
   void step();
   // Inverse dynamics: generalized forces that produce the accelerations `qacc` (size nv) at the

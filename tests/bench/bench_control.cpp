@@ -85,5 +85,47 @@ void BM_HumanFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_HumanFrame)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
+// The same human with walking legs (kinematic sine patterns) and PD-driven elbows, as
+// human_gravity.toml (c): the patterns' cost against BM_HumanFrame.
+void BM_HumanWalkingFrame(benchmark::State& state) {
+  auto model =
+      rigid::RigidModel::load(std::string(CREATURELAB_SOURCE_DIR) + "/experiments/control/models/humanoid_upper.xml");
+  ControllerParams p;
+  p.controlled = {"lower_back", "right_shoulder", "left_shoulder"};
+  p.kinematic = {"right_hip_y", "right_knee", "left_hip_y", "left_knee"};
+  auto sine = [](double mean, double amplitude, double phase) {
+    Pattern s;
+    s.kind = Pattern::Kind::sine;
+    s.mean_rad = mean;
+    s.amplitude_rad = amplitude;
+    s.frequency_hz = 1;
+    s.phase_rad = phase;
+    return s;
+  };
+  p.kinematic_patterns = {sine(0, 0.35, 0), sine(0.35, 0.35, 1.57), sine(0, 0.35, 3.14), sine(0.35, 0.35, 4.71)};
+  p.pd_driven = {"right_elbow", "left_elbow"};
+  p.pd_patterns = {sine(-0.35, 0.35, 1.57), sine(-0.35, 0.35, 4.71)};
+  p.objectives = {Objective::effort, Objective::effort, Objective::effort};
+  p.senses = {Sense::minimize, Sense::minimize, Sense::minimize};
+  p.weights = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+  p.substeps = 4;
+  model.setTimestep(p.frame_s / p.substeps);
+  runFrames(state, model, p, {0, 0, 0}, 12);
+}
+BENCHMARK(BM_HumanWalkingFrame)->Unit(benchmark::kMillisecond);
+
+// The block on a ball joint (block_ball.toml): three controlled DOFs, six evaluations a frame.
+void BM_BallBlockFrame(benchmark::State& state) {
+  auto model =
+      rigid::RigidModel::load(std::string(CREATURELAB_SOURCE_DIR) + "/experiments/control/models/block_ball.xml");
+  ControllerParams p;
+  p.controlled = {"ball"};
+  p.objectives = {Objective::effort};
+  p.senses = {Sense::minimize};
+  model.setTimestep(p.frame_s);
+  runFrames(state, model, p, {8.66, 5, 0}, 12);
+}
+BENCHMARK(BM_BallBlockFrame)->Unit(benchmark::kMicrosecond);
+
 }  // namespace
 }  // namespace creaturelab::control

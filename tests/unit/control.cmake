@@ -7,5 +7,6 @@ creaturelab_test(control_unit_test unit
     ${CMAKE_CURRENT_LIST_DIR}/rigid_model_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/control_wind_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/control_controller_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/control_joints_test.cpp
   LIBS cl_control
 )

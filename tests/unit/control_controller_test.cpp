@@ -140,6 +140,30 @@ TEST_F(ControllerTest, ThreadsDoNotChangeResults) {
   }
 }
 
+// §3.3 for a free creature: the steady-state drag of a creature drifting rigidly with the wind is
+// zero (its shape frozen, its momentum kept); zeroing every velocity, right for a creature rooted
+// in a stationary object, would stop it in the wind. With the fin also swinging, the frozen
+// creature still drifts (momentum kept), so its drag stays far below the stopped creature's.
+TEST_F(ControllerTest, SteadyStateOfAFreeCreatureKeepsItsDrift) {
+  const auto model = rigid::RigidModel::load(testing::writeText(file("free.xml"), testing::freeCreatureXml()));
+  const double U = 10;
+  const SimpleWind wind(rigid::geomSurfaces(model, 8), 1.2, constantWind({U, 0, 0}));
+  ControllerParams p = one(Objective::drag, Sense::minimize);
+  p.controlled = {"fin"};
+  p.steady_state = true;
+  Controller c(model, p, wind);
+  c.setAngle("fin", 0.5);
+  c.data().qvel()[0] = U;
+  EXPECT_LT(c.measureNow().drag_n[0], 1e-12);
+  c.data().qvel()[12] = 3.0;  // the fin swinging: relative velocity, zeroed with momentum kept
+  const double drifting = c.measureNow().drag_n[0];
+  c.data().qvel()[0] = 0;
+  c.data().qvel()[12] = 0;
+  const double stopped = c.measureNow().drag_n[0];
+  EXPECT_GT(stopped, 1.0);
+  EXPECT_LT(drifting, 0.05 * stopped);
+}
+
 TEST_F(ControllerTest, ValidationNamesWhatIsWrong) {
   const auto model = rigid::RigidModel::load(testing::writeText(file("chain.xml"), testing::chainXml(2)));
   ControllerParams p;

@@ -91,5 +91,44 @@ TEST_F(RigidTest, SurfacesAreClosedAndFaceOutwards) {
   }
 }
 
+// §3.3 for a free creature: freezing the shape zeroes every relative joint velocity and keeps the
+// total linear momentum and the angular momentum (mj_subtreeVel, computed apart from the mass
+// matrix the freeze solves with). Keeping the root's own velocity instead would not.
+TEST_F(RigidTest, FreezeShapeOfAFreeCreatureKeepsItsMomentum) {
+  const auto model = RigidModel::load(testing::writeText(file("free.xml"), testing::freeCreatureXml()));
+  ASSERT_EQ(model.dofs(), 6 + 1 + 1 + 3 + 1 + 1);
+  RigidData d(model);
+  const double qvel[] = {0.3, -0.2, 0.1, 0.4, -0.5, 0.2, 2.0, -1.5, 0.7, -0.9, 1.1, 0.8, -3.0};
+  std::copy(std::begin(qvel), std::end(qvel), d.qvel());
+  d.qpos()[7] = 0.4;  // shoulder
+  d.qpos()[8] = -0.3; // hip
+  d.kinematics();
+  const int torso = model.joint(model.findJoint("root")).body;
+  Vec3 p0, l0, p1, l1, p2, l2;
+  d.subtreeMomentum(torso, p0, l0);
+  const RigidState moving = d.save();
+  d.freezeShape();
+  for (int i = 6; i < model.dofs(); ++i) EXPECT_EQ(d.qvel()[i], 0.0) << "dof " << i;
+  d.subtreeMomentum(torso, p1, l1);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(p1[k], p0[k], 1e-12 * (1 + std::abs(p0[k]))) << "linear " << k;
+    EXPECT_NEAR(l1[k], l0[k], 1e-12 * (1 + std::abs(l0[k]))) << "angular " << k;
+  }
+  // The naive freeze (root velocity kept, joints zeroed) loses the joints' momentum.
+  d.restore(moving);
+  for (int i = 6; i < model.dofs(); ++i) d.qvel()[i] = 0;
+  d.subtreeMomentum(torso, p2, l2);
+  EXPECT_GT(std::abs(p2[0] - p0[0]) + std::abs(l2[0] - l0[0]), 0.1);
+}
+
+// A creature rooted in the world comes to rest (the block of Figs. 3, 6).
+TEST_F(RigidTest, FreezeShapeOfARootedCreatureStopsIt) {
+  const auto model = RigidModel::load(testing::writeText(file("chain.xml"), testing::chainXml(3)));
+  RigidData d(model);
+  for (int i = 0; i < model.dofs(); ++i) d.qvel()[i] = 0.5 + i;
+  d.freezeShape();
+  for (int i = 0; i < model.dofs(); ++i) EXPECT_EQ(d.qvel()[i], 0.0);
+}
+
 }  // namespace
 }  // namespace creaturelab::rigid

@@ -1,0 +1,155 @@
+#include "kinds/control_params.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace creaturelab::kinds {
+namespace {
+
+constexpr double kRad = std::numbers::pi / 180.0;
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  const auto e = s.find_last_not_of(" \t");
+  return b == std::string::npos ? "" : s.substr(b, e - b + 1);
+}
+
+double number(const std::string& text, const std::string& what) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(v))
+    throw std::invalid_argument(what + ": '" + text + "' is not a number");
+  return v;
+}
+
+std::vector<double> numbers(const std::string& text, const std::string& what) {
+  std::vector<double> out;
+  std::stringstream in(text);
+  std::string word;
+  while (in >> word) out.push_back(number(word, what));
+  return out;
+}
+
+// "joint = pattern; joint = pattern" for the joints of `joints`; the others hold.
+std::vector<control::Pattern> patternsFor(const std::string& text, const std::vector<std::string>& joints,
+                                          const std::string& key, const std::string& list_key) {
+  std::vector<control::Pattern> out(joints.size());
+  std::vector<char> given(joints.size(), 0);
+  for (const auto& item : splitList(text, ';')) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) throw std::invalid_argument(key + ": '" + item + "' is not joint = pattern");
+    const std::string joint = trim(item.substr(0, eq));
+    std::size_t k = 0;
+    while (k < joints.size() && joints[k] != joint) ++k;
+    if (k == joints.size()) throw std::invalid_argument(key + ": joint '" + joint + "' is not in " + list_key);
+    if (given[k]) throw std::invalid_argument(key + ": joint '" + joint + "' has two patterns");
+    given[k] = 1;
+    out[k] = parsePattern(trim(item.substr(eq + 1)), key + " (" + joint + ")");
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> splitList(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  if (trim(s).empty()) return out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, sep)) out.push_back(trim(item));
+  return out;
+}
+
+control::Pattern parsePattern(const std::string& text, const std::string& key) {
+  control::Pattern p;
+  if (text == "hold") return p;
+  const auto open = text.find('(');
+  const std::string kind = trim(text.substr(0, open));
+  if (open == std::string::npos || text.back() != ')' || (kind != "sine" && kind != "table"))
+    throw std::invalid_argument(key + ": '" + text +
+                                "' is not hold | sine(mean_deg, amplitude_deg, frequency_hz, phase_deg) | "
+                                "table(t_s angle_deg, ...)");
+  const std::string inside = text.substr(open + 1, text.size() - open - 2);
+  if (kind == "sine") {
+    std::vector<double> v;
+    for (const auto& x : splitList(inside, ',')) v.push_back(number(x, key));
+    if (v.size() != 4)
+      throw std::invalid_argument(key + ": sine takes 4 numbers (mean_deg, amplitude_deg, frequency_hz, phase_deg), got " +
+                                  std::to_string(v.size()));
+    p.kind = control::Pattern::Kind::sine;
+    p.mean_rad = v[0] * kRad;
+    p.amplitude_rad = v[1] * kRad;
+    p.frequency_hz = v[2];
+    p.phase_rad = v[3] * kRad;
+  } else {
+    p.kind = control::Pattern::Kind::table;
+    for (const auto& point : splitList(inside, ',')) {
+      const std::vector<double> v = numbers(point, key);
+      if (v.size() != 2)
+        throw std::invalid_argument(key + ": table point '" + point + "' is not 't_s angle_deg' (two numbers)");
+      p.time_s.push_back(v[0]);
+      p.angle_rad.push_back(v[1] * kRad);
+    }
+  }
+  if (auto e = control::validate(p); !e.empty()) throw std::invalid_argument(key + ": " + e);
+  return p;
+}
+
+control::ControllerParams controllerParams(const ParamReader& r) {
+  control::ControllerParams p;
+  p.controlled = splitList(r.text("controlled"), ',');
+  p.kinematic = splitList(r.text("kinematic"), ',');
+  p.kinematic_patterns = patternsFor(r.text("kinematic_pattern"), p.kinematic, "kinematic_pattern", "kinematic");
+  p.pd_driven = splitList(r.text("pd_driven"), ',');
+  p.pd_patterns = patternsFor(r.text("pd_pattern"), p.pd_driven, "pd_pattern", "pd_driven");
+  p.pd_kp_n_m_per_rad = r.real("pd_kp_n_m_per_rad");
+  p.pd_kd_n_m_s_per_rad = r.real("pd_kd_n_m_s_per_rad");
+  for (const auto& o : splitList(r.text("objectives"), ',')) {
+    if (o == "effort") p.objectives.push_back(control::Objective::effort);
+    else if (o == "drag") p.objectives.push_back(control::Objective::drag);
+    else if (o == "drag_along") p.objectives.push_back(control::Objective::drag_along);
+    else throw std::invalid_argument("objectives: '" + o + "' is not one of effort | drag | drag_along");
+  }
+  for (const auto& s : splitList(r.text("senses"), ',')) {
+    if (s == "min") p.senses.push_back(control::Sense::minimize);
+    else if (s == "max") p.senses.push_back(control::Sense::maximize);
+    else throw std::invalid_argument("senses: '" + s + "' is not min or max");
+  }
+  for (const auto& row : splitList(r.text("weights"), ';')) {
+    std::vector<double> w;
+    for (const auto& x : splitList(row, ',')) w.push_back(number(x, "weights"));
+    p.weights.push_back(w);
+  }
+  p.drag_direction = {r.real("drag_direction_x"), r.real("drag_direction_y"), r.real("drag_direction_z")};
+  p.frame_s = r.real("frame_s");
+  p.substeps = int(r.integer("substeps"));
+  p.strength_rad_per_s = r.real("strength_rad_per_s");
+  p.delta_rad = r.real("delta_rad");
+  p.one_sided = r.boolean("one_sided");
+  p.search_every_frames = int(r.integer("search_every_frames"));
+  p.steady_state = r.boolean("steady_state");
+  p.rigidify_outboard = r.boolean("rigidify_outboard");
+  p.threads = int(r.integer("threads"));
+  return p;
+}
+
+std::vector<InitialPose> initialPoses(const ParamReader& r) {
+  std::vector<InitialPose> out;
+  for (const auto& item : splitList(r.text("initial_deg"), ',')) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) throw std::invalid_argument("initial_deg: '" + item + "' is not joint=degrees");
+    InitialPose pose{trim(item.substr(0, eq)), numbers(item.substr(eq + 1), "initial_deg")};
+    if (pose.deg.size() != 1 && pose.deg.size() != 3)
+      throw std::invalid_argument("initial_deg: '" + item + "' needs one angle (hinge) or three (ball rotation vector)");
+    out.push_back(pose);
+  }
+  return out;
+}
+
+}  // namespace creaturelab::kinds
