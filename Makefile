@@ -33,9 +33,9 @@ test-asan: deps
 # last lines printed. The runs' exit code stands (4 when only drawing or the report failed).
 REPRO_OUT ?= results/runs/reproduce
 # The Hermite contraction curve (Rudolf & Mould §3.3) fitted to the staggered bell's diameter over
-# the cycles after its warm-up at 0.7 Hz (analysis/figures/catalog.py repeats this command).
+# the cycles after its warm-up at 0.6 Hz (analysis/figures/catalog.py repeats this command).
 FIT_SPLINE = fit spline
-FIT_SPLINE_ARGS = --point 0 --knots 4 --from 1.4285714285714286
+FIT_SPLINE_ARGS = --point 0 --knots 4 --from 1.6666666666666667
 define reproduce_in
 	@$(BUILD)/creaturelab reproduce --list $(1) --out $(2); status=$$?; \
 	  if [ -f $(2)/stagger/index.h5 ]; then rm -rf $(2)/fit_spline; \
