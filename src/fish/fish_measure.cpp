@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/Core>
+
 namespace creaturelab::fish {
 namespace {
 // The first frame at or after t_s (the last frame if none).
@@ -44,6 +46,30 @@ TurnMeasures measureTurn(const FishRecord& rec, const std::vector<ScheduleItem>&
     m.radius_m = turned > 0 ? m.path_m / turned : std::nan("");
     break;
   }
+  return m;
+}
+
+TravelTurn measureTravelTurn(const FishRecord& rec, const std::vector<ScheduleItem>& schedule, double window_s) {
+  TravelTurn m;
+  const ScheduleItem* item = nullptr;
+  for (const auto& it : schedule)
+    if (it.action != Action::swim) {
+      item = &it;
+      break;
+    }
+  const double end = rec.time_s.back();
+  if (!item || !(window_s > 0) || item->start_s < window_s || end - window_s < item->start_s + item->duration_s) return m;
+  auto travel = [&](double t0, double t1) {
+    const int a = frameAt(rec, t0), b = frameAt(rec, t1);
+    return Eigen::Vector2d(com(rec, b, 0) - com(rec, a, 0), com(rec, b, 1) - com(rec, a, 1));
+  };
+  const Eigen::Vector2d before = travel(item->start_s - window_s, item->start_s), after = travel(end - window_s, end);
+  m.found = true;
+  const double turned = std::atan2(before.x() * after.y() - before.y() * after.x(), before.dot(after));
+  m.heading_change_deg = turned * 180.0 / M_PI;
+  const int a = frameAt(rec, item->start_s), b = frameAt(rec, item->start_s + item->duration_s);
+  for (int f = a + 1; f <= b; ++f) m.path_m += std::hypot(com(rec, f, 0) - com(rec, f - 1, 0), com(rec, f, 1) - com(rec, f - 1, 1));
+  m.radius_m = turned != 0 ? m.path_m / std::fabs(turned) : std::nan("");
   return m;
 }
 

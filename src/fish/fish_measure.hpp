@@ -28,7 +28,19 @@ struct TurnMeasures {
   double radius_m = 0;            // path / |heading change in radians|
 };
 
+// A manoeuvre from a swimming start (how Tu's fish turn): the direction of travel of the centre of
+// mass, averaged over one window (a swim period) just before the first item that is not swim
+// (left, right or glide) and over the last window of the run, where the fish swims straight again.
+// A glide item in its place is the control: the heading the swim alone would have changed.
+struct TravelTurn {
+  bool found = false;               // a non-swim item with a full window before it and after it
+  double heading_change_deg = 0;    // signed angle from the first travel direction to the last (left > 0)
+  double path_m = 0;                // centre-of-mass path length over the item
+  double radius_m = 0;              // path / |heading change in radians|
+};
+
 SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double warmup_s);
 TurnMeasures measureTurn(const FishRecord& rec, const std::vector<ScheduleItem>& schedule);
+TravelTurn measureTravelTurn(const FishRecord& rec, const std::vector<ScheduleItem>& schedule, double window_s);
 
 }  // namespace creaturelab::fish

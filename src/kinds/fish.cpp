@@ -6,6 +6,7 @@
 
 #include "fish/export.hpp"
 #include "fish/fish_measure.hpp"
+#include "fish/fish_modes.hpp"
 #include "fish/fish_run.hpp"
 #include "fish/skin.hpp"
 
@@ -49,6 +50,8 @@ FishSetup setupOf(const ParamReader& r) {
   m.turn_amplitude = r.real("turn_amplitude");
   m.turn_rate = r.real("turn_rate");
   m.turn_relax_fraction = r.real("turn_relax_fraction");
+  m.stroke = r.text("muscle_stroke") == "antagonistic" ? fish::Stroke::antagonistic : fish::Stroke::contract;
+  m.mirror = r.boolean("mirror");
   const double speed = r.real("swim_desired_speed");
   if (speed > 0) {
     m.swim = fish::swimFromSpeed(speed, m.r_max);
@@ -196,6 +199,10 @@ FishKind::FishKind() {
       real("posterior_lag_rad", M_PI / 2, "rad", -100, 100, "phase lag of the posterior swim segment (spec §3 [choose]: pi/2)"),
       real("turn_amplitude", 0.7, "", 0, 1, "turn-MC amplitude alpha in (0, 1]"),
       real("turn_rate", 0.016, "", 0, 1, "turn-MC rate r in (0, r_max] of the contraction"),
+      choice("muscle_stroke", "contract", {"contract", "antagonistic"},
+             "swim-MC stroke: contract (each muscle between its rest length and alpha of the way to the contracted one; "
+             "ours) | antagonistic ([reimpl] FishData.cs: between l0 -+ alpha (l0 - lc), the partner opposite: twice the bend)"),
+      boolean("mirror", false, "swap left and right in every controller (the mirror image of the run; symmetry checks)"),
       real("turn_relax_fraction", 0.25, "", 0, 1, "turn-MC: relaxation rate / contraction rate (ours: a quick bend, a slow return)"),
       real("r_max", 0.075, "", 1e-9, 1, "the largest rate ([reimpl] 0.075)"),
       real("reference_step_s", 0.055, "s", 1e-9, 100, "the step the rates are defined per (the [reimpl] step)"),
@@ -234,6 +241,15 @@ FishKind::FishKind() {
       {"turn_path_m", "m", "centre-of-mass path over the first turn item"},
       {"turn_radius_m", "m", "turn_path_m / |heading change|"},
       {"turn_radius_body_lengths", "", "turn_radius_m / body length"},
+      {"travel_heading_change_deg", "deg",
+       "from a swimming start: change of the centre of mass's direction of travel, one swim period before the first non-swim item against the run's last swim period (left > 0)"},
+      {"travel_turn_path_m", "m", "centre-of-mass path over that item"},
+      {"travel_turn_radius_body_lengths", "", "travel_turn_path_m / |travel_heading_change| / body length"},
+      {"swim_period_s", "s", "the swim-MC's period (from alpha, r, the stroke and the reference step)"},
+      {"lowest_lateral_mode_hz", "Hz", "the undeformed body's lowest sideways bending mode in air (fish_modes.hpp)"},
+      {"stroke_frequency_over_mode", "", "1 / swim_period_s over lowest_lateral_mode_hz: above about 1 the body's inertia filters the gait"},
+      {"stride_body_lengths", "", "speed_body_lengths_per_s x swim_period_s: body lengths travelled per swim cycle"},
+      {"spring_limit_dt_s", "s", "2 / w_max of the body at rest: the symplectic-Euler limit of its stiffest mode"},
       {"momentum_drift_rel", "", "max |sum m v - sum m v(0)| / max sum m |v| over the run (conserved when water_mu = 0)"},
       {"blew_up", "", "1 if the run stopped at a blow-up (on_blowup = record)"},
       {"blowup_step", "", "the step that blew up, -1 if none"},
@@ -294,6 +310,10 @@ Result FishKind::run(const Params& p) const {
   Result result;
   result.metrics["fish_length_m"] = {L, "m"};
   result.metrics["mass_kg"] = {model.totalMassKg(), "kg"};
+  const fish::RestModes modes = fish::restModes(model);
+  result.metrics["lowest_lateral_mode_hz"] = {modes.lowest_lateral_hz, "Hz"};
+  result.metrics["spring_limit_dt_s"] = {2.0 / modes.highest_rad_per_s, "s"};
+  result.metrics["stroke_frequency_over_mode"] = {1.0 / fish::swimPeriodS(s.motor) / modes.lowest_lateral_hz, ""};
   for (const char* m : {"max_stable_dt_s"}) result.metrics[m] = {nan, "s"};
   for (const char* m : {"skin_rest_inward", "skin_inward_max", "skin_creases", "skin_worst_neighbour_cosine"})
     result.metrics[m] = {nan, ""};
@@ -365,6 +385,13 @@ Result FishKind::run(const Params& p) const {
   result.metrics["turn_path_m"] = {tu.found ? tu.path_m : nan, "m"};
   result.metrics["turn_radius_m"] = {tu.found ? tu.radius_m : nan, "m"};
   result.metrics["turn_radius_body_lengths"] = {tu.found ? tu.radius_m / L : nan, ""};
+  const double period = fish::swimPeriodS(s.motor);
+  const fish::TravelTurn tt = fish::measureTravelTurn(rec, s.schedule, period);
+  result.metrics["swim_period_s"] = {period, "s"};
+  result.metrics["stride_body_lengths"] = {sw.speed_body_lengths_per_s * period, ""};
+  result.metrics["travel_heading_change_deg"] = {tt.found ? tt.heading_change_deg : nan, "deg"};
+  result.metrics["travel_turn_path_m"] = {tt.found ? tt.path_m : nan, "m"};
+  result.metrics["travel_turn_radius_body_lengths"] = {tt.found ? tt.radius_m / L : nan, ""};
   result.metrics["momentum_drift_rel"] = {rec.momentum_drift_rel, ""};
   result.metrics["blew_up"] = {rec.blew_up ? 1.0 : 0.0, ""};
   result.metrics["blowup_step"] = {double(rec.blowup_step), ""};

@@ -190,6 +190,56 @@ TEST(FishSolver, LeftAndRightTurnsMirror) {
   EXPECT_LT(std::fabs(swim.com_m[3 * (swim.frames() - 1) + 2] - swim.com_m[2]), 1e-12);
 }
 
+// Similarity (why the spec's numbers, not our 2 m size, set the speed in body lengths per second):
+// (a) time: stiffness x k^2, damping x k, linear water mu x k, step and reference step / k, durations
+//     / k give the same positions at times / k, so the speed in body lengths per second scales as
+//     sqrt(c / m) at a fixed gait; (b) length: every length x lambda with the linear water mu /
+//     lambda^2 gives positions x lambda at the same times, so our 2 m fish in mu = 100 is the
+//     reimplementation's 26-unit fish in mu = 100 / 13^2: the size maps onto mu, nothing else.
+TEST(FishSolver, SimilarityInTimeAndLength) {
+  auto runLast = [](const FishGeometry& g, const UnitParams& u, const SolverParams& sp, const MotorParams& mp,
+                    const std::string& schedule) {
+    const FishModel f = buildFish(g, u);
+    const FishRecord r = runSchedule(f, sp, mp, parseSchedule(schedule), {});
+    EXPECT_FALSE(r.blew_up);
+    return std::vector<double>(r.nodes_m.end() - 3 * kNodes, r.nodes_m.end());
+  };
+  FishGeometry g;
+  UnitParams u;
+  SolverParams sp;
+  sp.dt_s = 0.02;
+  MotorParams mp;
+  mp.swim = {1.0, 0.01, 1.0, 0.01};
+  const auto base = runLast(g, u, sp, mp, "swim 6; left 3");
+  double scale = 0;
+  for (double v : base) scale = std::max(scale, std::fabs(v));
+  {  // (a) k = 3
+    const double k = 3;
+    UnitParams uk = u;
+    uk.stiffness_cross_n_per_m *= k * k, uk.stiffness_other_n_per_m *= k * k, uk.stiffness_muscle_n_per_m *= k * k;
+    uk.damping_ns_per_m *= k;
+    SolverParams sk = sp;
+    sk.dt_s /= k, sk.water.mu *= k;
+    MotorParams mk = mp;
+    mk.reference_step_s /= k;
+    const auto fast = runLast(g, uk, sk, mk, "swim 2; left 1");
+    double worst = 0;
+    for (size_t i = 0; i < base.size(); ++i) worst = std::max(worst, std::fabs(fast[i] - base[i]));
+    EXPECT_LT(worst, 1e-9 * scale);
+  }
+  {  // (b) lambda = 13: the reimplementation's 26-unit fish
+    const double lambda = 13;
+    FishGeometry gl = g;
+    gl.body_length_m *= lambda;
+    SolverParams sl = sp;
+    sl.water.mu /= lambda * lambda;
+    const auto big = runLast(gl, u, sl, mp, "swim 6; left 3");
+    double worst = 0;
+    for (size_t i = 0; i < base.size(); ++i) worst = std::max(worst, std::fabs(big[i] / lambda - base[i]));
+    EXPECT_LT(worst, 1e-9 * scale);
+  }
+}
+
 // Water force: none when the fish moves with the water; opposes a translation; linear in speed for
 // the linear law and quadratic for the quadratic one; pushing only (reversing v never flips a face's sign).
 TEST(WaterForce, Properties) {
