@@ -29,6 +29,7 @@ FishSetup setupOf(const ParamReader& r) {
   FishSetup s;
   s.geometry.body_length_m = r.real("body_length_m");
   s.units.mass_unit_kg = r.real("mass_unit_kg");
+  s.units.mass_units[6] = r.real("tail_mass_units");
   s.units.stiffness_cross_n_per_m = r.real("stiffness_cross_n_per_m");
   s.units.stiffness_other_n_per_m = r.real("stiffness_other_n_per_m");
   s.units.stiffness_muscle_n_per_m = r.real("stiffness_muscle_n_per_m");
@@ -173,6 +174,8 @@ FishKind::FishKind() {
       real("body_length_m", 2.0, "m", 1e-3, 1e3,
            "snout to tail (ours: with the [reimpl] masses, 107 kg, our shape then has about the density of water)"),
       real("mass_unit_kg", 1.1, "kg", 1e-9, 1e9, "mass unit m of the [reimpl] masses (snout 1, rings 6/10/6/1/1, tail 0.15 m)"),
+      real("tail_mass_units", 0.15, "", 1e-9, 1e9,
+           "mass of each tail-fin tip (nodes 21, 22) in units of mass_unit_kg ([reimpl] 0.15; the lightest nodes, they carry the body's stiffest vibration)"),
       real("stiffness_cross_n_per_m", 38.0, "N/m", 1e-9, 1e9, "cross units (spec §1 [reimpl])"),
       real("stiffness_other_n_per_m", 30.0, "N/m", 1e-9, 1e9, "other passive units (spec §1 [reimpl])"),
       real("stiffness_muscle_n_per_m", 28.0, "N/m", 1e-9, 1e9, "muscle units (spec §1 [reimpl])"),
@@ -234,6 +237,10 @@ FishKind::FishKind() {
       {"forward_distance_m", "m", "centre-of-mass displacement along the initial heading (+x) over the run"},
       {"lateral_drift_m", "m", "|sideways displacement| of the centre of mass over the run"},
       {"lateral_drift_fraction", "", "lateral_drift_m / forward_distance_m"},
+      {"settled_heading_change_deg", "deg",
+       "direction of travel over the first swim period after warmup_s against the last one (left > 0): curvature of the settled path"},
+      {"settled_lateral_drift_fraction", "",
+       "sideways displacement from warmup_s to the end, perpendicular to the travel direction of the first period after warmup_s, over the distance"},
       {"vertical_drift_m", "m", "|vertical displacement| of the centre of mass"},
       {"com_travel_m", "m", "|com(end) - com(0)|"},
       {"com_travel_body_lengths", "", "com_travel_m / body length"},
@@ -370,7 +377,8 @@ Result FishKind::run(const Params& p) const {
   muscles.points = fish::kMuscles;
   muscles.dim = 1;
 
-  const fish::SwimMeasures sw = fish::measureSwim(rec, L, r.real("warmup_s"));
+  const double period = fish::swimPeriodS(s.motor);
+  const fish::SwimMeasures sw = fish::measureSwim(rec, L, r.real("warmup_s"), period);
   const fish::TurnMeasures tu = fish::measureTurn(rec, s.schedule);
   result.metrics["steps"] = {double(rec.steps), ""};
   result.metrics["speed_body_lengths_per_s"] = {sw.speed_body_lengths_per_s, "1/s"};
@@ -379,13 +387,14 @@ Result FishKind::run(const Params& p) const {
   result.metrics["lateral_drift_m"] = {sw.lateral_drift_m, "m"};
   result.metrics["lateral_drift_fraction"] = {sw.lateral_drift_fraction, ""};
   result.metrics["vertical_drift_m"] = {sw.vertical_drift_m, "m"};
+  result.metrics["settled_heading_change_deg"] = {sw.settled_heading_change_deg, "deg"};
+  result.metrics["settled_lateral_drift_fraction"] = {sw.settled_lateral_drift_fraction, ""};
   result.metrics["com_travel_m"] = {sw.com_travel_m, "m"};
   result.metrics["com_travel_body_lengths"] = {sw.com_travel_m / L, ""};
   result.metrics["heading_change_deg"] = {tu.found ? tu.heading_change_deg : nan, "deg"};
   result.metrics["turn_path_m"] = {tu.found ? tu.path_m : nan, "m"};
   result.metrics["turn_radius_m"] = {tu.found ? tu.radius_m : nan, "m"};
   result.metrics["turn_radius_body_lengths"] = {tu.found ? tu.radius_m / L : nan, ""};
-  const double period = fish::swimPeriodS(s.motor);
   const fish::TravelTurn tt = fish::measureTravelTurn(rec, s.schedule, period);
   result.metrics["swim_period_s"] = {period, "s"};
   result.metrics["stride_body_lengths"] = {sw.speed_body_lengths_per_s * period, ""};
