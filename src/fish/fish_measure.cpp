@@ -15,7 +15,7 @@ int frameAt(const FishRecord& rec, double t_s) {
 double com(const FishRecord& rec, int f, int axis) { return rec.com_m[3 * f + axis]; }
 }  // namespace
 
-SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double warmup_s) {
+SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double warmup_s, double window_s) {
   SwimMeasures m;
   const int last = rec.frames() - 1, start = frameAt(rec, warmup_s);
   const double span = rec.time_s[last] - rec.time_s[start];
@@ -31,6 +31,19 @@ SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double war
                              std::pow(com(rec, last, 1) - com(rec, 0, 1), 2) +
                              std::pow(com(rec, last, 2) - com(rec, 0, 2), 2));
   m.vertical_drift_m = std::fabs(com(rec, last, 2) - com(rec, 0, 2));
+  const double end = rec.time_s[last];
+  if (window_s > 0 && warmup_s + window_s <= end - window_s) {
+    auto travel = [&](double t0, double t1) {
+      const int a = frameAt(rec, t0), b = frameAt(rec, t1);
+      return Eigen::Vector2d(com(rec, b, 0) - com(rec, a, 0), com(rec, b, 1) - com(rec, a, 1));
+    };
+    const Eigen::Vector2d first = travel(warmup_s, warmup_s + window_s), final = travel(end - window_s, end);
+    const Eigen::Vector2d settled = travel(warmup_s, end), dir = first.normalized();
+    m.settled_heading_change_deg =
+        std::atan2(first.x() * final.y() - first.y() * final.x(), first.dot(final)) * 180.0 / M_PI;
+    const double along = settled.dot(dir), side = dir.x() * settled.y() - dir.y() * settled.x();
+    m.settled_lateral_drift_fraction = along > 0 ? std::fabs(side) / along : std::nan("");
+  }
   return m;
 }
 

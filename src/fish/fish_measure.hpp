@@ -1,6 +1,7 @@
 #pragma once
 // What the experiments measure on a recorded run (fish_run.hpp): swimming speed and lateral drift,
 // the heading change and radius of a turn, the travel of the centre of mass.
+#include <cmath>
 #include <vector>
 
 #include "fish/fish_run.hpp"
@@ -19,6 +20,13 @@ struct SwimMeasures {
   double lateral_drift_fraction = 0;
   double com_travel_m = 0;         // |com(end) - com(0)|, all three axes
   double vertical_drift_m = 0;     // |z_com(end) - z_com(0)|: the body is mirror-symmetric top to bottom
+  // After the warm-up (a window of one swim period, given): the direction of travel over the first
+  // window after warmup_s against that over the last window of the run (signed, left > 0), and the
+  // sideways displacement from warmup_s to the end, perpendicular to that first direction, over the
+  // distance. The start from rest leaves the fish a heading of its own (the left side starts the
+  // wave); these measure whether it then swims straight.
+  double settled_heading_change_deg = std::nan("");
+  double settled_lateral_drift_fraction = std::nan("");
 };
 
 struct TurnMeasures {
@@ -39,7 +47,7 @@ struct TravelTurn {
   double radius_m = 0;              // path / |heading change in radians|
 };
 
-SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double warmup_s);
+SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double warmup_s, double window_s = 0);
 TurnMeasures measureTurn(const FishRecord& rec, const std::vector<ScheduleItem>& schedule);
 TravelTurn measureTravelTurn(const FishRecord& rec, const std::vector<ScheduleItem>& schedule, double window_s);
 
