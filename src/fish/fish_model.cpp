@@ -97,8 +97,15 @@ FishModel buildFish(const FishGeometry& g, const UnitParams& u) {
       add(ringNode(r, k + 1), ringNode(r + 1, k), UnitClass::cross);
     }
   }
-  for (int k = 0; k < 4; ++k)  // 8
-    for (int tip : {kDorsalTip, kVentralTip}) add(ringNode(4, k), tip, UnitClass::other);
+  // 8: each ring-5 node to both tips. The units that run diagonally across a tail face (an upper
+  // node to the ventral tip, a lower one to the dorsal tip) are cross units, as in the
+  // reimplementation's FishData.cs InitSprings (17-22, 18-22, 19-21, 20-21 Cross); the others are
+  // the faces' edges.
+  for (int k = 0; k < 4; ++k) {
+    const bool upper = k == 0 || k == 3;
+    for (int tip : {kDorsalTip, kVentralTip})
+      add(ringNode(4, k), tip, upper == (tip == kVentralTip) ? UnitClass::cross : UnitClass::other);
+  }
   add(kDorsalTip, kVentralTip, UnitClass::other);  // 1
 
   // Faces: side k of a segment lies between ring nodes k and k+1 (0 left, 1 bottom, 2 right, 3 top).
