@@ -80,13 +80,16 @@ def trajectories(points, axes, out):
 
 
 def speed(points, out):
-    rows = [(float(attr(f, "swim_amplitude")), float(attr(f, "swim_rate")), metric(f, "speed_body_lengths_per_s"),
+    def line(f):  # one line per amplitude and, when swept, per node shape
+        shape = text(attr(f, "shape", "ours"))
+        return f"alpha = {float(attr(f, 'swim_amplitude')):g}" + ("" if shape == "ours" else f", {shape} shape")
+    rows = [(line(f), float(attr(f, "swim_rate")), metric(f, "speed_body_lengths_per_s"),
              metric(f, "stride_body_lengths"), metric(f, "stroke_frequency_over_mode")) for f in points]
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4))
-    for a in sorted({r[0] for r in rows}):
-        pts = sorted(r[1:] for r in rows if r[0] == a)
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"alpha = {a:g}")
-        ax2.loglog([p[3] for p in pts], [p[2] for p in pts], "o-", label=f"alpha = {a:g}")
+    for name in sorted({r[0] for r in rows}):
+        pts = sorted(r[1:] for r in rows if r[0] == name)
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=name)
+        ax2.loglog([p[3] for p in pts], [p[2] for p in pts], "o-", label=name)
     ax.set_xlabel("swim-MC rate r (rest-length fraction per 0.055 s)")
     ax.set_ylabel("speed (body lengths / s)")
     ax.legend()

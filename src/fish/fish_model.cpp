@@ -38,6 +38,16 @@ std::string validate(const FishGeometry& g, const UnitParams& u) {
   return "";
 }
 
+FishGeometry reimplementationGeometry() {
+  FishGeometry g;
+  constexpr double L = 26;
+  g.ring_station = {5 / L, 10 / L, 15 / L, 20 / L, 22 / L};
+  g.ring_half_width = {2 / L, 3 / L, 2 / L, 1 / L, 0.8 / L};
+  g.ring_half_height = g.ring_half_width;
+  g.tail_half_height = 3 / L;
+  return g;
+}
+
 FaceFrame faceNormal(const NodeMatrix& x, const Face& f) {
   const Eigen::Vector3d d02 = (x.row(f.node[2]) - x.row(f.node[0])).transpose();
   const Eigen::Vector3d d13 = (x.row(f.node[3]) - x.row(f.node[1])).transpose();

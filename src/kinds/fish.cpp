@@ -27,6 +27,7 @@ struct FishSetup {
 // Throws std::invalid_argument naming the key for what the per-key ranges cannot catch.
 FishSetup setupOf(const ParamReader& r) {
   FishSetup s;
+  if (r.text("shape") == "reimplementation") s.geometry = fish::reimplementationGeometry();
   s.geometry.body_length_m = r.real("body_length_m");
   s.units.mass_unit_kg = r.real("mass_unit_kg");
   s.units.mass_units[6] = r.real("tail_mass_units");
@@ -171,6 +172,8 @@ FishKind::FishKind() {
               "fish simulated (independent; fish k swims at amplitude x (1 - 0.05 (k mod 5))); the first is recorded, the rest counted"),
       text("schedule", "swim 30", "",
            "controller schedule, \"NAME SECONDS; ...\" with NAME swim | left | right | glide (spec §3)"),
+      choice("shape", "ours", {"ours", "reimplementation"},
+             "node coordinates: ours (fish_model.hpp: fusiform, laterally compressed) | reimplementation (FishData.cs InitNodes, scaled to body_length_m)"),
       real("body_length_m", 2.0, "m", 1e-3, 1e3,
            "snout to tail (ours: with the [reimpl] masses, 107 kg, our shape then has about the density of water)"),
       real("mass_unit_kg", 1.1, "kg", 1e-9, 1e9, "mass unit m of the [reimpl] masses (snout 1, rings 6/10/6/1/1, tail 0.15 m)"),

@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "fish/fish_modes.hpp"
 #include "fish/fish_run.hpp"
 #include "fish/fish_solver.hpp"
 
@@ -238,6 +239,25 @@ TEST(FishSolver, SimilarityInTimeAndLength) {
     for (size_t i = 0; i < base.size(); ++i) worst = std::max(worst, std::fabs(big[i] / lambda - base[i]));
     EXPECT_LT(worst, 1e-9 * scale);
   }
+}
+
+// The rest modes: six rigid-body modes skipped; frequencies independent of the size, doubled by four
+// times the stiffness; the reimplementation's shape has its own, similar lowest sideways mode.
+TEST(FishModes, ScaleAsTheSpringMassSystem) {
+  const RestModes base = restModes(defaultFish());
+  EXPECT_GT(base.lowest_lateral_hz, 0.05);
+  EXPECT_LT(base.lowest_lateral_hz, 1.0);
+  EXPECT_GT(base.highest_rad_per_s, 2 * M_PI * base.lowest_lateral_hz);
+  FishGeometry big;
+  big.body_length_m = 26;
+  UnitParams stiff;
+  stiff.stiffness_cross_n_per_m *= 4, stiff.stiffness_other_n_per_m *= 4, stiff.stiffness_muscle_n_per_m *= 4;
+  EXPECT_NEAR(restModes(buildFish(big, {})).lowest_lateral_hz, base.lowest_lateral_hz, 1e-9 * base.lowest_lateral_hz);
+  EXPECT_NEAR(restModes(buildFish({}, stiff)).lowest_lateral_hz, 2 * base.lowest_lateral_hz, 1e-9 * base.lowest_lateral_hz);
+  EXPECT_NEAR(restModes(buildFish({}, stiff)).highest_rad_per_s, 2 * base.highest_rad_per_s, 1e-9 * base.highest_rad_per_s);
+  const RestModes theirs = restModes(buildFish(reimplementationGeometry(), {}));
+  EXPECT_GT(theirs.lowest_lateral_hz, 0.5 * base.lowest_lateral_hz);
+  EXPECT_LT(theirs.lowest_lateral_hz, 2.0 * base.lowest_lateral_hz);
 }
 
 // Water force: none when the fish moves with the water; opposes a translation; linear in speed for
