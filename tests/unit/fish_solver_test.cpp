@@ -196,7 +196,8 @@ TEST(FishSolver, LeftAndRightTurnsMirror) {
 //     / k give the same positions at times / k, so the speed in body lengths per second scales as
 //     sqrt(c / m) at a fixed gait; (b) length: every length x lambda with the linear water mu /
 //     lambda^2 gives positions x lambda at the same times, so our 2 m fish in mu = 100 is the
-//     reimplementation's 26-unit fish in mu = 100 / 13^2: the size maps onto mu, nothing else.
+//     reimplementation's 26-unit fish in mu = 100 / 13^2: the size maps onto mu, nothing else;
+//     (c) with the quadratic law mu / lambda^3.
 TEST(FishSolver, SimilarityInTimeAndLength) {
   auto runLast = [](const FishGeometry& g, const UnitParams& u, const SolverParams& sp, const MotorParams& mp,
                     const std::string& schedule) {
@@ -238,6 +239,21 @@ TEST(FishSolver, SimilarityInTimeAndLength) {
     double worst = 0;
     for (size_t i = 0; i < base.size(); ++i) worst = std::max(worst, std::fabs(big[i] / lambda - base[i]));
     EXPECT_LT(worst, 1e-9 * scale);
+  }
+  {  // (c) the quadratic law: mu / lambda^3 (the reimplementation's mu = 1 on 26 units is 2197 on 2 m)
+    const double lambda = 13;
+    SolverParams sq = sp;
+    sq.water.law = WaterLaw::quadratic;
+    sq.water.mu = 2197;
+    const auto small = runLast(g, u, sq, mp, "swim 6; left 3");
+    FishGeometry gl = g;
+    gl.body_length_m *= lambda;
+    sq.water.mu = 1;
+    const auto big = runLast(gl, u, sq, mp, "swim 6; left 3");
+    double worst = 0, size = 0;
+    for (size_t i = 0; i < small.size(); ++i)
+      worst = std::max(worst, std::fabs(big[i] / lambda - small[i])), size = std::max(size, std::fabs(small[i]));
+    EXPECT_LT(worst, 1e-9 * size);
   }
 }
 
