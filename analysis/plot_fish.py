@@ -108,7 +108,7 @@ def stability(points, axes, out):
     dts = [metric(f, "max_stable_dt_s") for f in points]
     limit = [metric(f, "spring_limit_dt_s") for f in points]
     schemes = sorted({text(attr(f, "scheme")) for f in points})
-    colors = dict(zip(schemes, ["#c54", "#4a7", "#58c"]))
+    colors = dict(zip(schemes, ["#c54", "#4a7", "#58c", "#a6c"]))
     groups = sorted(set(names), key=names.index)
     fig, ax = plt.subplots(figsize=(max(6, 1.6 * len(groups)), 4.5))
     width = 0.8 / max(1, len(schemes))

@@ -39,6 +39,7 @@ FishSetup setupOf(const ParamReader& r) {
   const std::string scheme = r.text("scheme");
   s.solver.scheme = scheme == "explicit_euler"     ? fish::Scheme::explicit_euler
                     : scheme == "symplectic_euler" ? fish::Scheme::symplectic_euler
+                    : scheme == "tangent_implicit" ? fish::Scheme::tangent_implicit
                                                    : fish::Scheme::semi_implicit;
   s.solver.water.mu = r.real("water_mu");
   s.solver.water.law = r.text("water_law") == "quadratic" ? fish::WaterLaw::quadratic : fish::WaterLaw::linear;
@@ -193,8 +194,8 @@ FishKind::FishKind() {
       real("current_y_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, y"),
       real("current_z_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, z"),
       real("dt_s", 0.055, "s", 1e-9, 100, "time step ([reimpl] 0.055 s, spec §2)"),
-      choice("scheme", "semi_implicit", {"semi_implicit", "explicit_euler", "symplectic_euler"},
-             "time integrator (spec §2: semi-implicit Euler; the explicit ones for the stability comparison)"),
+      choice("scheme", "semi_implicit", {"semi_implicit", "explicit_euler", "symplectic_euler", "tangent_implicit"},
+             "time integrator (spec §2: semi-implicit Euler; the explicit ones and tangent_implicit, a linearly implicit step in the units' full tangent, not the spec's, for the stability comparison)"),
       real("blowup_strain", 2.0, "", 1e-3, 1e3,
            "a unit longer than (1 + this) or shorter than 1/(1 + this) times its undeformed length counts as a blow-up"),
       real("swim_amplitude", 0.7, "", 0, 1, "swim-MC amplitude alpha in (0, 1]: the fraction of full contraction reached (spec §3)"),

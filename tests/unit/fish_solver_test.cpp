@@ -276,6 +276,43 @@ TEST(FishModes, ScaleAsTheSpringMassSystem) {
   EXPECT_LT(theirs.lowest_lateral_hz, 2.0 * base.lowest_lateral_hz);
 }
 
+// The tangent step (not the spec's; stability comparison): in air it conserves sum m v (its
+// matrix's block columns sum to zero), and at a small step it follows the spec's step to O(dt^2)
+// per step (both are first-order Euler steps of the same equations).
+TEST(FishSolver, TangentStepConservesMomentumAndFollowsTheSpecStep) {
+  const FishModel f = defaultFish();
+  FishState s0 = restState(f);
+  for (int k = 0; k < kNodes; ++k) s0.v_m_per_s.row(k) << 0.3, 0.1 * f.rest_positions_m(k, 2), -0.05 * f.rest_positions_m(k, 1);
+  for (int e = 0; e < kUnits; ++e) s0.rest_m[e] *= 0.9 + 0.02 * (e % 7);
+  SolverParams p;
+  p.water.mu = 0;
+  p.scheme = Scheme::tangent_implicit;
+  FishState s = s0;
+  FishSolver tangent(f, p);
+  auto momentum = [&](const FishState& st) {
+    Eigen::RowVector3d q = Eigen::RowVector3d::Zero();
+    for (int k = 0; k < kNodes; ++k) q += f.network.mass_kg[k] * st.v_m_per_s.row(k);
+    return q;
+  };
+  for (int n = 0; n < 50; ++n) ASSERT_EQ(tangent.step(s).status, StepStatus::ok) << n;
+  EXPECT_LT((momentum(s) - momentum(s0)).norm(), 1e-12 * momentum(s0).norm());
+  double diff[2];
+  for (int k = 0; k < 2; ++k) {
+    SolverParams q = p;
+    q.water.mu = 100;
+    q.dt_s = k == 0 ? 2e-4 : 1e-4;
+    FishState a = s0, b = s0;
+    FishSolver ta(f, q);
+    q.scheme = Scheme::semi_implicit;
+    FishSolver sa(f, q);
+    ASSERT_EQ(ta.step(a).status, StepStatus::ok);
+    ASSERT_EQ(sa.step(b).status, StepStatus::ok);
+    diff[k] = (a.v_m_per_s - b.v_m_per_s).norm();
+  }
+  EXPECT_GT(diff[0], 0);
+  EXPECT_NEAR(diff[0] / diff[1], 4.0, 0.2);  // the difference is O(dt^2)
+}
+
 // Water force: none when the fish moves with the water; opposes a translation; linear in speed for
 // the linear law and quadratic for the quadratic one; pushing only (reversing v never flips a face's sign).
 TEST(WaterForce, Properties) {
