@@ -13,6 +13,15 @@ int frameAt(const FishRecord& rec, double t_s) {
   return rec.frames() - 1;
 }
 double com(const FishRecord& rec, int f, int axis) { return rec.com_m[3 * f + axis]; }
+// Horizontal centre-of-mass displacement from t0_s to t1_s.
+Eigen::Vector2d travel(const FishRecord& rec, double t0_s, double t1_s) {
+  const int a = frameAt(rec, t0_s), b = frameAt(rec, t1_s);
+  return {com(rec, b, 0) - com(rec, a, 0), com(rec, b, 1) - com(rec, a, 1)};
+}
+// Signed angle from direction a to direction b (left, counter-clockwise, > 0), radians.
+double turnedRad(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+}
 }  // namespace
 
 SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double warmup_s, double window_s) {
@@ -33,14 +42,9 @@ SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double war
   m.vertical_drift_m = std::fabs(com(rec, last, 2) - com(rec, 0, 2));
   const double end = rec.time_s[last];
   if (window_s > 0 && warmup_s + window_s <= end - window_s) {
-    auto travel = [&](double t0, double t1) {
-      const int a = frameAt(rec, t0), b = frameAt(rec, t1);
-      return Eigen::Vector2d(com(rec, b, 0) - com(rec, a, 0), com(rec, b, 1) - com(rec, a, 1));
-    };
-    const Eigen::Vector2d first = travel(warmup_s, warmup_s + window_s), final = travel(end - window_s, end);
-    const Eigen::Vector2d settled = travel(warmup_s, end), dir = first.normalized();
-    m.settled_heading_change_deg =
-        std::atan2(first.x() * final.y() - first.y() * final.x(), first.dot(final)) * 180.0 / M_PI;
+    const Eigen::Vector2d first = travel(rec, warmup_s, warmup_s + window_s), final = travel(rec, end - window_s, end);
+    const Eigen::Vector2d settled = travel(rec, warmup_s, end), dir = first.normalized();
+    m.settled_heading_change_deg = turnedRad(first, final) * 180.0 / M_PI;
     const double along = settled.dot(dir), side = dir.x() * settled.y() - dir.y() * settled.x();
     m.settled_lateral_drift_fraction = along > 0 ? std::fabs(side) / along : std::nan("");
   }
@@ -72,13 +76,9 @@ TravelTurn measureTravelTurn(const FishRecord& rec, const std::vector<ScheduleIt
     }
   const double end = rec.time_s.back();
   if (!item || !(window_s > 0) || item->start_s < window_s || end - window_s < item->start_s + item->duration_s) return m;
-  auto travel = [&](double t0, double t1) {
-    const int a = frameAt(rec, t0), b = frameAt(rec, t1);
-    return Eigen::Vector2d(com(rec, b, 0) - com(rec, a, 0), com(rec, b, 1) - com(rec, a, 1));
-  };
-  const Eigen::Vector2d before = travel(item->start_s - window_s, item->start_s), after = travel(end - window_s, end);
+  const Eigen::Vector2d before = travel(rec, item->start_s - window_s, item->start_s), after = travel(rec, end - window_s, end);
   m.found = true;
-  const double turned = std::atan2(before.x() * after.y() - before.y() * after.x(), before.dot(after));
+  const double turned = turnedRad(before, after);
   m.heading_change_deg = turned * 180.0 / M_PI;
   const int a = frameAt(rec, item->start_s), b = frameAt(rec, item->start_s + item->duration_s);
   for (int f = a + 1; f <= b; ++f) m.path_m += std::hypot(com(rec, f, 0) - com(rec, f - 1, 0), com(rec, f, 1) - com(rec, f - 1, 1));
