@@ -79,10 +79,9 @@ def trajectories(points, axes, out):
     plt.close(fig)
 
 
-def speed(points, out):
-    def line(f):  # one line per amplitude and, when swept, per node shape
-        shape = text(attr(f, "shape", "ours"))
-        return f"alpha = {float(attr(f, 'swim_amplitude')):g}" + ("" if shape == "ours" else f", {shape} shape")
+def speed(points, axes, out):
+    def line(f):  # one line per value of every swept parameter but the rate (or the amplitude)
+        return label(f, [a for a in axes if a != "swim_rate"]) or f"alpha = {float(attr(f, 'swim_amplitude')):g}"
     rows = [(line(f), float(attr(f, "swim_rate")), metric(f, "speed_body_lengths_per_s"),
              metric(f, "stride_body_lengths"), metric(f, "stroke_frequency_over_mode")) for f in points]
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4))
@@ -261,7 +260,7 @@ def main():
         school(points, out)
         return
     if "swim_rate" in axes:
-        speed(points, out)
+        speed(points, axes, out)
     if float(attr(points[0], "water_mu", 1.0)) == 0.0:
         air(points, axes, out)
     for f in points:
