@@ -8,8 +8,10 @@ Writes to RUN_DIR/figures/ (or --out), each when the run has what it needs:
   trajectories.png  top view of the centre of mass of every point (swim and turn sweeps), the
                     fish's outline (its 23 nodes) at the end of each.
   speed.png         speed in body lengths per second against the swim-MC rate, one line per
-                    amplitude (swim.toml).
-  stability.png     the largest stable step per scheme (stability.toml).
+                    amplitude, and the stride against the gait frequency over the body's lowest
+                    sideways mode (swim.toml, swim_rate.toml).
+  stability.png     the largest stable step per scheme and per water / tail-mass switch, with the
+                    stiffest vibration's 2 / w_max (stability.toml).
   school.png        fish-steps per second and the school's real-time factor against its size
                     (school.toml; wall time from the point files' wall_time_s attribute).
   air.png           sum m v and the centre of mass against time, and the blow-up step (air.toml).
@@ -77,32 +79,55 @@ def trajectories(points, axes, out):
     plt.close(fig)
 
 
-def speed(points, out):
-    rows = [(float(attr(f, "swim_amplitude")), float(attr(f, "swim_rate")), metric(f, "speed_body_lengths_per_s"))
-            for f in points]
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for a in sorted({r[0] for r in rows}):
-        pts = sorted((r[1], r[2]) for r in rows if r[0] == a)
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=f"alpha = {a:g}")
+def speed(points, axes, out):
+    def line(f):  # one line per value of every swept parameter but the rate (or the amplitude)
+        return label(f, [a for a in axes if a != "swim_rate"]) or f"alpha = {float(attr(f, 'swim_amplitude')):g}"
+    rows = [(line(f), float(attr(f, "swim_rate")), metric(f, "speed_body_lengths_per_s"),
+             metric(f, "stride_body_lengths"), metric(f, "stroke_frequency_over_mode")) for f in points]
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(11, 4))
+    for name in sorted({r[0] for r in rows}):
+        pts = sorted(r[1:] for r in rows if r[0] == name)
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o-", label=name)
+        ax2.loglog([p[3] for p in pts], [p[2] for p in pts], "o-", label=name)
     ax.set_xlabel("swim-MC rate r (rest-length fraction per 0.055 s)")
     ax.set_ylabel("speed (body lengths / s)")
     ax.legend()
     ax.set_title("swim-MC: speed against amplitude and rate")
+    ax2.axvline(1.0, color="grey", lw=0.8)
+    ax2.set_xlabel("gait frequency / body's lowest sideways mode")
+    ax2.set_ylabel("stride (body lengths per swim cycle)")
+    ax2.set_title("the body's inertia filters gaits faster than its modes", fontsize=9)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "speed.png"), dpi=130)
     plt.close(fig)
 
 
-def stability(points, out):
-    names = [text(attr(f, "scheme")) for f in points]
+def stability(points, axes, out):
+    names = [label(f, [a for a in axes if a != "scheme"]) for f in points]
     dts = [metric(f, "max_stable_dt_s") for f in points]
-    fig, ax = plt.subplots(figsize=(6, 4))
-    ax.bar(names, dts, color=["#4a7", "#c54", "#58c"][: len(names)])
+    limit = [metric(f, "spring_limit_dt_s") for f in points]
+    schemes = sorted({text(attr(f, "scheme")) for f in points})
+    colors = dict(zip(schemes, ["#c54", "#4a7", "#58c", "#a6c"]))
+    groups = sorted(set(names), key=names.index)
+    fig, ax = plt.subplots(figsize=(max(6, 1.6 * len(groups)), 4.5))
+    width = 0.8 / max(1, len(schemes))
+    for k, sc in enumerate(schemes):
+        for f, n, v in zip(points, names, dts):
+            if text(attr(f, "scheme")) != sc:
+                continue
+            x = groups.index(n) + (k - (len(schemes) - 1) / 2) * width
+            ax.bar(x, v, width, color=colors[sc], label=sc if n == groups[0] else None)
+            ax.text(x, v, f"{v:.3g}", ha="center", va="bottom", fontsize=6)
+    for g in groups:
+        lim = limit[names.index(g)]
+        i = groups.index(g)
+        ax.plot([i - 0.45, i + 0.45], [lim, lim], "k--", lw=0.8, label="2 / w_max" if i == 0 else None)
+    ax.set_xticks(range(len(groups)))
+    ax.set_xticklabels([g or "-" for g in groups], fontsize=7, rotation=15)
     ax.set_yscale("log")
-    for k, v in enumerate(dts):
-        ax.text(k, v, f"{v:.3g} s", ha="center", va="bottom")
     ax.set_ylabel("largest stable step (s)")
-    ax.set_title("same fish, same swim: largest stable step per scheme")
+    ax.set_title("largest stable step per scheme; dashed: the stiffest vibration's 2 / w_max", fontsize=9)
+    ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "stability.png"), dpi=130)
     plt.close(fig)
@@ -227,15 +252,15 @@ def main():
         raise SystemExit("no point files in " + args.run)
     task = text(attr(points[0], "task", "simulate"))
     if task == "stable_step":
-        stability(points, out)
+        stability(points, axes, out)
         return
     if all("lagrangian/nodes_m" in f for f in points):
         trajectories(points, axes, out)
     if "school_size" in axes:
         school(points, out)
         return
-    if "swim_amplitude" in axes and "swim_rate" in axes:
-        speed(points, out)
+    if "swim_rate" in axes:
+        speed(points, axes, out)
     if float(attr(points[0], "water_mu", 1.0)) == 0.0:
         air(points, axes, out)
     for f in points:

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/Core>
+
 namespace creaturelab::fish {
 namespace {
 // The first frame at or after t_s (the last frame if none).
@@ -11,9 +13,18 @@ int frameAt(const FishRecord& rec, double t_s) {
   return rec.frames() - 1;
 }
 double com(const FishRecord& rec, int f, int axis) { return rec.com_m[3 * f + axis]; }
+// Horizontal centre-of-mass displacement from t0_s to t1_s.
+Eigen::Vector2d travel(const FishRecord& rec, double t0_s, double t1_s) {
+  const int a = frameAt(rec, t0_s), b = frameAt(rec, t1_s);
+  return {com(rec, b, 0) - com(rec, a, 0), com(rec, b, 1) - com(rec, a, 1)};
+}
+// Signed angle from direction a to direction b (left, counter-clockwise, > 0), radians.
+double turnedRad(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+}
 }  // namespace
 
-SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double warmup_s) {
+SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double warmup_s, double window_s) {
   SwimMeasures m;
   const int last = rec.frames() - 1, start = frameAt(rec, warmup_s);
   const double span = rec.time_s[last] - rec.time_s[start];
@@ -29,6 +40,14 @@ SwimMeasures measureSwim(const FishRecord& rec, double body_length_m, double war
                              std::pow(com(rec, last, 1) - com(rec, 0, 1), 2) +
                              std::pow(com(rec, last, 2) - com(rec, 0, 2), 2));
   m.vertical_drift_m = std::fabs(com(rec, last, 2) - com(rec, 0, 2));
+  const double end = rec.time_s[last];
+  if (window_s > 0 && warmup_s + window_s <= end - window_s) {
+    const Eigen::Vector2d first = travel(rec, warmup_s, warmup_s + window_s), final = travel(rec, end - window_s, end);
+    const Eigen::Vector2d settled = travel(rec, warmup_s, end), dir = first.normalized();
+    m.settled_heading_change_deg = turnedRad(first, final) * 180.0 / M_PI;
+    const double along = settled.dot(dir), side = dir.x() * settled.y() - dir.y() * settled.x();
+    m.settled_lateral_drift_fraction = along > 0 ? std::fabs(side) / along : std::nan("");
+  }
   return m;
 }
 
@@ -44,6 +63,26 @@ TurnMeasures measureTurn(const FishRecord& rec, const std::vector<ScheduleItem>&
     m.radius_m = turned > 0 ? m.path_m / turned : std::nan("");
     break;
   }
+  return m;
+}
+
+TravelTurn measureTravelTurn(const FishRecord& rec, const std::vector<ScheduleItem>& schedule, double window_s) {
+  TravelTurn m;
+  const ScheduleItem* item = nullptr;
+  for (const auto& it : schedule)
+    if (it.action != Action::swim) {
+      item = &it;
+      break;
+    }
+  const double end = rec.time_s.back();
+  if (!item || !(window_s > 0) || item->start_s < window_s || end - window_s < item->start_s + item->duration_s) return m;
+  const Eigen::Vector2d before = travel(rec, item->start_s - window_s, item->start_s), after = travel(rec, end - window_s, end);
+  m.found = true;
+  const double turned = turnedRad(before, after);
+  m.heading_change_deg = turned * 180.0 / M_PI;
+  const int a = frameAt(rec, item->start_s), b = frameAt(rec, item->start_s + item->duration_s);
+  for (int f = a + 1; f <= b; ++f) m.path_m += std::hypot(com(rec, f, 0) - com(rec, f - 1, 0), com(rec, f, 1) - com(rec, f - 1, 1));
+  m.radius_m = turned != 0 ? m.path_m / std::fabs(turned) : std::nan("");
   return m;
 }
 

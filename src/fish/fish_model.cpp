@@ -38,6 +38,16 @@ std::string validate(const FishGeometry& g, const UnitParams& u) {
   return "";
 }
 
+FishGeometry reimplementationGeometry() {
+  FishGeometry g;
+  constexpr double L = 26;
+  g.ring_station = {5 / L, 10 / L, 15 / L, 20 / L, 22 / L};
+  g.ring_half_width = {2 / L, 3 / L, 2 / L, 1 / L, 0.8 / L};
+  g.ring_half_height = g.ring_half_width;
+  g.tail_half_height = 3 / L;
+  return g;
+}
+
 FaceFrame faceNormal(const NodeMatrix& x, const Face& f) {
   const Eigen::Vector3d d02 = (x.row(f.node[2]) - x.row(f.node[0])).transpose();
   const Eigen::Vector3d d13 = (x.row(f.node[3]) - x.row(f.node[1])).transpose();
@@ -97,8 +107,15 @@ FishModel buildFish(const FishGeometry& g, const UnitParams& u) {
       add(ringNode(r, k + 1), ringNode(r + 1, k), UnitClass::cross);
     }
   }
-  for (int k = 0; k < 4; ++k)  // 8
-    for (int tip : {kDorsalTip, kVentralTip}) add(ringNode(4, k), tip, UnitClass::other);
+  // 8: each ring-5 node to both tips. The units that run diagonally across a tail face (an upper
+  // node to the ventral tip, a lower one to the dorsal tip) are cross units, as in the
+  // reimplementation's FishData.cs InitSprings (17-22, 18-22, 19-21, 20-21 Cross); the others are
+  // the faces' edges.
+  for (int k = 0; k < 4; ++k) {
+    const bool upper = k == 0 || k == 3;
+    for (int tip : {kDorsalTip, kVentralTip})
+      add(ringNode(4, k), tip, upper == (tip == kVentralTip) ? UnitClass::cross : UnitClass::other);
+  }
   add(kDorsalTip, kVentralTip, UnitClass::other);  // 1
 
   // Faces: side k of a segment lies between ring nodes k and k+1 (0 left, 1 bottom, 2 right, 3 top).

@@ -44,6 +44,12 @@ struct FishGeometry {
   double tail_half_height = 0.12;  // the dorsal and ventral tail-fin tips (nodes 21, 22) at the tail end
 };
 
+// The reimplementation's own node coordinates (FishData.cs InitNodes: snout at 0, rings at 5, 10,
+// 15, 20, 22 units behind it with square sections of half-size 2, 3, 2, 1, 0.8, tail-fin tips 3
+// above and below the axis 26 units back), as fractions of its 26-unit length; for checking that
+// our shape is not what makes the fish slow.
+FishGeometry reimplementationGeometry();
+
 struct UnitParams {
   // [reimpl] (spec §1): c = 38 cross, 30 other, 28 muscle; gamma = 0.1 for all.
   double stiffness_cross_n_per_m = 38.0;

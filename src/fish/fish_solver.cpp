@@ -82,6 +82,42 @@ StepReport FishSolver::checkState(const NodeMatrix& x, const NodeMatrix& v) cons
   return {};
 }
 
+StepReport FishSolver::solveTangent(const FishState& s, const NodeMatrix& force) {
+  const double dt = params_.dt_s;
+  const auto& net = fish_.network;
+  a3_.setZero();
+  Eigen::Matrix<double, 3 * kNodes, 1> rhs, v;
+  for (int i = 0; i < kNodes; ++i) {
+    a3_.diagonal().segment<3>(3 * i).setConstant(mass_kg_[i] / dt);
+    v.segment<3>(3 * i) = s.v_m_per_s.row(i).transpose();
+    rhs.segment<3>(3 * i) = (force.row(i) + mass_kg_[i] / dt * s.v_m_per_s.row(i)).transpose();
+  }
+  for (int e = 0; e < kUnits; ++e) {
+    const int i = net.spring_a[e], j = net.spring_b[e];
+    const Eigen::Vector3d r = (s.x_m.row(j) - s.x_m.row(i)).transpose();
+    const double len = r.norm(), c = net.stiffness_n_per_m[e], secant = c * (len - s.rest_m[e]) / len;
+    const Eigen::Matrix3d rr = (r / len) * (r / len).transpose();
+    const Eigen::Matrix3d damp = net.damping_ns_per_m[e] * rr;
+    const Eigen::Matrix3d block = dt * (c * rr + secant * (Eigen::Matrix3d::Identity() - rr)) + damp;
+    a3_.block<3, 3>(3 * i, 3 * i) += block;
+    a3_.block<3, 3>(3 * j, 3 * j) += block;
+    a3_.block<3, 3>(3 * i, 3 * j) -= block;
+    a3_.block<3, 3>(3 * j, 3 * i) -= block;
+    const Eigen::Vector3d dv = damp * (v.segment<3>(3 * i) - v.segment<3>(3 * j));  // + (D V)_i on the right
+    rhs.segment<3>(3 * i) += dv;
+    rhs.segment<3>(3 * j) -= dv;
+  }
+  ldlt3_.compute(a3_);
+  if (ldlt3_.info() != Eigen::Success || !ldlt3_.isPositive() || !(ldlt3_.vectorD().minCoeff() > 0)) {
+    std::ostringstream out;
+    out << "the tangent matrix M/dt + dt K_t + D lost positive definiteness (smallest pivot " << ldlt3_.vectorD().minCoeff() << ")";
+    return {StepStatus::not_positive_definite, out.str()};
+  }
+  const Eigen::Matrix<double, 3 * kNodes, 1> vn = ldlt3_.solve(rhs);
+  for (int i = 0; i < kNodes; ++i) v_next_.row(i) = vn.segment<3>(3 * i).transpose();
+  return {};
+}
+
 StepReport FishSolver::step(FishState& s) {
   const double dt = params_.dt_s;
   unitForces(s);
@@ -106,6 +142,9 @@ StepReport FishSolver::step(FishState& s) {
     NodeMatrix rhs = force;
     rhs += (mass_kg_ / dt).asDiagonal() * s.v_m_per_s;
     v_next_ = ldlt_.solve(rhs);
+    x_next_ = s.x_m + dt * v_next_;
+  } else if (params_.scheme == Scheme::tangent_implicit) {
+    if (StepReport r = solveTangent(s, force); r.status != StepStatus::ok) return r;
     x_next_ = s.x_m + dt * v_next_;
   } else {
     v_next_ = s.v_m_per_s + dt * (mass_kg_.cwiseInverse().asDiagonal() * force);

@@ -17,6 +17,11 @@
 // The explicit schemes for comparison (stability experiment) use the same forces:
 //   explicit_euler:   V+ = V + dt M^-1 (F^w + G),  X+ = X + dt V
 //   symplectic_euler: V+ = V + dt M^-1 (F^w + G),  X+ = X + dt V+
+// and, not the spec's, a linearly implicit Euler step in the units' full tangent (Baraff & Witkin
+// 1998), to show what the spec's secant matrix leaves out (stability experiment):
+//   tangent_implicit: (M/dt + dt K_t + D) V+ = F^w + G + (M/dt) V + D V,  X+ = X + dt V+,
+//   K_t = c r^r^T + (c e / |r|)(I - r^r^T) and D = gamma r^r^T per unit on 3 x 3 blocks (3n x 3n,
+//   not shared by x, y, z). The spec's K has only n_ij I, which is zero at rest length.
 #include <array>
 #include <string>
 
@@ -28,7 +33,7 @@
 
 namespace creaturelab::fish {
 
-enum class Scheme { semi_implicit, explicit_euler, symplectic_euler };
+enum class Scheme { semi_implicit, explicit_euler, symplectic_euler, tangent_implicit };
 
 struct FishState {
   NodeMatrix x_m;
@@ -84,6 +89,7 @@ class FishSolver {
 
  private:
   StepReport checkState(const NodeMatrix& x, const NodeMatrix& v) const;
+  StepReport solveTangent(const FishState& s, const NodeMatrix& force);  // fills v_next_
 
   const FishModel& fish_;
   SolverParams params_;
@@ -93,6 +99,8 @@ class FishSolver {
   NodeMatrix g_, fw_, x_next_, v_next_;
   Eigen::Matrix<double, kNodes, kNodes> a_;
   Eigen::LDLT<Eigen::Matrix<double, kNodes, kNodes>> ldlt_;
+  Eigen::Matrix<double, 3 * kNodes, 3 * kNodes> a3_;  // tangent_implicit only
+  Eigen::LDLT<Eigen::Matrix<double, 3 * kNodes, 3 * kNodes>> ldlt3_;
 };
 
 }  // namespace creaturelab::fish

@@ -70,6 +70,12 @@ SwimCommand swimFromSpeed(double f, double r_max) {
   return {a, a * r_max, a, a * r_max};
 }
 
+double swimPeriodS(const MotorParams& p) {
+  // Rest lengths cancel: height alpha (1 - f) l0 (twice that when antagonistic), slope r l0 / dt_ref.
+  const double height = p.swim.amplitude_anterior * (1.0 - p.contracted_fraction) * (p.stroke == Stroke::antagonistic ? 2 : 1);
+  return 2.0 * height / p.swim.rate_anterior * p.reference_step_s;
+}
+
 std::string validate(const MotorParams& p) {
   auto amp = [](const char* name, double a) {
     return a > 0 && a <= 1 ? std::string() : std::string(name) + " must be in (0, 1] (got " + std::to_string(a) + ")";
@@ -112,16 +118,22 @@ std::array<double, kMuscles> MotorController::targetContraction(double t) const 
   const double local = t - item.start_s, per_s = 1.0 / params_.reference_step_s;
   for (int k = 0; k < kMuscles; ++k) {
     const Muscle& m = fish_.muscles[k];
+    const int side = params_.mirror ? 1 - m.side : m.side;
     const double full = rest_m_[k] * (1.0 - params_.contracted_fraction);
     if (item.action == Action::swim && m.segment >= 1) {
       const bool posterior = m.segment == 2;
       const double alpha = posterior ? params_.swim.amplitude_posterior : params_.swim.amplitude_anterior;
       const double r = posterior ? params_.swim.rate_posterior : params_.swim.rate_anterior;
-      const double peak = alpha * full, slope = r * rest_m_[k] * per_s, period = 2 * peak / slope;
+      const double peak = alpha * full, slope = r * rest_m_[k] * per_s;
+      // contract: 0 -> peak -> 0; antagonistic: 0 -> peak -> -peak -> 0 (a triangle of twice the
+      // height, entered a quarter period in so that it starts at 0 rising).
+      const bool anta = params_.stroke == Stroke::antagonistic;
+      const double height = anta ? 2 * peak : peak, period = 2 * height / slope;
       double delay = posterior ? params_.posterior_lag_rad / (2 * M_PI) * period : 0.0;
-      if (m.side == 1) delay += 0.5 * period;  // right side: exactly out of phase
-      c[k] = triangle(local - delay, peak, slope);
-    } else if ((item.action == Action::left && m.side == 0) || (item.action == Action::right && m.side == 1)) {
+      if (side == 1) delay += 0.5 * period;  // right side: exactly out of phase
+      const double since = local - delay;
+      c[k] = !anta ? triangle(since, peak, slope) : since <= 0 ? 0.0 : triangle(since + 0.25 * period, height, slope) - peak;
+    } else if ((item.action == Action::left && side == 0) || (item.action == Action::right && side == 1)) {
       if (m.segment <= 1) {
         const double peak = params_.turn_amplitude * full, slope = params_.turn_rate * rest_m_[k] * per_s;
         const double rise = peak / slope, fall = rise / params_.turn_relax_fraction;  // one pulse

@@ -51,8 +51,22 @@ struct SwimCommand {
 // speed grows roughly as amplitude x rate (spec §3), so both scale with its square root (ours).
 SwimCommand swimFromSpeed(double speed_fraction, double r_max);
 
+// How a swim segment's rest lengths move (spec §3 fixes neither; see MotorParams::stroke).
+enum class Stroke { contract, antagonistic };
+
 struct MotorParams {
   double contracted_fraction = 0.7;  // fully contracted length / rest length (ours: thesis value not in text)
+  // contract (ours, the spec's wording "0 the fully contracted length, 1 the rest length"): each
+  //   muscle moves between its rest length l0 and l0 - alpha (l0 - lc); the pair's length
+  //   difference spans +-alpha (l0 - lc).
+  // antagonistic ([reimpl] FishData.cs Spring(): rest length lerp(1.3 l0, 0.7 l0, a), left a and
+  //   right 1 - a, a = 0.5 at rest): each muscle moves between l0 + alpha (l0 - lc) and
+  //   l0 - alpha (l0 - lc), its partner the opposite way; twice the bend of `contract`, and no
+  //   mean shortening of the segment.
+  Stroke stroke = Stroke::contract;
+  // Swap left and right in every controller (the swim's starting side and the turns): the mirror
+  // image of a run, for the left/right symmetry checks from a swimming start.
+  bool mirror = false;
   SwimCommand swim;
   double posterior_lag_rad = 1.5707963267948966;  // pi/2 (spec §3 [choose])
   double turn_amplitude = 0.7;
@@ -64,6 +78,9 @@ struct MotorParams {
   double r_max = 0.075;             // [reimpl]
   double reference_step_s = 0.055;  // the step r is defined per ([reimpl] dt)
 };
+
+// The period of the swim-MC's anterior segment (seconds): 2 x its triangle's height / its slope.
+double swimPeriodS(const MotorParams& p);
 
 // "" or what is wrong, naming the parameter (alpha outside (0, 1], r outside (0, r_max], ...).
 std::string validate(const MotorParams& p);

@@ -6,6 +6,7 @@
 
 #include "fish/export.hpp"
 #include "fish/fish_measure.hpp"
+#include "fish/fish_modes.hpp"
 #include "fish/fish_run.hpp"
 #include "fish/skin.hpp"
 
@@ -26,8 +27,10 @@ struct FishSetup {
 // Throws std::invalid_argument naming the key for what the per-key ranges cannot catch.
 FishSetup setupOf(const ParamReader& r) {
   FishSetup s;
+  if (r.text("shape") == "reimplementation") s.geometry = fish::reimplementationGeometry();
   s.geometry.body_length_m = r.real("body_length_m");
   s.units.mass_unit_kg = r.real("mass_unit_kg");
+  s.units.mass_units[6] = r.real("tail_mass_units");
   s.units.stiffness_cross_n_per_m = r.real("stiffness_cross_n_per_m");
   s.units.stiffness_other_n_per_m = r.real("stiffness_other_n_per_m");
   s.units.stiffness_muscle_n_per_m = r.real("stiffness_muscle_n_per_m");
@@ -36,6 +39,7 @@ FishSetup setupOf(const ParamReader& r) {
   const std::string scheme = r.text("scheme");
   s.solver.scheme = scheme == "explicit_euler"     ? fish::Scheme::explicit_euler
                     : scheme == "symplectic_euler" ? fish::Scheme::symplectic_euler
+                    : scheme == "tangent_implicit" ? fish::Scheme::tangent_implicit
                                                    : fish::Scheme::semi_implicit;
   s.solver.water.mu = r.real("water_mu");
   s.solver.water.law = r.text("water_law") == "quadratic" ? fish::WaterLaw::quadratic : fish::WaterLaw::linear;
@@ -49,6 +53,8 @@ FishSetup setupOf(const ParamReader& r) {
   m.turn_amplitude = r.real("turn_amplitude");
   m.turn_rate = r.real("turn_rate");
   m.turn_relax_fraction = r.real("turn_relax_fraction");
+  m.stroke = r.text("muscle_stroke") == "antagonistic" ? fish::Stroke::antagonistic : fish::Stroke::contract;
+  m.mirror = r.boolean("mirror");
   const double speed = r.real("swim_desired_speed");
   if (speed > 0) {
     m.swim = fish::swimFromSpeed(speed, m.r_max);
@@ -167,9 +173,13 @@ FishKind::FishKind() {
               "fish simulated (independent; fish k swims at amplitude x (1 - 0.05 (k mod 5))); the first is recorded, the rest counted"),
       text("schedule", "swim 30", "",
            "controller schedule, \"NAME SECONDS; ...\" with NAME swim | left | right | glide (spec §3)"),
+      choice("shape", "ours", {"ours", "reimplementation"},
+             "node coordinates: ours (fish_model.hpp: fusiform, laterally compressed) | reimplementation (FishData.cs InitNodes, scaled to body_length_m)"),
       real("body_length_m", 2.0, "m", 1e-3, 1e3,
            "snout to tail (ours: with the [reimpl] masses, 107 kg, our shape then has about the density of water)"),
       real("mass_unit_kg", 1.1, "kg", 1e-9, 1e9, "mass unit m of the [reimpl] masses (snout 1, rings 6/10/6/1/1, tail 0.15 m)"),
+      real("tail_mass_units", 0.15, "", 1e-9, 1e9,
+           "mass of each tail-fin tip (nodes 21, 22) in units of mass_unit_kg ([reimpl] 0.15; the lightest nodes, they carry the body's stiffest vibration)"),
       real("stiffness_cross_n_per_m", 38.0, "N/m", 1e-9, 1e9, "cross units (spec §1 [reimpl])"),
       real("stiffness_other_n_per_m", 30.0, "N/m", 1e-9, 1e9, "other passive units (spec §1 [reimpl])"),
       real("stiffness_muscle_n_per_m", 28.0, "N/m", 1e-9, 1e9, "muscle units (spec §1 [reimpl])"),
@@ -184,8 +194,8 @@ FishKind::FishKind() {
       real("current_y_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, y"),
       real("current_z_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, z"),
       real("dt_s", 0.055, "s", 1e-9, 100, "time step ([reimpl] 0.055 s, spec §2)"),
-      choice("scheme", "semi_implicit", {"semi_implicit", "explicit_euler", "symplectic_euler"},
-             "time integrator (spec §2: semi-implicit Euler; the explicit ones for the stability comparison)"),
+      choice("scheme", "semi_implicit", {"semi_implicit", "explicit_euler", "symplectic_euler", "tangent_implicit"},
+             "time integrator (spec §2: semi-implicit Euler; the explicit ones and tangent_implicit, a linearly implicit step in the units' full tangent, not the spec's, for the stability comparison)"),
       real("blowup_strain", 2.0, "", 1e-3, 1e3,
            "a unit longer than (1 + this) or shorter than 1/(1 + this) times its undeformed length counts as a blow-up"),
       real("swim_amplitude", 0.7, "", 0, 1, "swim-MC amplitude alpha in (0, 1]: the fraction of full contraction reached (spec §3)"),
@@ -196,6 +206,10 @@ FishKind::FishKind() {
       real("posterior_lag_rad", M_PI / 2, "rad", -100, 100, "phase lag of the posterior swim segment (spec §3 [choose]: pi/2)"),
       real("turn_amplitude", 0.7, "", 0, 1, "turn-MC amplitude alpha in (0, 1]"),
       real("turn_rate", 0.016, "", 0, 1, "turn-MC rate r in (0, r_max] of the contraction"),
+      choice("muscle_stroke", "contract", {"contract", "antagonistic"},
+             "swim-MC stroke: contract (each muscle between its rest length and alpha of the way to the contracted one; "
+             "ours) | antagonistic ([reimpl] FishData.cs: between l0 -+ alpha (l0 - lc), the partner opposite: twice the bend)"),
+      boolean("mirror", false, "swap left and right in every controller (the mirror image of the run; symmetry checks)"),
       real("turn_relax_fraction", 0.25, "", 0, 1, "turn-MC: relaxation rate / contraction rate (ours: a quick bend, a slow return)"),
       real("r_max", 0.075, "", 1e-9, 1, "the largest rate ([reimpl] 0.075)"),
       real("reference_step_s", 0.055, "s", 1e-9, 100, "the step the rates are defined per (the [reimpl] step)"),
@@ -227,6 +241,10 @@ FishKind::FishKind() {
       {"forward_distance_m", "m", "centre-of-mass displacement along the initial heading (+x) over the run"},
       {"lateral_drift_m", "m", "|sideways displacement| of the centre of mass over the run"},
       {"lateral_drift_fraction", "", "lateral_drift_m / forward_distance_m"},
+      {"settled_heading_change_deg", "deg",
+       "direction of travel over the first swim period after warmup_s against the last one (left > 0): curvature of the settled path"},
+      {"settled_lateral_drift_fraction", "",
+       "sideways displacement from warmup_s to the end, perpendicular to the travel direction of the first period after warmup_s, over the distance"},
       {"vertical_drift_m", "m", "|vertical displacement| of the centre of mass"},
       {"com_travel_m", "m", "|com(end) - com(0)|"},
       {"com_travel_body_lengths", "", "com_travel_m / body length"},
@@ -234,6 +252,15 @@ FishKind::FishKind() {
       {"turn_path_m", "m", "centre-of-mass path over the first turn item"},
       {"turn_radius_m", "m", "turn_path_m / |heading change|"},
       {"turn_radius_body_lengths", "", "turn_radius_m / body length"},
+      {"travel_heading_change_deg", "deg",
+       "from a swimming start: change of the centre of mass's direction of travel, one swim period before the first non-swim item against the run's last swim period (left > 0)"},
+      {"travel_turn_path_m", "m", "centre-of-mass path over that item"},
+      {"travel_turn_radius_body_lengths", "", "travel_turn_path_m / |travel_heading_change| / body length"},
+      {"swim_period_s", "s", "the swim-MC's period (from alpha, r, the stroke and the reference step)"},
+      {"lowest_lateral_mode_hz", "Hz", "the undeformed body's lowest sideways bending mode in air (fish_modes.hpp)"},
+      {"stroke_frequency_over_mode", "", "1 / swim_period_s over lowest_lateral_mode_hz: above about 1 the body's inertia filters the gait"},
+      {"stride_body_lengths", "", "speed_body_lengths_per_s x swim_period_s: body lengths travelled per swim cycle"},
+      {"spring_limit_dt_s", "s", "2 / w_max of the body at rest: the symplectic-Euler limit of its stiffest mode"},
       {"momentum_drift_rel", "", "max |sum m v - sum m v(0)| / max sum m |v| over the run (conserved when water_mu = 0)"},
       {"blew_up", "", "1 if the run stopped at a blow-up (on_blowup = record)"},
       {"blowup_step", "", "the step that blew up, -1 if none"},
@@ -294,6 +321,10 @@ Result FishKind::run(const Params& p) const {
   Result result;
   result.metrics["fish_length_m"] = {L, "m"};
   result.metrics["mass_kg"] = {model.totalMassKg(), "kg"};
+  const fish::RestModes modes = fish::restModes(model);
+  result.metrics["lowest_lateral_mode_hz"] = {modes.lowest_lateral_hz, "Hz"};
+  result.metrics["spring_limit_dt_s"] = {2.0 / modes.highest_rad_per_s, "s"};
+  result.metrics["stroke_frequency_over_mode"] = {1.0 / fish::swimPeriodS(s.motor) / modes.lowest_lateral_hz, ""};
   for (const char* m : {"max_stable_dt_s"}) result.metrics[m] = {nan, "s"};
   for (const char* m : {"skin_rest_inward", "skin_inward_max", "skin_creases", "skin_worst_neighbour_cosine"})
     result.metrics[m] = {nan, ""};
@@ -350,7 +381,8 @@ Result FishKind::run(const Params& p) const {
   muscles.points = fish::kMuscles;
   muscles.dim = 1;
 
-  const fish::SwimMeasures sw = fish::measureSwim(rec, L, r.real("warmup_s"));
+  const double period = fish::swimPeriodS(s.motor);
+  const fish::SwimMeasures sw = fish::measureSwim(rec, L, r.real("warmup_s"), period);
   const fish::TurnMeasures tu = fish::measureTurn(rec, s.schedule);
   result.metrics["steps"] = {double(rec.steps), ""};
   result.metrics["speed_body_lengths_per_s"] = {sw.speed_body_lengths_per_s, "1/s"};
@@ -359,12 +391,20 @@ Result FishKind::run(const Params& p) const {
   result.metrics["lateral_drift_m"] = {sw.lateral_drift_m, "m"};
   result.metrics["lateral_drift_fraction"] = {sw.lateral_drift_fraction, ""};
   result.metrics["vertical_drift_m"] = {sw.vertical_drift_m, "m"};
+  result.metrics["settled_heading_change_deg"] = {sw.settled_heading_change_deg, "deg"};
+  result.metrics["settled_lateral_drift_fraction"] = {sw.settled_lateral_drift_fraction, ""};
   result.metrics["com_travel_m"] = {sw.com_travel_m, "m"};
   result.metrics["com_travel_body_lengths"] = {sw.com_travel_m / L, ""};
   result.metrics["heading_change_deg"] = {tu.found ? tu.heading_change_deg : nan, "deg"};
   result.metrics["turn_path_m"] = {tu.found ? tu.path_m : nan, "m"};
   result.metrics["turn_radius_m"] = {tu.found ? tu.radius_m : nan, "m"};
   result.metrics["turn_radius_body_lengths"] = {tu.found ? tu.radius_m / L : nan, ""};
+  const fish::TravelTurn tt = fish::measureTravelTurn(rec, s.schedule, period);
+  result.metrics["swim_period_s"] = {period, "s"};
+  result.metrics["stride_body_lengths"] = {sw.speed_body_lengths_per_s * period, ""};
+  result.metrics["travel_heading_change_deg"] = {tt.found ? tt.heading_change_deg : nan, "deg"};
+  result.metrics["travel_turn_path_m"] = {tt.found ? tt.path_m : nan, "m"};
+  result.metrics["travel_turn_radius_body_lengths"] = {tt.found ? tt.radius_m / L : nan, ""};
   result.metrics["momentum_drift_rel"] = {rec.momentum_drift_rel, ""};
   result.metrics["blew_up"] = {rec.blew_up ? 1.0 : 0.0, ""};
   result.metrics["blowup_step"] = {double(rec.blowup_step), ""};

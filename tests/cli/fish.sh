@@ -77,7 +77,7 @@ set +e
 code=$?
 set -e
 [ "$code" = 3 ] || { cat "$scratch/air.out"; fail "air: exit $code, expected 3"; }
-grep -q "blew up at step 130" "$scratch/air.out" || fail "air: no step in $(cat "$scratch/air.out")"
+grep -q "blew up at step 129" "$scratch/air.out" || fail "air: no step in $(cat "$scratch/air.out")"
 
 # Bad input: exit 2, one error line naming the key, nothing written.
 expect_bad() {

@@ -4,6 +4,7 @@ creaturelab_test(fish_unit_test unit
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/fish_solver_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fish_motor_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/fish_measure_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fish_skin_test.cpp
   LIBS cl_fish
 )

@@ -112,5 +112,43 @@ TEST(Motor, DesiredSpeedScalesAmplitudeAndRate) {
   EXPECT_NEAR(half.amplitude_anterior * half.rate_anterior / (full.amplitude_anterior * full.rate_anterior), 0.25, 1e-15);
 }
 
+
+// The [reimpl] antagonistic stroke: each swim muscle swings l0 +- alpha (l0 - lc), its partner the
+// opposite way (their contractions sum to zero once both run), from 0 at the start; the period is
+// twice the contract stroke's at the same rate. mirror swaps the sides.
+TEST(Motor, AntagonisticStrokeAndMirror) {
+  const FishModel fish = buildFish({}, {});
+  MotorParams p;
+  p.swim = {0.5, 0.01, 0.5, 0.01};
+  const double contract_period = swimPeriodS(p);
+  p.stroke = Stroke::antagonistic;
+  EXPECT_NEAR(swimPeriodS(p), 2 * contract_period, 1e-12);
+  MotorController mc(fish, p, parseSchedule("swim 100"));
+  int left = -1, right = -1;
+  for (int k = 0; k < kMuscles; ++k) {
+    if (fish.muscles[k].segment == 1 && fish.muscles[k].side == 0 && left < 0) left = k;
+    if (fish.muscles[k].segment == 1 && fish.muscles[k].side == 1 && right < 0) right = k;
+  }
+  const double l = fish.network.rest_length_m[fish.muscles[left].unit];
+  const double peak = 0.5 * (1 - p.contracted_fraction) * l, period = swimPeriodS(p);
+  EXPECT_NEAR(mc.targetContraction(1e-9)[left], 0.0, 1e-9);
+  EXPECT_NEAR(mc.targetContraction(0.25 * period)[left], peak, 1e-12);
+  EXPECT_NEAR(mc.targetContraction(0.75 * period)[left], -peak, 1e-12);  // lengthened past rest
+  double lo = 0, hi = 0;
+  for (double t = 0.5 * period; t < 3 * period; t += 0.013 * period) {
+    const auto c = mc.targetContraction(t);
+    EXPECT_NEAR(c[left] + c[right], 0.0, 1e-12) << t;
+    lo = std::min(lo, c[left]), hi = std::max(hi, c[left]);
+  }
+  EXPECT_NEAR(hi, peak, 0.03 * peak);
+  EXPECT_NEAR(lo, -peak, 0.03 * peak);
+  p.mirror = true;
+  MotorController mirrored(fish, p, parseSchedule("swim 100"));
+  for (double t : {0.1 * period, 0.6 * period, 1.3 * period}) {
+    EXPECT_EQ(mirrored.targetContraction(t)[right], mc.targetContraction(t)[left]);
+    EXPECT_EQ(mirrored.targetContraction(t)[left], mc.targetContraction(t)[right]);
+  }
+}
+
 }  // namespace
 }  // namespace creaturelab::fish

@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "fish/fish_modes.hpp"
 #include "fish/fish_run.hpp"
 #include "fish/fish_solver.hpp"
 
@@ -22,7 +23,7 @@ TEST(FishModel, CountsMatchTheThesis) {
   int muscles = 0, cross = 0;
   for (auto c : f.unit_class) muscles += c == UnitClass::muscle, cross += c == UnitClass::cross;
   EXPECT_EQ(muscles, 12);
-  EXPECT_EQ(cross, 10 + 32);  // 2 per ring, 2 per face of the 4 ring gaps
+  EXPECT_EQ(cross, 10 + 32 + 4);  // 2 per ring, 2 per face of the 4 ring gaps, 2 on each side face of the tail ([reimpl])
   // 3 segments x 2 sides x 2 muscles
   int count[3][2] = {};
   for (const Muscle& m : f.muscles) ++count[m.segment][m.side];
@@ -188,6 +189,128 @@ TEST(FishSolver, LeftAndRightTurnsMirror) {
   // a straight swim stays in its horizontal plane: the body is also symmetric top to bottom
   const FishRecord swim = runSchedule(f, p, {}, parseSchedule("swim 10"), {});
   EXPECT_LT(std::fabs(swim.com_m[3 * (swim.frames() - 1) + 2] - swim.com_m[2]), 1e-12);
+}
+
+// Similarity (why the spec's numbers, not our 2 m size, set the speed in body lengths per second):
+// (a) time: stiffness x k^2, damping x k, linear water mu x k, step and reference step / k, durations
+//     / k give the same positions at times / k, so the speed in body lengths per second scales as
+//     sqrt(c / m) at a fixed gait; (b) length: every length x lambda with the linear water mu /
+//     lambda^2 gives positions x lambda at the same times, so our 2 m fish in mu = 100 is the
+//     reimplementation's 26-unit fish in mu = 100 / 13^2: the size maps onto mu, nothing else;
+//     (c) with the quadratic law mu / lambda^3.
+TEST(FishSolver, SimilarityInTimeAndLength) {
+  auto runLast = [](const FishGeometry& g, const UnitParams& u, const SolverParams& sp, const MotorParams& mp,
+                    const std::string& schedule) {
+    const FishModel f = buildFish(g, u);
+    const FishRecord r = runSchedule(f, sp, mp, parseSchedule(schedule), {});
+    EXPECT_FALSE(r.blew_up);
+    return std::vector<double>(r.nodes_m.end() - 3 * kNodes, r.nodes_m.end());
+  };
+  FishGeometry g;
+  UnitParams u;
+  SolverParams sp;
+  sp.dt_s = 0.02;
+  MotorParams mp;
+  mp.swim = {1.0, 0.01, 1.0, 0.01};
+  const auto base = runLast(g, u, sp, mp, "swim 6; left 3");
+  double scale = 0;
+  for (double v : base) scale = std::max(scale, std::fabs(v));
+  {  // (a) k = 3
+    const double k = 3;
+    UnitParams uk = u;
+    uk.stiffness_cross_n_per_m *= k * k, uk.stiffness_other_n_per_m *= k * k, uk.stiffness_muscle_n_per_m *= k * k;
+    uk.damping_ns_per_m *= k;
+    SolverParams sk = sp;
+    sk.dt_s /= k, sk.water.mu *= k;
+    MotorParams mk = mp;
+    mk.reference_step_s /= k;
+    const auto fast = runLast(g, uk, sk, mk, "swim 2; left 1");
+    double worst = 0;
+    for (size_t i = 0; i < base.size(); ++i) worst = std::max(worst, std::fabs(fast[i] - base[i]));
+    EXPECT_LT(worst, 1e-9 * scale);
+  }
+  {  // (b) lambda = 13: the reimplementation's 26-unit fish
+    const double lambda = 13;
+    FishGeometry gl = g;
+    gl.body_length_m *= lambda;
+    SolverParams sl = sp;
+    sl.water.mu /= lambda * lambda;
+    const auto big = runLast(gl, u, sl, mp, "swim 6; left 3");
+    double worst = 0;
+    for (size_t i = 0; i < base.size(); ++i) worst = std::max(worst, std::fabs(big[i] / lambda - base[i]));
+    EXPECT_LT(worst, 1e-9 * scale);
+  }
+  {  // (c) the quadratic law: mu / lambda^3 (the reimplementation's mu = 1 on 26 units is 2197 on 2 m)
+    const double lambda = 13;
+    SolverParams sq = sp;
+    sq.water.law = WaterLaw::quadratic;
+    sq.water.mu = 2197;
+    const auto small = runLast(g, u, sq, mp, "swim 6; left 3");
+    FishGeometry gl = g;
+    gl.body_length_m *= lambda;
+    sq.water.mu = 1;
+    const auto big = runLast(gl, u, sq, mp, "swim 6; left 3");
+    double worst = 0, size = 0;
+    for (size_t i = 0; i < small.size(); ++i)
+      worst = std::max(worst, std::fabs(big[i] / lambda - small[i])), size = std::max(size, std::fabs(small[i]));
+    EXPECT_LT(worst, 1e-9 * size);
+  }
+}
+
+// The rest modes: six rigid-body modes skipped; frequencies independent of the size, doubled by four
+// times the stiffness; the reimplementation's shape has its own, similar lowest sideways mode.
+TEST(FishModes, ScaleAsTheSpringMassSystem) {
+  const RestModes base = restModes(defaultFish());
+  EXPECT_GT(base.lowest_lateral_hz, 0.05);
+  EXPECT_LT(base.lowest_lateral_hz, 1.0);
+  EXPECT_GT(base.highest_rad_per_s, 2 * M_PI * base.lowest_lateral_hz);
+  FishGeometry big;
+  big.body_length_m = 26;
+  UnitParams stiff;
+  stiff.stiffness_cross_n_per_m *= 4, stiff.stiffness_other_n_per_m *= 4, stiff.stiffness_muscle_n_per_m *= 4;
+  EXPECT_NEAR(restModes(buildFish(big, {})).lowest_lateral_hz, base.lowest_lateral_hz, 1e-9 * base.lowest_lateral_hz);
+  EXPECT_NEAR(restModes(buildFish({}, stiff)).lowest_lateral_hz, 2 * base.lowest_lateral_hz, 1e-9 * base.lowest_lateral_hz);
+  EXPECT_NEAR(restModes(buildFish({}, stiff)).highest_rad_per_s, 2 * base.highest_rad_per_s, 1e-9 * base.highest_rad_per_s);
+  const RestModes theirs = restModes(buildFish(reimplementationGeometry(), {}));
+  EXPECT_GT(theirs.lowest_lateral_hz, 0.5 * base.lowest_lateral_hz);
+  EXPECT_LT(theirs.lowest_lateral_hz, 2.0 * base.lowest_lateral_hz);
+}
+
+// The tangent step (not the spec's; stability comparison): in air it conserves sum m v (its
+// matrix's block columns sum to zero), and at a small step it follows the spec's step to O(dt^2)
+// per step (both are first-order Euler steps of the same equations).
+TEST(FishSolver, TangentStepConservesMomentumAndFollowsTheSpecStep) {
+  const FishModel f = defaultFish();
+  FishState s0 = restState(f);
+  for (int k = 0; k < kNodes; ++k) s0.v_m_per_s.row(k) << 0.3, 0.1 * f.rest_positions_m(k, 2), -0.05 * f.rest_positions_m(k, 1);
+  for (int e = 0; e < kUnits; ++e) s0.rest_m[e] *= 0.9 + 0.02 * (e % 7);
+  SolverParams p;
+  p.water.mu = 0;
+  p.scheme = Scheme::tangent_implicit;
+  FishState s = s0;
+  FishSolver tangent(f, p);
+  auto momentum = [&](const FishState& st) {
+    Eigen::RowVector3d q = Eigen::RowVector3d::Zero();
+    for (int k = 0; k < kNodes; ++k) q += f.network.mass_kg[k] * st.v_m_per_s.row(k);
+    return q;
+  };
+  for (int n = 0; n < 50; ++n) ASSERT_EQ(tangent.step(s).status, StepStatus::ok) << n;
+  EXPECT_LT((momentum(s) - momentum(s0)).norm(), 1e-12 * momentum(s0).norm());
+  double diff[2];
+  for (int k = 0; k < 2; ++k) {
+    SolverParams q = p;
+    q.water.mu = 100;
+    q.dt_s = k == 0 ? 2e-4 : 1e-4;
+    FishState a = s0, b = s0;
+    FishSolver ta(f, q);
+    q.scheme = Scheme::semi_implicit;
+    FishSolver sa(f, q);
+    ASSERT_EQ(ta.step(a).status, StepStatus::ok);
+    ASSERT_EQ(sa.step(b).status, StepStatus::ok);
+    diff[k] = (a.v_m_per_s - b.v_m_per_s).norm();
+  }
+  EXPECT_GT(diff[0], 0);
+  EXPECT_NEAR(diff[0] / diff[1], 4.0, 0.2);  // the difference is O(dt^2)
 }
 
 // Water force: none when the fish moves with the water; opposes a translation; linear in speed for
