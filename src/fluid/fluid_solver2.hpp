@@ -40,6 +40,8 @@ class FluidBlowUpError : public std::runtime_error {
  public:
   FluidBlowUpError(long step, double time_s, double dt_s, double max_speed_m_per_s, double limit_m_per_s,
                    double cfl_number);
+  FluidBlowUpError(const std::string& message, long step, double time_s, double cfl_number)
+      : std::runtime_error(message), step_(step), time_s_(time_s), cfl_number_(cfl_number) {}
   long step() const { return step_; }
   double time_s() const { return time_s_; }
   double cfl_number() const { return cfl_number_; }
@@ -48,6 +50,18 @@ class FluidBlowUpError : public std::runtime_error {
   long step_;
   double time_s_;
   double cfl_number_;
+};
+
+/// Thrown before a step whose CFL number exceeds the stability bound of an explicit advection
+/// scheme (FluidParams::advection = upwind2_rk2); a FluidBlowUpError, so callers that catch
+/// blow-ups catch it too.
+class FluidCflError final : public FluidBlowUpError {
+ public:
+  FluidCflError(long step, double time_s, double dt_s, double cfl_number, double bound);
+  double bound() const { return bound_; }
+
+ private:
+  double bound_;
 };
 
 /// Per-step values, passed explicitly to every stage (never a global clock).

@@ -120,11 +120,50 @@ void pressure_only(benchmark::State& state, PressureSolverType pressure) {
   state.counters["cg_iterations"] = iterations;
 }
 
+// One stage alone on the state just before it (the grid restored every iteration, untimed):
+// advection (per scheme) and viscosity, the stage-by-stage figures of the header.
+enum class Stage { advection, viscosity };
+void stage_only(benchmark::State& state, Stage stage, AdvectionScheme scheme) {
+  const int cells = static_cast<int>(state.range(0));
+  auto solver = warmed_up(scene(cells, scheme, PressureSolverType::fast_direct));
+  const StepContext context{solver->steps_done(), solver->time_s(), solver->next_time_step_s()};
+  solver->apply_external_forces(context);
+  if (stage == Stage::viscosity) solver->advect_velocity(context);
+  const MacGrid2 before = solver->grid();
+  double total = 0.0;
+  for (auto _ : state) {
+    solver->grid() = before;
+    const double start = thread_cpu_seconds();
+    if (stage == Stage::advection) {
+      solver->advect_velocity(context);
+    } else {
+      benchmark::DoNotOptimize(solver->apply_viscosity(context));
+    }
+    const double seconds = thread_cpu_seconds() - start;
+    state.SetIterationTime(seconds);
+    total += seconds;
+  }
+  report(state, cells, total);
+}
+void BM_Advection_SemiLagrangian(benchmark::State& state) {
+  stage_only(state, Stage::advection, AdvectionScheme::semi_lagrangian);
+}
+void BM_Advection_MacCormack(benchmark::State& state) {
+  stage_only(state, Stage::advection, AdvectionScheme::maccormack);
+}
+void BM_Advection_Upwind2Rk2(benchmark::State& state) {
+  stage_only(state, Stage::advection, AdvectionScheme::upwind2_rk2);
+}
+void BM_Viscosity(benchmark::State& state) { stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian); }
+
 void BM_FluidStep_SemiLagrangian_FastPressure(benchmark::State& state) {
   full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::fast_direct);
 }
 void BM_FluidStep_MacCormack_FastPressure(benchmark::State& state) {
   full_step(state, AdvectionScheme::maccormack, PressureSolverType::fast_direct);
+}
+void BM_FluidStep_Upwind2Rk2_FastPressure(benchmark::State& state) {
+  full_step(state, AdvectionScheme::upwind2_rk2, PressureSolverType::fast_direct);
 }
 void BM_FluidStep_SemiLagrangian_Pcg(benchmark::State& state) {
   full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::pcg, false);
@@ -154,7 +193,12 @@ double minimum(const std::vector<double>& values) { return *std::min_element(val
 
 CL_FLUID_STEP_BENCH(BM_FluidStep_SemiLagrangian_FastPressure);
 CL_FLUID_STEP_BENCH(BM_FluidStep_MacCormack_FastPressure);
+CL_FLUID_STEP_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure);
 CL_FLUID_BENCH(BM_FluidStep_SemiLagrangian_Pcg);
+CL_FLUID_BENCH(BM_Advection_SemiLagrangian);
+CL_FLUID_BENCH(BM_Advection_MacCormack);
+CL_FLUID_BENCH(BM_Advection_Upwind2Rk2);
+CL_FLUID_BENCH(BM_Viscosity);
 CL_FLUID_BENCH(BM_Pressure_FastDirect);
 CL_FLUID_BENCH(BM_Pressure_Pcg);
 
