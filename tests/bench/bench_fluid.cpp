@@ -18,6 +18,15 @@
 // (at load 9: CPU 47-75, elapsed 62-99 ns per cell, against 1 thread's 33-59 CPU, 47-82
 // elapsed): the workers wait for a core; what the threads gain on an idle machine is not
 // measured here.
+//
+// Eulerian advection option (AdvectionScheme::upwind2_rk2, fluid/upwind_advection2.hpp),
+// measured 2026-11-25 on the same machine (load 4.5-9), minimum of 3 repetitions, 1 thread,
+// CPU ns per cell, 128² / 256²:
+//   full step   semi-Lagrangian 33.3 / 39.3, MacCormack 51.9 / 60.7, upwind2_rk2 25.5 / 30.6
+//   advection   semi-Lagrangian 15.5 / 16.4, MacCormack 33.4 / 36.4, upwind2_rk2  7.4 /  9.0
+//   viscosity 5.0 / 6.0, pressure (fast direct) 9.7 / 11.8 (BM_Advection_*, BM_Viscosity,
+//   BM_Pressure_FastDirect). With upwind2_rk2 the 256² step is 9 + 6 + 12 + 3-4 (forces,
+//   diagnostics, copies): the 20 ns goal still needs about 10 ns from viscosity and pressure.
 #include <benchmark/benchmark.h>
 #include <time.h>
 
