@@ -27,6 +27,14 @@
 //   viscosity 5.0 / 6.0, pressure (fast direct) 9.7 / 11.8 (BM_Advection_*, BM_Viscosity,
 //   BM_Pressure_FastDirect). With upwind2_rk2 the 256² step is 9 + 6 + 12 + 3-4 (forces,
 //   diagnostics, copies): the 20 ns goal still needs about 10 ns from viscosity and pressure.
+// Where the rest could come from (measured the same day, 256², not implemented): the viscosity
+// stage costs about 1.6 ns fixed plus 1.3 ns per Richardson sweep; at the jellyfish's dt
+// (1.25 ms, α = 6.7e-4) it already takes 2 sweeps (4.3 ns), at the bench's dt (10 ms) 3 (5.5
+// ns), so faster-contracting sweeps (red–black Gauss–Seidel) save at most about 1.3 ns. The
+// projection is ~2/3 transforms (perf: fft 38 %, forward/inverse_transform 24 %, Thomas 10 %,
+// divergence and gradient 13 %), about 8 ns; FFTW 3.3.10 (REDFT10 + REDFT01 over all 256
+// lines, FFTW_ESTIMATE) takes 5.2 ns for both, so FFTW would save about 3 ns. Both together
+// bring the upwind2_rk2 step to about 26 ns, still above 20 on one core.
 #include <benchmark/benchmark.h>
 #include <time.h>
 
