@@ -3,20 +3,12 @@
 #include <algorithm>
 #include <vector>
 
+#include "fluid/advection_rows2.hpp"
 #include "fluid/boundary2.hpp"
+#include "fluid/upwind_advection2.hpp"
 
 namespace creaturelab::fluid {
 namespace {
-
-// The faces a semi-Lagrangian pass computes: unknown faces of one component, and their rows.
-struct FaceBlock {
-  int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;
-};
-template <FaceAxis kAxis>
-FaceBlock face_block(const MacGrid2& grid, FaceRange unknown) {
-  if constexpr (kAxis == FaceAxis::x) return {unknown.begin, unknown.end, 0, grid.ny};
-  return {0, grid.nx, unknown.begin, unknown.end};
-}
 
 // Feet of the trajectories of the faces (i, j), i in [i_begin, i_end), of one row, traced along
 // the velocity (U, V) by the RK2 midpoint rule, in cell units: x_mid = x − ½ c u(x),
@@ -153,35 +145,6 @@ void maccormack_backward_rows(const SampleView& U, const SampleView& V, const St
   }
 }
 
-void zero_solid_normal_faces(const Walls& walls, Array2& u, Array2& v) {
-  const int nx = v.nx();
-  const int ny = u.ny();
-  if (is_solid(walls.left)) {
-    for (int j = 0; j < ny; ++j) u(0, j) = 0.0;
-  }
-  if (is_solid(walls.right)) {
-    for (int j = 0; j < ny; ++j) u(nx, j) = 0.0;
-  }
-  if (is_solid(walls.bottom)) {
-    for (int i = 0; i < nx; ++i) v(i, 0) = 0.0;
-  }
-  if (is_solid(walls.top)) {
-    for (int i = 0; i < nx; ++i) v(i, ny) = 0.0;
-  }
-}
-
-// Rows of the u block and then of the v block as one index range, cut into one piece per
-// thread: body(component rows) is called for the u rows and the v rows of each piece.
-template <class UBody, class VBody>
-void for_row_pieces(WorkerPool* workers, const FaceBlock& ub, const FaceBlock& vb, UBody&& u_rows, VBody&& v_rows) {
-  const int nu = ub.j_end - ub.j_begin;
-  const int nv = vb.j_end - vb.j_begin;
-  for_pieces(workers, 0, nu + nv, [&](int lo, int hi, int part) {
-    if (lo < nu) u_rows(ub.j_begin + lo, ub.j_begin + std::min(hi, nu), part);
-    if (hi > nu) v_rows(vb.j_begin + std::max(lo, nu) - nu, vb.j_begin + hi - nu, part);
-  });
-}
-
 // Per-thread row scratch: feet x, feet y and one row of results, each `row` long.
 struct RowScratch {
   double* xs;
@@ -278,6 +241,8 @@ std::unique_ptr<AdvectionSolver2> make_advection_solver(AdvectionScheme scheme) 
       return std::make_unique<SemiLagrangianAdvection2>();
     case AdvectionScheme::maccormack:
       return std::make_unique<MacCormackAdvection2>();
+    case AdvectionScheme::upwind2_rk2:
+      return std::make_unique<Upwind2Rk2Advection2>();
   }
   return std::make_unique<SemiLagrangianAdvection2>();
 }

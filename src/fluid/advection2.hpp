@@ -2,6 +2,7 @@
 // Velocity self-advection, the −u·∇u term of Eq. 1 (Rudolf & Mould 2009, §3.2), solved by
 // tracing each face sample back along the flow (Stam 1999 §2.2, "method of characteristics").
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -19,6 +20,8 @@ class AdvectionSolver2 {
   /// Transports the grid's velocity along itself for dt_s. Writes u_out ((nx+1) × ny) and
   /// v_out (nx × (ny+1)); normal velocity on solid walls is zero. The grid is not modified.
   virtual void advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out, Array2& v_out) = 0;
+  /// Largest CFL number (max velocity component · dt / dx) the scheme is stable at.
+  virtual double max_stable_cfl() const { return std::numeric_limits<double>::infinity(); }
   /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
   void set_workers(WorkerPool* workers) { workers_ = workers; }
 

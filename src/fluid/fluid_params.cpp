@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -115,12 +116,21 @@ std::string FluidParams::validate() const {
     problems.add("cfl_safety_factor must be above 0 and at most 10 (got " + show(cfl_safety_factor) +
                  "; 0.5 is a good default, the paper used 0.001 with the elastic body)");
   }
+  if (time_step_policy == TimeStepPolicy::cfl_adaptive && cfl_safety_factor > max_stable_cfl_number(advection)) {
+    problems.add("cfl_safety_factor " + show(cfl_safety_factor) + " is above the stability bound " +
+                 show(max_stable_cfl_number(advection)) + " of advection = " + std::string(to_string(advection)));
+  }
   problems.require_positive(max_step_s, "max_step_s", "seconds");
   problems.require_positive(fixed_step_s, "fixed_step_s", "seconds");
   problems.require_finite(body_acceleration_x_m_per_s2, "body_acceleration_x_m_per_s2", "m/s^2");
   problems.require_finite(body_acceleration_y_m_per_s2, "body_acceleration_y_m_per_s2", "m/s^2");
   problems.require_positive(blowup_speed_m_per_s, "blowup_speed_m_per_s", "m/s");
   return problems.joined();
+}
+
+double max_stable_cfl_number(AdvectionScheme scheme) {
+  if (scheme == AdvectionScheme::upwind2_rk2) return 0.5;
+  return std::numeric_limits<double>::infinity();
 }
 
 std::string_view to_string(WallType type) {
@@ -143,6 +153,8 @@ std::string_view to_string(AdvectionScheme scheme) {
       return "semi_lagrangian";
     case AdvectionScheme::maccormack:
       return "maccormack";
+    case AdvectionScheme::upwind2_rk2:
+      return "upwind2_rk2";
   }
   return "unknown";
 }
@@ -171,7 +183,7 @@ std::optional<WallType> parse_wall_type(std::string_view name) {
   return parse(name, std::array{WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open});
 }
 std::optional<AdvectionScheme> parse_advection_scheme(std::string_view name) {
-  return parse(name, std::array{AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack});
+  return parse(name, std::array{AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack, AdvectionScheme::upwind2_rk2});
 }
 std::optional<PressureSolverType> parse_pressure_solver_type(std::string_view name) {
   return parse(name, std::array{PressureSolverType::fast_direct, PressureSolverType::pcg});

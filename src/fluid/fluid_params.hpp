@@ -41,8 +41,14 @@ struct Walls {
 /// Velocity advection scheme.
 enum class AdvectionScheme {
   semi_lagrangian,  ///< Stam 1999 §2.2: RK2 backtrace, bilinear interpolation (first order, diffusive)
-  maccormack        ///< Selle et al. 2008: forward + backward semi-Lagrangian, clamped (second order)
+  maccormack,       ///< Selle et al. 2008: forward + backward semi-Lagrangian, clamped (second order)
+  upwind2_rk2       ///< Eulerian flux form, Fromm upwind + Heun (second order, CFL ≤ ½: upwind_advection2.hpp)
 };
+
+/// Largest CFL number (max velocity component · dt / dx) at which the scheme is stable:
+/// infinite for the semi-Lagrangian ones; ½ for upwind2_rk2 (linear von Neumann bound in 2-D,
+/// upwind_advection2.hpp). FluidSolver2 refuses a step above it.
+double max_stable_cfl_number(AdvectionScheme scheme);
 
 /// Pressure (projection) solver. Both give the same answer to round-off / tolerance.
 enum class PressureSolverType {

@@ -22,6 +22,15 @@ std::string blow_up_message(long step, double time_s, double dt_s, double max_sp
   return out.str();
 }
 
+std::string cfl_message(long step, double time_s, double dt_s, double cfl, double bound) {
+  std::ostringstream out;
+  out << "fluid step " << step << " (t = " << time_s << " s, dt = " << dt_s << " s) has CFL number " << cfl
+      << ", above the stability bound " << bound
+      << " of the explicit advection scheme. Reduce the time step (max_step_s, fixed_step_s, "
+         "cfl_safety_factor) or use a semi-Lagrangian scheme.";
+  return out.str();
+}
+
 FluidParams checked(const FluidParams& params) {
   const std::string problems = params.validate();
   if (!problems.empty()) throw std::invalid_argument("invalid fluid parameters: " + problems);
@@ -36,6 +45,9 @@ FluidBlowUpError::FluidBlowUpError(long step, double time_s, double dt_s, double
       step_(step),
       time_s_(time_s),
       cfl_number_(cfl_number) {}
+
+FluidCflError::FluidCflError(long step, double time_s, double dt_s, double cfl_number, double bound)
+    : FluidBlowUpError(cfl_message(step, time_s, dt_s, cfl_number, bound), step, time_s, cfl_number), bound_(bound) {}
 
 FluidSolver2::FluidSolver2(const FluidParams& params)
     : params_(checked(params)),
@@ -78,6 +90,12 @@ FluidStepReport FluidSolver2::run_step(double dt_s, double start_speed_m_per_s) 
   FluidStepReport report;
   report.dt_s = dt_s;
   report.cfl_number = start_speed_m_per_s * dt_s / grid_.dx_m;
+  // An explicit scheme's bound, on the step's starting velocity (the CFL number reported). The
+  // relative slack lets the adaptive step at cfl_safety_factor = bound through despite rounding.
+  const double bound = advection_->max_stable_cfl();
+  if (stages_.advection && report.cfl_number > bound * (1.0 + 1e-12)) {
+    throw FluidCflError(steps_done_, time_s_, dt_s, report.cfl_number, bound);
+  }
 
   if (stages_.external_forces) apply_external_forces(context);
   if (stages_.advection) advect_velocity(context);

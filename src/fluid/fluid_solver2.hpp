@@ -6,7 +6,7 @@
 // One step is the operator split of Stam 1999 §2.2, as a fixed list of named stages (Jet's
 // GridFluidSolver2::onAdvanceTimeStep; Box2D's solver stages):
 //   1. external forces   u += dt (g + f/ρ)                          F of Eq. 1
-//   2. advection         u ← u(x − trajectory)                      −u·∇u
+//   2. advection         u ← u(x − trajectory), or explicit fluxes  −u·∇u
 //   3. viscosity         (I − ν dt ∇²) u_new = u                     ν∇²u
 //   4. projection        u ← u − (dt/ρ) ∇p with ∇·u = 0             −∇p/ρ, ∇·u = 0
 //   5. tracers           passive particles move with the new velocity
@@ -40,6 +40,8 @@ class FluidBlowUpError : public std::runtime_error {
  public:
   FluidBlowUpError(long step, double time_s, double dt_s, double max_speed_m_per_s, double limit_m_per_s,
                    double cfl_number);
+  FluidBlowUpError(const std::string& message, long step, double time_s, double cfl_number)
+      : std::runtime_error(message), step_(step), time_s_(time_s), cfl_number_(cfl_number) {}
   long step() const { return step_; }
   double time_s() const { return time_s_; }
   double cfl_number() const { return cfl_number_; }
@@ -48,6 +50,18 @@ class FluidBlowUpError : public std::runtime_error {
   long step_;
   double time_s_;
   double cfl_number_;
+};
+
+/// Thrown before a step whose CFL number exceeds the stability bound of an explicit advection
+/// scheme (FluidParams::advection = upwind2_rk2); a FluidBlowUpError, so callers that catch
+/// blow-ups catch it too.
+class FluidCflError final : public FluidBlowUpError {
+ public:
+  FluidCflError(long step, double time_s, double dt_s, double cfl_number, double bound);
+  double bound() const { return bound_; }
+
+ private:
+  double bound_;
 };
 
 /// Per-step values, passed explicitly to every stage (never a global clock).
@@ -95,7 +109,7 @@ class FluidSolver2 {
   // --- the stages (Stam 1999 §2.2), each callable alone -------------------------------
   /// u += dt (g + f/ρ) on every face that is not a solid wall's (f: force_density_n_per_m3()).
   void apply_external_forces(const StepContext& context);
-  /// −u·∇u by the advection sub-solver (semi-Lagrangian or MacCormack).
+  /// −u·∇u by the advection sub-solver (semi-Lagrangian, MacCormack or Eulerian upwind2_rk2).
   void advect_velocity(const StepContext& context);
   /// ν∇²u implicitly by the diffusion sub-solver; does nothing when ν = 0.
   LinearSolveReport apply_viscosity(const StepContext& context);

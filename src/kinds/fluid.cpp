@@ -117,8 +117,9 @@ FluidKind::FluidKind() {
                            std::string("tangential velocity of the ") + side + " wall when moving"));
   }
   const std::vector<ParamSpec> rest = {
-      choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack"},
-             "semi_lagrangian (Stam 1999, linear interpolation) or maccormack (limited, second order)"),
+      choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack", "upwind2_rk2"},
+             "semi_lagrangian (Stam 1999, linear interpolation), maccormack (limited, second order) or upwind2_rk2 "
+             "(Eulerian flux form, Fromm upwind + Heun, second order, explicit: CFL <= 0.5)"),
       choice("pressure_solver", "fast_direct", {"fast_direct", "pcg"},
              "exact projection: transform + tridiagonal (uniform box) or MIC(0)-PCG to 1e-10"),
       realOrAuto("dt_s", "s", 1e-9, 10, "fixed step, or \"auto\": CFL-adaptive with cfl_safety_factor and max_step_s"),

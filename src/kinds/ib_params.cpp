@@ -11,7 +11,7 @@ std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& d) {
       integer("cells", d.cells, 8, 2048, d.cells_doc),
       real("density_kg_per_m3", 1000.0, "kg/m^3", 1e-3, 1e6, d.density_doc),
       real("kinematic_viscosity_m2_per_s", d.kinematic_viscosity_m2_per_s, "m^2/s", 0, 10, d.viscosity_doc),
-      choice("advection", d.advection, {"semi_lagrangian", "maccormack"}, d.advection_doc),
+      choice("advection", d.advection, {"semi_lagrangian", "maccormack", "upwind2_rk2"}, d.advection_doc),
       integer("fluid_threads", 1, 1, 16,
               "threads inside each fluid step; results are bitwise the same for any count (fluid/worker_pool.hpp). "
               "Helps only on idle cores: on a loaded machine two were slower than one"),

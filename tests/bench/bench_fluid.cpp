@@ -18,6 +18,23 @@
 // (at load 9: CPU 47-75, elapsed 62-99 ns per cell, against 1 thread's 33-59 CPU, 47-82
 // elapsed): the workers wait for a core; what the threads gain on an idle machine is not
 // measured here.
+//
+// Eulerian advection option (AdvectionScheme::upwind2_rk2, fluid/upwind_advection2.hpp),
+// measured 2026-11-25 on the same machine (load 4.5-9), minimum of 3 repetitions, 1 thread,
+// CPU ns per cell, 128² / 256²:
+//   full step   semi-Lagrangian 33.3 / 39.3, MacCormack 51.9 / 60.7, upwind2_rk2 25.5 / 30.6
+//   advection   semi-Lagrangian 15.5 / 16.4, MacCormack 33.4 / 36.4, upwind2_rk2  7.4 /  9.0
+//   viscosity 5.0 / 6.0, pressure (fast direct) 9.7 / 11.8 (BM_Advection_*, BM_Viscosity,
+//   BM_Pressure_FastDirect). With upwind2_rk2 the 256² step is 9 + 6 + 12 + 3-4 (forces,
+//   diagnostics, copies): the 20 ns goal still needs about 10 ns from viscosity and pressure.
+// Where the rest could come from (measured the same day, 256², not implemented): the viscosity
+// stage costs about 1.6 ns fixed plus 1.3 ns per Richardson sweep; at the jellyfish's dt
+// (1.25 ms, α = 6.7e-4) it already takes 2 sweeps (4.3 ns), at the bench's dt (10 ms) 3 (5.5
+// ns), so faster-contracting sweeps (red–black Gauss–Seidel) save at most about 1.3 ns. The
+// projection is ~2/3 transforms (perf: fft 38 %, forward/inverse_transform 24 %, Thomas 10 %,
+// divergence and gradient 13 %), about 8 ns; FFTW 3.3.10 (REDFT10 + REDFT01 over all 256
+// lines, FFTW_ESTIMATE) takes 5.2 ns for both, so FFTW would save about 3 ns. Both together
+// bring the upwind2_rk2 step to about 26 ns, still above 20 on one core.
 #include <benchmark/benchmark.h>
 #include <time.h>
 
@@ -120,11 +137,50 @@ void pressure_only(benchmark::State& state, PressureSolverType pressure) {
   state.counters["cg_iterations"] = iterations;
 }
 
+// One stage alone on the state just before it (the grid restored every iteration, untimed):
+// advection (per scheme) and viscosity, the stage-by-stage figures of the header.
+enum class Stage { advection, viscosity };
+void stage_only(benchmark::State& state, Stage stage, AdvectionScheme scheme) {
+  const int cells = static_cast<int>(state.range(0));
+  auto solver = warmed_up(scene(cells, scheme, PressureSolverType::fast_direct));
+  const StepContext context{solver->steps_done(), solver->time_s(), solver->next_time_step_s()};
+  solver->apply_external_forces(context);
+  if (stage == Stage::viscosity) solver->advect_velocity(context);
+  const MacGrid2 before = solver->grid();
+  double total = 0.0;
+  for (auto _ : state) {
+    solver->grid() = before;
+    const double start = thread_cpu_seconds();
+    if (stage == Stage::advection) {
+      solver->advect_velocity(context);
+    } else {
+      benchmark::DoNotOptimize(solver->apply_viscosity(context));
+    }
+    const double seconds = thread_cpu_seconds() - start;
+    state.SetIterationTime(seconds);
+    total += seconds;
+  }
+  report(state, cells, total);
+}
+void BM_Advection_SemiLagrangian(benchmark::State& state) {
+  stage_only(state, Stage::advection, AdvectionScheme::semi_lagrangian);
+}
+void BM_Advection_MacCormack(benchmark::State& state) {
+  stage_only(state, Stage::advection, AdvectionScheme::maccormack);
+}
+void BM_Advection_Upwind2Rk2(benchmark::State& state) {
+  stage_only(state, Stage::advection, AdvectionScheme::upwind2_rk2);
+}
+void BM_Viscosity(benchmark::State& state) { stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian); }
+
 void BM_FluidStep_SemiLagrangian_FastPressure(benchmark::State& state) {
   full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::fast_direct);
 }
 void BM_FluidStep_MacCormack_FastPressure(benchmark::State& state) {
   full_step(state, AdvectionScheme::maccormack, PressureSolverType::fast_direct);
+}
+void BM_FluidStep_Upwind2Rk2_FastPressure(benchmark::State& state) {
+  full_step(state, AdvectionScheme::upwind2_rk2, PressureSolverType::fast_direct);
 }
 void BM_FluidStep_SemiLagrangian_Pcg(benchmark::State& state) {
   full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::pcg, false);
@@ -154,7 +210,12 @@ double minimum(const std::vector<double>& values) { return *std::min_element(val
 
 CL_FLUID_STEP_BENCH(BM_FluidStep_SemiLagrangian_FastPressure);
 CL_FLUID_STEP_BENCH(BM_FluidStep_MacCormack_FastPressure);
+CL_FLUID_STEP_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure);
 CL_FLUID_BENCH(BM_FluidStep_SemiLagrangian_Pcg);
+CL_FLUID_BENCH(BM_Advection_SemiLagrangian);
+CL_FLUID_BENCH(BM_Advection_MacCormack);
+CL_FLUID_BENCH(BM_Advection_Upwind2Rk2);
+CL_FLUID_BENCH(BM_Viscosity);
 CL_FLUID_BENCH(BM_Pressure_FastDirect);
 CL_FLUID_BENCH(BM_Pressure_Pcg);
 

@@ -90,11 +90,25 @@ TEST(FluidParams, SolverRefusesInvalidParameters) {
   }
 }
 
+// The explicit scheme's stability bound is a bad input when the adaptive step would exceed it.
+TEST(FluidParams, AdaptiveStepAboveTheExplicitSchemesBoundIsRefused) {
+  FluidParams params;
+  params.advection = AdvectionScheme::upwind2_rk2;
+  EXPECT_EQ(params.validate(), "");  // the default safety factor 0.5 is at the bound
+  params.cfl_safety_factor = 0.8;
+  EXPECT_NE(params.validate().find("cfl_safety_factor 0.8 is above the stability bound 0.5 of advection = upwind2_rk2"),
+            std::string::npos)
+      << params.validate();
+  params.time_step_policy = TimeStepPolicy::fixed;  // checked at step time instead
+  EXPECT_EQ(params.validate(), "");
+}
+
 TEST(FluidParams, EnumNamesRoundTrip) {
   for (WallType t : {WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open}) {
     EXPECT_EQ(parse_wall_type(to_string(t)), t);
   }
-  for (AdvectionScheme s : {AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack}) {
+  for (AdvectionScheme s :
+       {AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack, AdvectionScheme::upwind2_rk2}) {
     EXPECT_EQ(parse_advection_scheme(to_string(s)), s);
   }
   for (PressureSolverType s : {PressureSolverType::fast_direct, PressureSolverType::pcg}) {

@@ -131,6 +131,37 @@ TEST(FluidSolver, BlowUpIsReportedWithStepTimeAndCfl) {
   }
 }
 
+// upwind2_rk2 is explicit: a step above its CFL bound (½) is refused before it starts, with the
+// CFL number and the bound in the message; a step just below it runs and stays bounded.
+TEST(FluidSolver, ExplicitAdvectionRefusesAStepAboveItsCflBound) {
+  FluidParams params;
+  params.cells_x = params.cells_y = 32;
+  params.advection = AdvectionScheme::upwind2_rk2;
+  params.time_step_policy = TimeStepPolicy::fixed;
+  FluidSolver2 solver(params);
+  VortexPair pair;
+  pair.circulation_m2_per_s = 2e-3;
+  set_vortex_pair(solver.grid(), pair);
+  solver.make_divergence_free();
+  const double speed = max_velocity_component_m_per_s(solver.grid());
+  const double dx = solver.grid().dx_m;
+  const double ke0 = solver.kinetic_energy_joule_per_m();
+  for (int s = 0; s < 100; ++s) solver.step(0.49 * dx / max_velocity_component_m_per_s(solver.grid()));
+  EXPECT_LT(solver.kinetic_energy_joule_per_m(), ke0);
+  EXPECT_LT(max_velocity_component_m_per_s(solver.grid()), speed);
+  try {
+    solver.step(0.6 * dx / max_velocity_component_m_per_s(solver.grid()));
+    FAIL() << "expected FluidCflError";
+  } catch (const FluidCflError& error) {
+    EXPECT_EQ(error.step(), 100);
+    EXPECT_NEAR(error.cfl_number(), 0.6, 1e-9);
+    EXPECT_EQ(error.bound(), 0.5);
+    const std::string message = error.what();
+    EXPECT_NE(message.find("has CFL number 0.6, above the stability bound 0.5"), std::string::npos) << message;
+  }
+  EXPECT_EQ(solver.steps_done(), 100);  // nothing of the refused step was done
+}
+
 TEST(FluidSolver, InitialConditionsBecomeDivergenceFree) {
   FluidParams params;
   params.cells_x = params.cells_y = 32;

@@ -1,6 +1,6 @@
 // Threads inside a step (FluidParams::threads, fluid/worker_pool.hpp) change only the time:
 // the state after many steps is bitwise the same for 1, 2 and 3 threads, for every wall type,
-// both advection schemes, both pressure solvers, odd and even grids, and viscosities that take
+// all three advection schemes, both pressure solvers, odd and even grids, and viscosities that take
 // the Richardson and the CG path of the viscosity stage (Box2D v3's golden-hash test over
 // worker counts, STYLE.md).
 #include <gtest/gtest.h>
@@ -69,6 +69,9 @@ TEST(FluidThreads, StateIsBitwiseTheSameForOneTwoAndThreeThreads) {
       {40, 31, A::maccormack, P::fast_direct, F, O, N, F, 1e-4},       // open wall
       {30, 34, A::semi_lagrangian, P::pcg, O, O, O, O, 1e-4},
       {48, 45, A::maccormack, P::fast_direct, F, F, F, O, 1e-4},      // transform along x
+      {50, 50, A::upwind2_rk2, P::fast_direct, F, F, F, F, 1.304e-6},  // Eulerian flux form
+      {37, 53, A::upwind2_rk2, P::fast_direct, N, N, N, M, 1e-3},
+      {30, 34, A::upwind2_rk2, P::pcg, O, O, O, O, 1e-4},
   };
   for (const Scene& scene : scenes) {
     SCOPED_TRACE(::testing::Message() << scene.nx << "x" << scene.ny << " advection "
