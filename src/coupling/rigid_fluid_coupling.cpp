@@ -14,6 +14,7 @@ std::string validate(const RigidFluidParams& p, const fluid::FluidParams& fluid)
            "close and the fluid leaks through the body (got " + std::to_string(p.marker_spacing_cells) + ")";
   if (p.forcing_iterations < 1 || p.forcing_iterations > 100) return "forcing_iterations must be 1..100";
   if (p.projection_rounds < 1 || p.projection_rounds > 20) return "projection_rounds must be 1..20";
+  if (!(p.forcing_regularisation >= 0 && p.forcing_regularisation < 1)) return "forcing_regularisation must be in [0, 1)";
   if (!(p.depth_m > 0)) return "depth_m must be positive";
   if (!(p.max_marker_cells_per_step > 0 && p.max_marker_cells_per_step <= 2))
     return "max_marker_cells_per_step must be in (0, 2]";
@@ -41,6 +42,17 @@ RigidFluidCoupling::RigidFluidCoupling(const rigid::RigidData& data, const fluid
     : p_(p), fluid_(checked(p, f)) {
   const double dx = fluid_.grid().dx_m;
   markers_ = outlineMarkers(data.model(), data, p_.marker_spacing_cells * dx);
+  placeMarkers(data);
+  if (p_.inflow.stream_m_per_s != 0) fillStream(fluid_.grid(), p_.inflow.stream_m_per_s);
+  const int nb = data.model().bodies();
+  body_force_n_.assign(nb, Vec3{});
+  body_torque_n_m_.assign(nb, Vec3{});
+  body_point_m_.assign(nb, Vec3{});
+  force_.assign(markers_.size(), {});
+  spread_ = fluid::FaceVectorField2(fluid_.grid().nx, fluid_.grid().ny);
+}
+
+void RigidFluidCoupling::placeMarkers(const rigid::RigidData& data) {
   place(data, previous_);
   try {
     transfer_.locate(fluid_.grid(), p_.kernel, previous_);
@@ -49,13 +61,6 @@ RigidFluidCoupling::RigidFluidCoupling(const rigid::RigidData& data, const fluid
                                             "(world x = fluid x + ") + std::to_string(p_.origin_x_m) +
                                 " m, z = fluid y + " + std::to_string(p_.origin_z_m) + " m): " + e.what());
   }
-  if (p_.inflow.stream_m_per_s != 0) fillStream(fluid_.grid(), p_.inflow.stream_m_per_s);
-  const int nb = data.model().bodies();
-  body_force_n_.assign(nb, Vec3{});
-  body_torque_n_m_.assign(nb, Vec3{});
-  body_point_m_.assign(nb, Vec3{});
-  force_.assign(markers_.size(), {});
-  spread_ = fluid::FaceVectorField2(fluid_.grid().nx, fluid_.grid().ny);
 }
 
 void RigidFluidCoupling::place(const rigid::RigidData& data, std::vector<fluid::Vec2>& out) const {
@@ -139,8 +144,16 @@ void RigidFluidCoupling::projectedForcing(double dt) {
   r.resize(n);
   transfer_.interpolate(g, r);
   double scale = 0;
+  // Regularised by eps D f (D = dt / (rho dA_k), the preconditioner's inverse, velocity per force):
+  // forces the fluid cannot feel (markers of two bodies on the same faces pushing against each
+  // other, e.g. a block's end at the square it is hinged to) are damped to zero instead of growing
+  // step after step through the warm start. The equation is for the total f, so the warm start's
+  // share of such forces is removed too.
+  const double eps = p_.forcing_regularisation;
+  auto mobility = [&](std::size_t k) { return dt / (rho * markers_[k].length_m * dx); };
   for (std::size_t k = 0; k < n; ++k) {
-    r[k] = {velocity_[k].x - r[k].x, velocity_[k].y - r[k].y};
+    const double d = eps * mobility(k);
+    r[k] = {velocity_[k].x - r[k].x - d * force_[k].x, velocity_[k].y - r[k].y - d * force_[k].y};
     scale = std::max({scale, std::abs(velocity_[k].x), std::abs(velocity_[k].y)});
   }
   for (double u : {fluid::max_abs(g.u_m_per_s), fluid::max_abs(g.v_m_per_s)}) scale = std::max(scale, u);
@@ -184,6 +197,11 @@ void RigidFluidCoupling::projectedForcing(double dt) {
     std::swap(work_.u_m_per_s, g.u_m_per_s);
     std::swap(work_.v_m_per_s, g.v_m_per_s);
     transfer_.interpolate(work_, applied_);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double d = eps * mobility(k);
+      applied_[k].x += d * direction_[k].x;
+      applied_[k].y += d * direction_[k].y;
+    }
     double pap = 0;
     for (std::size_t k = 0; k < n; ++k) pap += direction_[k].x * applied_[k].x + direction_[k].y * applied_[k].y;
     if (!(pap > 0)) break;

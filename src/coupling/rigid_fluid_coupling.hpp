@@ -63,6 +63,10 @@ struct RigidFluidParams {
   // projected: CG stops when every marker's velocity is met to this fraction of the largest speed.
   double forcing_tolerance = 1e-3;
   int max_forcing_iterations = 50;
+  // projected: Tikhonov weight on the marker forces (relative to the direct-forcing mass), which
+  // damps forces that do not reach the fluid (see projectedForcing); it lets the markers slip by
+  // about this fraction of their forcing.
+  double forcing_regularisation = 1e-3;
   double depth_m = 1.0;            // bodies' extent along y (the fluid is per metre of depth)
   double origin_x_m = 0.0;         // world x of the fluid box's left wall
   double origin_z_m = 0.0;         // world z of its floor
@@ -96,6 +100,10 @@ class RigidFluidCoupling {
   // or filled with the stream. Throws std::invalid_argument for unusable parameters, a geom
   // without an outline, or a body outside the fluid box (named).
   RigidFluidCoupling(const rigid::RigidData& data, const fluid::FluidParams& fluid, const RigidFluidParams& p);
+
+  // Moves the markers to data's pose without a step (the pose set before the first step); throws
+  // std::invalid_argument when a body is then outside the fluid box.
+  void placeMarkers(const rigid::RigidData& data);
 
   void advanceFluid(double dt_s);
   void forceFluid(const rigid::RigidData& data, double dt_s);

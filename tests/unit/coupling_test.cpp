@@ -144,6 +144,7 @@ double plateLeak(Forcing mode, double spacing_cells, int forcing_iterations, int
     flux += g.u_m_per_s(i, j) * g.dx_m;
     span += g.dx_m;
   }
+  std::printf("plate force on world body: %.3f %.3f N\n", c.bodyForce_n()[0][0], c.bodyForce_n()[0][2]);
   std::printf("plate %d^2: CG iterations in the last step %d, residual %.2e m/s\n", n, c.forcingIterations(),
               c.forcingResidual_m_per_s());
   return flux / (0.5 * span);
