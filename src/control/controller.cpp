@@ -1,5 +1,8 @@
 #include "control/controller.hpp"
 
+#include "control/central_difference.hpp"
+#include "control/prescription.hpp"
+
 #include <stdexcept>
 
 namespace creaturelab::control {
@@ -24,30 +27,9 @@ const ControllerParams& checked(const ControllerParams& p, const rigid::RigidMod
 Controller::Controller(const rigid::RigidModel& model, ControllerParams p, const ForceModel& force)
     : model_(model), p_(checked(p, model)), force_(force), layout_(makeLayout(p_, model)), main_(model) {
   const int n = int(p_.controlled.size());
-  for (const auto& name : p_.controlled) {
-    const auto j = model.joint(model.findJoint(name));
-    prescribed_.qpos.push_back(j.qpos);
-    prescribed_.dof.push_back(j.dof);
-  }
-  for (const auto& name : p_.kinematic) {
-    const auto j = model.joint(model.findJoint(name));
-    prescribed_.qpos.push_back(j.qpos);
-    prescribed_.dof.push_back(j.dof);
-  }
-  prescribed_.target.assign(prescribed_.qpos.size(), 0.0);
-  // §5: the passive joints outboard of each controlled joint, held while it is perturbed.
-  holds_.resize(n);
-  for (int i = 0; i < n; ++i) {
-    if (!p_.rigidify_outboard) break;
-    const int body = model.joint(model.findJoint(p_.controlled[i])).body;
-    for (int id = 0; id < model.joints(); ++id) {
-      const auto j = model.joint(id);
-      if (j.type != rigid::JointType::hinge && j.type != rigid::JointType::slide) continue;
-      bool prescribed = false;
-      for (int q : prescribed_.qpos) prescribed = prescribed || q == j.qpos;
-      if (!prescribed && model.inSubtree(j.body, body)) holds_[i].push_back(id);
-    }
-  }
+  Prescription base = prescription(p_, model);
+  prescribed_ = std::move(base.prescribed);
+  holds_ = std::move(base.holds);
   direction_.assign(n, 0.0);
   derivative_.assign(n, 0.0);
   pool_ = std::make_unique<fluid::WorkerPool>(p_.threads);
@@ -74,15 +56,7 @@ void Controller::setAngle(const std::string& joint, double rad) {
 double Controller::evaluate(Worker& w, const rigid::RigidState& start, int joint, double offset) {
   w.data.restore(start);
   Prescribed& pr = w.prescribed;
-  pr = prescribed_;
-  for (std::size_t k = 0; k < pr.qpos.size(); ++k) pr.target[k] = start.qpos[pr.qpos[k]];
-  pr.target[joint] += offset;
-  for (int id : holds_[joint]) {
-    const auto j = model_.joint(id);
-    pr.qpos.push_back(j.qpos);
-    pr.dof.push_back(j.dof);
-    pr.target.push_back(start.qpos[j.qpos]);
-  }
+  perturbation(prescribed_, holds_[joint], model_, start.qpos.data(), joint, offset, pr);
   advanceFrame(w.data, pr, force_, p_.substeps, p_.servo_iterations, p_.servo_tolerance_rad, w.servo);
   measure(w.data, layout_, force_, w.scratch, w.measures);
   return combined(p_.weights, w.measures.objective, joint);
@@ -93,29 +67,11 @@ double Controller::evaluate(int joint, double offset_rad) {
 }
 
 std::vector<double> Controller::derivatives() {
-  const int n = int(p_.controlled.size());
   const rigid::RigidState start = main_.save();
-  // Two evaluations per DOF; each writes only its own slot and starts from the same snapshot, so
-  // the values do not depend on which worker runs them (bitwise, any thread count).
-  std::vector<double> value(2 * n, 0.0);
-  std::vector<std::string> error(workers_.size());
-  const double d = p_.delta_rad;
-  fluid::for_pieces(pool_.get(), 0, 2 * n, [&](int lo, int hi, int part) {
-    try {
-      for (int t = lo; t < hi; ++t) {
-        const int i = t / 2;
-        const double offset = t % 2 == 0 ? d : (p_.one_sided ? 0.0 : -d);
-        value[t] = evaluate(*workers_[part], start, i, offset);
-      }
-    } catch (const std::exception& e) {
-      error[part] = e.what();
-    }
-  });
-  for (const auto& e : error)
-    if (!e.empty()) throw std::runtime_error("while perturbing a joint: " + e);
-  std::vector<double> g(n);
-  for (int i = 0; i < n; ++i) g[i] = (value[2 * i] - value[2 * i + 1]) / (p_.one_sided ? d : 2 * d);
-  return g;
+  return centralDifferences(
+      pool_.get(), int(p_.controlled.size()), p_.delta_rad, p_.one_sided,
+      [&](int part, int joint, double offset) { return evaluate(*workers_[part], start, joint, offset); },
+      "while perturbing a joint");
 }
 
 JointMeasures Controller::measureNow() {

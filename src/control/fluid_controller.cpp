@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "control/central_difference.hpp"
 #include "control/prescription.hpp"
 
 namespace creaturelab::control {
@@ -143,7 +144,7 @@ double objectiveOf(const ObjectiveLayout& l, int j, const Vec3& f) {
 // of the state, held for settle_steps; the force along w averaged over the last average_steps.
 double FluidController::evaluate(World& w, const CoupledState& start, int joint, double offset) {
   restore(w, start);
-  perturbation(Prescription{prescribed_, holds_}, model_, start.rigid.qpos.data(), joint, offset, w.pr);
+  perturbation(prescribed_, holds_[joint], model_, start.rigid.qpos.data(), joint, offset, w.pr);
   std::vector<double> from(w.pr.qpos.size());
   for (std::size_t k = 0; k < from.size(); ++k) from[k] = start.rigid.qpos[w.pr.qpos[k]];
   const int n = int(p_.controlled.size());
@@ -171,27 +172,13 @@ double FluidController::evaluate(int joint, double offset_rad) {
 }
 
 std::vector<double> FluidController::derivatives() {
-  const int n = int(p_.controlled.size());
   CoupledState start;
   save(*main_, start);
-  std::vector<double> value(2 * n, 0.0);
-  std::vector<std::string> error(workers_.size());
-  const double d = p_.delta_rad;
-  fluid::for_pieces(pool_.get(), 0, 2 * n, [&](int lo, int hi, int part) {
-    try {
-      for (int t = lo; t < hi; ++t) {
-        const double offset = t % 2 == 0 ? d : (p_.one_sided ? 0.0 : -d);
-        value[t] = evaluate(*workers_[part], start, t / 2, offset);
-      }
-    } catch (const std::exception& e) {
-      error[part] = e.what();
-    }
-  });
-  for (const auto& e : error)
-    if (!e.empty()) throw std::runtime_error("while perturbing a joint in the fluid: " + e);
+  auto g = centralDifferences(
+      pool_.get(), int(p_.controlled.size()), p_.delta_rad, p_.one_sided,
+      [&](int part, int joint, double offset) { return evaluate(*workers_[part], start, joint, offset); },
+      "while perturbing a joint in the fluid");
   for (const auto& w : workers_) max_forcing_iterations_ = std::max(max_forcing_iterations_, w->forcing_iterations);
-  std::vector<double> g(n);
-  for (int i = 0; i < n; ++i) g[i] = (value[2 * i] - value[2 * i + 1]) / (p_.one_sided ? d : 2 * d);
   return g;
 }
 

@@ -27,12 +27,12 @@ Prescription prescription(const ControllerParams& p, const rigid::RigidModel& mo
   return out;
 }
 
-void perturbation(const Prescription& base, const rigid::RigidModel& model, const double* qpos, int joint,
-                  double offset, Prescribed& pr) {
-  pr = base.prescribed;
+void perturbation(const Prescribed& base, const std::vector<int>& holds, const rigid::RigidModel& model,
+                  const double* qpos, int joint, double offset, Prescribed& pr) {
+  pr = base;
   for (std::size_t k = 0; k < pr.qpos.size(); ++k) pr.target[k] = qpos[pr.qpos[k]];
   pr.target[joint] += offset;
-  for (int id : base.holds[joint]) {
+  for (int id : holds) {
     const auto j = model.joint(id);
     pr.qpos.push_back(j.qpos);
     pr.dof.push_back(j.dof);

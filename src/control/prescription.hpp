@@ -18,8 +18,9 @@ struct Prescription {
 // p must pass validate(p, model).
 Prescription prescription(const ControllerParams& p, const rigid::RigidModel& model);
 
-// pr with joint i's holds appended, every target at the angle it has in qpos, joint i's moved by offset.
-void perturbation(const Prescription& base, const rigid::RigidModel& model, const double* qpos, int joint,
-                  double offset_rad, Prescribed& pr);
+// pr = base with `holds` (joint ids) appended, every target at the angle it has in qpos, and the
+// prescribed entry `joint` moved by offset.
+void perturbation(const Prescribed& base, const std::vector<int>& holds, const rigid::RigidModel& model,
+                  const double* qpos, int joint, double offset_rad, Prescribed& pr);
 
 }  // namespace creaturelab::control

@@ -15,13 +15,6 @@ using control::Vec3;
 using namespace control_text;
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
-rigid::RigidModel loadModel(const ParamReader& r) {
-  auto model = rigid::RigidModel::load(r.text("model_file"));
-  model.setGravity({0, 0, -r.real("gravity_m_per_s2")});
-  model.setTimestep(r.real("frame_s") / double(r.integer("substeps")));
-  return model;
-}
-
 fluid::WallType wall(const ParamReader& r, const std::string& name) { return *fluid::parse_wall_type(r.text(name)); }
 
 fluid::FluidParams fluidParams(const ParamReader& r) {

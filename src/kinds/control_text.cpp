@@ -36,6 +36,13 @@ double number(const std::string& text, const std::string& what) {
   return v;
 }
 
+rigid::RigidModel loadModel(const ParamReader& r) {
+  auto model = rigid::RigidModel::load(r.text("model_file"));
+  model.setGravity({0, 0, -r.real("gravity_m_per_s2")});
+  model.setTimestep(r.real("frame_s") / double(r.integer("substeps")));
+  return model;
+}
+
 control::ControllerParams controllerParams(const ParamReader& r) {
   control::ControllerParams p;
   p.controlled = split(r.text("controlled"), ',');

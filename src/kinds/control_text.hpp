@@ -16,6 +16,9 @@ std::vector<std::string> split(const std::string& s, char sep);
 // Throws std::invalid_argument "what: 'text' is not a number".
 double number(const std::string& text, const std::string& what);
 
+// model_file with gravity_m_per_s2 (along -z) and the step frame_s / substeps.
+rigid::RigidModel loadModel(const ParamReader& r);
+
 // controlled, kinematic, objectives, senses, weights, drag_direction_*, frame_s, substeps,
 // strength_rad_per_s, delta_rad, one_sided, search_every_frames, rigidify_outboard, threads.
 // Throws std::invalid_argument naming the parameter.
