@@ -9,7 +9,9 @@ point (Fig. 8 analogues). frames_<k>/frame_NNN.png: point k's recorded frames on
 animation-friendly series; first two points only). angles.png: the controlled angle and the fluid
 force along w against time, per point. convergence.txt: per point the final flow angle, its
 deviation from flow-aligned (min) or perpendicular (max), and the converged frame beside the
-paper's Fig. 2 (Navier-Stokes rows: 56 maximising, 50 minimising). Figures go to RUN_DIR/figures/.
+paper's Fig. 2 (Navier-Stokes rows: 56 maximising, 50 minimising). parallel_dofs.txt: wall seconds
+per frame against controlled joints and threads (Fig. 10), when the run has several thread counts.
+Figures go to RUN_DIR/figures/.
 """
 import argparse
 import glob
@@ -21,6 +23,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+from plot_control import timing_table  # noqa: E402
 
 PAPER_FRAME = {"max": 56, "min": 50}
 
@@ -131,6 +135,8 @@ def main():
             frame_series(f, os.path.join(out, f"frames_{k}"))
     angles_figure(points, os.path.join(out, "angles.png"))
     convergence_table(points, os.path.join(out, "convergence.txt"))
+    if len({int(f.attrs["threads"]) for f in points}) > 1:
+        timing_table(points, os.path.join(out, "parallel_dofs.txt"))
     for f in points:
         f.close()
 
