@@ -72,7 +72,7 @@ struct RigidFluidParams {
   double origin_z_m = 0.0;         // world z of its floor
   // The coupled stability limit: no marker may move more than this many cells in one step (it
   // would jump over the fluid it should push, and the explicit reaction lags by a step).
-  double max_marker_cells_per_step = 0.5;
+  double max_marker_cells_per_step = 1.0;
   InflowParams inflow;
 };
 
