@@ -150,9 +150,9 @@ ControlFluidKind::ControlFluidKind() {
       {"final_drag_n", "N", "first controlled joint: mean |F| of the fluid on its bodies over the last average_frames"},
       {"final_drag_along_n", "N", "the same along w (Eq. 10)"},
       {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
-      {"max_forcing_iterations", "", "most CG iterations of the projected forcing in any coupled step"},
+      {"forcing_iterations_most", "", "most CG iterations of the projected forcing in any coupled step"},
       {"markers", "", "outline markers"},
-      {"max_marker_cells_per_step", "", "largest marker displacement in one coupled step of the main run, cells"},
+      {"marker_cells_per_step_most", "", "largest marker displacement in one coupled step of the main run, cells"},
   };
 }
 
@@ -296,9 +296,9 @@ Result ControlFluidKind::run(const Params& params) const {
   m["final_drag_n"] = {tailMean(drag[0]->values, tail), "N"};
   m["final_drag_along_n"] = {tailMean(drag_along[0]->values, tail), "N"};
   m["max_servo_residual_rad"] = {max_residual, "rad"};
-  m["max_forcing_iterations"] = {double(controller.maxForcingIterations()), ""};
+  m["forcing_iterations_most"] = {double(controller.maxForcingIterations()), ""};
   m["markers"] = {double(markers.size()), ""};
-  m["max_marker_cells_per_step"] = {max_cells, ""};
+  m["marker_cells_per_step_most"] = {max_cells, ""};
   return result;
 }
 
