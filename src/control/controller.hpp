@@ -21,6 +21,7 @@
 #include "control/controller_params.hpp"
 #include "control/force_model.hpp"
 #include "control/objectives.hpp"
+#include "control/prescription.hpp"
 #include "control/target_servo.hpp"
 #include "fluid/worker_pool.hpp"
 
@@ -61,31 +62,21 @@ class Controller {
   double evaluate(int dof, double offset_rad);
   // Per-DOF derivatives at the current state (evaluated in parallel).
   std::vector<double> derivatives();
-  int controlledDofs() const { return int(dof_joint_.size()); }
+  int controlledDofs() const { return int(pres_.dof_joint.size()); }
   // The measures at the current state (steady_state as configured), without changing it.
   JointMeasures measureNow();
   int evaluationsPerFrame() const { return 2 * controlledDofs(); }
 
  private:
   struct Worker;
-  // A controlled or kinematic joint: where it is, and its slot in prescribed_ (scalar or ball).
-  struct Slot {
-    int qpos = 0, dof = 0, index = 0;
-    bool ball = false;
-  };
   double evaluate(Worker& w, const rigid::RigidState& start, int dof, double offset_rad);
-  void captureHolds();
-  Slot slotOf(const std::string& joint, bool kinematic);
 
   const rigid::RigidModel& model_;
   ControllerParams p_;
   const ForceModel& force_;
   ObjectiveLayout layout_;
   rigid::RigidData main_;
-  Prescribed prescribed_;                 // controlled joints first (in order), then kinematic; PD
-  std::vector<Slot> controlled_, kinematic_;
-  std::vector<int> dof_joint_, dof_axis_;  // per controlled DOF: its joint, its axis (ball: 0-2)
-  std::vector<std::vector<int>> holds_;   // per controlled joint: passive joints outboard (incl. PD)
+  Prescription pres_;                     // the frame's targets live in pres_.prescribed
   std::vector<double> direction_;         // -1, 0, +1 per controlled DOF
   std::vector<double> derivative_;
   std::unique_ptr<fluid::WorkerPool> pool_;

@@ -16,37 +16,14 @@ namespace {
 using control::Vec3;
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
-rigid::RigidModel loadModel(const ParamReader& r) {
-  auto model = rigid::RigidModel::load(r.text("model_file"));
-  model.setGravity({0, 0, -r.real("gravity_m_per_s2")});
-  model.setTimestep(r.real("frame_s") / double(r.integer("substeps")));
-  return model;
-}
-
 Vec3 wind(const ParamReader& r) { return {r.real("wind_x_m_per_s"), r.real("wind_y_m_per_s"), r.real("wind_z_m_per_s")}; }
 
 double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
-// Angle (deg) between two lines (not directions): in [0, 90].
-double lineAngleDeg(const Vec3& a, const Vec3& b) {
-  const double c = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (norm(a) * norm(b));
-  return std::acos(std::min(1.0, c)) * kDeg;
-}
-
-// The frame from which every controlled angle stays within tol of its mean over the last
-// `tail` frames; frames + 1 if the last frame is not yet settled.
-double convergedFrame(const std::vector<std::vector<double>>& angles_deg, double tol_deg, int tail) {
-  long first = 0;
-  for (const auto& a : angles_deg) {
-    const int n = int(a.size());
-    const int t = std::min(tail, n);
-    double mean = 0;
-    for (int k = n - t; k < n; ++k) mean += a[k] / t;
-    long f = n;
-    while (f > 0 && std::abs(a[f - 1] - mean) <= tol_deg) --f;
-    first = std::max(first, f == n ? long(n) + 1 : f + 1);  // frames count from 1
-  }
-  return double(first);
+control::ControllerParams windControllerParams(const ParamReader& r) {
+  control::ControllerParams p = controllerParams(r);
+  p.steady_state = r.boolean("steady_state");
+  return p;
 }
 
 }  // namespace
@@ -155,7 +132,7 @@ std::string ControlKind::validate(const Params& params) const {
   ParamReader r(params);
   try {
     const auto model = loadModel(r);
-    const auto p = controllerParams(r);
+    const auto p = windControllerParams(r);
     if (auto e = control::validate(p, model); !e.empty()) return e;
     for (const auto& pose : initialPoses(r)) {
       const int id = model.findJoint(pose.joint);
@@ -191,7 +168,7 @@ CostEstimate ControlKind::estimateCost(const Params& params) const {
 Result ControlKind::run(const Params& params) const {
   ParamReader r(params);
   const rigid::RigidModel model = loadModel(r);
-  const control::ControllerParams p = controllerParams(r);
+  const control::ControllerParams p = windControllerParams(r);
   const control::SimpleWind force(rigid::geomSurfaces(model, int(r.integer("surface_slices"))),
                                   r.real("density_kg_per_m3"), control::constantWind(wind(r)));
   control::Controller controller(model, p, force);

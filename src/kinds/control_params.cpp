@@ -1,5 +1,6 @@
 #include "kinds/control_params.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -64,6 +65,13 @@ std::vector<std::string> splitList(const std::string& s, char sep) {
   std::string item;
   while (std::getline(in, item, sep)) out.push_back(trim(item));
   return out;
+}
+
+rigid::RigidModel loadModel(const ParamReader& r) {
+  auto model = rigid::RigidModel::load(r.text("model_file"));
+  model.setGravity({0, 0, -r.real("gravity_m_per_s2")});
+  model.setTimestep(r.real("frame_s") / double(r.integer("substeps")));
+  return model;
 }
 
 control::Pattern parsePattern(const std::string& text, const std::string& key) {
@@ -133,7 +141,6 @@ control::ControllerParams controllerParams(const ParamReader& r) {
   p.delta_rad = r.real("delta_rad");
   p.one_sided = r.boolean("one_sided");
   p.search_every_frames = int(r.integer("search_every_frames"));
-  p.steady_state = r.boolean("steady_state");
   p.rigidify_outboard = r.boolean("rigidify_outboard");
   p.threads = int(r.integer("threads"));
   return p;
@@ -150,6 +157,26 @@ std::vector<InitialPose> initialPoses(const ParamReader& r) {
     out.push_back(pose);
   }
   return out;
+}
+
+double lineAngleDeg(const control::Vec3& a, const control::Vec3& b) {
+  auto norm = [](const control::Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
+  const double c = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (norm(a) * norm(b));
+  return std::acos(std::min(1.0, c)) * 180.0 / std::numbers::pi;
+}
+
+double convergedFrame(const std::vector<std::vector<double>>& angles_deg, double tol_deg, int tail) {
+  long first = 0;
+  for (const auto& a : angles_deg) {
+    const int n = int(a.size());
+    const int t = std::min(tail, n);
+    double mean = 0;
+    for (int k = n - t; k < n; ++k) mean += a[k] / t;
+    long f = n;
+    while (f > 0 && std::abs(a[f - 1] - mean) <= tol_deg) --f;
+    first = std::max(first, f == n ? long(n) + 1 : f + 1);
+  }
+  return double(first);
 }
 
 }  // namespace creaturelab::kinds

@@ -1,7 +1,10 @@
 #pragma once
-// The `control` kind's text parameters parsed into controller parameters (issue 15): joint lists,
-// objectives, weights, initial poses, and the motion patterns of kinematic and PD-driven joints
-// (Lentine et al. 2010 §2.2). Every parse error throws std::invalid_argument naming the key.
+// What the controller kinds (control: simple wind, issue 15; control_fluid: the full fluid, issue
+// 16) read and measure the same way: the text parameters parsed into controller parameters (joint
+// lists, objectives, weights, initial poses, the motion patterns of kinematic and PD-driven joints,
+// Lentine et al. 2010 §2.2), the model, and the converged frame of Fig. 2
+// (seeds/creature-control-lentine-2010.txt). Every parse error throws std::invalid_argument naming
+// the key.
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,6 +16,10 @@ namespace creaturelab::kinds {
 
 std::vector<std::string> splitList(const std::string& s, char sep);
 
+// model_file with gravity_m_per_s2 (along -z) and the step frame_s / substeps.
+rigid::RigidModel loadModel(const ParamReader& r);
+
+// Every controller parameter but steady_state (the wind kind's own; the fluid has settle_steps).
 control::ControllerParams controllerParams(const ParamReader& r);
 
 // One initial pose: a hinge's angle (one value) or a ball joint's rotation vector (three), deg.
@@ -26,5 +33,12 @@ std::vector<InitialPose> initialPoses(const ParamReader& r);
 // "hold" | "sine(mean_deg, amplitude_deg, frequency_hz, phase_deg)" |
 // "table(t_s angle_deg, t_s angle_deg, ...)"; `key` names the parameter in errors.
 control::Pattern parsePattern(const std::string& text, const std::string& key);
+
+// Angle (deg) between two lines (not directions): in [0, 90].
+double lineAngleDeg(const control::Vec3& a, const control::Vec3& b);
+
+// The frame from which every controlled angle stays within tol of its mean over the last `tail`
+// frames; frames + 1 if the last frame is not yet settled (frames count from 1).
+double convergedFrame(const std::vector<std::vector<double>>& angles_deg, double tol_deg, int tail);
 
 }  // namespace creaturelab::kinds

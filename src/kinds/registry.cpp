@@ -1,5 +1,6 @@
 #include "kinds/charlotte.hpp"
 #include "kinds/control.hpp"
+#include "kinds/control_fluid.hpp"
 #include "kinds/fish.hpp"
 #include "kinds/fluid.hpp"
 #include "kinds/jellyfish.hpp"
@@ -21,6 +22,7 @@ Registry defaultRegistry() {
   r.add(std::make_unique<MembraneKind>());
   r.add(std::make_unique<JellyfishKind>());
   r.add(std::make_unique<ControlKind>());
+  r.add(std::make_unique<ControlFluidKind>());
   r.add(std::make_unique<FishKind>());
   return r;
 }

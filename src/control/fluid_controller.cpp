@@ -1,0 +1,239 @@
+#include "control/fluid_controller.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "control/central_difference.hpp"
+#include "control/prescription.hpp"
+
+namespace creaturelab::control {
+namespace {
+
+// The fluid's reaction of the last coupled step as the servo's external-force stage.
+class CouplingReaction final : public ForceModel {
+ public:
+  explicit CouplingReaction(const coupling::RigidFluidCoupling* c) : c_(c) {}
+  void apply(rigid::RigidData& data, std::vector<Vec3>& body_force_n) const override {
+    body_force_n = c_->bodyForce_n();
+    c_->applyReaction(data);
+  }
+
+ private:
+  const coupling::RigidFluidCoupling* c_;
+};
+
+const ControllerParams& checked(const ControllerParams& p, const FluidControlParams& f, const rigid::RigidModel& m) {
+  if (std::string err = validate(p, f, m); !err.empty()) throw std::invalid_argument(err);
+  return p;
+}
+
+}  // namespace
+
+std::string validate(const ControllerParams& p, const FluidControlParams& f, const rigid::RigidModel& model) {
+  if (auto e = validate(p, model); !e.empty()) return e;
+  for (auto o : p.objectives)
+    if (o == Objective::effort) return "objectives: effort is not offered with the fluid (drag | drag_along)";
+  for (const auto* names : {&p.controlled, &p.kinematic, &p.pd_driven})
+    for (const auto& name : *names)
+      if (model.joint(model.findJoint(name)).type == rigid::JointType::ball)
+        return "joint '" + name + "' is a ball joint: the fluid is planar (x-z), give hinges";
+  if (p.steady_state) return "steady_state: with the fluid use settle_steps (§4.3's validation mode) instead";
+  if (f.settle_steps < 0) return "settle_steps must be >= 0";
+  if (f.average_steps < 1 || f.average_steps > p.substeps + f.settle_steps)
+    return "average_steps must be 1..substeps + settle_steps (the steps of one evaluation)";
+  return "";
+}
+
+struct FluidController::World {
+  World(const rigid::RigidModel& m, const std::vector<std::pair<std::string, double>>& initial,
+        const fluid::FluidParams& fp, const coupling::RigidFluidParams& cp)
+      : data(m), force(nullptr) {
+    for (const auto& [name, rad] : initial) data.qpos()[m.joint(m.findJoint(name)).qpos] = rad;
+    data.kinematics();
+    fluid::FluidParams one = fp;
+    one.threads = 1;  // the parallelism is across evaluations (§5)
+    coupling = std::make_unique<coupling::RigidFluidCoupling>(data, one, cp);
+    force = CouplingReaction(coupling.get());
+  }
+  rigid::RigidData data;
+  std::unique_ptr<coupling::RigidFluidCoupling> coupling;
+  CouplingReaction force;
+  ServoScratch servo;
+  Prescribed pr, step;
+  std::vector<Vec3> forces;  // per step of an evaluation: the joint's force
+  double residual_rad = 0;
+  int forcing_iterations = 0;
+};
+
+FluidController::FluidController(const rigid::RigidModel& model, ControllerParams p, FluidControlParams f,
+                                 const std::vector<std::pair<std::string, double>>& initial,
+                                 const fluid::FluidParams& fluid, const coupling::RigidFluidParams& cp)
+    : model_(model), p_(checked(p, f, model)), f_(f), layout_(makeLayout(p_, model)) {
+  for (const auto& [name, rad] : initial)
+    if (model.findJoint(name) < 0) throw std::invalid_argument("joint '" + name + "' is not in the model " + model.path());
+  pres_ = prescription(p_, model);
+  main_ = std::make_unique<World>(model, initial, fluid, cp);
+  captureHolds(pres_, main_->data.qpos());
+  pool_ = std::make_unique<fluid::WorkerPool>(p_.threads);
+  for (int k = 0; k < fluid::piece_count(pool_.get()); ++k)
+    workers_.push_back(std::make_unique<World>(model, initial, fluid, cp));
+  const int n = int(p_.controlled.size());
+  direction_.assign(n, 0.0);
+  derivative_.assign(n, 0.0);
+  frame_force_.assign(n, Vec3{});
+}
+
+FluidController::~FluidController() = default;
+
+rigid::RigidData& FluidController::data() { return main_->data; }
+const coupling::RigidFluidCoupling& FluidController::coupling() const { return *main_->coupling; }
+
+// One coupled step (rigid_fluid_coupling.hpp): fluid to u~, the solid to x^{n+1} with the servo
+// reaching pr's targets under the fluid's last reaction, forcing at x^{n+1}, projection.
+void FluidController::coupledStep(World& w, const Prescribed& pr) {
+  const double dt = model_.timestep_s();
+  w.coupling->advanceFluid(dt);
+  const ServoReport s = advanceFrame(w.data, pr, w.force, 1, p_.servo_iterations, p_.servo_tolerance_rad, w.servo);
+  w.residual_rad = std::max(w.residual_rad, s.residual_rad);
+  w.data.kinematics();
+  w.coupling->forceFluid(w.data, dt);
+  w.coupling->project(dt);
+  w.forcing_iterations = std::max(w.forcing_iterations, w.coupling->forcingIterations());
+}
+
+Vec3 FluidController::jointForce(const World& w, int joint) const {
+  Vec3 f{};
+  const auto& body = w.coupling->bodyForce_n();
+  for (int b = 0; b < int(body.size()); ++b)
+    if (layout_.moves[joint][b])
+      for (int k = 0; k < 3; ++k) f[k] += body[b][k];
+  return f;
+}
+
+// `steps` coupled steps with the prescribed angles moving linearly from `start` to pr's targets;
+// the joints' forces of each step appended to w.forces (joint-major: step s, joint j at s n + j).
+void FluidController::moveOver(World& w, Prescribed& pr, const std::vector<double>& start, int steps,
+                               std::vector<Vec3>* forces, int joints) {
+  w.step = pr;
+  for (int s = 0; s < steps; ++s) {
+    const double a = double(s + 1) / steps;
+    for (std::size_t k = 0; k < start.size(); ++k) w.step.target[k] = start[k] + a * (pr.target[k] - start[k]);
+    coupledStep(w, w.step);
+    if (forces)
+      for (int j = 0; j < joints; ++j) forces->push_back(jointForce(w, j));
+  }
+}
+
+void FluidController::save(World& w, CoupledState& s) const {
+  s.rigid = w.data.save();
+  w.coupling->save(s.fluid);
+}
+
+void FluidController::restore(World& w, const CoupledState& s) const {
+  w.data.restore(s.rigid);
+  w.data.kinematics();
+  w.coupling->restore(s.fluid);
+}
+
+namespace {
+double objectiveOf(const ObjectiveLayout& l, int j, const Vec3& f) {
+  if (l.kinds[j] == Objective::drag) return std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+  return f[0] * l.direction[0] + f[1] * l.direction[1] + f[2] * l.direction[2];
+}
+}  // namespace
+
+// (d, e) in the fluid: joint i moved by offset over one frame of coupled steps from its own copy
+// of the state, held for settle_steps; the force along w averaged over the last average_steps.
+double FluidController::evaluate(World& w, const CoupledState& start, int joint, double offset) {
+  restore(w, start);
+  perturbation(pres_, model_, start.rigid.qpos.data(), joint, offset, w.pr);
+  std::vector<double> from(w.pr.qpos.size());
+  for (std::size_t k = 0; k < from.size(); ++k) from[k] = start.rigid.qpos[w.pr.qpos[k]];
+  const int n = int(p_.controlled.size());
+  w.forces.clear();
+  moveOver(w, w.pr, from, p_.substeps, &w.forces, n);
+  if (f_.settle_steps > 0) {
+    std::vector<double> held(w.pr.target.begin(), w.pr.target.end());
+    moveOver(w, w.pr, held, f_.settle_steps, &w.forces, n);
+  }
+  const int steps = int(w.forces.size()) / n;
+  std::vector<double> objective(n);
+  for (int j = 0; j < n; ++j) {
+    Vec3 f{};
+    for (int s = steps - f_.average_steps; s < steps; ++s)
+      for (int k = 0; k < 3; ++k) f[k] += w.forces[s * n + j][k] / f_.average_steps;
+    objective[j] = objectiveOf(layout_, j, f);
+  }
+  return combined(p_.weights, objective, joint);
+}
+
+double FluidController::evaluate(int joint, double offset_rad) {
+  CoupledState s;
+  save(*main_, s);
+  return evaluate(*workers_[0], s, joint, offset_rad);
+}
+
+std::vector<double> FluidController::derivatives() {
+  CoupledState start;
+  save(*main_, start);
+  auto g = centralDifferences(
+      pool_.get(), int(p_.controlled.size()), p_.delta_rad, p_.one_sided,
+      [&](int part, int joint, double offset) { return evaluate(*workers_[part], start, joint, offset); },
+      "while perturbing a joint in the fluid");
+  for (const auto& w : workers_) max_forcing_iterations_ = std::max(max_forcing_iterations_, w->forcing_iterations);
+  return g;
+}
+
+void FluidController::hold(int steps) {
+  World& w = *main_;
+  w.pr = pres_.prescribed;
+  for (std::size_t k = 0; k < w.pr.qpos.size(); ++k)
+    if (!w.pr.pattern[k]) w.pr.target[k] = w.data.qpos()[w.pr.qpos[k]];
+  for (int s = 0; s < steps; ++s) coupledStep(w, w.pr);
+}
+
+FrameRecord FluidController::frame() {
+  const int n = int(p_.controlled.size());
+  World& w = *main_;
+  FrameRecord r;
+  if (frame_ % p_.search_every_frames == 0) {
+    derivative_ = derivatives();
+    for (int i = 0; i < n; ++i) {
+      const double sign = derivative_[i] > 0 ? 1.0 : derivative_[i] < 0 ? -1.0 : 0.0;
+      direction_[i] = p_.senses[i] == Sense::minimize ? -sign : sign;
+    }
+    r.searched = true;
+  }
+  const double step_rad = p_.strength_rad_per_s * p_.frame_s;
+  std::vector<double> from(pres_.prescribed.qpos.size());
+  for (std::size_t k = 0; k < from.size(); ++k) from[k] = w.data.qpos()[pres_.prescribed.qpos[k]];
+  for (int i = 0; i < n; ++i) pres_.prescribed.target[i] = from[i] + step_rad * direction_[i];
+  w.residual_rad = 0;
+  std::vector<Vec3> forces;
+  moveOver(w, pres_.prescribed, from, p_.substeps, &forces, n);
+  r.time_s = w.data.time_s();
+  r.servo_residual_rad = w.residual_rad;
+  r.target_rad.assign(pres_.prescribed.target.begin(), pres_.prescribed.target.begin() + n);
+  for (int i = 0; i < n; ++i) r.angle_rad.push_back(w.data.qpos()[pres_.prescribed.qpos[i]]);
+  r.derivative = derivative_;
+  // The frame's mean force on each joint's bodies (the coupled steps' exchange).
+  JointMeasures& m = r.measures;
+  m.torque_n_m.assign(n, 0.0);
+  m.effort_n_m_s.assign(n, 0.0);
+  for (int i = 0; i < n; ++i) {
+    Vec3 f{};
+    for (int s = 0; s < p_.substeps; ++s)
+      for (int k = 0; k < 3; ++k) f[k] += forces[s * n + i][k] / p_.substeps;
+    frame_force_[i] = f;
+    m.drag_vector_n.push_back(f);
+    m.drag_n.push_back(std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]));
+    m.drag_along_n.push_back(f[0] * layout_.direction[0] + f[1] * layout_.direction[1] + f[2] * layout_.direction[2]);
+    m.objective.push_back(objectiveOf(layout_, i, f));
+  }
+  for (int i = 0; i < n; ++i) r.objective.push_back(combined(p_.weights, m.objective, i));
+  max_forcing_iterations_ = std::max(max_forcing_iterations_, w.forcing_iterations);
+  ++frame_;
+  return r;
+}
+
+}  // namespace creaturelab::control

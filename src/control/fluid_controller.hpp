@@ -1,0 +1,89 @@
+#pragma once
+// The creature controller of Lentine et al. 2010 in the full fluid (§4.3, §5, §6;
+// seeds/creature-control-lentine-2010.txt; issue 16): Controller's frame (controller.hpp) with the
+// simple wind replaced by the two-way coupled 2-D fluid (src/coupling/):
+//   - a derivative evaluation restores its own copy of the whole state (bodies and fluid, §4.3:
+//     "each perturbation needs its own copy of the fluid state"), moves the joint by +-delta over
+//     one frame of stable coupled steps (the servo reaches the target at each step, the bodies
+//     outboard held with it, §5), the markers moving with the pseudo-velocity
+//     (delta position / delta time) of each step;
+//   - optional validation mode (§4.3): settle_steps further coupled steps with the pose held, so
+//     that the disturbance of the move is swept downstream;
+//   - the objective is the force the fluid exerts on the bodies the joint moves, from the coupling
+//     (its exchanged momentum), resolved along w (Eq. 10, drag_along) or its magnitude (drag),
+//     averaged over the evaluation's last average_steps coupled steps;
+//   - the DOFs' evaluations run in parallel, each on its own worker's copy: results are bitwise
+//     the same for any thread count (§5, Fig. 10).
+// Effort (Eq. 1) is not offered with the fluid here (validate says so).
+#include <memory>
+#include <vector>
+
+#include "control/controller.hpp"
+#include "control/prescription.hpp"
+#include "coupling/rigid_fluid_coupling.hpp"
+
+namespace creaturelab::control {
+
+struct FluidControlParams {
+  int settle_steps = 0;   // §4.3 validation mode: coupled steps with the pose held after the move
+  int average_steps = 1;  // the objective: mean force over an evaluation's last this many steps
+};
+
+// "" when usable with the model, else what is wrong.
+std::string validate(const ControllerParams& p, const FluidControlParams& f, const rigid::RigidModel& model);
+
+// The state of a coupled creature: bodies and fluid.
+struct CoupledState {
+  rigid::RigidState rigid;
+  coupling::CouplingState fluid;
+};
+
+class FluidController {
+ public:
+  // `model` (time step = frame_s / substeps, the coupled step) must outlive the controller.
+  // Initial angles are set before the fluid sees the bodies (the markers start there).
+  FluidController(const rigid::RigidModel& model, ControllerParams p, FluidControlParams f,
+                  const std::vector<std::pair<std::string, double>>& initial_rad, const fluid::FluidParams& fluid,
+                  const coupling::RigidFluidParams& coupling);
+  ~FluidController();
+
+  FrameRecord frame();
+  // Coupled steps with every prescribed joint held (e.g. to let the flow develop before control).
+  void hold(int steps);
+
+  std::vector<double> derivatives();
+  // Joint i's objective after a perturbation by offset_rad (as the derivative sees it).
+  double evaluate(int joint, double offset_rad);
+
+  rigid::RigidData& data();
+  const coupling::RigidFluidCoupling& coupling() const;
+  const ControllerParams& params() const { return p_; }
+  // Mean force of the last frame on the bodies each controlled joint moves (N, world).
+  const std::vector<Vec3>& frameForce_n() const { return frame_force_; }
+  int maxForcingIterations() const { return max_forcing_iterations_; }
+
+ private:
+  struct World;
+  void coupledStep(World& w, const Prescribed& pr);
+  void moveOver(World& w, Prescribed& pr, const std::vector<double>& start, int steps, std::vector<Vec3>* mean,
+                int average);
+  double evaluate(World& w, const CoupledState& start, int joint, double offset_rad);
+  void save(World& w, CoupledState& s) const;
+  void restore(World& w, const CoupledState& s) const;
+  Vec3 jointForce(const World& w, int joint) const;
+
+  const rigid::RigidModel& model_;
+  ControllerParams p_;
+  FluidControlParams f_;
+  ObjectiveLayout layout_;
+  Prescription pres_;  // the frame's targets live in pres_.prescribed
+  std::vector<double> direction_, derivative_;
+  std::unique_ptr<World> main_;
+  std::vector<std::unique_ptr<World>> workers_;
+  std::unique_ptr<fluid::WorkerPool> pool_;
+  std::vector<Vec3> frame_force_;
+  long frame_ = 0;
+  int max_forcing_iterations_ = 0;
+};
+
+}  // namespace creaturelab::control

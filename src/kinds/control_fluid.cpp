@@ -1,0 +1,316 @@
+#include "kinds/control_fluid.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "control/fluid_controller.hpp"
+#include "fluid/diagnostics2.hpp"
+#include "kinds/control_params.hpp"
+
+namespace creaturelab::kinds {
+namespace {
+
+using control::Vec3;
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+fluid::WallType wall(const ParamReader& r, const std::string& name) { return *fluid::parse_wall_type(r.text(name)); }
+
+fluid::FluidParams fluidParams(const ParamReader& r) {
+  fluid::FluidParams f;
+  f.domain_width_m = f.domain_height_m = r.real("domain_m");
+  f.cells_x = f.cells_y = int(r.integer("cells"));
+  f.density_kg_per_m3 = r.real("density_kg_per_m3");
+  f.kinematic_viscosity_m2_per_s = r.real("kinematic_viscosity_m2_per_s");
+  f.advection = *fluid::parse_advection_scheme(r.text("advection"));
+  f.threads = int(r.integer("fluid_threads"));
+  f.walls.left.type = wall(r, "wall_left");
+  f.walls.right.type = wall(r, "wall_right");
+  f.walls.bottom.type = wall(r, "wall_bottom");
+  f.walls.top.type = wall(r, "wall_top");
+  f.time_step_policy = fluid::TimeStepPolicy::fixed;
+  f.fixed_step_s = r.real("frame_s") / double(r.integer("substeps"));
+  f.blowup_speed_m_per_s = r.real("blowup_speed_m_per_s");
+  return f;
+}
+
+coupling::RigidFluidParams rigidFluidParams(const ParamReader& r) {
+  coupling::RigidFluidParams c;
+  c.forcing = r.text("forcing") == "sweeps" ? coupling::Forcing::sweeps : coupling::Forcing::projected;
+  c.kernel = *ib::parse_kernel(r.text("kernel"));
+  c.marker_spacing_cells = r.real("marker_spacing_cells");
+  c.forcing_tolerance = r.real("forcing_tolerance");
+  c.max_forcing_iterations = int(r.integer("max_forcing_iterations"));
+  c.depth_m = r.real("depth_m");
+  c.origin_x_m = r.real("origin_x_m");
+  c.origin_z_m = r.real("origin_z_m");
+  c.max_marker_cells_per_step = r.real("max_marker_cells_per_step");
+  c.inflow.stream_m_per_s = r.real("stream_m_per_s");
+  c.inflow.stream_columns = int(r.integer("stream_columns"));
+  c.inflow.source_m_per_s = r.real("source_m_per_s");
+  c.inflow.source_rows = int(r.integer("source_rows"));
+  return c;
+}
+
+control::FluidControlParams fluidControlParams(const ParamReader& r) {
+  control::FluidControlParams f;
+  f.settle_steps = int(r.integer("settle_steps"));
+  f.average_steps = int(r.integer("average_steps"));
+  return f;
+}
+
+std::vector<std::pair<std::string, double>> initialRad(const ParamReader& r) {
+  std::vector<std::pair<std::string, double>> a;
+  for (const auto& pose : initialPoses(r)) {
+    if (pose.deg.size() != 1) throw std::invalid_argument("initial_deg: '" + pose.joint + "' needs one angle (hinges only in the planar fluid)");
+    a.push_back({pose.joint, pose.deg[0] / kDeg});
+  }
+  return a;
+}
+
+double tailMean(const std::vector<double>& v, int tail) {
+  double sum = 0;
+  for (int k = int(v.size()) - tail; k < int(v.size()); ++k) sum += v[k] / tail;
+  return sum;
+}
+
+}  // namespace
+
+ControlFluidKind::ControlFluidKind() {
+  params_ = {
+      text("model_file", "experiments/control/models/block.xml", "",
+           "MJCF creature (path from the working folder), planar in the x-z plane"),
+      text("controlled", "hinge", "", "controlled hinge joints, comma-separated (one DOF each)"),
+      text("kinematic", "", "",
+           "hinges that follow kinematic_pattern exactly whatever the load (the fluid's too), comma-separated"),
+      text("kinematic_pattern", "", "",
+           "'joint = pattern; ...' for kinematic hinges, pattern hold | sine(mean_deg, amplitude_deg, frequency_hz, "
+           "phase_deg) | table(t_s angle_deg, ...); joints not named hold their initial angle (§2.2)"),
+      text("pd_driven", "", "", "hinges PD-driven to pd_pattern (§2.2, the flyer's inner wing joints, §7.1), comma-separated"),
+      text("pd_pattern", "", "", "'joint = pattern; ...' for pd_driven hinges, as kinematic_pattern (default hold)"),
+      real("pd_kp_n_m_per_rad", 200, "N m/rad", 0, 1e7,
+           "PD stiffness of pd_driven joints (the paper gives none; explicit at each coupled step)"),
+      real("pd_kd_n_m_s_per_rad", 10, "N m s/rad", 0, 1e6, "PD damping of pd_driven joints"),
+      text("objectives", "drag_along", "",
+           "per controlled joint: drag (|F|, N) | drag_along (Eq. 10: F . w, N), F the fluid's force on the bodies "
+           "the joint moves, from the coupling"),
+      text("senses", "min", "", "per controlled joint: min | max"),
+      text("weights", "", "", "rows 'w11,w12,..; w21,..': joint i descends sum_j w_ij F_j (§5)"),
+      text("initial_deg", "", "", "initial angles 'joint=degrees, ...' (default: the model's reference)"),
+      real("drag_direction_x", 1, "", -1e9, 1e9, "w of Eq. 10 (normalised)"),
+      real("drag_direction_y", 0, "", -1e9, 1e9, "w of Eq. 10"),
+      real("drag_direction_z", 0, "", -1e9, 1e9, "w of Eq. 10"),
+      real("gravity_m_per_s2", 0, "m/s^2", 0, 1e3, "gravity along -z on the bodies (the fluid has none)"),
+      real("frame_s", 1.0 / 60, "s", 1e-5, 1, "one controller step (a frame; Fig. 2 counts frames)"),
+      integer("substeps", 1, 1, 1000, "coupled fluid-solid steps per frame (the servo reaches its targets at each)"),
+      integer("frames", 240, 1, 10000000, "controlled frames to run"),
+      integer("warmup_frames", 60, 0, 10000000, "frames with the pose held before control, for the flow to develop"),
+      real("strength_rad_per_s", 1.0, "rad/s", 0, 1e4, "largest joint angle change per second (§2.1)"),
+      real("delta_rad", 0.02, "rad", 1e-9, 1,
+           "central-difference perturbation (§2.1, §4.3: 'non-negligible changes in the configuration' against the "
+           "fluid's noise; 0.02 rad moves a 1 m block's tip by 0.6 cells of 128^2 in 4 m)"),
+      boolean("one_sided", false, "forward differences (§2.1)"),
+      integer("search_every_frames", 1, 1, 100000, "re-determine the direction every k frames (§2.1)"),
+      boolean("rigidify_outboard", true, "§5: hold the bodies outboard of a perturbed joint rigid with it"),
+      integer("threads", 1, 1, 16, "threads for the per-DOF evaluations (§5, Fig. 10); results do not depend on it"),
+      integer("settle_steps", 0, 0, 100000,
+              "§4.3 validation mode: coupled steps with the perturbed pose held before the force is taken (0: off)"),
+      integer("average_steps", 1, 1, 100000, "the objective: mean force over an evaluation's last this many steps"),
+      real("convergence_tolerance_deg", 1.0, "deg", 1e-6, 90,
+           "converged frame: from it every controlled angle stays this close to its final mean"),
+      integer("average_frames", 30, 1, 100000, "frames at the end over which final values are averaged"),
+      // The fluid (src/fluid): a square box; the paper gives no sizes.
+      real("domain_m", 4.0, "m", 1e-3, 100, "side of the square fluid box (the paper gives none: 4 block lengths)"),
+      integer("cells", 128, 8, 2048, "cells per side (issue 16's speed goal: 128^2)"),
+      real("density_kg_per_m3", 1000.0, "kg/m^3", 1e-3, 1e6, "fluid density (§7: 'similar to water')"),
+      real("kinematic_viscosity_m2_per_s", 0.0, "m^2/s", 0, 10,
+           "0: the paper's inviscid Eq. 5 (the advection's numerical viscosity remains)"),
+      choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack"}, "velocity advection scheme"),
+      integer("fluid_threads", 1, 1, 16, "threads inside each fluid step (bitwise the same for any count)"),
+      choice("wall_left", "open", {"free_slip", "no_slip", "open"}, "left wall (open: the stream enters there)"),
+      choice("wall_right", "open", {"free_slip", "no_slip", "open"}, "right wall (open: the stream leaves)"),
+      choice("wall_bottom", "free_slip", {"free_slip", "no_slip", "open"}, "floor"),
+      choice("wall_top", "free_slip", {"free_slip", "no_slip", "open"}, "top"),
+      real("blowup_speed_m_per_s", 50.0, "m/s", 1e-6, 1e6, "a fluid faster than this stops the run (exit 3)"),
+      real("stream_m_per_s", 1.0, "m/s", -1e3, 1e3, "rightward stream held in the inflow band (Fig. 8); 0: none"),
+      integer("stream_columns", 3, 0, 1000, "width of the inflow band, cells"),
+      real("source_m_per_s", 0.0, "m/s", -1e3, 1e3, "upward floor source (§7.1); 0: none"),
+      integer("source_rows", 0, 0, 1000, "height of the source band, cells"),
+      // The coupling (src/coupling).
+      choice("forcing", "projected", {"projected", "sweeps"},
+             "projected: forces solved so the projected flow meets the bodies (leak 0.5%); sweeps: direct forcing "
+             "before the projection (leaks ~20%)"),
+      choice("kernel", "peskin4", {"bilinear", "peskin4"}, "IB kernel of the markers (Peskin 2002 §6)"),
+      real("marker_spacing_cells", 0.5, "cells", 1e-3, 1e3, "outline marker spacing; at most 1 cell (leak)"),
+      real("forcing_tolerance", 1e-3, "", 1e-12, 1, "projected forcing: CG tolerance, fraction of the largest speed"),
+      integer("max_forcing_iterations", 50, 1, 10000, "projected forcing: CG iterations at most per step"),
+      real("depth_m", 1.0, "m", 1e-6, 1e3, "bodies' extent along y (the fluid is per metre of depth)"),
+      real("origin_x_m", -1.2, "m", -1e4, 1e4, "world x of the fluid box's left wall"),
+      real("origin_z_m", -2.0, "m", -1e4, 1e4, "world z of the fluid box's floor"),
+      real("max_marker_cells_per_step", 1.0, "cells", 1e-6, 2,
+           "coupled stability limit: a marker moving farther in one step stops the point (exit 3)"),
+      integer("field_every_frames", 0, 0, 1000000, "vorticity field and markers every k frames (0: never)"),
+  };
+  metrics_ = {
+      {"final_angle_deg", "deg", "first controlled joint: mean angle over the last average_frames"},
+      {"flow_angle_deg", "deg",
+       "line of the first controlled joint's bodies (anchor to centre of mass) against the stream, in [0, 90], mean "
+       "over the last average_frames"},
+      {"converged_frame", "", "first frame from which every controlled angle stays within the tolerance of its final "
+                              "mean (Fig. 2); frames + 1 if never"},
+      {"final_drag_n", "N", "first controlled joint: mean |F| of the fluid on its bodies over the last average_frames"},
+      {"final_drag_along_n", "N", "the same along w (Eq. 10)"},
+      {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
+      {"forcing_iterations_most", "", "most CG iterations of the projected forcing in any coupled step"},
+      {"markers", "", "outline markers"},
+      {"marker_cells_per_step_most", "", "largest marker displacement in one coupled step of the main run, cells"},
+  };
+}
+
+std::string ControlFluidKind::doc() const {
+  return "creature controller in the two-way coupled 2-D fluid (Lentine et al. 2010 §4, §6, §7)";
+}
+
+std::string ControlFluidKind::validate(const Params& params) const {
+  ParamReader r(params);
+  try {
+    const auto model = loadModel(r);
+    const auto p = controllerParams(r);
+    if (auto e = control::validate(p, fluidControlParams(r), model); !e.empty()) return e;
+    const auto f = fluidParams(r);
+    const auto c = rigidFluidParams(r);
+    if (auto e = coupling::validate(c, f); !e.empty()) return e;
+    rigid::RigidData data(model);
+    for (const auto& [joint, rad] : initialRad(r)) {
+      if (model.findJoint(joint) < 0) return "initial_deg: joint '" + joint + "' is not in the model " + model.path();
+      data.qpos()[model.joint(model.findJoint(joint)).qpos] = rad;
+    }
+    data.kinematics();
+    coupling::RigidFluidCoupling probe(data, f, c);  // a body outside the box, a geom without outline
+    if (r.integer("average_frames") > r.integer("frames")) return "average_frames is larger than frames";
+  } catch (const rigid::RigidError& e) {
+    return std::string("model_file: ") + e.what();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+CostEstimate ControlFluidKind::estimateCost(const Params& params) const {
+  try {
+    ParamReader r(params);
+    CostEstimate c;
+    const double joints = double(splitList(r.text("controlled"), ',').size());
+    const double per_frame = double(r.integer("substeps")) * (1 + 2 * joints) +
+                             2 * joints * double(r.integer("settle_steps"));
+    c.steps = double(r.integer("frames")) * per_frame + double(r.integer("warmup_frames") * r.integer("substeps"));
+    const double cells = double(r.integer("cells")) * double(r.integer("cells"));
+    const double fields = r.integer("field_every_frames") > 0 ? double(r.integer("frames")) / r.integer("field_every_frames") : 0;
+    c.memory_bytes = 64.0 * (1 << 20) + (2 + 2 * joints) * cells * 8 * 8 + fields * cells * 8;
+    c.detail = std::to_string(r.integer("frames")) + " frames x " + std::to_string(int(per_frame)) + " coupled steps";
+    return c;
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
+Result ControlFluidKind::run(const Params& params) const {
+  ParamReader r(params);
+  const rigid::RigidModel model = loadModel(r);
+  const control::ControllerParams p = controllerParams(r);
+  control::FluidController controller(model, p, fluidControlParams(r), initialRad(r), fluidParams(r), rigidFluidParams(r));
+  const int n = int(p.controlled.size());
+  const long frames = r.integer("frames");
+  const long field_every = r.integer("field_every_frames");
+  Result result;
+  auto& ts = result.timeseries;
+  Series& time = ts["time_s"] = {{}, "s"};
+  Series& residual = ts["servo_residual_rad"] = {{}, "rad"};
+  Series& flow = ts["flow_angle_deg"] = {{}, "deg"};
+  std::vector<Series*> angle, target, objective, derivative, drag, drag_along, fx, fz;
+  for (const auto& j : p.controlled) {
+    angle.push_back(&(ts["angle_deg_" + j] = {{}, "deg"}));
+    target.push_back(&(ts["target_deg_" + j] = {{}, "deg"}));
+    objective.push_back(&(ts["objective_" + j] = {{}, ""}));
+    derivative.push_back(&(ts["derivative_per_rad_" + j] = {{}, "1/rad"}));
+    drag.push_back(&(ts["drag_n_" + j] = {{}, "N"}));
+    drag_along.push_back(&(ts["drag_along_n_" + j] = {{}, "N"}));
+    fx.push_back(&(ts["force_x_n_" + j] = {{}, "N"}));
+    fz.push_back(&(ts["force_z_n_" + j] = {{}, "N"}));
+  }
+  // Bodies for drawing: the outline markers (world x, z) and which body each belongs to.
+  const auto& markers = controller.coupling().markers();
+  auto& marker_body = result.topology["marker_body"];
+  for (const auto& m : markers) marker_body.push_back(m.body);
+  Tracks& outline = result.lagrangian["markers_m"];
+  outline.points = int(markers.size());
+  outline.dim = 2;
+  const coupling::RigidFluidParams cp = rigidFluidParams(r);
+  FieldFrames& fields = result.fields;
+  const auto& grid = controller.coupling().fluid().grid();
+  fields.nx = grid.nx;
+  fields.ny = grid.ny;
+  fields.dx_m = fields.dy_m = grid.dx_m;
+  fields.origin_x_m = cp.origin_x_m;
+  fields.origin_y_m = cp.origin_z_m;
+  fluid::Array2 w;
+  auto recordField = [&]() {
+    outline.time_s.push_back(controller.data().time_s());
+    for (const auto& x : controller.coupling().markerPosition_m())
+      outline.data.insert(outline.data.end(), {x.x + cp.origin_x_m, x.y + cp.origin_z_m});
+    const auto& c = controller.coupling().fluid();
+    fluid::vorticity_at_centres(c.grid(), c.walls(), w);
+    fields.time_s.push_back(controller.data().time_s());
+    Field& f = fields.fields["vorticity_per_s"];
+    f.unit = "1/s";
+    f.data.insert(f.data.end(), w.data(), w.data() + w.size());
+  };
+  const int j0_id = model.findJoint(p.controlled[0]);
+  const int j0_body = model.joint(j0_id).body;
+  const Vec3 stream = {1, 0, 0};
+  double max_residual = 0, max_cells = 0;
+  try {
+    controller.hold(int(r.integer("warmup_frames") * r.integer("substeps")));
+    if (field_every > 0) recordField();
+    for (long f = 0; f < frames; ++f) {
+      const control::FrameRecord fr = controller.frame();
+      max_cells = std::max(max_cells, controller.coupling().markerCellsPerStep());
+      time.values.push_back(fr.time_s);
+      residual.values.push_back(fr.servo_residual_rad);
+      max_residual = std::max(max_residual, fr.servo_residual_rad);
+      for (int i = 0; i < n; ++i) {
+        angle[i]->values.push_back(fr.angle_rad[i] * kDeg);
+        target[i]->values.push_back(fr.target_rad[i] * kDeg);
+        objective[i]->values.push_back(fr.objective[i]);
+        derivative[i]->values.push_back(fr.derivative[i]);
+        drag[i]->values.push_back(fr.measures.drag_n[i]);
+        drag_along[i]->values.push_back(fr.measures.drag_along_n[i]);
+        fx[i]->values.push_back(fr.measures.drag_vector_n[i][0]);
+        fz[i]->values.push_back(fr.measures.drag_vector_n[i][2]);
+      }
+      auto& d = controller.data();
+      const double* anchor = d.jointAnchor(j0_id);
+      const double* com = d.subtreeCom(j0_body);
+      flow.values.push_back(lineAngleDeg({com[0] - anchor[0], com[1] - anchor[1], com[2] - anchor[2]}, stream));
+      if (field_every > 0 && (f + 1) % field_every == 0) recordField();
+    }
+  } catch (const std::exception& e) {
+    throw RunFailure("control_fluid at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what(), result);
+  }
+  const int tail = int(std::min<long>(r.integer("average_frames"), frames));
+  std::vector<std::vector<double>> angles;
+  for (int i = 0; i < n; ++i) angles.push_back(angle[i]->values);
+  auto& m = result.metrics;
+  m["final_angle_deg"] = {tailMean(angle[0]->values, tail), "deg"};
+  m["flow_angle_deg"] = {tailMean(flow.values, tail), "deg"};
+  m["converged_frame"] = {convergedFrame(angles, r.real("convergence_tolerance_deg"), tail), ""};
+  m["final_drag_n"] = {tailMean(drag[0]->values, tail), "N"};
+  m["final_drag_along_n"] = {tailMean(drag_along[0]->values, tail), "N"};
+  m["max_servo_residual_rad"] = {max_residual, "rad"};
+  m["forcing_iterations_most"] = {double(controller.maxForcingIterations()), ""};
+  m["markers"] = {double(markers.size()), ""};
+  m["marker_cells_per_step_most"] = {max_cells, ""};
+  return result;
+}
+
+}  // namespace creaturelab::kinds

@@ -1,0 +1,83 @@
+// The controller in the coupled fluid (issue 16; Lentine et al. 2010 §4.3, §5): per-DOF
+// evaluations on their own copies of the fluid give bitwise the same frames for any thread count,
+// and a re-evaluation from the same state repeats itself exactly.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "control/fluid_controller.hpp"
+#include "control_models.hpp"
+
+namespace creaturelab::control {
+namespace {
+
+class ControlFluidTest : public testing::ScratchDirTest {
+ protected:
+  ControlFluidTest() : ScratchDirTest("control_fluid") {}
+};
+
+// Two hinged plates in a stream on 32^2: three frames with 1 and 2 threads.
+std::vector<double> run(const std::string& xml, int threads) {
+  const auto model = [&] {
+    auto m = rigid::RigidModel::load(xml);
+    m.setGravity({0, 0, 0});
+    m.setTimestep(1.0 / 60);
+    return m;
+  }();
+  ControllerParams p;
+  p.controlled = {"j0", "j1"};
+  p.objectives = {Objective::drag_along, Objective::drag};
+  p.senses = {Sense::minimize, Sense::maximize};
+  p.threads = threads;
+  p.delta_rad = 0.02;
+  FluidControlParams f;
+  f.settle_steps = 2;
+  f.average_steps = 2;
+  fluid::FluidParams fp;
+  fp.domain_width_m = fp.domain_height_m = 2.0;
+  fp.cells_x = fp.cells_y = 32;
+  fp.kinematic_viscosity_m2_per_s = 0;
+  fp.walls.left.type = fp.walls.right.type = fluid::WallType::open;
+  coupling::RigidFluidParams cp;
+  cp.origin_x_m = -0.5;
+  cp.origin_z_m = -1.0;
+  cp.inflow.stream_m_per_s = 0.5;
+  cp.inflow.stream_columns = 2;
+  FluidController c(model, p, f, {{"j0", -0.3}, {"j1", 0.2}}, fp, cp);
+  std::vector<double> out;
+  for (int k = 0; k < 3; ++k) {
+    const FrameRecord r = c.frame();
+    out.insert(out.end(), r.angle_rad.begin(), r.angle_rad.end());
+    out.insert(out.end(), r.derivative.begin(), r.derivative.end());
+    out.insert(out.end(), r.objective.begin(), r.objective.end());
+  }
+  const auto& g = c.coupling().fluid().grid();
+  out.insert(out.end(), g.u_m_per_s.data(), g.u_m_per_s.data() + g.u_m_per_s.size());
+  return out;
+}
+
+TEST_F(ControlFluidTest, BitwiseSameForAnyThreadCount) {
+  const std::string xml = testing::writeText(file("chain.xml"), testing::chainXml(2));
+  const auto one = run(xml, 1);
+  const auto two = run(xml, 2);
+  ASSERT_EQ(one.size(), two.size());
+  EXPECT_EQ(0, std::memcmp(one.data(), two.data(), one.size() * sizeof(double)));
+  // The derivatives are not zero: the fluid pushes on the plates.
+  EXPECT_NE(one[2], 0.0);
+  EXPECT_NE(one[3], 0.0);
+}
+
+TEST_F(ControlFluidTest, EffortAndSteadyStateAreRefused) {
+  const auto model = rigid::RigidModel::load(testing::writeText(file("block.xml"), testing::blockXml(0.02, 0)));
+  ControllerParams p;
+  p.controlled = {"hinge"};
+  p.objectives = {Objective::effort};
+  p.senses = {Sense::minimize};
+  EXPECT_NE(validate(p, FluidControlParams{}, model).find("effort"), std::string::npos);
+  p.objectives = {Objective::drag};
+  p.steady_state = true;
+  EXPECT_NE(validate(p, FluidControlParams{}, model).find("settle_steps"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace creaturelab::control
