@@ -1,51 +1,13 @@
-#include <cstring>
-#include <limits>
-#include <sstream>
-#include <stdexcept>
-
 #include <cmath>
+#include <stdexcept>
 
 // Debian's libtinygltf is a shared library built with its defaults: include the header as is.
 #include <tiny_gltf.h>
 
 #include "fish/export.hpp"
+#include "render/gltf_blocks.hpp"
 
 namespace creaturelab::fish {
-namespace {
-
-// Appends floats to the buffer as a new view + accessor; returns the accessor index.
-int addAccessor(tinygltf::Model& model, const std::vector<float>& values, int components, int target,
-                bool with_bounds) {
-  auto& buffer = model.buffers[0].data;
-  while (buffer.size() % 4) buffer.push_back(0);
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = buffer.size();
-  view.byteLength = values.size() * sizeof(float);
-  if (target) view.target = target;
-  const size_t at = buffer.size();
-  buffer.resize(at + view.byteLength);
-  std::memcpy(buffer.data() + at, values.data(), view.byteLength);
-  model.bufferViews.push_back(view);
-
-  tinygltf::Accessor acc;
-  acc.bufferView = int(model.bufferViews.size()) - 1;
-  acc.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-  acc.count = values.size() / components;
-  acc.type = components == 3 ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_SCALAR;
-  if (with_bounds) {
-    acc.minValues.assign(components, std::numeric_limits<double>::infinity());
-    acc.maxValues.assign(components, -std::numeric_limits<double>::infinity());
-    for (size_t i = 0; i < values.size(); ++i) {
-      acc.minValues[i % components] = std::min(acc.minValues[i % components], double(values[i]));
-      acc.maxValues[i % components] = std::max(acc.maxValues[i % components], double(values[i]));
-    }
-  }
-  model.accessors.push_back(acc);
-  return int(model.accessors.size()) - 1;
-}
-
-}  // namespace
 
 std::vector<std::uint8_t> exportGlb(const std::vector<SkinFrame>& frames) {
   if (frames.empty()) throw std::invalid_argument("glTF export: no frames");
@@ -68,36 +30,18 @@ std::vector<std::uint8_t> exportGlb(const std::vector<SkinFrame>& frames) {
   };
   tinygltf::Primitive prim;
   prim.mode = TINYGLTF_MODE_TRIANGLES;
-  prim.attributes["POSITION"] = addAccessor(model, flat(first.positions, nullptr), 3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-  prim.attributes["NORMAL"] = addAccessor(model, flat(first.normals, nullptr), 3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
-  {
-    auto& buffer = model.buffers[0].data;
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = buffer.size();
-    view.byteLength = first.triangles.size() * 3 * sizeof(std::uint32_t);
-    view.target = TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER;
-    for (const auto& t : first.triangles)
-      for (int v : t) {
-        const std::uint32_t i = std::uint32_t(v);
-        const auto* b = reinterpret_cast<const std::uint8_t*>(&i);
-        buffer.insert(buffer.end(), b, b + 4);
-      }
-    model.bufferViews.push_back(view);
-    tinygltf::Accessor acc;
-    acc.bufferView = int(model.bufferViews.size()) - 1;
-    acc.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    acc.count = first.triangles.size() * 3;
-    acc.type = TINYGLTF_TYPE_SCALAR;
-    model.accessors.push_back(acc);
-    prim.indices = int(model.accessors.size()) - 1;
-  }
+  prim.attributes["POSITION"] = render::addFloatAccessor(model, flat(first.positions, nullptr), 3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["NORMAL"] = render::addFloatAccessor(model, flat(first.normals, nullptr), 3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
+  std::vector<std::uint32_t> indices;
+  for (const auto& t : first.triangles)
+    for (int v : t) indices.push_back(std::uint32_t(v));
+  prim.indices = render::addIndexAccessor(model, indices);
   // Morph target k + 1 holds frame k + 1 minus frame 0 (glTF 2.0 §3.7.2.2: targets are displacements).
   const int targets = int(frames.size()) - 1;
   for (int k = 1; k <= targets; ++k) {
     std::map<std::string, int> t;
-    t["POSITION"] = addAccessor(model, flat(frames[k].mesh.positions, &first.positions), 3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-    t["NORMAL"] = addAccessor(model, flat(frames[k].mesh.normals, &first.normals), 3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
+    t["POSITION"] = render::addFloatAccessor(model, flat(frames[k].mesh.positions, &first.positions), 3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    t["NORMAL"] = render::addFloatAccessor(model, flat(frames[k].mesh.normals, &first.normals), 3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
     prim.targets.push_back(t);
   }
   tinygltf::Material mat;
@@ -131,26 +75,10 @@ std::vector<std::uint8_t> exportGlb(const std::vector<SkinFrame>& frames) {
       times.push_back(float(frames[k].time_s - frames[0].time_s));
       for (int t = 1; t <= targets; ++t) weights.push_back(int(k) == t ? 1.0f : 0.0f);
     }
-    tinygltf::AnimationSampler sampler;
-    sampler.input = addAccessor(model, times, 1, 0, true);
-    sampler.output = addAccessor(model, weights, 1, 0, false);
-    sampler.interpolation = "LINEAR";
-    tinygltf::AnimationChannel channel;
-    channel.sampler = 0;
-    channel.target_node = 0;
-    channel.target_path = "weights";
-    tinygltf::Animation anim;
-    anim.name = "swim";
-    anim.samplers.push_back(sampler);
-    anim.channels.push_back(channel);
-    model.animations.push_back(anim);
+    render::addMorphAnimation(model, times, weights, "swim");
   }
 
-  std::ostringstream out;
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, out, false, true)) throw std::runtime_error("glTF export: tinygltf could not write the model");
-  const std::string bytes = out.str();
-  return {bytes.begin(), bytes.end()};
+  return render::glbBytes(model, "glTF export");
 }
 
 }  // namespace creaturelab::fish

@@ -1,12 +1,11 @@
 #include "render/mesh_export.hpp"
 
+#include "render/gltf_blocks.hpp"
+
 #include <tiny_gltf.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <cstring>
-#include <limits>
-#include <sstream>
 #include <stdexcept>
 
 namespace creaturelab::render {
@@ -17,42 +16,6 @@ std::vector<float> toFloats(const std::vector<Vec3>& v) {
   out.reserve(3 * v.size());
   for (const Vec3& p : v) out.insert(out.end(), {float(p.x), float(p.y), float(p.z)});
   return out;
-}
-
-// Appends `bytes` to the model's single buffer (4-byte aligned) as a new buffer view.
-int addView(tinygltf::Model& model, const void* bytes, std::size_t size, int target) {
-  auto& data = model.buffers[0].data;
-  data.resize((data.size() + 3) / 4 * 4, 0);
-  tinygltf::BufferView view;
-  view.buffer = 0;
-  view.byteOffset = data.size();
-  view.byteLength = size;
-  view.target = target;
-  const auto* p = static_cast<const std::uint8_t*>(bytes);
-  data.insert(data.end(), p, p + size);
-  model.bufferViews.push_back(view);
-  return int(model.bufferViews.size()) - 1;
-}
-
-// A float accessor (VEC3 or SCALAR) over its own view; with_bounds adds min/max (required for
-// POSITION and for an animation's input).
-int addFloats(tinygltf::Model& model, const std::vector<float>& values, int type, int target, bool with_bounds) {
-  const int components = type == TINYGLTF_TYPE_VEC3 ? 3 : 1;
-  tinygltf::Accessor a;
-  a.bufferView = addView(model, values.data(), values.size() * sizeof(float), target);
-  a.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-  a.type = type;
-  a.count = values.size() / components;
-  if (with_bounds) {
-    a.minValues.assign(components, std::numeric_limits<double>::infinity());
-    a.maxValues.assign(components, -std::numeric_limits<double>::infinity());
-    for (std::size_t k = 0; k < values.size(); ++k) {
-      a.minValues[k % components] = std::min(a.minValues[k % components], double(values[k]));
-      a.maxValues[k % components] = std::max(a.maxValues[k % components], double(values[k]));
-    }
-  }
-  model.accessors.push_back(a);
-  return int(model.accessors.size()) - 1;
 }
 
 std::vector<float> difference(const std::vector<float>& a, const std::vector<float>& base) {
@@ -94,19 +57,10 @@ std::vector<std::uint8_t> GltfAnimation::glb(const std::string& name) const {
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
   primitive.material = 0;
-  {
-    tinygltf::Accessor a;
-    a.bufferView = addView(model, indices_.data(), indices_.size() * sizeof(std::uint32_t),
-                           TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    a.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    a.type = TINYGLTF_TYPE_SCALAR;
-    a.count = indices_.size();
-    model.accessors.push_back(a);
-    primitive.indices = int(model.accessors.size()) - 1;
-  }
+  primitive.indices = addIndexAccessor(model, indices_);
   primitive.attributes["POSITION"] =
-      addFloats(model, positions_[0], TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-  primitive.attributes["NORMAL"] = addFloats(model, normals_[0], TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
+      addFloatAccessor(model, positions_[0], 3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  primitive.attributes["NORMAL"] = addFloatAccessor(model, normals_[0], 3, TINYGLTF_TARGET_ARRAY_BUFFER, false);
 
   tinygltf::Mesh mesh;
   mesh.name = name;
@@ -114,9 +68,9 @@ std::vector<std::uint8_t> GltfAnimation::glb(const std::string& name) const {
   if (frames > 1) {
     for (int k = 0; k < frames; ++k) {
       std::map<std::string, int> target;
-      target["POSITION"] = addFloats(model, difference(positions_[k], positions_[0]), TINYGLTF_TYPE_VEC3,
+      target["POSITION"] = addFloatAccessor(model, difference(positions_[k], positions_[0]), TINYGLTF_TYPE_VEC3,
                                      TINYGLTF_TARGET_ARRAY_BUFFER, true);
-      target["NORMAL"] = addFloats(model, difference(normals_[k], normals_[0]), TINYGLTF_TYPE_VEC3,
+      target["NORMAL"] = addFloatAccessor(model, difference(normals_[k], normals_[0]), TINYGLTF_TYPE_VEC3,
                                    TINYGLTF_TARGET_ARRAY_BUFFER, false);
       primitive.targets.push_back(target);
     }
@@ -142,26 +96,10 @@ std::vector<std::uint8_t> GltfAnimation::glb(const std::string& name) const {
       times.push_back(float(times_[k] - times_[0]));
       weights[std::size_t(k) * frames + k] = 1.0f;
     }
-    tinygltf::AnimationSampler sampler;
-    sampler.input = addFloats(model, times, TINYGLTF_TYPE_SCALAR, 0, true);
-    sampler.output = addFloats(model, weights, TINYGLTF_TYPE_SCALAR, 0, false);
-    sampler.interpolation = "LINEAR";
-    tinygltf::AnimationChannel channel;
-    channel.sampler = 0;
-    channel.target_node = 0;
-    channel.target_path = "weights";
-    tinygltf::Animation animation;
-    animation.name = "swim";
-    animation.samplers.push_back(sampler);
-    animation.channels.push_back(channel);
-    model.animations.push_back(animation);
+    addMorphAnimation(model, times, weights, "swim");
   }
 
-  std::ostringstream out;
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, out, false, true)) throw std::runtime_error("tinygltf could not write the .glb");
-  const std::string bytes = out.str();
-  return std::vector<std::uint8_t>(bytes.begin(), bytes.end());
+  return glbBytes(model, "render");
 }
 
 std::string objText(const TriangleMesh& mesh, const std::string& comment) {
