@@ -4,13 +4,8 @@
 # overrides. Each: exit code 2, exactly one "error:" line on stderr naming the problem, nothing on
 # stdout, and nothing written.
 # usage: bad_input.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
-fail() { echo "FAIL: $*" >&2; exit 1; }
 
 # expect_bad NAME PATTERN FILE [ARGS...]: `run FILE ARGS --out OUT` must be refused, where OUT is
 # $bad_out if set, else scratch/out_NAME.

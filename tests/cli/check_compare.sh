@@ -4,12 +4,7 @@
 # one metric moved by 1% compares OUTSIDE with exit code 1. A check that must fail makes `run`
 # and `check` exit 1.
 # usage: check_compare.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 run=$scratch/run
 "$bin" run experiments/oscillator/integrators.toml --out "$run" --jobs 2 >"$scratch/run.stdout" 2>/dev/null ||

@@ -5,12 +5,7 @@
 # strength or delta; an unknown or wrong-length motion pattern, weights per ball-joint axis, a
 # ball pose with one angle) exits 2 with one line naming the problem and nothing written.
 # usage: control.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 "$bin" run experiments/control/block_effort.toml --out "$scratch/j1" --jobs 1 >"$scratch/j1.log" 2>&1 || { cat "$scratch/j1.log"; fail "block_effort failed"; }
 "$bin" run experiments/control/block_effort.toml --out "$scratch/j2" --jobs 2 >"$scratch/j2.log" 2>&1 || fail "block_effort --jobs 2 failed"

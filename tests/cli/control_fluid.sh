@@ -5,12 +5,7 @@
 # markers coarser than a cell, effort with the fluid) exits 2 with one line naming it and nothing
 # written; a step beyond the coupled stability limit stops that point with exit 3.
 # usage: control_fluid.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 small=(params.cells=32 params.frames=4 params.warmup_frames=2 params.settle_steps=2 params.average_steps=2
        params.average_frames=2 params.field_every_frames=2 params.delta_rad=0.02)
 

@@ -3,12 +3,7 @@
 # --jobs 1 run) gives identical `creaturelab digest` output: every point file's datasets and
 # parameters, and the index, bitwise. The digest must also notice a real change.
 # usage: determinism.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 exp=tests/cli/strand_sweep.toml  # 2 cases x 3 spring constants
 points=6

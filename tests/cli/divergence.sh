@@ -4,12 +4,7 @@
 # exists with status "failed", a message naming the step and time, and the frames computed before
 # the failure; the good point is complete; index.h5 records both.
 # usage: divergence.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 run=$scratch/run
 rc=0

@@ -4,12 +4,7 @@
 # and topology, a glTF 2.0 binary that parses, OBJ frames and POV-Ray scenes; a fish that blows up
 # in air exits 3 with the step and the cause; bad fish input exits 2 naming the key, nothing written.
 # usage: fish.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 cat >"$scratch/fish.toml" <<'TOML'
 kind = "fish"

@@ -9,13 +9,8 @@
 #          0.4 s after its first record, --resume reuses the recorded runs and ends identical to an
 #          uninterrupted fit; an existing record needs --resume or --force; a bad file exits 2.
 # usage: fit.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 py=/usr/bin/python3
-fail() { echo "FAIL: $*" >&2; exit 1; }
 
 # expect_bad NAME PATTERN ARGS...: `creaturelab fit ARGS` exits 2, one error line naming the
 # problem, nothing on stdout, $scratch/out_NAME not created.

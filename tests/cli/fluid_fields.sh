@@ -4,11 +4,7 @@
 # the stated dimensions; /timeseries has kinetic energy, max_divergence and CFL; the fields are
 # bitwise the same with --jobs 1 and 2.
 # usage: fluid_fields.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 cat >"$scratch/fluid.toml" <<'TOML'
 kind = "fluid"
 title = "small vortex pair"

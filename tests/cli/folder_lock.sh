@@ -5,12 +5,7 @@
 # leaves nothing that refuses the next one. --points shares of different configurations are
 # refused when the index is written (configuration fingerprints), never mixed.
 # usage: folder_lock.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 exp=tests/cli/strand_slow.toml  # 8 points of ~0.3 s with --jobs 1
 run=$scratch/run

@@ -4,11 +4,7 @@
 # /points/point_000000 external link, and reads /timeseries/time_s with its unit attribute;
 # parameters are typed root attributes with their unit beside them.
 # usage: h5py.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 "$bin" run tests/cli/strand_sweep.toml --out "$scratch/run" --jobs 2 >/dev/null 2>&1 || { echo "FAIL: run failed" >&2; exit 1; }
 

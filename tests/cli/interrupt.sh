@@ -3,12 +3,7 @@
 # and SIGTERM mid-sweep stop the run (exit 130 / 143, as before) leaving no temporary file, every
 # point file whole and an index.h5 that lists them; --resume then finishes the run.
 # usage: interrupt.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 exp=tests/cli/strand_slow.toml  # 8 points of ~0.3 s with --jobs 1
 total=8

@@ -5,11 +5,7 @@
 # an XDMF sidecar and tracers; a known-deviation check prints KNOWN and leaves the exit code 0
 # while an ordinary failing check exits 1; bad jellyfish input exits 2 naming the problem.
 # usage: jellyfish.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 cat >"$scratch/jf.toml" <<'TOML'
 kind = "jellyfish"
 title = "two short strokes"

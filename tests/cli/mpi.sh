@@ -3,12 +3,7 @@
 # each writing its own point files and rank 0 the index, and gives the same digests as the threaded
 # run. Exits 77 (ctest SKIP_RETURN_CODE) when mpirun is missing or the binary was built without MPI.
 # usage: mpi.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 if ! command -v mpirun >/dev/null; then
   echo "skip: mpirun not found"

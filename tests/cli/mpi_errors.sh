@@ -4,12 +4,7 @@
 # barrier; an error is printed once, not once per rank; the summary counts the points of all ranks.
 # Exits 77 when mpirun is missing or the binary was built without MPI.
 # usage: mpi_errors.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 command -v mpirun >/dev/null || { echo "skip: mpirun not found"; exit 77; }
 [[ $(ldd "$bin") == *libmpi* ]] || { echo "skip: $bin was built without MPI"; exit 77; }

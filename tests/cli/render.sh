@@ -5,12 +5,7 @@
 # the run, a crossing outline, an unknown setting, an existing output) exits 2 with one "error:"
 # line and writes nothing.
 # usage: render.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 cat >"$scratch/swim.toml" <<'TOML'
 kind = "jellyfish"

@@ -7,13 +7,8 @@
 # here). A run the catalog does not know (an oscillator with a made-up name) appears under "Other
 # runs" with the figures its kind's plotter drew. A bad list entry exits 2.
 # usage: report.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 py=/usr/bin/python3
-fail() { echo "FAIL: $*" >&2; exit 1; }
 
 # An oscillator run with one check that passes, one that fails and one known deviation.
 cat >"$scratch/osc.toml" <<'TOML'

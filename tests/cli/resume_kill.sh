@@ -4,12 +4,7 @@
 # point file left is readable, `--resume` runs only the missing points (and says how many it
 # reused, leaving the finished files untouched), and the result equals an uninterrupted run's.
 # usage: resume_kill.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 exp=tests/cli/strand_slow.toml
 total=8

@@ -3,12 +3,7 @@
 # one folder and give the whole run's digests; `--force` replaces a run and drops stale points;
 # `--resume` refuses point files made by a different configuration and changes nothing.
 # usage: run_folder.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 snapshot() { (cd "$1" && ls && sha256sum ./*); }
 
 exp=tests/cli/strand_sweep.toml  # 6 points

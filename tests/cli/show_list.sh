@@ -2,12 +2,7 @@
 # `run --dry-run` writes nothing; `show FILE` prints the resolved parameters and the expanded
 # points; `list` mentions every kind (and each parameter with its unit and range).
 # usage: show_list.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 exp=tests/cli/strand_sweep.toml
 

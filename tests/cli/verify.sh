@@ -3,12 +3,7 @@
 # swapped or rewritten point file gives exit 2 and a message naming it; --no-verify trusts the
 # index as before.
 # usage: verify.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
 exp=tests/cli/strand_sweep.toml  # 6 points
 "$bin" run "$exp" --out "$scratch/good" --jobs 2 >/dev/null 2>&1 || fail "run failed"
