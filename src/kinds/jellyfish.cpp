@@ -290,7 +290,9 @@ JellyfishKind::JellyfishKind() {
                        "converge at 4/2/1 mm cells (convergence.toml). Chosen as the most water-like viscosity at which "
                        "it does; 1.304e-6 is one override away",
       .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space; the default since "
-                       "the first-order scheme moved distances 2-5x, issue 13) or the paper's semi-Lagrangian (Stam 1999)",
+                       "the first-order scheme moved distances 2-5x, issue 13), the paper's semi-Lagrangian (Stam 1999), or "
+                       "upwind2_rk2 (Fromm upwind fluxes + Heun, second order, CFL <= 0.5; the scheme change of "
+                       "convergence.toml)",
       .advection = "maccormack",
   });
   // --- coupling (§3.2; Peskin 2002)

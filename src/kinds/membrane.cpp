@@ -116,7 +116,7 @@ MembraneKind::MembraneKind() {
       .density_doc = "fluid density",
       .kinematic_viscosity_m2_per_s = 1e-2,
       .viscosity_doc = "nu; default 1e-2 (10 000 x water) damps the relaxation within a few seconds, see membrane.toml",
-      .advection_doc = "velocity advection: semi-Lagrangian (Stam 1999, the jellyfish paper's) or MacCormack",
+      .advection_doc = "velocity advection: semi-Lagrangian (Stam 1999, the jellyfish paper's), MacCormack or upwind2_rk2",
   });
   const std::vector<ParamSpec> rest = {
       // --- membrane (ib/membrane_body.hpp)
