@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "fluid/diffusion_operator2.hpp"
 #include "fluid/fluid_params.hpp"
 #include "fluid/linear_solve.hpp"
 #include "fluid/mac_grid2.hpp"
@@ -51,11 +52,8 @@ class ImplicitDiffusion2 final : public DiffusionSolver2 {
  private:
   // Scratch of one component, kept between steps (allocated once per shape and walls).
   struct Workspace {
-    bool ready = false;
-    Walls walls{};
-    int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;  // the unknown block
-    bool has_wall_rhs = false;
-    Array2 count, wall_rhs, b, r, p, ap;
+    DiffusionBlock2 block;
+    Array2 b, r, p, ap;
     std::vector<double> row_dots, row_rr;  // per-row partial inner products
   };
   LinearSolveReport solve_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha, Workspace& work);
