@@ -76,7 +76,8 @@ LinearSolveReport FastDiffusion2::solve_component(FaceAxis axis, Array2& x, cons
   // (σ I + K) x = b / α.
   w.solver.solve(diffusion_operator(block, nx, ny, alpha), w.b, w.q, false, 1.0 / alpha);
 
-  // x ← q on the block, then ‖b − A x‖∞ with the iterative solver's operator.
+  // x ← q on the block, then ‖b − A x‖∞ with the iterative solver's operator (w.ap is scratch:
+  // it is never read before it is written).
   for_pieces(workers_, jb, block.j_end, [&](int j0, int j1, int) {
     for (int j = j0; j < j1; ++j) std::copy_n(w.q.row(j - jb), width, x.row(j) + ib);
   });
@@ -84,9 +85,10 @@ LinearSolveReport FastDiffusion2::solve_component(FaceAxis axis, Array2& x, cons
   for_pieces(workers_, jb, block.j_end, [&](int j0, int j1, int part) {
     apply_diffusion_rows(block, j0, j1, alpha, x, w.ap, w.row_dots.data());
     for (int j = j0; j < j1; ++j) {
-      const double* br = w.b.row(j - jb);
-      const double* ax = w.ap.row(j) + ib;
-      for (int i = 0; i < width; ++i) acc[part].add(br[i] - ax[i]);
+      const double* __restrict__ br = w.b.row(j - jb);
+      double* __restrict__ r = w.ap.row(j) + ib;
+      for (int i = 0; i < width; ++i) r[i] = br[i] - r[i];  // r = b − A x, then its maximum
+      acc[part].merge(partial_max_abs(r, static_cast<std::size_t>(width)));
     }
   });
   for (int part = 1; part < parts; ++part) acc[0].merge(acc[part]);

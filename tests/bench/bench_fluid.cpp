@@ -61,12 +61,14 @@ double cpu_seconds() { return clock_seconds(CLOCK_PROCESS_CPUTIME_ID); }
 double wall_seconds() { return clock_seconds(CLOCK_MONOTONIC); }
 double thread_cpu_seconds() { return clock_seconds(CLOCK_THREAD_CPUTIME_ID); }
 
-FluidParams scene(int cells, AdvectionScheme scheme, PressureSolverType pressure, int threads = 1) {
+FluidParams scene(int cells, AdvectionScheme scheme, PressureSolverType pressure, int threads = 1,
+                  ViscositySolverType viscosity = ViscositySolverType::iterative) {
   FluidParams params;  // defaults: 0.4 m free-slip box of water
   params.cells_x = params.cells_y = cells;
   params.advection = scheme;
   params.pressure_solver = pressure;
   params.threads = threads;
+  params.viscosity_solver = viscosity;
   return params;
 }
 
@@ -89,10 +91,11 @@ void report(benchmark::State& state, int cells, double seconds_total) {
 // Manual time = CPU time of all threads; the counters give it per cell (ns_per_cell) and the
 // elapsed time per cell (ns_per_cell_wall), which is what threads shorten.
 // With threads_arg, the benchmark's second argument is FluidParams::threads.
-void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverType pressure, bool threads_arg = true) {
+void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverType pressure, bool threads_arg = true,
+               ViscositySolverType viscosity = ViscositySolverType::iterative) {
   const int cells = static_cast<int>(state.range(0));
   const int threads = threads_arg ? static_cast<int>(state.range(1)) : 1;
-  auto solver = warmed_up(scene(cells, scheme, pressure, threads));
+  auto solver = warmed_up(scene(cells, scheme, pressure, threads, viscosity));
   double cpu_total = 0.0;
   double wall_total = 0.0;
   for (auto _ : state) {
@@ -139,10 +142,14 @@ void pressure_only(benchmark::State& state, PressureSolverType pressure) {
 
 // One stage alone on the state just before it (the grid restored every iteration, untimed):
 // advection (per scheme) and viscosity, the stage-by-stage figures of the header.
+// The viscosity stage also with either solver and a viscosity other than water's.
 enum class Stage { advection, viscosity };
-void stage_only(benchmark::State& state, Stage stage, AdvectionScheme scheme) {
+void stage_only(benchmark::State& state, Stage stage, AdvectionScheme scheme,
+                ViscositySolverType viscosity = ViscositySolverType::iterative, double nu_m2_per_s = 0.0) {
   const int cells = static_cast<int>(state.range(0));
-  auto solver = warmed_up(scene(cells, scheme, PressureSolverType::fast_direct));
+  FluidParams params = scene(cells, scheme, PressureSolverType::fast_direct, 1, viscosity);
+  if (nu_m2_per_s > 0.0) params.kinematic_viscosity_m2_per_s = nu_m2_per_s;
+  auto solver = warmed_up(params);
   const StepContext context{solver->steps_done(), solver->time_s(), solver->next_time_step_s()};
   solver->apply_external_forces(context);
   if (stage == Stage::viscosity) solver->advect_velocity(context);
@@ -172,6 +179,18 @@ void BM_Advection_Upwind2Rk2(benchmark::State& state) {
   stage_only(state, Stage::advection, AdvectionScheme::upwind2_rk2);
 }
 void BM_Viscosity(benchmark::State& state) { stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian); }
+void BM_Viscosity_FastDirect(benchmark::State& state) {
+  stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian, ViscositySolverType::fast_direct);
+}
+// A fluid 100 times as viscous as water (ν = 1.3e-4 m²/s, α = ν dt / dx² = 0.53 at 256² and the
+// bench's dt of 10 ms): beyond the Richardson range, CG.
+constexpr double kViscousNu = 1.304e-4;
+void BM_Viscosity_Viscous(benchmark::State& state) {
+  stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian, ViscositySolverType::iterative, kViscousNu);
+}
+void BM_Viscosity_Viscous_FastDirect(benchmark::State& state) {
+  stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian, ViscositySolverType::fast_direct, kViscousNu);
+}
 
 void BM_FluidStep_SemiLagrangian_FastPressure(benchmark::State& state) {
   full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::fast_direct);
@@ -181,6 +200,10 @@ void BM_FluidStep_MacCormack_FastPressure(benchmark::State& state) {
 }
 void BM_FluidStep_Upwind2Rk2_FastPressure(benchmark::State& state) {
   full_step(state, AdvectionScheme::upwind2_rk2, PressureSolverType::fast_direct);
+}
+void BM_FluidStep_Upwind2Rk2_FastPressure_FastViscosity(benchmark::State& state) {
+  full_step(state, AdvectionScheme::upwind2_rk2, PressureSolverType::fast_direct, true,
+            ViscositySolverType::fast_direct);
 }
 void BM_FluidStep_SemiLagrangian_Pcg(benchmark::State& state) {
   full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::pcg, false);
@@ -211,11 +234,15 @@ double minimum(const std::vector<double>& values) { return *std::min_element(val
 CL_FLUID_STEP_BENCH(BM_FluidStep_SemiLagrangian_FastPressure);
 CL_FLUID_STEP_BENCH(BM_FluidStep_MacCormack_FastPressure);
 CL_FLUID_STEP_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure);
+CL_FLUID_STEP_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure_FastViscosity);
 CL_FLUID_BENCH(BM_FluidStep_SemiLagrangian_Pcg);
 CL_FLUID_BENCH(BM_Advection_SemiLagrangian);
 CL_FLUID_BENCH(BM_Advection_MacCormack);
 CL_FLUID_BENCH(BM_Advection_Upwind2Rk2);
 CL_FLUID_BENCH(BM_Viscosity);
+CL_FLUID_BENCH(BM_Viscosity_FastDirect);
+CL_FLUID_BENCH(BM_Viscosity_Viscous);
+CL_FLUID_BENCH(BM_Viscosity_Viscous_FastDirect);
 CL_FLUID_BENCH(BM_Pressure_FastDirect);
 CL_FLUID_BENCH(BM_Pressure_Pcg);
 

@@ -131,6 +131,8 @@ BENCHMARK(BM_SimulatedSecondFluidThreads)
 // with two points sharing the cores (about 10 minutes of CPU); a profile of a 400² step (perf,
 // 2026-11-25) puts 85-90% in the fluid (viscosity 30%, MacCormack 35%, pressure 13%) and under 10%
 // in the implicit IB solve.
+// The second argument 1 runs the viscosity stage with the fast direct solver (an option,
+// fluid/fast_diffusion2.hpp; not bitwise the default's swim, the same to the viscosity tolerance).
 void BM_SimulatedSecondGridStudy(benchmark::State& state) {
   const int cells = static_cast<int>(state.range(0));
   SwimmerConfig c = paperConfig(cells, ib::Kernel::bilinear);
@@ -145,13 +147,12 @@ void BM_SimulatedSecondGridStudy(benchmark::State& state) {
   c.fluid.domain_height_m = 1.5 * c.fluid.domain_width_m;
   c.start_y_fraction = 0.2;
   c.fluid.fixed_step_s = c.dt_s = 0.00125 * 200.0 / cells;
+  if (state.range(1) == 1) c.fluid.viscosity_solver = fluid::ViscositySolverType::fast_direct;
   measure(state, c);
 }
 BENCHMARK(BM_SimulatedSecondGridStudy)
-    ->ArgNames({"cells"})
-    ->Arg(100)
-    ->Arg(200)
-    ->Arg(400)
+    ->ArgNames({"cells", "fast_viscosity"})
+    ->ArgsProduct({{100, 200, 400}, {0, 1}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->MinTime(4.0);
