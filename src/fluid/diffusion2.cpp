@@ -135,12 +135,12 @@ double max_of_parts(const double* parts, int count) {
 
 }  // namespace
 
-LinearSolveReport ImplicitDiffusion2::diffuse_velocity(MacGrid2& grid, const Walls& walls,
-                                                       double kinematic_viscosity_m2_per_s, double dt_s) {
+LinearSolveReport DiffusionSolver2::diffuse_velocity(MacGrid2& grid, const Walls& walls,
+                                                     double kinematic_viscosity_m2_per_s, double dt_s) {
   const double alpha = kinematic_viscosity_m2_per_s * dt_s / (grid.dx_m * grid.dx_m);
   if (alpha == 0.0) return {};
-  const LinearSolveReport ru = solve_component(FaceAxis::x, grid.u_m_per_s, walls, alpha, u_work_);
-  const LinearSolveReport rv = solve_component(FaceAxis::y, grid.v_m_per_s, walls, alpha, v_work_);
+  const LinearSolveReport ru = diffuse_component(FaceAxis::x, grid.u_m_per_s, walls, alpha);
+  const LinearSolveReport rv = diffuse_component(FaceAxis::y, grid.v_m_per_s, walls, alpha);
   return {std::max(ru.iterations, rv.iterations), std::max(ru.relative_residual, rv.relative_residual),
           ru.converged && rv.converged};
 }

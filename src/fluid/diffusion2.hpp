@@ -20,12 +20,14 @@ class DiffusionSolver2 {
   virtual ~DiffusionSolver2() = default;
   /// Replaces the velocity u by the solution of (I − ν dt ∇²) u_new = u, with the walls'
   /// conditions; solid-wall normal velocity stays zero. Reports the worse of the two components.
-  virtual LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
-                                             double dt_s) = 0;
+  LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
+                                     double dt_s);
   /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
   void set_workers(WorkerPool* workers) { workers_ = workers; }
 
  protected:
+  /// One component (u: FaceAxis::x, v: FaceAxis::y) with α = ν dt / dx² > 0.
+  virtual LinearSolveReport diffuse_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha) = 0;
   WorkerPool* workers_ = nullptr;
 };
 
@@ -46,10 +48,11 @@ class ImplicitDiffusion2 final : public DiffusionSolver2 {
 
   static constexpr double kSweepContraction = 0.1;  ///< largest error factor per sweep allowed
   static constexpr int kMaxSweeps = 8;
-  LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
-                                     double dt_s) override;
 
  private:
+  LinearSolveReport diffuse_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha) override {
+    return solve_component(axis, x, walls, alpha, axis == FaceAxis::x ? u_work_ : v_work_);
+  }
   // Scratch of one component, kept between steps (allocated once per shape and walls).
   struct Workspace {
     DiffusionBlock2 block;

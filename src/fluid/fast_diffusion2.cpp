@@ -27,15 +27,6 @@ KroneckerOperator2 diffusion_operator(const DiffusionBlock2& block, int nx, int 
   return op;
 }
 
-LinearSolveReport FastDiffusion2::diffuse_velocity(MacGrid2& grid, const Walls& walls,
-                                                   double kinematic_viscosity_m2_per_s, double dt_s) {
-  const double alpha = kinematic_viscosity_m2_per_s * dt_s / (grid.dx_m * grid.dx_m);
-  if (alpha == 0.0) return {};
-  const LinearSolveReport ru = solve_component(FaceAxis::x, grid.u_m_per_s, walls, alpha, u_work_);
-  const LinearSolveReport rv = solve_component(FaceAxis::y, grid.v_m_per_s, walls, alpha, v_work_);
-  return {0, std::max(ru.relative_residual, rv.relative_residual), ru.converged && rv.converged};
-}
-
 LinearSolveReport FastDiffusion2::solve_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha,
                                                   Workspace& w) {
   const int nx = x.nx();

@@ -29,15 +29,15 @@ class FastDiffusion2 final : public DiffusionSolver2 {
   /// `tolerance` only judges the report: converged when ‖b − A x‖∞ ≤ tolerance · ‖b‖∞.
   explicit FastDiffusion2(double tolerance) : tolerance_(tolerance) {}
 
-  /// Reports 0 iterations and the residual ‖b − A x‖∞ / ‖b‖∞ (round-off), the worse component.
-  LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
-                                     double dt_s) override;
-
   /// The transform method of the last solve of each component (tests).
   FastPressureSolver2::Method u_method() const { return u_work_.solver.method(); }
   FastPressureSolver2::Method v_method() const { return v_work_.solver.method(); }
 
  private:
+  /// Reports 0 iterations and the residual ‖b − A x‖∞ / ‖b‖∞ (round-off).
+  LinearSolveReport diffuse_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha) override {
+    return solve_component(axis, x, walls, alpha, axis == FaceAxis::x ? u_work_ : v_work_);
+  }
   struct Workspace {
     DiffusionBlock2 block;
     Array2 b, q, ap;  // b and q on the unknown block only; ap on the component's array

@@ -1,9 +1,8 @@
-// The fast direct viscosity solver (fluid/fast_diffusion2.hpp) against an analytic eigenmode,
-// the Couette profile and the iterative solver, for every wall type and transform path.
+// The fast direct viscosity solver (fluid/fast_diffusion2.hpp) against the iterative solver, for
+// every wall type and transform path (its analytic tests, an eigenmode and the Couette profile,
+// run for both solvers in fluid_stages_test.cpp).
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "fluid/boundary2.hpp"
@@ -15,46 +14,6 @@ namespace creaturelab::fluid {
 namespace {
 
 using Method = FastPressureSolver2::Method;
-
-// The eigenmode of ImplicitDiffusion2's test (fluid_stages_test.cpp) decays by 1 / (1 + ν dt λ).
-TEST(FastDiffusion, EigenmodeDecaysByTheBackwardEulerFactor) {
-  const int n = 16;
-  const double dx = 0.1, nu = 0.02, dt = 0.3;
-  MacGrid2 grid(n, n, dx);
-  const double pi = std::numbers::pi;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = std::cos(pi * (i + 0.5) / n) * std::sin(pi * j / n);
-  grid.v_m_per_s(0, 0) = 0.0;
-  const MacGrid2 initial = grid;
-  FastDiffusion2 diffusion(1e-13);
-  const LinearSolveReport report = diffusion.diffuse_velocity(grid, Walls{}, nu, dt);
-  EXPECT_TRUE(report.converged);
-  EXPECT_EQ(report.iterations, 0);
-  EXPECT_EQ(diffusion.v_method(), Method::fft_along_x);
-  const double lambda = 8.0 * std::pow(std::sin(pi / (2.0 * n)), 2) / (dx * dx);
-  const double factor = 1.0 / (1.0 + nu * dt * lambda);
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i < n; ++i) EXPECT_NEAR(grid.v_m_per_s(i, j), factor * initial.v_m_per_s(i, j), 1e-13);
-  EXPECT_EQ(max_abs(grid.u_m_per_s), 0.0);
-}
-
-// A moving top wall over a no-slip bottom, open at both ends: a very long step reaches
-// u = U y / H (the dense transform along y: its ends are Dirichlet half a cell beyond).
-TEST(FastDiffusion, LongImplicitStepGivesCouetteProfile) {
-  const int nx = 8, ny = 10;
-  const double dx = 0.1, top_speed = 0.7;
-  Walls walls;
-  walls.left.type = walls.right.type = WallType::open;
-  walls.bottom.type = WallType::no_slip;
-  walls.top.type = WallType::moving;
-  walls.top.tangential_velocity_m_per_s = top_speed;
-  MacGrid2 grid(nx, ny, dx);
-  FastDiffusion2 diffusion(1e-10);
-  EXPECT_TRUE(diffusion.diffuse_velocity(grid, walls, 1.0, 1e9).converged);
-  for (int j = 0; j < ny; ++j) {
-    for (int i = 0; i <= nx; ++i) EXPECT_NEAR(grid.u_m_per_s(i, j), top_speed * (j + 0.5) / ny, 1e-9);
-  }
-}
 
 struct Case {
   int nx, ny;
