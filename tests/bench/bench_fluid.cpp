@@ -59,7 +59,6 @@ double clock_seconds(clockid_t clock) {
 // solver has none, and this is the thread's CPU time), and elapsed time.
 double cpu_seconds() { return clock_seconds(CLOCK_PROCESS_CPUTIME_ID); }
 double wall_seconds() { return clock_seconds(CLOCK_MONOTONIC); }
-double thread_cpu_seconds() { return clock_seconds(CLOCK_THREAD_CPUTIME_ID); }
 
 FluidParams scene(int cells, AdvectionScheme scheme, PressureSolverType pressure, int threads = 1,
                   ViscositySolverType viscosity = ViscositySolverType::iterative) {
@@ -115,81 +114,76 @@ void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverTy
   state.counters["threads"] = threads;
 }
 
-// The projection alone on a realistic right-hand side: the velocity of the next step just
-// before its projection, with the previous pressure as warm start (restored every iteration).
-void pressure_only(benchmark::State& state, PressureSolverType pressure) {
-  const int cells = static_cast<int>(state.range(0));
-  auto solver = warmed_up(scene(cells, AdvectionScheme::semi_lagrangian, pressure));
-  const StepContext context{solver->steps_done(), solver->time_s(), solver->next_time_step_s()};
-  solver->apply_external_forces(context);
-  solver->advect_velocity(context);
-  solver->apply_viscosity(context);
-  const MacGrid2 before = solver->grid();
-  double total = 0.0;
-  int iterations = 0;
-  for (auto _ : state) {
-    solver->grid() = before;  // untimed: manual time covers the solve only
-    const double start = thread_cpu_seconds();
-    const LinearSolveReport r = solver->project(context);
-    const double seconds = thread_cpu_seconds() - start;
-    state.SetIterationTime(seconds);
-    total += seconds;
-    iterations = r.iterations;
-  }
-  report(state, cells, total);
-  state.counters["cg_iterations"] = iterations;
-}
-
 // One stage alone on the state just before it (the grid restored every iteration, untimed):
-// advection (per scheme) and viscosity, the stage-by-stage figures of the header.
-// The viscosity stage also with either solver and a viscosity other than water's.
-enum class Stage { advection, viscosity };
-void stage_only(benchmark::State& state, Stage stage, AdvectionScheme scheme,
-                ViscositySolverType viscosity = ViscositySolverType::iterative, double nu_m2_per_s = 0.0) {
+// advection (per scheme), viscosity (either solver, water or another ν) and the projection
+// (a realistic right-hand side: the velocity of the next step just before its projection, the
+// previous pressure as warm start), the stage-by-stage figures of the header. The second
+// argument is FluidParams::threads; like full_step, CPU time of all threads per cell
+// (ns_per_cell) and elapsed time per cell (ns_per_cell_wall).
+enum class Stage { advection, viscosity, pressure };
+struct StageSetup {
+  AdvectionScheme scheme = AdvectionScheme::semi_lagrangian;
+  PressureSolverType pressure = PressureSolverType::fast_direct;
+  ViscositySolverType viscosity = ViscositySolverType::iterative;
+  double nu_m2_per_s = 0.0;  ///< 0: water (the default)
+};
+void stage_only(benchmark::State& state, Stage stage, const StageSetup& setup) {
   const int cells = static_cast<int>(state.range(0));
-  FluidParams params = scene(cells, scheme, PressureSolverType::fast_direct, 1, viscosity);
-  if (nu_m2_per_s > 0.0) params.kinematic_viscosity_m2_per_s = nu_m2_per_s;
+  const int threads = static_cast<int>(state.range(1));
+  FluidParams params = scene(cells, setup.scheme, setup.pressure, threads, setup.viscosity);
+  if (setup.nu_m2_per_s > 0.0) params.kinematic_viscosity_m2_per_s = setup.nu_m2_per_s;
   auto solver = warmed_up(params);
   const StepContext context{solver->steps_done(), solver->time_s(), solver->next_time_step_s()};
   solver->apply_external_forces(context);
-  if (stage == Stage::viscosity) solver->advect_velocity(context);
+  if (stage != Stage::advection) solver->advect_velocity(context);
+  if (stage == Stage::pressure) solver->apply_viscosity(context);
   const MacGrid2 before = solver->grid();
-  double total = 0.0;
+  double cpu_total = 0.0;
+  double wall_total = 0.0;
+  int iterations = 0;
   for (auto _ : state) {
     solver->grid() = before;
-    const double start = thread_cpu_seconds();
+    const double cpu0 = cpu_seconds();
+    const double wall0 = wall_seconds();
     if (stage == Stage::advection) {
       solver->advect_velocity(context);
+    } else if (stage == Stage::viscosity) {
+      iterations = solver->apply_viscosity(context).iterations;
     } else {
-      benchmark::DoNotOptimize(solver->apply_viscosity(context));
+      iterations = solver->project(context).iterations;
     }
-    const double seconds = thread_cpu_seconds() - start;
-    state.SetIterationTime(seconds);
-    total += seconds;
+    const double wall = wall_seconds() - wall0;
+    const double cpu = cpu_seconds() - cpu0;
+    state.SetIterationTime(cpu);
+    cpu_total += cpu;
+    wall_total += wall;
   }
-  report(state, cells, total);
+  report(state, cells, cpu_total);
+  state.counters["ns_per_cell_wall"] =
+      wall_total * 1e9 / (static_cast<double>(cells) * cells * static_cast<double>(state.iterations()));
+  state.counters["iterations"] = iterations;
 }
 void BM_Advection_SemiLagrangian(benchmark::State& state) {
-  stage_only(state, Stage::advection, AdvectionScheme::semi_lagrangian);
+  stage_only(state, Stage::advection, {AdvectionScheme::semi_lagrangian});
 }
 void BM_Advection_MacCormack(benchmark::State& state) {
-  stage_only(state, Stage::advection, AdvectionScheme::maccormack);
+  stage_only(state, Stage::advection, {AdvectionScheme::maccormack});
 }
 void BM_Advection_Upwind2Rk2(benchmark::State& state) {
-  stage_only(state, Stage::advection, AdvectionScheme::upwind2_rk2);
+  stage_only(state, Stage::advection, {AdvectionScheme::upwind2_rk2});
 }
-void BM_Viscosity(benchmark::State& state) { stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian); }
+void BM_Viscosity(benchmark::State& state) { stage_only(state, Stage::viscosity, {}); }
 void BM_Viscosity_FastDirect(benchmark::State& state) {
-  stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian, ViscositySolverType::fast_direct);
+  stage_only(state, Stage::viscosity, {.viscosity = ViscositySolverType::fast_direct});
 }
 // A fluid 100 times as viscous as water (ν = 1.3e-4 m²/s, α = ν dt / dx² = 0.53 at 256² and the
 // bench's dt of 10 ms): beyond the Richardson range, CG.
 constexpr double kViscousNu = 1.304e-4;
 void BM_Viscosity_Viscous(benchmark::State& state) {
-  stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian, ViscositySolverType::iterative, kViscousNu);
+  stage_only(state, Stage::viscosity, {.nu_m2_per_s = kViscousNu});
 }
 void BM_Viscosity_Viscous_FastDirect(benchmark::State& state) {
-  stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian, ViscositySolverType::fast_direct, kViscousNu);
+  stage_only(state, Stage::viscosity, {.viscosity = ViscositySolverType::fast_direct, .nu_m2_per_s = kViscousNu});
 }
 
 void BM_FluidStep_SemiLagrangian_FastPressure(benchmark::State& state) {
@@ -208,8 +202,10 @@ void BM_FluidStep_Upwind2Rk2_FastPressure_FastViscosity(benchmark::State& state)
 void BM_FluidStep_SemiLagrangian_Pcg(benchmark::State& state) {
   full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::pcg, false);
 }
-void BM_Pressure_FastDirect(benchmark::State& state) { pressure_only(state, PressureSolverType::fast_direct); }
-void BM_Pressure_Pcg(benchmark::State& state) { pressure_only(state, PressureSolverType::pcg); }
+void BM_Pressure_FastDirect(benchmark::State& state) { stage_only(state, Stage::pressure, {}); }
+void BM_Pressure_Pcg(benchmark::State& state) {
+  stage_only(state, Stage::pressure, {.pressure = PressureSolverType::pcg});
+}
 
 // Besides mean and median, the minimum over repetitions: the least disturbed measurement.
 double minimum(const std::vector<double>& values) { return *std::min_element(values.begin(), values.end()); }
@@ -221,6 +217,14 @@ double minimum(const std::vector<double>& values) { return *std::min_element(val
       ->Range(64, 512)                \
       ->UseManualTime()               \
       ->Unit(benchmark::kMicrosecond) \
+      ->ComputeStatistics("min", minimum)
+// Stages alone at 1 and 2 threads.
+#define CL_FLUID_STAGE_BENCH(name)              \
+  BENCHMARK(name)                               \
+      ->ArgNames({"cells", "threads"})          \
+      ->ArgsProduct({{64, 100, 128, 256, 512}, {1, 2}}) \
+      ->UseManualTime()                         \
+      ->Unit(benchmark::kMicrosecond)           \
       ->ComputeStatistics("min", minimum)
 // Full steps at 1 and 2 threads (FluidParams::threads; the results are bitwise the same).
 #define CL_FLUID_STEP_BENCH(name)                                                        \
@@ -236,15 +240,15 @@ CL_FLUID_STEP_BENCH(BM_FluidStep_MacCormack_FastPressure);
 CL_FLUID_STEP_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure);
 CL_FLUID_STEP_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure_FastViscosity);
 CL_FLUID_BENCH(BM_FluidStep_SemiLagrangian_Pcg);
-CL_FLUID_BENCH(BM_Advection_SemiLagrangian);
-CL_FLUID_BENCH(BM_Advection_MacCormack);
-CL_FLUID_BENCH(BM_Advection_Upwind2Rk2);
-CL_FLUID_BENCH(BM_Viscosity);
-CL_FLUID_BENCH(BM_Viscosity_FastDirect);
-CL_FLUID_BENCH(BM_Viscosity_Viscous);
-CL_FLUID_BENCH(BM_Viscosity_Viscous_FastDirect);
-CL_FLUID_BENCH(BM_Pressure_FastDirect);
-CL_FLUID_BENCH(BM_Pressure_Pcg);
+CL_FLUID_STAGE_BENCH(BM_Advection_SemiLagrangian);
+CL_FLUID_STAGE_BENCH(BM_Advection_MacCormack);
+CL_FLUID_STAGE_BENCH(BM_Advection_Upwind2Rk2);
+CL_FLUID_STAGE_BENCH(BM_Viscosity);
+CL_FLUID_STAGE_BENCH(BM_Viscosity_FastDirect);
+CL_FLUID_STAGE_BENCH(BM_Viscosity_Viscous);
+CL_FLUID_STAGE_BENCH(BM_Viscosity_Viscous_FastDirect);
+CL_FLUID_STAGE_BENCH(BM_Pressure_FastDirect);
+CL_FLUID_STAGE_BENCH(BM_Pressure_Pcg);
 
 }  // namespace
 }  // namespace creaturelab::fluid
