@@ -35,6 +35,36 @@
 // divergence and gradient 13 %), about 8 ns; FFTW 3.3.10 (REDFT10 + REDFT01 over all 256
 // lines, FFTW_ESTIMATE) takes 5.2 ns for both, so FFTW would save about 3 ns. Both together
 // bring the upwind2_rk2 step to about 26 ns, still above 20 on one core.
+//
+// Issue 13 §4, measured 2026-11-25 (speed13 branch), 256², upwind2_rk2 + fast direct pressure +
+// iterative viscosity: the best configuration. Its bench row is
+// BM_FluidStep_Upwind2Rk2_FastPressure/cells:256/threads:1 and /threads:2. Minimum of 5
+// repetitions at load average 10.8-12.1 (07:38-07:41 UTC; other sessions' simulations held
+// the 2 cores), ns per cell, CPU of all threads / elapsed:
+//                                    1 thread        2 threads
+//   full step                        30.3 / 58.6     42.6 / 66.5
+//   advection (upwind2_rk2)           8.8 / 16.9     10.2 / 17.0
+//   viscosity (iterative, 3 sweeps)   5.8 / 11.8      6.7 / 13.3
+//   projection (fast direct)         12.0 / 23.6     19.4 / 31.3
+// (An earlier run the same morning at load 5: full step 29.3 CPU, 39.0 elapsed with 1 thread,
+// 39.8 / 50.8 with 2; advection 8.6, viscosity 5.8, projection 11.3.) The rest of the step,
+// about 3.8 ns, is the forces, the start-of-step maximum speed and the end-of-step summary.
+// The goal (≤ 20 ns per cell) is NOT met: not on one core (30.3 CPU), and with two threads the
+// elapsed time was 66.5 on this loaded machine (the workers wait for a core; the 2-thread figure
+// of an idle machine was not measured: the load was 5-12 whenever these benches ran).
+//
+// The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
+// fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is
+// slower for water: 23.3 ns per cell at 256² against the iterative 5.8 (two DCT-solves per step,
+// each about a projection's transforms, against 3 Richardson sweeps), and the full step with it
+// 52.6 against 30.3. It pays for viscous flows: at ν = 100 × water (α = 0.53, CG takes 17
+// iterations) 23.6 against 51.3 at 256² (22.1 against 24.6 at 100², load 5). The grid study
+// (bench_jellyfish) is slower with it as well: 200², 6.17 against 4.63 ms per step; 400², 33.2
+// against 26.7.
+// FFTW (not used): 5.2 ns for both transforms at 256² (measured before) against about 7.7 here
+// would save ~2.5 ns, not enough for 20 on one core; its plans for a share of the lanes (threads)
+// may choose other codelets than for all lanes, which would break the bitwise equality across
+// thread counts.
 #include <benchmark/benchmark.h>
 #include <time.h>
 
