@@ -6,66 +6,10 @@
 #include <vector>
 
 #include "fluid/boundary2.hpp"
+#include "fluid/diffusion_operator2.hpp"
 
 namespace creaturelab::fluid {
 namespace {
-
-// Ghost factor of a tangential component across `wall`: 0 (ghost = x) or 2 (ghost = 2U − x).
-double ghost_count(const Wall& wall) {
-  return (wall.type == WallType::no_slip || wall.type == WallType::moving) ? 2.0 : 0.0;
-}
-double ghost_rhs(const Wall& wall) {
-  return wall.type == WallType::moving ? 2.0 * wall.tangential_velocity_m_per_s : 0.0;
-}
-
-bool same_walls(const Walls& a, const Walls& b) {
-  auto same = [](const Wall& p, const Wall& q) {
-    return p.type == q.type && p.tangential_velocity_m_per_s == q.tangential_velocity_m_per_s;
-  };
-  return same(a.left, b.left) && same(a.right, b.right) && same(a.bottom, b.bottom) && same(a.top, b.top);
-}
-
-// y = A x on rows [jb, je) of the unknown block [ib, ie) × [.., ..), and row_dots[j] = the
-// x·y of row j. Entries outside the block are never written (they stay zero). Neighbours outside
-// the block are solid-wall normal faces (zero in x) or lie beyond the array (ghosts, accounted
-// for in `count`).
-void apply(int ib, int ie, int jb, int je, const Array2& count, double alpha, const Array2& x, Array2& y,
-           double* row_dots) {
-  const int nx = x.nx();
-  const int ny = x.ny();
-  for (int j = jb; j < je; ++j) {
-    const double* __restrict__ c = x.row(j);
-    const double* __restrict__ s = j > 0 ? x.row(j - 1) : nullptr;
-    const double* __restrict__ n = j < ny - 1 ? x.row(j + 1) : nullptr;
-    const double* __restrict__ d = count.row(j);
-    double* __restrict__ out = y.row(j);
-    // Interior of the row: all four neighbours exist in the array.
-    const int lo = std::max(ib, 1);
-    const int hi = std::min(ie, nx - 1);
-    if (s != nullptr && n != nullptr) {
-      const double diagonal = 1.0 + alpha * 4.0;
-      for (int i = lo; i < hi; ++i) {
-        out[i] = diagonal * c[i] - alpha * ((c[i - 1] + c[i + 1]) + (s[i] + n[i]));  // d = 4 here
-      }
-    } else {
-      for (int i = lo; i < hi; ++i) {
-        const double vertical = (s != nullptr ? s[i] : 0.0) + (n != nullptr ? n[i] : 0.0);
-        out[i] = (1.0 + alpha * d[i]) * c[i] - alpha * ((c[i - 1] + c[i + 1]) + vertical);
-      }
-    }
-    // The ends of the row.
-    for (int i : {ib, ie - 1}) {
-      if (i >= lo && i < hi) continue;
-      double sum = 0.0;
-      if (i > 0) sum += c[i - 1];
-      if (i < nx - 1) sum += c[i + 1];
-      if (s != nullptr) sum += s[i];
-      if (n != nullptr) sum += n[i];
-      out[i] = (1.0 + alpha * d[i]) * c[i] - alpha * sum;
-    }
-    row_dots[j] = dot(c + ib, out + ib, static_cast<std::size_t>(ie - ib));  // while the row is in cache
-  }
-}
 
 // One Richardson sweep x_new = x + (b − A x) = b + α (Σ_nb x − d x) on rows [jb, je) of the
 // block. Returns max |x_new − x| = ‖b − A x‖∞ over those rows, the residual of the old iterate
@@ -191,12 +135,12 @@ double max_of_parts(const double* parts, int count) {
 
 }  // namespace
 
-LinearSolveReport ImplicitDiffusion2::diffuse_velocity(MacGrid2& grid, const Walls& walls,
-                                                       double kinematic_viscosity_m2_per_s, double dt_s) {
+LinearSolveReport DiffusionSolver2::diffuse_velocity(MacGrid2& grid, const Walls& walls,
+                                                     double kinematic_viscosity_m2_per_s, double dt_s) {
   const double alpha = kinematic_viscosity_m2_per_s * dt_s / (grid.dx_m * grid.dx_m);
   if (alpha == 0.0) return {};
-  const LinearSolveReport ru = solve_component(FaceAxis::x, grid.u_m_per_s, walls, alpha, u_work_);
-  const LinearSolveReport rv = solve_component(FaceAxis::y, grid.v_m_per_s, walls, alpha, v_work_);
+  const LinearSolveReport ru = diffuse_component(FaceAxis::x, grid.u_m_per_s, walls, alpha);
+  const LinearSolveReport rv = diffuse_component(FaceAxis::y, grid.v_m_per_s, walls, alpha);
   return {std::max(ru.iterations, rv.iterations), std::max(ru.relative_residual, rv.relative_residual),
           ru.converged && rv.converged};
 }
@@ -205,61 +149,13 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
                                                       Workspace& w) {
   const int nx = x.nx();
   const int ny = x.ny();
-  if (!w.ready || !same_walls(walls, w.walls) || w.count.nx() != nx || w.count.ny() != ny) {
-    w.ready = true;
-    w.walls = walls;
-    for (Array2* a : {&w.count, &w.wall_rhs, &w.b, &w.r, &w.p, &w.ap}) {
+  if (w.block.prepare(axis, nx, ny, walls)) {
+    for (Array2* a : {&w.b, &w.r, &w.p, &w.ap}) {
       a->resize(0, 0);
       a->resize(nx, ny);
     }
-    if (axis == FaceAxis::x) {
-      const FaceRange r = unknown_faces(walls.left, walls.right, nx - 1);
-      w.i_begin = r.begin, w.i_end = r.end, w.j_begin = 0, w.j_end = ny;
-    } else {
-      const FaceRange r = unknown_faces(walls.bottom, walls.top, ny - 1);
-      w.i_begin = 0, w.i_end = nx, w.j_begin = r.begin, w.j_end = r.end;
-    }
-    // Neighbour counts d and wall right-hand sides (see the class comment).
-    w.has_wall_rhs = false;
-    for (int j = w.j_begin; j < w.j_end; ++j) {
-      for (int i = w.i_begin; i < w.i_end; ++i) {
-        double d = 0.0;
-        double rhs = 0.0;
-        if (axis == FaceAxis::x) {
-          d += (i > 0 ? 1.0 : 0.0) + (i < nx - 1 ? 1.0 : 0.0);  // open walls: ∂u/∂n = 0 beyond
-          if (j > 0)
-            d += 1.0;
-          else {
-            d += ghost_count(walls.bottom);
-            rhs += ghost_rhs(walls.bottom);
-          }
-          if (j < ny - 1)
-            d += 1.0;
-          else {
-            d += ghost_count(walls.top);
-            rhs += ghost_rhs(walls.top);
-          }
-        } else {
-          d += (j > 0 ? 1.0 : 0.0) + (j < ny - 1 ? 1.0 : 0.0);
-          if (i > 0)
-            d += 1.0;
-          else {
-            d += ghost_count(walls.left);
-            rhs += ghost_rhs(walls.left);
-          }
-          if (i < nx - 1)
-            d += 1.0;
-          else {
-            d += ghost_count(walls.right);
-            rhs += ghost_rhs(walls.right);
-          }
-        }
-        w.count(i, j) = d;
-        w.wall_rhs(i, j) = rhs;
-        w.has_wall_rhs = w.has_wall_rhs || rhs != 0.0;
-      }
-    }
   }
+  const DiffusionBlock2& block = w.block;
 
   // Threads share rows everywhere below; every element gets the serial arithmetic, maxima merge
   // per thread (order-free) and sums are kept per row and added in row order (worker_pool.hpp).
@@ -272,11 +168,11 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
   std::array<MaxAbsAccumulator, kMaxParts> acc{};
   {
     const double* __restrict__ xv = x.data();
-    const double* __restrict__ wall = w.wall_rhs.data();
+    const double* __restrict__ wall = block.wall_rhs.data();
     double* __restrict__ b = w.b.data();
     for_pieces(workers_, 0, ny, [&](int j0, int j1, int part) {
       const std::size_t k0 = j0 * row, k1 = j1 * row;
-      if (w.has_wall_rhs) {
+      if (block.has_wall_rhs) {
         for (std::size_t k = k0; k < k1; ++k) b[k] = xv[k] + alpha * wall[k];
       } else {
         std::copy(xv + k0, xv + k1, b + k0);
@@ -302,8 +198,8 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
   if (10.0 * alpha <= kSweepContraction) {
     while (sweeps < kMaxSweeps) {
       std::array<double, kMaxParts> change{};
-      for_pieces(workers_, w.j_begin, w.j_end, [&](int j0, int j1, int part) {
-        change[part] = richardson_sweep(w.i_begin, w.i_end, j0, j1, w.count, alpha, w.b, x, w.p);
+      for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int part) {
+        change[part] = richardson_sweep(block.i_begin, block.i_end, j0, j1, block.count, alpha, w.b, x, w.p);
       });
       const double residual = max_of_parts(change.data(), parts);
       std::swap(x, w.p);  // O(1): the newest iterate is in x; w.p keeps zeros off the block
@@ -327,11 +223,11 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
   const double* __restrict__ ap = w.ap.data();
   const double* __restrict__ b = w.b.data();
   auto apply_rows = [&](const Array2& in) {
-    for_pieces(workers_, w.j_begin, w.j_end, [&](int j0, int j1, int) {
-      apply(w.i_begin, w.i_end, j0, j1, w.count, alpha, in, w.ap, w.row_dots.data());
+    for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int) {
+      apply_diffusion_rows(block, j0, j1, alpha, in, w.ap, w.row_dots.data());
     });
     double in_dot_ap = 0.0;
-    for (int j = w.j_begin; j < w.j_end; ++j) in_dot_ap += w.row_dots[static_cast<std::size_t>(j)];
+    for (int j = block.j_begin; j < block.j_end; ++j) in_dot_ap += w.row_dots[static_cast<std::size_t>(j)];
     return in_dot_ap;
   };
   auto merged_max = [&] {

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "fluid/diffusion_operator2.hpp"
 #include "fluid/fluid_params.hpp"
 #include "fluid/linear_solve.hpp"
 #include "fluid/mac_grid2.hpp"
@@ -19,12 +20,14 @@ class DiffusionSolver2 {
   virtual ~DiffusionSolver2() = default;
   /// Replaces the velocity u by the solution of (I − ν dt ∇²) u_new = u, with the walls'
   /// conditions; solid-wall normal velocity stays zero. Reports the worse of the two components.
-  virtual LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
-                                             double dt_s) = 0;
+  LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
+                                     double dt_s);
   /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
   void set_workers(WorkerPool* workers) { workers_ = workers; }
 
  protected:
+  /// One component (u: FaceAxis::x, v: FaceAxis::y) with α = ν dt / dx² > 0.
+  virtual LinearSolveReport diffuse_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha) = 0;
   WorkerPool* workers_ = nullptr;
 };
 
@@ -45,17 +48,15 @@ class ImplicitDiffusion2 final : public DiffusionSolver2 {
 
   static constexpr double kSweepContraction = 0.1;  ///< largest error factor per sweep allowed
   static constexpr int kMaxSweeps = 8;
-  LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
-                                     double dt_s) override;
 
  private:
+  LinearSolveReport diffuse_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha) override {
+    return solve_component(axis, x, walls, alpha, axis == FaceAxis::x ? u_work_ : v_work_);
+  }
   // Scratch of one component, kept between steps (allocated once per shape and walls).
   struct Workspace {
-    bool ready = false;
-    Walls walls{};
-    int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;  // the unknown block
-    bool has_wall_rhs = false;
-    Array2 count, wall_rhs, b, r, p, ap;
+    DiffusionBlock2 block;
+    Array2 b, r, p, ap;
     std::vector<double> row_dots, row_rr;  // per-row partial inner products
   };
   LinearSolveReport solve_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha, Workspace& work);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "fluid/boundary2.hpp"
 
@@ -28,9 +29,18 @@ std::vector<int> fft_radices(int n) {
 }
 bool fft_applies(int n) { return n == 2 || !fft_radices(n).empty(); }
 
-bool same_wall_types(const Walls& a, const Walls& b) {
-  return a.left.type == b.left.type && a.right.type == b.right.type && a.bottom.type == b.bottom.type &&
-         a.top.type == b.top.type;
+// What the end of a lane changes in the diagonal 2 + λ + σ: −1 (Neumann), +1 (zero half a
+// cell beyond), 0 (zero one cell beyond).
+double end_offset(OperatorEnd end) {
+  switch (end) {
+    case OperatorEnd::neumann:
+      return 1.0;
+    case OperatorEnd::dirichlet_half:
+      return -1.0;
+    case OperatorEnd::dirichlet_node:
+      return 0.0;
+  }
+  return 0.0;
 }
 
 // Eigenpairs of the 1-D operator along `lines` with the given ends (see the header).
@@ -111,35 +121,79 @@ void odd_radix(long block, const double* const* ar, const double* const* ai, dou
 
 }  // namespace
 
-void FastPressureSolver2::setup(const Walls& walls, int nx, int ny, bool prefer_dense) {
-  if (ready_ && nx == nx_ && ny == ny_ && prefer_dense == prefer_dense_ && same_wall_types(walls, walls_)) return;
+namespace {
+
+// Transposed copies in tiles of kTile columns, so that the strided side touches kTile cache
+// lines per row instead of one per element; each element gets the same single operation.
+constexpr int kTile = 8;
+// out(j, i) = f(in(i, j)) for the rows j in [j0, j1) of `in`.
+template <class F>
+void transpose_rows(const Array2& in, int j0, int j1, F f, Array2& out) {
+  const int nx = in.nx();
+  for (int i0 = 0; i0 < nx; i0 += kTile) {
+    const int i1 = std::min(nx, i0 + kTile);
+    for (int j = j0; j < j1; ++j) {
+      const double* src = in.row(j);
+      for (int i = i0; i < i1; ++i) out(j, i) = f(src[i]);
+    }
+  }
+}
+// out(i, j) = in(j, i) for the rows j in [j0, j1) of `out`.
+void transpose_columns(const Array2& in, int j0, int j1, Array2& out) {
+  const int nx = out.nx();
+  for (int i0 = 0; i0 < nx; i0 += kTile) {
+    const int i1 = std::min(nx, i0 + kTile);
+    for (int j = j0; j < j1; ++j) {
+      double* dst = out.row(j);
+      for (int i = i0; i < i1; ++i) dst[i] = in(j, i);
+    }
+  }
+}
+
+}  // namespace
+
+KroneckerOperator2 pressure_operator(const Walls& walls) {
+  auto end = [](const Wall& wall) { return is_solid(wall) ? OperatorEnd::neumann : OperatorEnd::dirichlet_half; };
+  return {end(walls.left), end(walls.right), end(walls.bottom), end(walls.top), 0.0};
+}
+
+void FastPressureSolver2::setup(const KroneckerOperator2& op, int nx, int ny, bool prefer_dense) {
+  if (ready_ && nx == nx_ && ny == ny_ && prefer_dense == prefer_dense_ && op == op_) return;
   ready_ = true;
-  walls_ = walls;
+  op_ = op;
   nx_ = nx;
   ny_ = ny;
   prefer_dense_ = prefer_dense;
 
-  const bool x_neumann = is_solid(walls.left) && is_solid(walls.right);
-  const bool y_neumann = is_solid(walls.bottom) && is_solid(walls.top);
+  using E = OperatorEnd;
+  const bool x_neumann = op.x_low == E::neumann && op.x_high == E::neumann;
+  const bool y_neumann = op.y_low == E::neumann && op.y_high == E::neumann;
+  const bool y_node = op.y_low == E::dirichlet_node || op.y_high == E::dirichlet_node;
+  const bool x_node = op.x_low == E::dirichlet_node || op.x_high == E::dirichlet_node;
   if (!prefer_dense && y_neumann && fft_applies(ny))
     method_ = Method::fft_along_y;
   else if (!prefer_dense && x_neumann && fft_applies(nx))
     method_ = Method::fft_along_x;
-  else
+  else if (!y_node)
     method_ = Method::dense_along_y;
+  else if (!x_node)
+    method_ = Method::dense_along_x;
+  else
+    throw std::invalid_argument("fast direct solver: both axes end one cell beyond a known zero; no transform applies");
 
-  const bool transposed = method_ == Method::fft_along_x;
+  transposed_ = method_ == Method::fft_along_x || method_ == Method::dense_along_x;
+  dense_ = method_ == Method::dense_along_y || method_ == Method::dense_along_x;
+  const bool transposed = transposed_;
   lines_ = transposed ? nx : ny;
   lanes_ = transposed ? ny : nx;
-  const Wall& line_low = transposed ? walls.left : walls.bottom;
-  const Wall& line_high = transposed ? walls.right : walls.top;
-  const Wall& lane_low = transposed ? walls.bottom : walls.left;
-  const Wall& lane_high = transposed ? walls.top : walls.right;
-  const bool line_low_n = is_solid(line_low), line_high_n = is_solid(line_high);
-  const bool lane_low_n = is_solid(lane_low), lane_high_n = is_solid(lane_high);
+  const E line_low = transposed ? op.x_low : op.y_low;
+  const E line_high = transposed ? op.x_high : op.y_high;
+  const E lane_low = transposed ? op.y_low : op.x_low;
+  const E lane_high = transposed ? op.y_high : op.x_high;
+  const bool line_low_n = line_low == E::neumann, line_high_n = line_high == E::neumann;
   const int n = lines_;
   const int m = lanes_;
-  singular_ = line_low_n && line_high_n && lane_low_n && lane_high_n;
+  singular_ = line_low_n && line_high_n && lane_low == E::neumann && lane_high == E::neumann && op.shift == 0.0;
 
   // Thomas pivots of (T_lanes + λ_k I) for every mode k: forward elimination of
   // tridiag(−1, d_l, −1) gives pivots π_0 = d_0, π_l = d_l − 1/π_{l−1}; we store 1/π_l.
@@ -148,9 +202,9 @@ void FastPressureSolver2::setup(const Walls& walls, int nx, int ny, bool prefer_
     const double lambda = eigenvalue(line_low_n, line_high_n, n, k);
     double* inv = pivots_.row(k);
     for (int l = 0; l < m; ++l) {
-      double d = 2.0 + lambda;
-      if (l == 0) d -= lane_low_n ? 1.0 : -1.0;
-      if (l == m - 1) d -= lane_high_n ? 1.0 : -1.0;
+      double d = 2.0 + lambda + op.shift;  // σ = 0 adds exactly nothing
+      if (l == 0) d -= end_offset(lane_low);
+      if (l == m - 1) d -= end_offset(lane_high);
       const double pivot = l == 0 ? d : d - inv[l - 1];
       inv[l] = 1.0 / pivot;  // the singular mode's last pivot is 0: never used (see solve_modes)
     }
@@ -161,7 +215,7 @@ void FastPressureSolver2::setup(const Walls& walls, int nx, int ny, bool prefer_
   im_.resize(0, 0);
   basis_.resize(0, 0);
   basis_t_.resize(0, 0);
-  if (method_ == Method::dense_along_y) {
+  if (dense_) {
     basis_.resize(n, n);
     basis_t_.resize(n, n);
     for (int k = 0; k < n; ++k) {
@@ -294,7 +348,7 @@ void FastPressureSolver2::fft(bool inverse, int l0, int l1) {
 // reading line t of the input from source.row(t) × scale (scale 1: a copy).
 void FastPressureSolver2::forward_transform(const Array2& source, double scale, int l0, int l1) {
   const int n = lines_;
-  if (method_ == Method::dense_along_y) {
+  if (dense_) {
     // out_k = Σ_j φ_k(j) in_j, four modes at a time; j ascending for every output. Into im_.
     for (int k0 = 0; k0 < n; k0 += 4) {
       const int kb = std::min(4, n - k0);
@@ -375,7 +429,7 @@ void FastPressureSolver2::forward_transform(const Array2& source, double scale, 
 // the dense path writes im_.
 void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1) {
   const int n = lines_;
-  if (method_ == Method::dense_along_y) {
+  if (dense_) {
     // out_j = Σ_k φ_k(j) in_k, k ascending.
     for (int j0 = 0; j0 < n; j0 += 4) {
       const int jb = std::min(4, n - j0);
@@ -486,23 +540,25 @@ void FastPressureSolver2::solve_modes(int k0_begin, int k1) {
 
 void FastPressureSolver2::solve(const Walls& walls, const Array2& b, Array2& q, bool prefer_dense,
                                 double output_scale) {
+  solve(pressure_operator(walls), b, q, prefer_dense, output_scale);
+}
+
+void FastPressureSolver2::solve(const KroneckerOperator2& op, const Array2& b, Array2& q, bool prefer_dense,
+                                double output_scale) {
   const int nx = b.nx();
   const int ny = b.ny();
-  setup(walls, nx, ny, prefer_dense);
+  setup(op, nx, ny, prefer_dense);
   q.resize(nx, ny);
-  if (method_ == Method::dense_along_y) im_.resize(lanes_, lines_);
-  const bool transposed = method_ == Method::fft_along_x;
-  const bool dense = method_ == Method::dense_along_y;
+  if (dense_) im_.resize(lanes_, lines_);
+  const bool transposed = transposed_;
+  const bool dense = dense_;
   // The transform is linear: scaling its input scales the solution. In a closed box the mean of
   // b (round-off only, the fluxes telescope) is ignored by the singular mode's recurrence.
   // Threads share the lanes of the transforms and the modes of the tridiagonal solves; every
   // value gets the serial arithmetic (worker_pool.hpp).
   for_pieces(workers_, 0, lanes_, [&](int l0, int l1, int) {
     if (transposed) {
-      for (int j = l0; j < l1; ++j) {
-        const double* src = b.row(j);
-        for (int i = 0; i < nx; ++i) work_(j, i) = src[i] * output_scale;
-      }
+      transpose_rows(b, l0, l1, [output_scale](double value) { return value * output_scale; }, work_);
       forward_transform(work_, 1.0, l0, l1);
     } else if (dense) {
       for (int j = 0; j < ny; ++j) {
@@ -523,16 +579,14 @@ void FastPressureSolver2::solve(const Walls& walls, const Array2& b, Array2& q, 
   for_pieces(workers_, 0, lines_, [&](int k0, int k1, int) { solve_modes(k0, k1); });
   for_pieces(workers_, 0, lanes_, [&](int l0, int l1, int) {
     if (transposed) {
-      inverse_transform(work_, l0, l1);
-      for (int j = l0; j < l1; ++j) {
-        double* dst = q.row(j);
-        for (int i = 0; i < nx; ++i) dst[i] = work_(j, i);
-      }
+      inverse_transform(work_, l0, l1);  // the dense path writes im_
+      const Array2& result = dense ? im_ : work_;
+      transpose_columns(result, l0, l1, q);
     } else {
       inverse_transform(q, l0, l1);  // the dense path writes im_
     }
   });
-  if (dense) std::swap(q, im_);
+  if (dense && !transposed) std::swap(q, im_);
 }
 
 namespace {

@@ -17,6 +17,11 @@
 // box of 100 or 50 cells), O(N n) with a dense transform otherwise. Exact to round-off; in a
 // closed box the one singular mode (k = 0, constant) is solved with mean zero. All loops run in a fixed order: results
 // are bitwise reproducible.
+//
+// The same machinery solves the shifted system (σ I + T_x ⊗ I + I ⊗ T_y) q = b, σ ≥ 0, whose
+// eigenvectors are those of σ = 0 and whose lane systems are (T_lane + (λ_k + σ) I): the
+// implicit viscosity step (I − α ∇²) u = b is σ = 1/α on b/α (fast_diffusion2.hpp). Its lanes
+// may also end on a known zero one cell beyond (a solid wall's normal face): end entry 2.
 
 #include <vector>
 
@@ -24,12 +29,32 @@
 
 namespace creaturelab::fluid {
 
+/// An end of a 1-D operator tridiag(−1, 2, −1): its first or last diagonal entry.
+enum class OperatorEnd {
+  neumann,         ///< 1: no flux through the end (pressure at a solid wall)
+  dirichlet_half,  ///< 3: zero half a cell beyond (pressure at an open wall, p = 0 on it)
+  dirichlet_node   ///< 2: zero one cell beyond (lanes only: not a transform's line)
+};
+
+/// σ I + T_x ⊗ I + I ⊗ T_y on an nx × ny array, with the ends of T_x and T_y.
+struct KroneckerOperator2 {
+  OperatorEnd x_low = OperatorEnd::neumann, x_high = OperatorEnd::neumann;
+  OperatorEnd y_low = OperatorEnd::neumann, y_high = OperatorEnd::neumann;
+  double shift = 0.0;  ///< σ ≥ 0
+  bool operator==(const KroneckerOperator2&) const = default;
+};
+
+/// The pressure operator of pressure_solver2.hpp: Neumann at solid walls, Dirichlet half a
+/// cell beyond open ones, σ = 0.
+KroneckerOperator2 pressure_operator(const Walls& walls);
+
 class FastPressureSolver2 final : public PressureSolver2 {
  public:
   enum class Method {
     fft_along_y,   ///< DCT-II by a mixed-radix FFT along y, Thomas along x
     fft_along_x,   ///< the same on the transposed problem
-    dense_along_y  ///< dense orthonormal eigenbasis along y (any wall types, any size)
+    dense_along_y,  ///< dense orthonormal eigenbasis along y (any wall types, any size)
+    dense_along_x   ///< the same on the transposed problem (when y has a dirichlet_node end)
   };
 
   LinearSolveReport project(MacGrid2& grid, const Walls& walls, double density_kg_per_m3, double dt_s) override;
@@ -38,12 +63,17 @@ class FastPressureSolver2 final : public PressureSolver2 {
   /// and q has mean zero (to round-off).
   /// `prefer_dense` forces the dense path (tests compare the two).
   void solve(const Walls& walls, const Array2& b, Array2& q, bool prefer_dense = false, double output_scale = 1.0);
+  /// Solves op q = output_scale · b to round-off (the same, for any operator; singular only when
+  /// all ends are Neumann and σ = 0). Throws std::invalid_argument when both axes have a
+  /// dirichlet_node end (no transform along either).
+  void solve(const KroneckerOperator2& op, const Array2& b, Array2& q, bool prefer_dense = false,
+             double output_scale = 1.0);
 
   /// The method chosen by the last solve.
   Method method() const { return method_; }
 
  private:
-  void setup(const Walls& walls, int nx, int ny, bool prefer_dense);
+  void setup(const KroneckerOperator2& op, int nx, int ny, bool prefer_dense);
   // The pieces of a solve; [l0, l1) a range of lanes, [k0, k1) of modes (threads share them).
   void forward_transform(const Array2& source, double scale, int l0, int l1);
   void inverse_transform(Array2& target, int l0, int l1);
@@ -53,9 +83,11 @@ class FastPressureSolver2 final : public PressureSolver2 {
 
   bool ready_ = false;
   bool prefer_dense_ = false;
-  Walls walls_{};
+  KroneckerOperator2 op_{};
   int nx_ = 0, ny_ = 0;
   Method method_ = Method::fft_along_y;
+  bool transposed_ = false;  // lines along x
+  bool dense_ = false;       // dense eigenbasis instead of the FFT
   int lines_ = 0;  // transform length n
   int lanes_ = 0;  // tridiagonal length m
   bool singular_ = false;

@@ -179,6 +179,16 @@ std::string_view to_string(TimeStepPolicy policy) {
   return "unknown";
 }
 
+std::string_view to_string(ViscositySolverType type) {
+  switch (type) {
+    case ViscositySolverType::iterative:
+      return "iterative";
+    case ViscositySolverType::fast_direct:
+      return "fast_direct";
+  }
+  return "unknown";
+}
+
 std::optional<WallType> parse_wall_type(std::string_view name) {
   return parse(name, std::array{WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open});
 }
@@ -190,6 +200,9 @@ std::optional<PressureSolverType> parse_pressure_solver_type(std::string_view na
 }
 std::optional<TimeStepPolicy> parse_time_step_policy(std::string_view name) {
   return parse(name, std::array{TimeStepPolicy::cfl_adaptive, TimeStepPolicy::fixed});
+}
+std::optional<ViscositySolverType> parse_viscosity_solver_type(std::string_view name) {
+  return parse(name, std::array{ViscositySolverType::iterative, ViscositySolverType::fast_direct});
 }
 
 }  // namespace creaturelab::fluid

@@ -56,6 +56,13 @@ enum class PressureSolverType {
   pcg           ///< MIC(0)-preconditioned conjugate gradients, to pressure_tolerance
 };
 
+/// Implicit viscosity solver. Both solve the same backward-Euler system; they agree to
+/// viscosity_tolerance (not bitwise).
+enum class ViscositySolverType {
+  iterative,   ///< Richardson sweeps, then CG, to viscosity_tolerance (diffusion2.hpp); the default
+  fast_direct  ///< transform + tridiagonal solves, exact to round-off (fast_diffusion2.hpp)
+};
+
 /// How the time step is chosen.
 enum class TimeStepPolicy {
   cfl_adaptive,  ///< dt = min(max_step_s, cfl_safety_factor · dx / max|u_component|)
@@ -86,7 +93,10 @@ struct FluidParams {
   double pressure_tolerance = 1e-10;
   int pressure_max_iterations = 5000;
 
-  // --- implicit viscosity (backward Euler, Stam 1999 §2.2), solved by CG
+  // --- implicit viscosity (backward Euler, Stam 1999 §2.2)
+  /// iterative is the default (all converged results were computed with it); fast_direct is
+  /// faster only for large ν dt / dx² (fast_diffusion2.hpp).
+  ViscositySolverType viscosity_solver = ViscositySolverType::iterative;
   double viscosity_tolerance = 1e-10;  ///< ‖b − A u‖∞ ≤ tol · ‖b‖∞
   int viscosity_max_iterations = 1000;
 
@@ -120,10 +130,12 @@ std::string_view to_string(WallType type);
 std::string_view to_string(AdvectionScheme scheme);
 std::string_view to_string(PressureSolverType type);
 std::string_view to_string(TimeStepPolicy policy);
+std::string_view to_string(ViscositySolverType type);
 /// Inverses of to_string (the names are the enumerator names); std::nullopt for unknown names.
 std::optional<WallType> parse_wall_type(std::string_view name);
 std::optional<AdvectionScheme> parse_advection_scheme(std::string_view name);
 std::optional<PressureSolverType> parse_pressure_solver_type(std::string_view name);
 std::optional<TimeStepPolicy> parse_time_step_policy(std::string_view name);
+std::optional<ViscositySolverType> parse_viscosity_solver_type(std::string_view name);
 
 }  // namespace creaturelab::fluid

@@ -7,6 +7,7 @@
 
 #include "fluid/boundary2.hpp"
 #include "fluid/diagnostics2.hpp"
+#include "fluid/fast_diffusion2.hpp"
 #include "fluid/tracers2.hpp"
 
 namespace creaturelab::fluid {
@@ -29,6 +30,13 @@ std::string cfl_message(long step, double time_s, double dt_s, double cfl, doubl
       << " of the explicit advection scheme. Reduce the time step (max_step_s, fixed_step_s, "
          "cfl_safety_factor) or use a semi-Lagrangian scheme.";
   return out.str();
+}
+
+std::unique_ptr<DiffusionSolver2> make_diffusion_solver(const FluidParams& params) {
+  if (params.viscosity_solver == ViscositySolverType::fast_direct) {
+    return std::make_unique<FastDiffusion2>(params.viscosity_tolerance);
+  }
+  return std::make_unique<ImplicitDiffusion2>(params.viscosity_tolerance, params.viscosity_max_iterations);
 }
 
 FluidParams checked(const FluidParams& params) {
@@ -55,7 +63,7 @@ FluidSolver2::FluidSolver2(const FluidParams& params)
       grid_(params_.cells_x, params_.cells_y, params_.cell_size_m()),
       force_density_(params_.cells_x, params_.cells_y),
       advection_(make_advection_solver(params_.advection)),
-      diffusion_(std::make_unique<ImplicitDiffusion2>(params_.viscosity_tolerance, params_.viscosity_max_iterations)),
+      diffusion_(make_diffusion_solver(params_)),
       pressure_(make_pressure_solver(params_)) {
   advection_->set_workers(workers_.get());
   diffusion_->set_workers(workers_.get());

@@ -35,6 +35,36 @@
 // divergence and gradient 13 %), about 8 ns; FFTW 3.3.10 (REDFT10 + REDFT01 over all 256
 // lines, FFTW_ESTIMATE) takes 5.2 ns for both, so FFTW would save about 3 ns. Both together
 // bring the upwind2_rk2 step to about 26 ns, still above 20 on one core.
+//
+// Issue 13 §4, measured 2026-11-25 (speed13 branch), 256², upwind2_rk2 + fast direct pressure +
+// iterative viscosity: the best configuration. Its bench row is
+// BM_FluidStep_Upwind2Rk2_FastPressure/cells:256/threads:1 and /threads:2. Minimum of 5
+// repetitions at load average 10.8-12.1 (07:38-07:41 UTC; other sessions' simulations held
+// the 2 cores), ns per cell, CPU of all threads / elapsed:
+//                                    1 thread        2 threads
+//   full step                        30.3 / 58.6     42.6 / 66.5
+//   advection (upwind2_rk2)           8.8 / 16.9     10.2 / 17.0
+//   viscosity (iterative, 3 sweeps)   5.8 / 11.8      6.7 / 13.3
+//   projection (fast direct)         12.0 / 23.6     19.4 / 31.3
+// (An earlier run the same morning at load 5: full step 29.3 CPU, 39.0 elapsed with 1 thread,
+// 39.8 / 50.8 with 2; advection 8.6, viscosity 5.8, projection 11.3.) The rest of the step,
+// about 3.8 ns, is the forces, the start-of-step maximum speed and the end-of-step summary.
+// The goal (≤ 20 ns per cell) is NOT met: not on one core (30.3 CPU), and with two threads the
+// elapsed time was 66.5 on this loaded machine (the workers wait for a core; the 2-thread figure
+// of an idle machine was not measured: the load was 5-12 whenever these benches ran).
+//
+// The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
+// fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is
+// slower for water: 23.3 ns per cell at 256² against the iterative 5.8 (two DCT-solves per step,
+// each about a projection's transforms, against 3 Richardson sweeps), and the full step with it
+// 52.6 against 30.3. It pays for viscous flows: at ν = 100 × water (α = 0.53, CG takes 17
+// iterations) 23.6 against 51.3 at 256² (22.1 against 24.6 at 100², load 5). The grid study
+// (bench_jellyfish) is slower with it as well: 200², 6.17 against 4.63 ms per step; 400², 33.2
+// against 26.7.
+// FFTW (not used): 5.2 ns for both transforms at 256² (measured before) against about 7.7 here
+// would save ~2.5 ns, not enough for 20 on one core; its plans for a share of the lanes (threads)
+// may choose other codelets than for all lanes, which would break the bitwise equality across
+// thread counts.
 #include <benchmark/benchmark.h>
 #include <time.h>
 
@@ -59,14 +89,15 @@ double clock_seconds(clockid_t clock) {
 // solver has none, and this is the thread's CPU time), and elapsed time.
 double cpu_seconds() { return clock_seconds(CLOCK_PROCESS_CPUTIME_ID); }
 double wall_seconds() { return clock_seconds(CLOCK_MONOTONIC); }
-double thread_cpu_seconds() { return clock_seconds(CLOCK_THREAD_CPUTIME_ID); }
 
-FluidParams scene(int cells, AdvectionScheme scheme, PressureSolverType pressure, int threads = 1) {
+FluidParams scene(int cells, AdvectionScheme scheme, PressureSolverType pressure, int threads = 1,
+                  ViscositySolverType viscosity = ViscositySolverType::iterative) {
   FluidParams params;  // defaults: 0.4 m free-slip box of water
   params.cells_x = params.cells_y = cells;
   params.advection = scheme;
   params.pressure_solver = pressure;
   params.threads = threads;
+  params.viscosity_solver = viscosity;
   return params;
 }
 
@@ -89,10 +120,11 @@ void report(benchmark::State& state, int cells, double seconds_total) {
 // Manual time = CPU time of all threads; the counters give it per cell (ns_per_cell) and the
 // elapsed time per cell (ns_per_cell_wall), which is what threads shorten.
 // With threads_arg, the benchmark's second argument is FluidParams::threads.
-void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverType pressure, bool threads_arg = true) {
+void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverType pressure, bool threads_arg = true,
+               ViscositySolverType viscosity = ViscositySolverType::iterative) {
   const int cells = static_cast<int>(state.range(0));
   const int threads = threads_arg ? static_cast<int>(state.range(1)) : 1;
-  auto solver = warmed_up(scene(cells, scheme, pressure, threads));
+  auto solver = warmed_up(scene(cells, scheme, pressure, threads, viscosity));
   double cpu_total = 0.0;
   double wall_total = 0.0;
   for (auto _ : state) {
@@ -112,66 +144,77 @@ void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverTy
   state.counters["threads"] = threads;
 }
 
-// The projection alone on a realistic right-hand side: the velocity of the next step just
-// before its projection, with the previous pressure as warm start (restored every iteration).
-void pressure_only(benchmark::State& state, PressureSolverType pressure) {
+// One stage alone on the state just before it (the grid restored every iteration, untimed):
+// advection (per scheme), viscosity (either solver, water or another ν) and the projection
+// (a realistic right-hand side: the velocity of the next step just before its projection, the
+// previous pressure as warm start), the stage-by-stage figures of the header. The second
+// argument is FluidParams::threads; like full_step, CPU time of all threads per cell
+// (ns_per_cell) and elapsed time per cell (ns_per_cell_wall).
+enum class Stage { advection, viscosity, pressure };
+struct StageSetup {
+  AdvectionScheme scheme = AdvectionScheme::semi_lagrangian;
+  PressureSolverType pressure = PressureSolverType::fast_direct;
+  ViscositySolverType viscosity = ViscositySolverType::iterative;
+  double nu_m2_per_s = 0.0;  ///< 0: water (the default)
+};
+void stage_only(benchmark::State& state, Stage stage, const StageSetup& setup) {
   const int cells = static_cast<int>(state.range(0));
-  auto solver = warmed_up(scene(cells, AdvectionScheme::semi_lagrangian, pressure));
+  const int threads = static_cast<int>(state.range(1));
+  FluidParams params = scene(cells, setup.scheme, setup.pressure, threads, setup.viscosity);
+  if (setup.nu_m2_per_s > 0.0) params.kinematic_viscosity_m2_per_s = setup.nu_m2_per_s;
+  auto solver = warmed_up(params);
   const StepContext context{solver->steps_done(), solver->time_s(), solver->next_time_step_s()};
   solver->apply_external_forces(context);
-  solver->advect_velocity(context);
-  solver->apply_viscosity(context);
+  if (stage != Stage::advection) solver->advect_velocity(context);
+  if (stage == Stage::pressure) solver->apply_viscosity(context);
   const MacGrid2 before = solver->grid();
-  double total = 0.0;
+  double cpu_total = 0.0;
+  double wall_total = 0.0;
   int iterations = 0;
   for (auto _ : state) {
-    solver->grid() = before;  // untimed: manual time covers the solve only
-    const double start = thread_cpu_seconds();
-    const LinearSolveReport r = solver->project(context);
-    const double seconds = thread_cpu_seconds() - start;
-    state.SetIterationTime(seconds);
-    total += seconds;
-    iterations = r.iterations;
-  }
-  report(state, cells, total);
-  state.counters["cg_iterations"] = iterations;
-}
-
-// One stage alone on the state just before it (the grid restored every iteration, untimed):
-// advection (per scheme) and viscosity, the stage-by-stage figures of the header.
-enum class Stage { advection, viscosity };
-void stage_only(benchmark::State& state, Stage stage, AdvectionScheme scheme) {
-  const int cells = static_cast<int>(state.range(0));
-  auto solver = warmed_up(scene(cells, scheme, PressureSolverType::fast_direct));
-  const StepContext context{solver->steps_done(), solver->time_s(), solver->next_time_step_s()};
-  solver->apply_external_forces(context);
-  if (stage == Stage::viscosity) solver->advect_velocity(context);
-  const MacGrid2 before = solver->grid();
-  double total = 0.0;
-  for (auto _ : state) {
     solver->grid() = before;
-    const double start = thread_cpu_seconds();
+    const double cpu0 = cpu_seconds();
+    const double wall0 = wall_seconds();
     if (stage == Stage::advection) {
       solver->advect_velocity(context);
+    } else if (stage == Stage::viscosity) {
+      iterations = solver->apply_viscosity(context).iterations;
     } else {
-      benchmark::DoNotOptimize(solver->apply_viscosity(context));
+      iterations = solver->project(context).iterations;
     }
-    const double seconds = thread_cpu_seconds() - start;
-    state.SetIterationTime(seconds);
-    total += seconds;
+    const double wall = wall_seconds() - wall0;
+    const double cpu = cpu_seconds() - cpu0;
+    state.SetIterationTime(cpu);
+    cpu_total += cpu;
+    wall_total += wall;
   }
-  report(state, cells, total);
+  report(state, cells, cpu_total);
+  state.counters["ns_per_cell_wall"] =
+      wall_total * 1e9 / (static_cast<double>(cells) * cells * static_cast<double>(state.iterations()));
+  state.counters["iterations"] = iterations;
 }
 void BM_Advection_SemiLagrangian(benchmark::State& state) {
-  stage_only(state, Stage::advection, AdvectionScheme::semi_lagrangian);
+  stage_only(state, Stage::advection, {AdvectionScheme::semi_lagrangian});
 }
 void BM_Advection_MacCormack(benchmark::State& state) {
-  stage_only(state, Stage::advection, AdvectionScheme::maccormack);
+  stage_only(state, Stage::advection, {AdvectionScheme::maccormack});
 }
 void BM_Advection_Upwind2Rk2(benchmark::State& state) {
-  stage_only(state, Stage::advection, AdvectionScheme::upwind2_rk2);
+  stage_only(state, Stage::advection, {AdvectionScheme::upwind2_rk2});
 }
-void BM_Viscosity(benchmark::State& state) { stage_only(state, Stage::viscosity, AdvectionScheme::semi_lagrangian); }
+void BM_Viscosity(benchmark::State& state) { stage_only(state, Stage::viscosity, {}); }
+void BM_Viscosity_FastDirect(benchmark::State& state) {
+  stage_only(state, Stage::viscosity, {.viscosity = ViscositySolverType::fast_direct});
+}
+// A fluid 100 times as viscous as water (ν = 1.3e-4 m²/s, α = ν dt / dx² = 0.53 at 256² and the
+// bench's dt of 10 ms): beyond the Richardson range, CG.
+constexpr double kViscousNu = 1.304e-4;
+void BM_Viscosity_Viscous(benchmark::State& state) {
+  stage_only(state, Stage::viscosity, {.nu_m2_per_s = kViscousNu});
+}
+void BM_Viscosity_Viscous_FastDirect(benchmark::State& state) {
+  stage_only(state, Stage::viscosity, {.viscosity = ViscositySolverType::fast_direct, .nu_m2_per_s = kViscousNu});
+}
 
 void BM_FluidStep_SemiLagrangian_FastPressure(benchmark::State& state) {
   full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::fast_direct);
@@ -182,11 +225,17 @@ void BM_FluidStep_MacCormack_FastPressure(benchmark::State& state) {
 void BM_FluidStep_Upwind2Rk2_FastPressure(benchmark::State& state) {
   full_step(state, AdvectionScheme::upwind2_rk2, PressureSolverType::fast_direct);
 }
+void BM_FluidStep_Upwind2Rk2_FastPressure_FastViscosity(benchmark::State& state) {
+  full_step(state, AdvectionScheme::upwind2_rk2, PressureSolverType::fast_direct, true,
+            ViscositySolverType::fast_direct);
+}
 void BM_FluidStep_SemiLagrangian_Pcg(benchmark::State& state) {
   full_step(state, AdvectionScheme::semi_lagrangian, PressureSolverType::pcg, false);
 }
-void BM_Pressure_FastDirect(benchmark::State& state) { pressure_only(state, PressureSolverType::fast_direct); }
-void BM_Pressure_Pcg(benchmark::State& state) { pressure_only(state, PressureSolverType::pcg); }
+void BM_Pressure_FastDirect(benchmark::State& state) { stage_only(state, Stage::pressure, {}); }
+void BM_Pressure_Pcg(benchmark::State& state) {
+  stage_only(state, Stage::pressure, {.pressure = PressureSolverType::pcg});
+}
 
 // Besides mean and median, the minimum over repetitions: the least disturbed measurement.
 double minimum(const std::vector<double>& values) { return *std::min_element(values.begin(), values.end()); }
@@ -198,6 +247,14 @@ double minimum(const std::vector<double>& values) { return *std::min_element(val
       ->Range(64, 512)                \
       ->UseManualTime()               \
       ->Unit(benchmark::kMicrosecond) \
+      ->ComputeStatistics("min", minimum)
+// Stages alone at 1 and 2 threads.
+#define CL_FLUID_STAGE_BENCH(name)              \
+  BENCHMARK(name)                               \
+      ->ArgNames({"cells", "threads"})          \
+      ->ArgsProduct({{64, 100, 128, 256, 512}, {1, 2}}) \
+      ->UseManualTime()                         \
+      ->Unit(benchmark::kMicrosecond)           \
       ->ComputeStatistics("min", minimum)
 // Full steps at 1 and 2 threads (FluidParams::threads; the results are bitwise the same).
 #define CL_FLUID_STEP_BENCH(name)                                                        \
@@ -211,13 +268,17 @@ double minimum(const std::vector<double>& values) { return *std::min_element(val
 CL_FLUID_STEP_BENCH(BM_FluidStep_SemiLagrangian_FastPressure);
 CL_FLUID_STEP_BENCH(BM_FluidStep_MacCormack_FastPressure);
 CL_FLUID_STEP_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure);
+CL_FLUID_STEP_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure_FastViscosity);
 CL_FLUID_BENCH(BM_FluidStep_SemiLagrangian_Pcg);
-CL_FLUID_BENCH(BM_Advection_SemiLagrangian);
-CL_FLUID_BENCH(BM_Advection_MacCormack);
-CL_FLUID_BENCH(BM_Advection_Upwind2Rk2);
-CL_FLUID_BENCH(BM_Viscosity);
-CL_FLUID_BENCH(BM_Pressure_FastDirect);
-CL_FLUID_BENCH(BM_Pressure_Pcg);
+CL_FLUID_STAGE_BENCH(BM_Advection_SemiLagrangian);
+CL_FLUID_STAGE_BENCH(BM_Advection_MacCormack);
+CL_FLUID_STAGE_BENCH(BM_Advection_Upwind2Rk2);
+CL_FLUID_STAGE_BENCH(BM_Viscosity);
+CL_FLUID_STAGE_BENCH(BM_Viscosity_FastDirect);
+CL_FLUID_STAGE_BENCH(BM_Viscosity_Viscous);
+CL_FLUID_STAGE_BENCH(BM_Viscosity_Viscous_FastDirect);
+CL_FLUID_STAGE_BENCH(BM_Pressure_FastDirect);
+CL_FLUID_STAGE_BENCH(BM_Pressure_Pcg);
 
 }  // namespace
 }  // namespace creaturelab::fluid

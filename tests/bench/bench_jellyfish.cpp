@@ -12,6 +12,11 @@
 // machine was never quiet); on a busy one the goal is met only at the lower load. With the fluid step on two
 // threads (BM_SimulatedSecondFluidThreads; the swim is bitwise the same) the loaded machine gave
 // 7.3-8.1 simulated s per elapsed s against 12.5-13.7 with one: the workers wait for a core.
+// 2026-11-25 (speed13; the swim is bitwise as before), load average 12-13, three repetitions:
+// 20.09-20.21 simulated s per CPU s at 100² (0.495-0.498 ms per step), 10.5-10.7 per elapsed s;
+// with two fluid threads 11.9-12.1 per CPU s, 6.3-6.5 per elapsed s. Profile (perf) of the 100²
+// step: Richardson sweeps 10.5 %, semi-Lagrangian backtraces 20 %, sampling 9.5 %, pressure
+// transforms and Thomas 16 %, the IB's dense LU and its products (Eigen) about 14 %.
 // The bilinear kernel's rows (peskin4:0) are marginal at
 // this step: at 50² the bell crumples after 6.4 s and the run stops. One benchmark iteration is
 // one simulated second at the kind's default step (0.01 s) after a one-cycle warm-up, with the
@@ -131,6 +136,10 @@ BENCHMARK(BM_SimulatedSecondFluidThreads)
 // with two points sharing the cores (about 10 minutes of CPU); a profile of a 400² step (perf,
 // 2026-11-25) puts 85-90% in the fluid (viscosity 30%, MacCormack 35%, pressure 13%) and under 10%
 // in the implicit IB solve.
+// The second argument 1 runs the viscosity stage with the fast direct solver (an option,
+// fluid/fast_diffusion2.hpp; not bitwise the default's swim, the same to the viscosity tolerance).
+// It is slower here (2026-11-25, load 10-12, CPU ms per step): 200², 6.17 against 4.63; 400²,
+// 33.2 against 26.7 (α = ν dt / dx² = 4.1e-3 and 8.2e-3: the iterative solver's Richardson range).
 void BM_SimulatedSecondGridStudy(benchmark::State& state) {
   const int cells = static_cast<int>(state.range(0));
   SwimmerConfig c = paperConfig(cells, ib::Kernel::bilinear);
@@ -145,13 +154,12 @@ void BM_SimulatedSecondGridStudy(benchmark::State& state) {
   c.fluid.domain_height_m = 1.5 * c.fluid.domain_width_m;
   c.start_y_fraction = 0.2;
   c.fluid.fixed_step_s = c.dt_s = 0.00125 * 200.0 / cells;
+  if (state.range(1) == 1) c.fluid.viscosity_solver = fluid::ViscositySolverType::fast_direct;
   measure(state, c);
 }
 BENCHMARK(BM_SimulatedSecondGridStudy)
-    ->ArgNames({"cells"})
-    ->Arg(100)
-    ->Arg(200)
-    ->Arg(400)
+    ->ArgNames({"cells", "fast_viscosity"})
+    ->ArgsProduct({{100, 200, 400}, {0, 1}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->MinTime(4.0);

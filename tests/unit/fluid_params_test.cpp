@@ -117,6 +117,10 @@ TEST(FluidParams, EnumNamesRoundTrip) {
   for (TimeStepPolicy p : {TimeStepPolicy::cfl_adaptive, TimeStepPolicy::fixed}) {
     EXPECT_EQ(parse_time_step_policy(to_string(p)), p);
   }
+  for (ViscositySolverType s : {ViscositySolverType::iterative, ViscositySolverType::fast_direct}) {
+    EXPECT_EQ(parse_viscosity_solver_type(to_string(s)), s);
+  }
+  EXPECT_FALSE(parse_viscosity_solver_type("direct").has_value());
   EXPECT_FALSE(parse_wall_type("freeslip").has_value());
 }
 

@@ -3,12 +3,15 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
+#include <vector>
 
 #include "fluid/advection2.hpp"
 #include "fluid/boundary2.hpp"
 #include "fluid/diagnostics2.hpp"
 #include "fluid/diffusion2.hpp"
+#include "fluid/fast_diffusion2.hpp"
 #include "fluid/fluid_solver2.hpp"
 #include "fluid/initial_conditions2.hpp"
 #include "fluid/staggered_sampler2.hpp"
@@ -126,28 +129,37 @@ TEST(Advection, FluidAtRestStaysAtRest) {
   EXPECT_EQ(max_abs(v), 0.0);
 }
 
+// Both viscosity solvers: the iterative (to a tolerance) and the fast direct (exact to round-off).
+std::vector<std::unique_ptr<DiffusionSolver2>> viscosity_solvers(double tolerance, int max_iterations) {
+  std::vector<std::unique_ptr<DiffusionSolver2>> solvers;
+  solvers.push_back(std::make_unique<ImplicitDiffusion2>(tolerance, max_iterations));
+  solvers.push_back(std::make_unique<FastDiffusion2>(tolerance));
+  return solvers;
+}
+
 // A discrete eigenmode of the free-slip box's viscous operator decays by exactly
-// 1 / (1 + ν dt λ) in one backward-Euler step.
+// 1 / (1 + ν dt λ) in one backward-Euler step, with either solver.
 TEST(Viscosity, EigenmodeDecaysByTheBackwardEulerFactor) {
   const int n = 16;
   const double dx = 0.1, nu = 0.02, dt = 0.3;
-  MacGrid2 grid(n, n, dx);
   const double pi = std::numbers::pi;
-  // v on faces (i + ½, j): cos(π (i + ½) / n) in x (Neumann: free-slip left/right ghosts) and
-  // sin(π j / n) in y (zero on the solid bottom/top faces).
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = std::cos(pi * (i + 0.5) / n) * std::sin(pi * j / n);
-  grid.v_m_per_s(0, 0) = 0.0;
-  const MacGrid2 initial = grid;
-  ImplicitDiffusion2 diffusion(1e-13, 100);
-  const LinearSolveReport report = diffusion.diffuse_velocity(grid, Walls{}, nu, dt);
-  EXPECT_TRUE(report.converged);
-  const double lambda =
-      (4.0 * std::pow(std::sin(pi / (2.0 * n)), 2) + 4.0 * std::pow(std::sin(pi / (2.0 * n)), 2)) / (dx * dx);
-  const double factor = 1.0 / (1.0 + nu * dt * lambda);
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i < n; ++i) EXPECT_NEAR(grid.v_m_per_s(i, j), factor * initial.v_m_per_s(i, j), 1e-12);
-  EXPECT_EQ(max_abs(grid.u_m_per_s), 0.0);
+  for (auto& diffusion : viscosity_solvers(1e-13, 100)) {
+    MacGrid2 grid(n, n, dx);
+    // v on faces (i + ½, j): cos(π (i + ½) / n) in x (Neumann: free-slip left/right ghosts) and
+    // sin(π j / n) in y (zero on the solid bottom/top faces).
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = std::cos(pi * (i + 0.5) / n) * std::sin(pi * j / n);
+    grid.v_m_per_s(0, 0) = 0.0;
+    const MacGrid2 initial = grid;
+    const LinearSolveReport report = diffusion->diffuse_velocity(grid, Walls{}, nu, dt);
+    EXPECT_TRUE(report.converged);
+    const double lambda =
+        (4.0 * std::pow(std::sin(pi / (2.0 * n)), 2) + 4.0 * std::pow(std::sin(pi / (2.0 * n)), 2)) / (dx * dx);
+    const double factor = 1.0 / (1.0 + nu * dt * lambda);
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i < n; ++i) EXPECT_NEAR(grid.v_m_per_s(i, j), factor * initial.v_m_per_s(i, j), 1e-12);
+    EXPECT_EQ(max_abs(grid.u_m_per_s), 0.0);
+  }
 }
 
 // Where Richardson sweeps replace CG (10 α ≤ ImplicitDiffusion2::kSweepContraction), the
@@ -189,7 +201,7 @@ TEST(Viscosity, RichardsonSweepsMeetTheToleranceOfCg) {
 
 // Couette flow: a moving top wall over a no-slip bottom, open at both ends. A backward-Euler
 // step with a very long dt reaches the steady profile u = U y / H, which the ghost values
-// represent exactly.
+// represent exactly (either solver; the fast one through its dense transform along y).
 TEST(Viscosity, LongImplicitStepGivesCouetteProfile) {
   const int nx = 8, ny = 10;
   const double dx = 0.1, top_speed = 0.7;
@@ -198,15 +210,16 @@ TEST(Viscosity, LongImplicitStepGivesCouetteProfile) {
   walls.bottom.type = WallType::no_slip;
   walls.top.type = WallType::moving;
   walls.top.tangential_velocity_m_per_s = top_speed;
-  MacGrid2 grid(nx, ny, dx);
-  ImplicitDiffusion2 diffusion(1e-14, 2000);
-  diffusion.diffuse_velocity(grid, walls, 1.0, 1e9);
-  for (int j = 0; j < ny; ++j) {
-    for (int i = 0; i <= nx; ++i) EXPECT_NEAR(grid.u_m_per_s(i, j), top_speed * (j + 0.5) / ny, 1e-6);
+  for (auto& diffusion : viscosity_solvers(1e-14, 2000)) {
+    MacGrid2 grid(nx, ny, dx);
+    diffusion->diffuse_velocity(grid, walls, 1.0, 1e9);
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i <= nx; ++i) EXPECT_NEAR(grid.u_m_per_s(i, j), top_speed * (j + 0.5) / ny, 1e-6);
+    }
+    Array2 omega;
+    vorticity_at_corners(grid, walls, omega);
+    EXPECT_NEAR(omega(3, 0), -top_speed / (ny * dx), 1e-5);  // ω = −∂u/∂y
   }
-  Array2 omega;
-  vorticity_at_corners(grid, walls, omega);
-  EXPECT_NEAR(omega(3, 0), -top_speed / (ny * dx), 1e-5);  // ω = −∂u/∂y
 }
 
 TEST(Sampler, GhostsSetTheWallValue) {

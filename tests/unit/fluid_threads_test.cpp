@@ -1,6 +1,6 @@
 // Threads inside a step (FluidParams::threads, fluid/worker_pool.hpp) change only the time:
 // the state after many steps is bitwise the same for 1, 2 and 3 threads, for every wall type,
-// all three advection schemes, both pressure solvers, odd and even grids, and viscosities that take
+// all three advection schemes, both pressure solvers, both viscosity solvers, odd and even grids, and viscosities that take
 // the Richardson and the CG path of the viscosity stage (Box2D v3's golden-hash test over
 // worker counts, STYLE.md).
 #include <gtest/gtest.h>
@@ -21,6 +21,7 @@ struct Scene {
   PressureSolverType pressure;
   WallType left, right, bottom, top;
   double viscosity_m2_per_s;
+  ViscositySolverType viscosity_solver;
 };
 
 MacGrid2 run(const Scene& scene, int threads, int steps) {
@@ -37,6 +38,7 @@ MacGrid2 run(const Scene& scene, int threads, int steps) {
   params.walls.top.type = scene.top;
   if (scene.top == WallType::moving) params.walls.top.tangential_velocity_m_per_s = 0.01;
   params.kinematic_viscosity_m2_per_s = scene.viscosity_m2_per_s;
+  params.viscosity_solver = scene.viscosity_solver;
   params.body_acceleration_y_m_per_s2 = -9.81;
   params.threads = threads;
   FluidSolver2 solver(params);
@@ -62,20 +64,27 @@ TEST(FluidThreads, StateIsBitwiseTheSameForOneTwoAndThreeThreads) {
   using A = AdvectionScheme;
   using P = PressureSolverType;
   const WallType F = WallType::free_slip, N = WallType::no_slip, M = WallType::moving, O = WallType::open;
+  const ViscositySolverType I = ViscositySolverType::iterative, D = ViscositySolverType::fast_direct;
   const std::vector<Scene> scenes = {
-      {50, 50, A::maccormack, P::fast_direct, F, F, F, F, 1.304e-6},   // the jellyfish's box (Richardson)
-      {64, 64, A::semi_lagrangian, P::fast_direct, F, F, F, F, 1e-4},  // CG viscosity
-      {37, 53, A::maccormack, P::fast_direct, N, N, N, M, 1e-3},       // dense transform, CG
-      {40, 31, A::maccormack, P::fast_direct, F, O, N, F, 1e-4},       // open wall
-      {30, 34, A::semi_lagrangian, P::pcg, O, O, O, O, 1e-4},
-      {48, 45, A::maccormack, P::fast_direct, F, F, F, O, 1e-4},      // transform along x
-      {50, 50, A::upwind2_rk2, P::fast_direct, F, F, F, F, 1.304e-6},  // Eulerian flux form
-      {37, 53, A::upwind2_rk2, P::fast_direct, N, N, N, M, 1e-3},
-      {30, 34, A::upwind2_rk2, P::pcg, O, O, O, O, 1e-4},
+      {50, 50, A::maccormack, P::fast_direct, F, F, F, F, 1.304e-6, I},   // the jellyfish's box (Richardson)
+      {64, 64, A::semi_lagrangian, P::fast_direct, F, F, F, F, 1e-4, I},  // CG viscosity
+      {37, 53, A::maccormack, P::fast_direct, N, N, N, M, 1e-3, I},       // dense transform, CG
+      {40, 31, A::maccormack, P::fast_direct, F, O, N, F, 1e-4, I},       // open wall
+      {30, 34, A::semi_lagrangian, P::pcg, O, O, O, O, 1e-4, I},
+      {48, 45, A::maccormack, P::fast_direct, F, F, F, O, 1e-4, I},      // transform along x
+      {50, 50, A::upwind2_rk2, P::fast_direct, F, F, F, F, 1.304e-6, I},  // Eulerian flux form
+      {37, 53, A::upwind2_rk2, P::fast_direct, N, N, N, M, 1e-3, I},
+      {30, 34, A::upwind2_rk2, P::pcg, O, O, O, O, 1e-4, I},
+      // the fast direct viscosity solver: FFT both ways, dense along y and x, open walls
+      {50, 50, A::upwind2_rk2, P::fast_direct, F, F, F, F, 1.304e-6, D},
+      {37, 53, A::maccormack, P::fast_direct, N, N, N, M, 1e-3, D},
+      {40, 31, A::upwind2_rk2, P::fast_direct, F, O, N, F, 1e-4, D},
+      {30, 34, A::semi_lagrangian, P::pcg, O, O, O, O, 1e-4, D},
   };
   for (const Scene& scene : scenes) {
     SCOPED_TRACE(::testing::Message() << scene.nx << "x" << scene.ny << " advection "
-                                      << to_string(scene.advection) << " nu " << scene.viscosity_m2_per_s);
+                                      << to_string(scene.advection) << " nu " << scene.viscosity_m2_per_s << " "
+                                      << to_string(scene.viscosity_solver));
     const MacGrid2 one = run(scene, 1, 15);
     expect_bitwise_equal(one, run(scene, 2, 15));
     expect_bitwise_equal(one, run(scene, 3, 15));
