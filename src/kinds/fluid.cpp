@@ -27,6 +27,7 @@ fluid::FluidParams solverParams(const ParamReader& r) {
   }
   f.advection = *fluid::parse_advection_scheme(r.text("advection"));
   f.pressure_solver = *fluid::parse_pressure_solver_type(r.text("pressure_solver"));
+  f.viscosity_solver = *fluid::parse_viscosity_solver_type(r.text("viscosity_solver"));
   if (r.isAuto("dt_s")) {
     f.time_step_policy = fluid::TimeStepPolicy::cfl_adaptive;
   } else {
@@ -122,6 +123,9 @@ FluidKind::FluidKind() {
              "(Eulerian flux form, Fromm upwind + Heun, second order, explicit: CFL <= 0.5)"),
       choice("pressure_solver", "fast_direct", {"fast_direct", "pcg"},
              "exact projection: transform + tridiagonal (uniform box) or MIC(0)-PCG to 1e-10"),
+      choice("viscosity_solver", "iterative", {"iterative", "fast_direct"},
+             "implicit viscosity: iterative sweeps (fast for water-like nu dt / dx^2) or the fast direct solve "
+             "(exact; at 256^2 23 ns per cell against 5.8 for water, 24 against 51 at 100x water's viscosity)"),
       realOrAuto("dt_s", "s", 1e-9, 10, "fixed step, or \"auto\": CFL-adaptive with cfl_safety_factor and max_step_s"),
       real("cfl_safety_factor", 0.5, "", 1e-6, 10, "fraction of the CFL limit dx / max|u| (paper used 0.001 with the bell)"),
       real("max_step_s", 0.01, "s", 1e-9, 10, "largest adaptive step (paper §4: instability near 0.01 s)"),
