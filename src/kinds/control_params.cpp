@@ -5,6 +5,8 @@
 #include <numbers>
 #include <sstream>
 
+#include <Eigen/Dense>
+
 namespace creaturelab::kinds {
 namespace {
 
@@ -163,6 +165,17 @@ double lineAngleDeg(const control::Vec3& a, const control::Vec3& b) {
   auto norm = [](const control::Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
   const double c = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (norm(a) * norm(b));
   return std::acos(std::min(1.0, c)) * 180.0 / std::numbers::pi;
+}
+
+double meanLineAngleDeg(const std::vector<control::Vec3>& lines, const control::Vec3& reference) {
+  Eigen::Matrix3d t = Eigen::Matrix3d::Zero();
+  for (const auto& l : lines) {
+    const Eigen::Vector3d u = Eigen::Vector3d(l[0], l[1], l[2]).normalized();
+    t += u * u.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(t);
+  const Eigen::Vector3d axis = eig.eigenvectors().col(2);  // eigenvalues ascending
+  return lineAngleDeg({axis[0], axis[1], axis[2]}, reference);
 }
 
 double convergedFrame(const std::vector<std::vector<double>>& angles_deg, double tol_deg, int tail) {

@@ -37,6 +37,12 @@ control::Pattern parsePattern(const std::string& text, const std::string& key);
 // Angle (deg) between two lines (not directions): in [0, 90].
 double lineAngleDeg(const control::Vec3& a, const control::Vec3& b);
 
+// The mean of lines (not directions) as axial data: the principal axis of the orientation tensor
+// sum u u^T of their unit vectors (Mardia & Jupp 2000 §9.2.3), returned as its angle (deg, in
+// [0, 90]) to the line `reference`. Unlike the mean of folded angles it is not biased when the lines
+// wander across the perpendicular or across the reference (a flat optimum at 90 or 0 degrees).
+double meanLineAngleDeg(const std::vector<control::Vec3>& lines, const control::Vec3& reference);
+
 // The frame from which every controlled angle stays within tol of its mean over the last `tail`
 // frames; frames + 1 if the last frame is not yet settled (frames count from 1).
 double convergedFrame(const std::vector<std::vector<double>>& angles_deg, double tol_deg, int tail);
