@@ -158,7 +158,7 @@ ControlFluidKind::ControlFluidKind() {
            "§7.1: 'controlled = [+|-]inboard, ...': the controlled joint has its given sense while the inboard "
            "joint's pattern angle increases (+) or decreases (-), the other sense on the opposite stroke"),
       real("flap_period_s", 0, "s", 0, 1e4,
-           "period of the flap, a whole number of frames; 0: no cycle means (mean_up_force_n is NaN)"),
+           "period of the flap, a whole number of frames; 0: mean_up_force_n over the last average_frames"),
       integer("force_cycles", 2, 1, 100000, "mean_up_force_n: whole flap cycles at the end averaged"),
       real("controlled_limit_deg", 0, "deg", 0, 360, "controlled angles kept within +-this (0: no limit; the paper gives none)"),
   };
@@ -176,7 +176,7 @@ ControlFluidKind::ControlFluidKind() {
       {"markers", "", "outline markers"},
       {"marker_cells_per_step_most", "", "largest marker displacement in one coupled step of the main run, cells"},
       {"mean_up_force_n", "N", "§7.1: the fluid's upward force on all bodies (per depth_m), mean over the last "
-                               "force_cycles flap periods"},
+                               "force_cycles flap periods (flap_period_s > 0) or the last average_frames"},
   };
 }
 
@@ -341,7 +341,7 @@ Result ControlFluidKind::run(const Params& params) const {
   const double period_s = r.real("flap_period_s");
   m["mean_up_force_n"] = {period_s > 0 ? lastCyclesMean(body_fz.values, framesPerCycle(period_s, r.real("frame_s")),
                                                         int(r.integer("force_cycles")))
-                                       : std::numeric_limits<double>::quiet_NaN(),
+                                       : tailMean(body_fz.values, tail),
                           "N"};
   return result;
 }

@@ -19,17 +19,11 @@ small=(params.cells=32 params.frames=30 params.warmup_frames=2 params.average_fr
 "$bin" run experiments/control/flyer.toml "${small[@]}" --out "$scratch/j1" --jobs 1 >"$scratch/j1.log" 2>&1 || true
 [[ $(ls "$scratch"/j1/point_*.h5 | wc -l) == 2 ]] || { cat "$scratch/j1.log"; fail "flyer points missing"; }
 "$bin" run experiments/control/flyer.toml "${small[@]}" --out "$scratch/j2" --jobs 2 >"$scratch/j2.log" 2>&1 || true
-/usr/bin/python3 - "$scratch/j1" "$scratch/j2" <<'PY' || fail "flyer series or determinism"
+/usr/bin/python3 tests/cli/same_datasets.py "$scratch/j1" "$scratch/j2" 2 || fail "--jobs 1 and 2 differ"
+/usr/bin/python3 - "$scratch/j1" <<'PY' || fail "flyer series"
 import sys, glob, h5py, numpy as np
-a, b = sorted(glob.glob(sys.argv[1] + "/point_*.h5")), sorted(glob.glob(sys.argv[2] + "/point_*.h5"))
-assert len(a) == len(b) == 2
-for x, y in zip(a, b):
-    fx, fy = h5py.File(x), h5py.File(y)
-    names = []
-    fx.visit(lambda n: names.append(n) if isinstance(fx[n], h5py.Dataset) else None)
-    for n in names:
-        if not np.array_equal(fx[n][()], fy[n][()]):
-            raise SystemExit(f"{x}: {n} differs between --jobs 1 and 2")
+for x in sorted(glob.glob(sys.argv[1] + "/point_*.h5")):
+    fx = h5py.File(x)
     ts = fx["timeseries"]
     t = ts["time_s"][...]
     # sense +1 (max) while the 4 Hz sine turns the wing down (its rate > 0), -1 on the up-stroke
@@ -40,7 +34,7 @@ for x, y in zip(a, b):
     inner = ts["pd_angle_deg_inner_r"][...]
     assert inner.max() > 15 and inner.min() < -15, inner  # the PD drive flaps the wing
     assert np.isfinite(fx["metrics/mean_up_force_n"][()])
-    held = fx.attrs["label"].startswith(b"held") if isinstance(fx.attrs["label"], bytes) else fx.attrs["label"].startswith("held")
+    held = str(fx.attrs["label"]).startswith("held")
     outer = ts["angle_deg_outer_r"][...]
     assert (np.abs(outer).max() == 0) == held, (fx.attrs["label"], outer)
 PY
@@ -52,18 +46,8 @@ echo "ok   flyer small: 2 points, senses follow the stroke, PD wings flap, --job
 grep -q "controlled / held" "$scratch/j1/figures/flyer_force.txt" || fail "no force ratio"
 echo "ok   figures"
 
-expect_bad() {
-  local name=$1 pattern=$2
-  shift 2
-  local out=$scratch/out_$name rc=0
-  "$bin" run experiments/control/flyer.toml "${small[@]}" "$@" --out "$out" --jobs 1 >"$scratch/$name.out" \
-    2>"$scratch/$name.err" || rc=$?
-  [[ $rc == 2 ]] || { cat "$scratch/$name.err"; fail "$name: exit $rc, expected 2"; }
-  [[ $(wc -l <"$scratch/$name.err") == 1 ]] || { cat "$scratch/$name.err"; fail "$name: expected one line"; }
-  grep -qF -- "$pattern" "$scratch/$name.err" || fail "$name: does not name '$pattern': $(cat "$scratch/$name.err")"
-  [[ ! -e $out ]] || fail "$name: wrote $out"
-  echo "ok   $name: $(cat "$scratch/$name.err")"
-}
+experiment=experiments/control/flyer.toml
+source "$src/tests/cli/expect_bad.sh"
 expect_bad wing_outside "outside the fluid box" 'params.origin_x_m=-1.0'
 expect_bad no_stroke "stroke_sense: 'inner_r' holds" 'params.pd_pattern=inner_l = sine(0, 30, 4, 0)'
 expect_bad not_controlled "stroke_sense" 'params.stroke_sense=inner_r = inner_l'
