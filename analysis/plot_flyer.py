@@ -21,10 +21,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def text(f, name):
-    v = f.attrs.get(name, "")
-    return v.decode() if isinstance(v, bytes) else str(v)
+from plot_control_fluid import text  # noqa: E402
 
 
 def is_flyer(f):

@@ -43,9 +43,4 @@ expect_bad coarse_markers "marker_spacing_cells" 'params.marker_spacing_cells=1.
 expect_bad effort "effort is not offered" 'params.objectives="effort"'
 
 # delta 0.3 rad moves the block's tip 2.4 cells of 32^2 in one step: that point stops, exit 3.
-rc=0
-"$bin" run experiments/control/block_flow.toml "${small[@]}" params.delta_rad=0.3 --out "$scratch/unstable" \
-  --jobs 1 >"$scratch/unstable.log" 2>&1 || rc=$?
-[[ $rc == 3 ]] || { cat "$scratch/unstable.log"; fail "unstable step: exit $rc, expected 3"; }
-grep -q "coupled stability limit" "$scratch/unstable.log" || fail "unstable step not named"
-echo "ok   a step beyond the coupled stability limit: exit 3, named"
+expect_failed_point unstable "coupled stability limit" params.delta_rad=0.3
