@@ -8,6 +8,8 @@ flyer_angles.png: per point the PD-driven inner angles, the controlled outer ang
 each followed (+1 max on the down-stroke, -1 min on the up-stroke), and the fluid's upward force
 on all bodies against time. flyer_force.txt: per point the mean upward force over the last
 force_cycles flap cycles, and per grid/step the ratio controlled / held (the experiment's check).
+flyer_vorticity.png: per point the vorticity with the bodies at the last flap's lowest and highest
+wing (Fig. 12 (a), (b) analogues; Fig. 11's animation is plot_control_fluid.py's frame series).
 The vorticity with the bodies and the frame series are plot_control_fluid.py's.
 Figures go to RUN_DIR/figures/.
 """
@@ -21,7 +23,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from plot_control_fluid import text  # noqa: E402
+import numpy as np  # noqa: E402
+
+from plot_control_fluid import draw_field, text  # noqa: E402
 
 
 def is_flyer(f):
@@ -57,6 +61,32 @@ def angles_figure(points, png):
     plt.close(fig)
 
 
+def extreme_frames(f):
+    """Field frames nearest the last flap's lowest and highest inner angle (Fig. 12 (a), (b))."""
+    ts = f["timeseries"]
+    inner = next(k for k in ts if k.startswith("pd_angle_deg_"))
+    per = int(round(float(f.attrs["flap_period_s"]) / float(f.attrs["frame_s"])))
+    t, a = ts["time_s"][-per:], ts[inner][-per:]
+    field_t = f["fields/time_s"][...]
+    # a positive inner angle is the wing down (models/flyer.xml)
+    return [int(np.argmin(np.abs(field_t - t[np.argmax(a)]))), int(np.argmin(np.abs(field_t - t[np.argmin(a)])))]
+
+
+def vorticity_figure(points, png):
+    fig, axes = plt.subplots(len(points), 2, figsize=(8, 3.9 * len(points)), squeeze=False)
+    for row, f in zip(axes, points):
+        for ax, k, when in zip(row, extreme_frames(f), ("wing furthest down", "wing furthest up")):
+            im, _ = draw_field(ax, f, k)
+            ax.set_title(f"{text(f, 'label')} ({resolution(f)}): {when}, t = {f['fields/time_s'][k]:.2f} s", fontsize=7)
+            ax.tick_params(labelsize=6)
+            fig.colorbar(im, ax=ax, shrink=0.7).ax.tick_params(labelsize=6)
+    fig.suptitle("the driven flyer: vorticity (1/s) and the bodies' outline markers; source at the floor, "
+                 "open top (§7.1, Figs. 11, 12)", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
 def force_table(points, path):
     rows = {}
     with open(path, "w") as out:
@@ -83,6 +113,9 @@ def main():
         os.makedirs(out, exist_ok=True)
         angles_figure(flyers, os.path.join(out, "flyer_angles.png"))
         force_table(flyers, os.path.join(out, "flyer_force.txt"))
+        with_fields = [f for f in flyers if "fields/vorticity_per_s" in f]
+        if with_fields:
+            vorticity_figure(with_fields, os.path.join(out, "flyer_vorticity.png"))
     for f in points:
         f.close()
 
