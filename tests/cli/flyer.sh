@@ -17,9 +17,9 @@ small=(params.cells=32 params.frames=30 params.warmup_frames=2 params.average_fr
        )
 
 "$bin" run experiments/control/flyer.toml "${small[@]}" --out "$scratch/j1" --jobs 1 >"$scratch/j1.log" 2>&1 || true
-[[ $(ls "$scratch"/j1/point_*.h5 | wc -l) == 2 ]] || { cat "$scratch/j1.log"; fail "flyer points missing"; }
+[[ $(ls "$scratch"/j1/point_*.h5 | wc -l) == 3 ]] || { cat "$scratch/j1.log"; fail "flyer points missing"; }
 "$bin" run experiments/control/flyer.toml "${small[@]}" --out "$scratch/j2" --jobs 2 >"$scratch/j2.log" 2>&1 || true
-/usr/bin/python3 tests/cli/same_datasets.py "$scratch/j1" "$scratch/j2" 2 || fail "--jobs 1 and 2 differ"
+/usr/bin/python3 tests/cli/same_datasets.py "$scratch/j1" "$scratch/j2" 3 || fail "--jobs 1 and 2 differ"
 /usr/bin/python3 - "$scratch/j1" <<'PY' || fail "flyer series"
 import sys, glob, h5py, numpy as np
 for x in sorted(glob.glob(sys.argv[1] + "/point_*.h5")):
@@ -30,15 +30,17 @@ for x in sorted(glob.glob(sys.argv[1] + "/point_*.h5")):
     rate = np.cos(2 * np.pi * 4 * (t - 0.5 / 60))
     clear = np.abs(rate) > 0.2
     s = ts["sense_outer_r"][...]
-    assert np.array_equal(s[clear], np.where(rate[clear] > 0, 1.0, -1.0)), (s, rate)
+    label = str(fx.attrs["label"])
+    want = np.ones_like(s) if label == "lift" else np.where(rate > 0, 1.0, -1.0)  # lift: no stroke_sense
+    assert np.array_equal(s[clear], want[clear]), (label, s, rate)
     inner = ts["pd_angle_deg_inner_r"][...]
     assert inner.max() > 15 and inner.min() < -15, inner  # the PD drive flaps the wing
     assert np.isfinite(fx["metrics/mean_up_force_n"][()])
-    held = str(fx.attrs["label"]).startswith("held")
+    held = label.startswith("held")
     outer = ts["angle_deg_outer_r"][...]
     assert (np.abs(outer).max() == 0) == held, (fx.attrs["label"], outer)
 PY
-echo "ok   flyer small: 2 points, senses follow the stroke, PD wings flap, --jobs 1 == --jobs 2 (every dataset)"
+echo "ok   flyer small: 3 points, senses follow the stroke, PD wings flap, --jobs 1 == --jobs 2 (every dataset)"
 /usr/bin/python3 analysis/plot_flyer.py "$scratch/j1" || fail "flyer figures"
 /usr/bin/python3 analysis/plot_control_fluid.py "$scratch/j1" || fail "control_fluid figures"
 [[ -s $scratch/j1/figures/flyer_angles.png && -s $scratch/j1/figures/flyer_force.txt && -s $scratch/j1/figures/vorticity.png ]] \
