@@ -37,7 +37,7 @@ echo "ok   block_flow small: 12 points, --jobs 1 threads 1 == --jobs 2 threads 2
 echo "ok   figures"
 
 experiment=experiments/control/block_flow.toml
-source "$src/tests/cli/expect_bad.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/expect_bad.sh"
 expect_bad outside_box "outside the fluid box" 'params.origin_x_m=0.5'
 expect_bad coarse_markers "marker_spacing_cells" 'params.marker_spacing_cells=1.5'
 expect_bad effort "effort is not offered" 'params.objectives="effort"'

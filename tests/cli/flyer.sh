@@ -6,12 +6,7 @@
 # bad input (a wing outside the box, stroke_sense on a joint without a stroke, a flap period not a
 # whole number of frames) exits 2 naming it, nothing written; a diverging point exits 3.
 # usage: flyer.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 small=(params.cells=32 params.frames=30 params.warmup_frames=2 params.average_frames=5 params.field_every_frames=10
        params.flap_period_s=0.25 'params.pd_pattern=inner_r = sine(0, 30, 4, 0); inner_l = sine(0, 30, 4, 0)'
        )
@@ -49,7 +44,7 @@ grep -q "controlled / held" "$scratch/j1/figures/flyer_force.txt" || fail "no fo
 echo "ok   figures"
 
 experiment=experiments/control/flyer.toml
-source "$src/tests/cli/expect_bad.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/expect_bad.sh"
 expect_bad wing_outside "outside the fluid box" 'params.origin_x_m=-1.0'
 expect_bad no_stroke "stroke_sense: 'inner_r' holds" 'params.pd_pattern=inner_l = sine(0, 30, 4, 0)'
 expect_bad not_controlled "stroke_sense" 'params.stroke_sense=inner_r = inner_l'
