@@ -27,7 +27,7 @@ SCRIPTS = {
     "membrane": ["plot_membrane.py"],
     "charlotte": ["charlotte_sheet.py"],
     "control": ["plot_control.py"],
-    "control_fluid": ["plot_control_fluid.py"],
+    "control_fluid": ["plot_control_fluid.py", "plot_flyer.py"],
     "fish": ["plot_fish.py"],
 }
 

@@ -1,5 +1,6 @@
 #include "control/fluid_controller.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -38,7 +39,9 @@ std::string validate(const ControllerParams& p, const FluidControlParams& f, con
       if (model.joint(model.findJoint(name)).type == rigid::JointType::ball)
         return "joint '" + name + "' is a ball joint: the fluid is planar (x-z), give hinges";
   if (p.steady_state) return "steady_state: with the fluid use settle_steps (§4.3's validation mode) instead";
+  if (f.limit_rad < 0) return "the joint limit must be >= 0 (0: none)";
   if (f.settle_steps < 0) return "settle_steps must be >= 0";
+  if (auto e = validate(f.stroke, p); !e.empty()) return e;
   if (f.average_steps < 1 || f.average_steps > p.substeps + f.settle_steps)
     return "average_steps must be 1..substeps + settle_steps (the steps of one evaluation)";
   return "";
@@ -63,6 +66,7 @@ struct FluidController::World {
   std::vector<Vec3> forces;  // per step of an evaluation: the joint's force
   double residual_rad = 0;
   int forcing_iterations = 0;
+  Vec3 bodies_force_sum{};  // sum over coupled steps of the force on all moving bodies
 };
 
 FluidController::FluidController(const rigid::RigidModel& model, ControllerParams p, FluidControlParams f,
@@ -81,6 +85,7 @@ FluidController::FluidController(const rigid::RigidModel& model, ControllerParam
   direction_.assign(n, 0.0);
   derivative_.assign(n, 0.0);
   frame_force_.assign(n, Vec3{});
+  senses_ = p_.senses;
 }
 
 FluidController::~FluidController() = default;
@@ -99,6 +104,9 @@ void FluidController::coupledStep(World& w, const Prescribed& pr) {
   w.coupling->forceFluid(w.data, dt);
   w.coupling->project(dt);
   w.forcing_iterations = std::max(w.forcing_iterations, w.coupling->forcingIterations());
+  const auto& body = w.coupling->bodyForce_n();
+  for (std::size_t b = 1; b < body.size(); ++b)
+    for (int k = 0; k < 3; ++k) w.bodies_force_sum[k] += body[b][k];
 }
 
 Vec3 FluidController::jointForce(const World& w, int joint) const {
@@ -196,21 +204,31 @@ FrameRecord FluidController::frame() {
   const int n = int(p_.controlled.size());
   World& w = *main_;
   FrameRecord r;
-  if (frame_ % p_.search_every_frames == 0) {
+  // §7.1: the sense of the stroke at the frame's middle.
+  const double mid_s = w.data.time_s() + 0.5 * p_.frame_s;
+  for (int i = 0; i < n && !f_.stroke.empty(); ++i)
+    senses_[i] = senseAt(p_.senses[i], strokePattern(f_.stroke[i], p_), f_.stroke[i].sign, mid_s);
+  // Strength 0 holds the controlled joints (the "controller off" case of §7.1's comparison): no search.
+  if (frame_ % p_.search_every_frames == 0 && p_.strength_rad_per_s > 0) {
     derivative_ = derivatives();
-    for (int i = 0; i < n; ++i) {
-      const double sign = derivative_[i] > 0 ? 1.0 : derivative_[i] < 0 ? -1.0 : 0.0;
-      direction_[i] = p_.senses[i] == Sense::minimize ? -sign : sign;
-    }
     r.searched = true;
+  }
+  for (int i = 0; i < n; ++i) {
+    const double sign = derivative_[i] > 0 ? 1.0 : derivative_[i] < 0 ? -1.0 : 0.0;
+    direction_[i] = senses_[i] == Sense::minimize ? -sign : sign;
   }
   const double step_rad = p_.strength_rad_per_s * p_.frame_s;
   std::vector<double> from(pres_.prescribed.qpos.size());
   for (std::size_t k = 0; k < from.size(); ++k) from[k] = w.data.qpos()[pres_.prescribed.qpos[k]];
-  for (int i = 0; i < n; ++i) pres_.prescribed.target[i] = from[i] + step_rad * direction_[i];
+  for (int i = 0; i < n; ++i) {
+    const double t = from[i] + step_rad * direction_[i];
+    pres_.prescribed.target[i] = f_.limit_rad > 0 ? std::clamp(t, -f_.limit_rad, f_.limit_rad) : t;
+  }
   w.residual_rad = 0;
+  w.bodies_force_sum = Vec3{};
   std::vector<Vec3> forces;
   moveOver(w, pres_.prescribed, from, p_.substeps, &forces, n);
+  for (int k = 0; k < 3; ++k) frame_bodies_force_[k] = w.bodies_force_sum[k] / p_.substeps;
   r.time_s = w.data.time_s();
   r.servo_residual_rad = w.residual_rad;
   r.target_rad.assign(pres_.prescribed.target.begin(), pres_.prescribed.target.begin() + n);

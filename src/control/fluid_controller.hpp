@@ -20,6 +20,7 @@
 
 #include "control/controller.hpp"
 #include "control/prescription.hpp"
+#include "control/stroke_sense.hpp"
 #include "coupling/rigid_fluid_coupling.hpp"
 
 namespace creaturelab::control {
@@ -27,6 +28,11 @@ namespace creaturelab::control {
 struct FluidControlParams {
   int settle_steps = 0;   // §4.3 validation mode: coupled steps with the pose held after the move
   int average_steps = 1;  // the objective: mean force over an evaluation's last this many steps
+  // §7.1: per controlled joint, the inboard pattern whose stroke flips its sense (empty: fixed senses).
+  std::vector<StrokeFollow> stroke;
+  // Controlled angles kept within +-this (0: no limit). The paper gives no joint range; without one
+  // the flyer's outer wings fold back over the body (flyer.toml).
+  double limit_rad = 0;
 };
 
 // "" when usable with the model, else what is wrong.
@@ -61,6 +67,10 @@ class FluidController {
   // Mean force of the last frame on the bodies each controlled joint moves (N, world).
   const std::vector<Vec3>& frameForce_n() const { return frame_force_; }
   int maxForcingIterations() const { return max_forcing_iterations_; }
+  // Mean force of the last frame on all the creature's bodies (world body excluded; N, world).
+  const Vec3& frameBodiesForce_n() const { return frame_bodies_force_; }
+  // The senses the last frame descended with (§7.1: they follow the stroke when f.stroke is set).
+  const std::vector<Sense>& frameSenses() const { return senses_; }
 
  private:
   struct World;
@@ -82,6 +92,8 @@ class FluidController {
   std::vector<std::unique_ptr<World>> workers_;
   std::unique_ptr<fluid::WorkerPool> pool_;
   std::vector<Vec3> frame_force_;
+  Vec3 frame_bodies_force_{};
+  std::vector<Sense> senses_;
   long frame_ = 0;
   int max_forcing_iterations_ = 0;
 };

@@ -7,6 +7,7 @@
 #include "control/fluid_controller.hpp"
 #include "fluid/diagnostics2.hpp"
 #include "kinds/control_params.hpp"
+#include "kinds/flyer_measures.hpp"
 
 namespace creaturelab::kinds {
 namespace {
@@ -56,6 +57,8 @@ control::FluidControlParams fluidControlParams(const ParamReader& r) {
   control::FluidControlParams f;
   f.settle_steps = int(r.integer("settle_steps"));
   f.average_steps = int(r.integer("average_steps"));
+  f.limit_rad = r.real("controlled_limit_deg") / kDeg;
+  f.stroke = parseStrokeSense(r.text("stroke_sense"), splitList(r.text("controlled"), ','));
   return f;
 }
 
@@ -150,6 +153,14 @@ ControlFluidKind::ControlFluidKind() {
       real("max_marker_cells_per_step", 1.0, "cells", 1e-6, 2,
            "coupled stability limit: a marker moving farther in one step stops the point (exit 3)"),
       integer("field_every_frames", 0, 0, 1000000, "vorticity field and markers every k frames (0: never)"),
+      // The driven flyer (§7.1, flyer.toml).
+      text("stroke_sense", "", "",
+           "§7.1: 'controlled = [+|-]inboard, ...': the controlled joint has its given sense while the inboard "
+           "joint's pattern angle increases (+) or decreases (-), the other sense on the opposite stroke"),
+      real("flap_period_s", 0, "s", 0, 1e4,
+           "period of the flap, a whole number of frames; 0: mean_up_force_n over the last average_frames"),
+      integer("force_cycles", 2, 1, 100000, "mean_up_force_n: whole flap cycles at the end averaged"),
+      real("controlled_limit_deg", 0, "deg", 0, 360, "controlled angles kept within +-this (0: no limit; the paper gives none)"),
   };
   metrics_ = {
       {"final_angle_deg", "deg", "first controlled joint: mean angle over the last average_frames"},
@@ -164,6 +175,8 @@ ControlFluidKind::ControlFluidKind() {
       {"forcing_iterations_most", "", "most CG iterations of the projected forcing in any coupled step"},
       {"markers", "", "outline markers"},
       {"marker_cells_per_step_most", "", "largest marker displacement in one coupled step of the main run, cells"},
+      {"mean_up_force_n", "N", "§7.1: the fluid's upward force on all bodies (per depth_m), mean over the last "
+                               "force_cycles flap periods (flap_period_s > 0) or the last average_frames"},
   };
 }
 
@@ -188,6 +201,9 @@ std::string ControlFluidKind::validate(const Params& params) const {
     data.kinematics();
     coupling::RigidFluidCoupling probe(data, f, c);  // a body outside the box, a geom without outline
     if (r.integer("average_frames") > r.integer("frames")) return "average_frames is larger than frames";
+    if (r.real("flap_period_s") > 0 &&
+        framesPerCycle(r.real("flap_period_s"), r.real("frame_s")) * r.integer("force_cycles") > r.integer("frames"))
+      return "force_cycles x flap_period_s is longer than frames";
   } catch (const rigid::RigidError& e) {
     return std::string("model_file: ") + e.what();
   } catch (const std::invalid_argument& e) {
@@ -238,6 +254,12 @@ Result ControlFluidKind::run(const Params& params) const {
     fx.push_back(&(ts["force_x_n_" + j] = {{}, "N"}));
     fz.push_back(&(ts["force_z_n_" + j] = {{}, "N"}));
   }
+  // §7.1: the force on all bodies, the senses followed, the PD-driven angles (the flap).
+  Series& body_fx = ts["force_x_n_bodies"] = {{}, "N"};
+  Series& body_fz = ts["force_z_n_bodies"] = {{}, "N"};
+  std::vector<Series*> sense, pd_angle;
+  for (const auto& j : p.controlled) sense.push_back(&(ts["sense_" + j] = {{}, ""}));
+  for (const auto& j : p.pd_driven) pd_angle.push_back(&(ts["pd_angle_deg_" + j] = {{}, "deg"}));
   // Bodies for drawing: the outline markers (world x, z) and which body each belongs to.
   const auto& markers = controller.coupling().markers();
   auto& marker_body = result.topology["marker_body"];
@@ -288,6 +310,12 @@ Result ControlFluidKind::run(const Params& params) const {
         fx[i]->values.push_back(fr.measures.drag_vector_n[i][0]);
         fz[i]->values.push_back(fr.measures.drag_vector_n[i][2]);
       }
+      body_fx.values.push_back(controller.frameBodiesForce_n()[0]);
+      body_fz.values.push_back(controller.frameBodiesForce_n()[2]);
+      for (int i = 0; i < n; ++i)
+        sense[i]->values.push_back(controller.frameSenses()[i] == control::Sense::maximize ? 1.0 : -1.0);
+      for (std::size_t k = 0; k < p.pd_driven.size(); ++k)
+        pd_angle[k]->values.push_back(controller.data().qpos()[model.joint(model.findJoint(p.pd_driven[k])).qpos] * kDeg);
       auto& d = controller.data();
       const double* anchor = d.jointAnchor(j0_id);
       const double* com = d.subtreeCom(j0_body);
@@ -310,6 +338,11 @@ Result ControlFluidKind::run(const Params& params) const {
   m["forcing_iterations_most"] = {double(controller.maxForcingIterations()), ""};
   m["markers"] = {double(markers.size()), ""};
   m["marker_cells_per_step_most"] = {max_cells, ""};
+  const double period_s = r.real("flap_period_s");
+  m["mean_up_force_n"] = {period_s > 0 ? lastCyclesMean(body_fz.values, framesPerCycle(period_s, r.real("frame_s")),
+                                                        int(r.integer("force_cycles")))
+                                       : tailMean(body_fz.values, tail),
+                          "N"};
   return result;
 }
 

@@ -5,7 +5,8 @@
 // controlled joints on 2 cores. One iteration is one frame: the central differences (two
 // evaluations of one frame of coupled steps per controlled DOF, each on its own copy of the
 // fluid), the frame itself and its measures; the flow is developed for 0.5 s first.
-// Reported as frames per CPU second of the process and per elapsed second.
+// Reported as frames per CPU second of the process and per elapsed second. BM_FlyerFrame: the
+// driven flyer (flyer.toml), per-frame time reported, no goal set.
 #include <benchmark/benchmark.h>
 #include <time.h>
 
@@ -40,15 +41,15 @@ coupling::RigidFluidParams stream() {
   return c;
 }
 
-void runFrames(benchmark::State& state, const std::string& file, const ControllerParams& p, int settle,
-               const std::vector<std::pair<std::string, double>>& initial) {
+rigid::RigidModel loadModel(const std::string& file, const ControllerParams& p) {
   auto model = rigid::RigidModel::load(std::string(CREATURELAB_SOURCE_DIR) + file);
   model.setGravity({0, 0, 0});
   model.setTimestep(p.frame_s / p.substeps);
-  FluidControlParams f;
-  f.settle_steps = settle;
-  f.average_steps = settle > 0 ? settle / 3 : 1;
-  FluidController c(model, p, f, initial, box128(), stream());
+  return model;
+}
+
+// Frames of c after 30 coupled steps of flow development, timed.
+void timeFrames(benchmark::State& state, FluidController& c) {
   c.hold(30);
   const double cpu0 = clockSeconds(CLOCK_PROCESS_CPUTIME_ID), wall0 = clockSeconds(CLOCK_MONOTONIC);
   long frames = 0;
@@ -59,6 +60,16 @@ void runFrames(benchmark::State& state, const std::string& file, const Controlle
   state.counters["frames_per_cpu_s"] = double(frames) / (clockSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0);
   state.counters["frames_per_s"] = double(frames) / (clockSeconds(CLOCK_MONOTONIC) - wall0);
   state.counters["max_cg_iterations"] = c.maxForcingIterations();
+}
+
+void runFrames(benchmark::State& state, const std::string& file, const ControllerParams& p, int settle,
+               const std::vector<std::pair<std::string, double>>& initial) {
+  const auto model = loadModel(file, p);
+  FluidControlParams f;
+  f.settle_steps = settle;
+  f.average_steps = settle > 0 ? settle / 3 : 1;
+  FluidController c(model, p, f, initial, box128(), stream());
+  timeFrames(state, c);
 }
 
 // block_flow.toml's block, minimising drag along the stream; range(0) settle steps (0: none, the
@@ -93,6 +104,47 @@ void BM_ChainFluidFrame(benchmark::State& state) {
 BENCHMARK(BM_ChainFluidFrame)
     ->Args({1, 1})->Args({2, 1})->Args({2, 2})->Args({3, 1})->Args({4, 1})->Args({4, 2})
     ->Unit(benchmark::kMillisecond)->Iterations(10);
+
+// The driven flyer of flyer.toml (§7.1, Figs. 11-13; models/flyer.xml): 128^2 air in a 4 m box
+// with the floor source (0.5 m/s) and an open top, inner wing joints PD-driven (30 deg, 0.5 Hz),
+// the two outer joints controlled (drag, sense following the stroke) with flyer.toml's validation
+// mode (4 settle steps, force over 2), 2 coupled steps a frame. The paper: 3.2 s per frame for
+// the flyer without flesh (§7, its timing table).
+void BM_FlyerFrame(benchmark::State& state) {
+  ControllerParams p;
+  p.controlled = {"outer_r", "outer_l"};
+  p.objectives = {Objective::drag, Objective::drag};
+  p.senses = {Sense::maximize, Sense::maximize};
+  Pattern flap;
+  flap.kind = Pattern::Kind::sine;
+  flap.amplitude_rad = 30 * 3.141592653589793 / 180;
+  flap.frequency_hz = 0.5;
+  p.pd_driven = {"inner_r", "inner_l"};
+  p.pd_patterns = {flap, flap};
+  p.pd_kp_n_m_per_rad = 800;
+  p.pd_kd_n_m_s_per_rad = 40;
+  p.substeps = 2;
+  p.strength_rad_per_s = 2.0;
+  p.delta_rad = 0.02;
+  p.threads = int(state.range(0));
+  const auto model = loadModel("/experiments/control/models/flyer.xml", p);
+  FluidControlParams f;
+  f.settle_steps = 4;
+  f.average_steps = 2;
+  f.limit_rad = 3.141592653589793 / 2;
+  f.stroke = {{"inner_r", 1.0}, {"inner_l", 1.0}};
+  fluid::FluidParams box = box128();
+  box.density_kg_per_m3 = 1.2;
+  box.walls.left.type = box.walls.right.type = fluid::WallType::free_slip;
+  box.walls.bottom.type = box.walls.top.type = fluid::WallType::open;
+  coupling::RigidFluidParams source;
+  source.origin_x_m = source.origin_z_m = -2.0;
+  source.inflow.source_m_per_s = 0.5;
+  source.inflow.source_rows = 3;
+  FluidController c(model, p, f, {}, box, source);
+  timeFrames(state, c);
+}
+BENCHMARK(BM_FlyerFrame)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(20);
 
 }  // namespace
 }  // namespace creaturelab::control

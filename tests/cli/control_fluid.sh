@@ -36,26 +36,11 @@ echo "ok   block_flow small: 12 points, --jobs 1 threads 1 == --jobs 2 threads 2
   || fail "no figures"
 echo "ok   figures"
 
-expect_bad() {
-  local name=$1 pattern=$2
-  shift 2
-  local out=$scratch/out_$name rc=0
-  "$bin" run experiments/control/block_flow.toml "${small[@]}" "$@" --out "$out" --jobs 1 >"$scratch/$name.out" \
-    2>"$scratch/$name.err" || rc=$?
-  [[ $rc == 2 ]] || { cat "$scratch/$name.err"; fail "$name: exit $rc, expected 2"; }
-  [[ $(wc -l <"$scratch/$name.err") == 1 ]] || { cat "$scratch/$name.err"; fail "$name: expected one line"; }
-  grep -qF -- "$pattern" "$scratch/$name.err" || fail "$name: does not name '$pattern': $(cat "$scratch/$name.err")"
-  [[ ! -e $out ]] || fail "$name: wrote $out"
-  echo "ok   $name: $(cat "$scratch/$name.err")"
-}
+experiment=experiments/control/block_flow.toml
+source "$(dirname "${BASH_SOURCE[0]}")/expect_bad.sh"
 expect_bad outside_box "outside the fluid box" 'params.origin_x_m=0.5'
 expect_bad coarse_markers "marker_spacing_cells" 'params.marker_spacing_cells=1.5'
 expect_bad effort "effort is not offered" 'params.objectives="effort"'
 
 # delta 0.3 rad moves the block's tip 2.4 cells of 32^2 in one step: that point stops, exit 3.
-rc=0
-"$bin" run experiments/control/block_flow.toml "${small[@]}" params.delta_rad=0.3 --out "$scratch/unstable" \
-  --jobs 1 >"$scratch/unstable.log" 2>&1 || rc=$?
-[[ $rc == 3 ]] || { cat "$scratch/unstable.log"; fail "unstable step: exit $rc, expected 3"; }
-grep -q "coupled stability limit" "$scratch/unstable.log" || fail "unstable step not named"
-echo "ok   a step beyond the coupled stability limit: exit 3, named"
+expect_failed_point unstable "coupled stability limit" params.delta_rad=0.3
