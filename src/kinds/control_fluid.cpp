@@ -165,8 +165,9 @@ ControlFluidKind::ControlFluidKind() {
   metrics_ = {
       {"final_angle_deg", "deg", "first controlled joint: mean angle over the last average_frames"},
       {"flow_angle_deg", "deg",
-       "line of the first controlled joint's bodies (anchor to centre of mass) against the stream, in [0, 90], mean "
-       "over the last average_frames"},
+       "line of the first controlled joint's bodies (anchor to centre of mass) against the stream, in [0, 90]: the "
+       "axial mean line over the last average_frames (a mean of folded angles is biased where the block wanders "
+       "across the perpendicular or the stream)"},
       {"converged_frame", "", "first frame from which every controlled angle stays within the tolerance of its final "
                               "mean (Fig. 2); frames + 1 if never"},
       {"final_drag_n", "N", "first controlled joint: mean |F| of the fluid on its bodies over the last average_frames"},
@@ -243,6 +244,7 @@ Result ControlFluidKind::run(const Params& params) const {
   Series& time = ts["time_s"] = {{}, "s"};
   Series& residual = ts["servo_residual_rad"] = {{}, "rad"};
   Series& flow = ts["flow_angle_deg"] = {{}, "deg"};
+  std::vector<Vec3> lines;  // per frame: anchor -> centre of mass of the first joint's bodies
   std::vector<Series*> angle, target, objective, derivative, drag, drag_along, fx, fz;
   for (const auto& j : p.controlled) {
     angle.push_back(&(ts["angle_deg_" + j] = {{}, "deg"}));
@@ -319,7 +321,8 @@ Result ControlFluidKind::run(const Params& params) const {
       auto& d = controller.data();
       const double* anchor = d.jointAnchor(j0_id);
       const double* com = d.subtreeCom(j0_body);
-      flow.values.push_back(lineAngleDeg({com[0] - anchor[0], com[1] - anchor[1], com[2] - anchor[2]}, stream));
+      lines.push_back({com[0] - anchor[0], com[1] - anchor[1], com[2] - anchor[2]});
+      flow.values.push_back(lineAngleDeg(lines.back(), stream));
       if (field_every > 0 && (f + 1) % field_every == 0) recordField();
     }
   } catch (const std::exception& e) {
@@ -330,7 +333,7 @@ Result ControlFluidKind::run(const Params& params) const {
   for (int i = 0; i < n; ++i) angles.push_back(angle[i]->values);
   auto& m = result.metrics;
   m["final_angle_deg"] = {tailMean(angle[0]->values, tail), "deg"};
-  m["flow_angle_deg"] = {tailMean(flow.values, tail), "deg"};
+  m["flow_angle_deg"] = {meanLineAngleDeg({lines.end() - tail, lines.end()}, stream), "deg"};
   m["converged_frame"] = {convergedFrame(angles, r.real("convergence_tolerance_deg"), tail), ""};
   m["final_drag_n"] = {tailMean(drag[0]->values, tail), "N"};
   m["final_drag_along_n"] = {tailMean(drag_along[0]->values, tail), "N"};
