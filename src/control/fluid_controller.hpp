@@ -27,6 +27,15 @@ namespace creaturelab::control {
 struct FluidControlParams {
   int settle_steps = 0;   // §4.3 validation mode: coupled steps with the pose held after the move
   int average_steps = 1;  // the objective: mean force over an evaluation's last this many steps
+  // Added-mass stabilisation of free bodies (the swimmer, §7.2): the armature A of a DOF that no
+  // joint prescribes is taken as an estimate of the fluid's added mass on it, and the fluid's lagged
+  // force gets A a^n (a^n: the DOF's last acceleration) added, so the solid integrates
+  // (M + A) a^{n+1} = F^n + A a^n. The explicit (staggered) step with the fluid force of the last
+  // step, F^n ~ F - m_a a^n, has the amplification -m_a / M per step and blows up for M < m_a
+  // (added-mass instability, Causin, Gerbeau & Nobile 2005, CMAME 194; Förster, Wall & Ramm 2007,
+  // CMAME 196); with A it is (A - m_a) / (M + A), stable for m_a < M + 2A. The change to the
+  // dynamics, A (a^{n+1} - a^n), is first order in the step (swimmer.toml's convergence runs).
+  bool armature_added_mass = false;
 };
 
 // "" when usable with the model, else what is wrong.
@@ -61,6 +70,10 @@ class FluidController {
   // Mean force of the last frame on the bodies each controlled joint moves (N, world).
   const std::vector<Vec3>& frameForce_n() const { return frame_force_; }
   int maxForcingIterations() const { return max_forcing_iterations_; }
+  // Replaces the controlled joints' senses from the next search on (the swimmer's phases, §7.2).
+  void setSenses(const std::vector<Sense>& senses);
+  // Replaces the strength (rad/s) from the next frame on (the swimmer's power and recovery strokes).
+  void setStrength(double rad_per_s) { p_.strength_rad_per_s = rad_per_s; }
 
  private:
   struct World;
