@@ -94,5 +94,50 @@ BENCHMARK(BM_ChainFluidFrame)
     ->Args({1, 1})->Args({2, 1})->Args({2, 2})->Args({3, 1})->Args({4, 1})->Args({4, 2})
     ->Unit(benchmark::kMillisecond)->Iterations(10);
 
+// The swimmer of experiments/control/swimmer.toml (Lentine et al. 2010 §7.2, Fig. 7; issue 16's
+// goal: >= 1 frame per second on one core, 128^2): five controlled legs, the mouth's phases, the
+// free root stabilised by its armature, 128^2 in 3 m, closed walls but the open top. One iteration
+// is one frame in phase 1 (draw in, minimise the downward force), the fluid at rest before.
+void BM_SwimmerFrame(benchmark::State& state) {
+  auto model = rigid::RigidModel::load(std::string(CREATURELAB_SOURCE_DIR) + "/experiments/control/models/swimmer.xml");
+  model.setGravity({0, 0, 0});
+  model.setTimestep(1.0 / 60);
+  ControllerParams p;
+  p.controlled = {"leg_l2", "leg_l1", "leg_r1", "leg_r2", "leg_top"};
+  p.objectives.assign(5, Objective::drag_along);
+  p.senses.assign(5, Sense::minimize);
+  p.drag_direction = {0, 0, -1};
+  p.delta_rad = 0.02;
+  p.strength_rad_per_s = 0.5;  // the legs stay within a half-turn over the benchmark's frames
+  p.threads = 1;
+  FluidControlParams f;
+  f.armature_added_mass = true;
+  fluid::FluidParams fp;
+  fp.domain_width_m = fp.domain_height_m = 3.0;
+  fp.cells_x = fp.cells_y = 128;
+  fp.kinematic_viscosity_m2_per_s = 0;
+  fp.walls.top.type = fluid::WallType::open;
+  coupling::RigidFluidParams cp;
+  cp.origin_x_m = -1.5;
+  cp.origin_z_m = -1.0;
+  cp.max_forcing_iterations = 100;
+  cp.mouth.body = "body";
+  cp.mouth.centre_z_m = -0.21;
+  cp.mouth.width_m = 0.14;
+  cp.mouth.schedule.fractions = {1.0};
+  cp.mouth.flux_m_per_s = {-0.5};
+  FluidController c(model, p, f, {}, fp, cp);
+  const double cpu0 = clockSeconds(CLOCK_PROCESS_CPUTIME_ID), wall0 = clockSeconds(CLOCK_MONOTONIC);
+  long frames = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(c.frame());
+    ++frames;
+  }
+  state.counters["frames_per_cpu_s"] = double(frames) / (clockSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0);
+  state.counters["frames_per_s"] = double(frames) / (clockSeconds(CLOCK_MONOTONIC) - wall0);
+  state.counters["max_cg_iterations"] = c.maxForcingIterations();
+}
+BENCHMARK(BM_SwimmerFrame)->Unit(benchmark::kMillisecond)->Iterations(20);
+
 }  // namespace
 }  // namespace creaturelab::control
