@@ -40,6 +40,19 @@ coupling::RigidFluidParams stream() {
   return c;
 }
 
+// One frame per iteration; frames per CPU second of the process and per elapsed second.
+void timeFrames(benchmark::State& state, FluidController& c) {
+  const double cpu0 = clockSeconds(CLOCK_PROCESS_CPUTIME_ID), wall0 = clockSeconds(CLOCK_MONOTONIC);
+  long frames = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(c.frame());
+    ++frames;
+  }
+  state.counters["frames_per_cpu_s"] = double(frames) / (clockSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0);
+  state.counters["frames_per_s"] = double(frames) / (clockSeconds(CLOCK_MONOTONIC) - wall0);
+  state.counters["max_cg_iterations"] = c.maxForcingIterations();
+}
+
 void runFrames(benchmark::State& state, const std::string& file, const ControllerParams& p, int settle,
                const std::vector<std::pair<std::string, double>>& initial) {
   auto model = rigid::RigidModel::load(std::string(CREATURELAB_SOURCE_DIR) + file);
@@ -50,15 +63,7 @@ void runFrames(benchmark::State& state, const std::string& file, const Controlle
   f.average_steps = settle > 0 ? settle / 3 : 1;
   FluidController c(model, p, f, initial, box128(), stream());
   c.hold(30);
-  const double cpu0 = clockSeconds(CLOCK_PROCESS_CPUTIME_ID), wall0 = clockSeconds(CLOCK_MONOTONIC);
-  long frames = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(c.frame());
-    ++frames;
-  }
-  state.counters["frames_per_cpu_s"] = double(frames) / (clockSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0);
-  state.counters["frames_per_s"] = double(frames) / (clockSeconds(CLOCK_MONOTONIC) - wall0);
-  state.counters["max_cg_iterations"] = c.maxForcingIterations();
+  timeFrames(state, c);
 }
 
 // block_flow.toml's block, minimising drag along the stream; range(0) settle steps (0: none, the
@@ -127,15 +132,7 @@ void BM_SwimmerFrame(benchmark::State& state) {
   cp.mouth.schedule.fractions = {1.0};
   cp.mouth.flux_m_per_s = {-0.5};
   FluidController c(model, p, f, {}, fp, cp);
-  const double cpu0 = clockSeconds(CLOCK_PROCESS_CPUTIME_ID), wall0 = clockSeconds(CLOCK_MONOTONIC);
-  long frames = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(c.frame());
-    ++frames;
-  }
-  state.counters["frames_per_cpu_s"] = double(frames) / (clockSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0);
-  state.counters["frames_per_s"] = double(frames) / (clockSeconds(CLOCK_MONOTONIC) - wall0);
-  state.counters["max_cg_iterations"] = c.maxForcingIterations();
+  timeFrames(state, c);
 }
 BENCHMARK(BM_SwimmerFrame)->Unit(benchmark::kMillisecond)->Iterations(20);
 
