@@ -61,6 +61,26 @@ std::pair<double, double> momentum(const fluid::MacGrid2& g, double rho) {
   return {px, pz};
 }
 
+// Phases by share of the cycle, repeating; the flux follows them; a table that does not add up, or
+// whose fluxes do not match its phases, is refused with the key named.
+TEST_F(MouthTest, PhasesFollowTheFractionsAndRepeat) {
+  MouthParams m = expelling(0.5);
+  m.schedule = {2.0, {0.2, 0.1, 0.7}};
+  m.flux_m_per_s = {-0.25, 0.5, 0.0};
+  EXPECT_EQ(validate(m), "");
+  EXPECT_EQ(phaseAt(m.schedule, 0.0), 0);
+  EXPECT_EQ(phaseAt(m.schedule, 0.39), 0);
+  EXPECT_EQ(phaseAt(m.schedule, 0.41), 1);
+  EXPECT_EQ(phaseAt(m.schedule, 0.61), 2);
+  EXPECT_EQ(phaseAt(m.schedule, 2.5), 1);  // the second cycle
+  EXPECT_EQ(mouthFlux_m_per_s(m, 2.1), -0.25);
+  EXPECT_EQ(mouthFlux_m_per_s(m, 3.9), 0.0);
+  m.schedule.fractions = {0.5, 0.1, 0.7};
+  EXPECT_NE(validate(m).find("phase_fractions must sum to 1"), std::string::npos);
+  m.schedule.fractions = {0.2, 0.8};
+  EXPECT_NE(validate(m).find("phase_flux_m_per_s"), std::string::npos);
+}
+
 // The mouth's forcing stage on a fluid at rest with the body still: the momentum the fluid gains is
 // minus the force on the bodies times dt (round-off), pointing out of the mouth (down) when it
 // expels: the body is pushed up.
