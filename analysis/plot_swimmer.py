@@ -55,7 +55,7 @@ def rise_figure(points, png):
     ax.set_ylabel("centre of mass height - first frame's (cm)")
     ax.set_title("swimmer: phases 1 draw in + min drag (blue), 2 expel + min (orange), 3 max drag (grey)", fontsize=9)
     ax.legend(fontsize=6)
-    axf.set_ylabel("mouth flux (m/s)\n+ expels")
+    axf.set_ylabel("mouth flux (m/s)", fontsize=8)
     axf.set_xlabel("time (s)")
     fig.tight_layout()
     fig.savefig(png, dpi=110)
