@@ -101,8 +101,9 @@ BENCHMARK(BM_ChainFluidFrame)
 
 // The swimmer of experiments/control/swimmer.toml (Lentine et al. 2010 §7.2, Fig. 7; issue 16's
 // goal: >= 1 frame per second on one core, 128^2): five controlled legs, the mouth's phases, the
-// free root stabilised by its armature, 128^2 in 3 m, closed walls but the open top. One iteration
-// is one frame in phase 1 (draw in, minimise the downward force), the fluid at rest before.
+// free root stabilised by its armature, range(0)^2 cells in 3 m (128; 192: swimmer.toml's grid),
+// closed walls but the open top. One iteration is one frame in phase 1 (draw in, minimise the
+// downward force), the fluid at rest before.
 void BM_SwimmerFrame(benchmark::State& state) {
   auto model = rigid::RigidModel::load(std::string(CREATURELAB_SOURCE_DIR) + "/experiments/control/models/swimmer.xml");
   model.setGravity({0, 0, 0});
@@ -119,7 +120,7 @@ void BM_SwimmerFrame(benchmark::State& state) {
   f.armature_added_mass = true;
   fluid::FluidParams fp;
   fp.domain_width_m = fp.domain_height_m = 3.0;
-  fp.cells_x = fp.cells_y = 128;
+  fp.cells_x = fp.cells_y = int(state.range(0));
   fp.kinematic_viscosity_m2_per_s = 0;
   fp.walls.top.type = fluid::WallType::open;
   coupling::RigidFluidParams cp;
@@ -134,7 +135,7 @@ void BM_SwimmerFrame(benchmark::State& state) {
   FluidController c(model, p, f, {}, fp, cp);
   timeFrames(state, c);
 }
-BENCHMARK(BM_SwimmerFrame)->Unit(benchmark::kMillisecond)->Iterations(20);
+BENCHMARK(BM_SwimmerFrame)->Arg(128)->Arg(192)->Unit(benchmark::kMillisecond)->Iterations(20);
 
 }  // namespace
 }  // namespace creaturelab::control
