@@ -25,6 +25,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from plot_control import timing_table  # noqa: E402
+import plot_swimmer  # noqa: E402
 
 PAPER_FRAME = {"max": 56, "min": 50}
 
@@ -151,6 +152,7 @@ def main():
     convergence_table(points, os.path.join(out, "convergence.txt"))
     if len({int(f.attrs["threads"]) for f in points}) > 1:
         timing_table(points, os.path.join(out, "parallel_dofs.txt"))
+    plot_swimmer.draw(points, out, draw_field)  # the swimmer's rise (§7.2), when the run tracks one
     for f in points:
         f.close()
 

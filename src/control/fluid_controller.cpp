@@ -13,15 +13,40 @@ namespace {
 // The fluid's reaction of the last coupled step as the servo's external-force stage.
 class CouplingReaction final : public ForceModel {
  public:
-  explicit CouplingReaction(const coupling::RigidFluidCoupling* c) : c_(c) {}
+  CouplingReaction(const coupling::RigidFluidCoupling* c, std::vector<double> armature)
+      : c_(c), armature_(std::move(armature)) {}
   void apply(rigid::RigidData& data, std::vector<Vec3>& body_force_n) const override {
     body_force_n = c_->bodyForce_n();
     c_->applyReaction(data);
+    addArmatureForce(data);
   }
 
  private:
+  // FluidControlParams::armature_added_mass: A a^n on the stabilised DOFs. a^n is MuJoCo's last
+  // acceleration (qacc_warmstart, which RigidState saves, so evaluations from a snapshot see it).
+  void addArmatureForce(rigid::RigidData& data) const {
+    if (armature_.empty()) return;
+    const std::vector<double> a = data.save().warmstart;
+    for (std::size_t d = 0; d < armature_.size(); ++d) data.appliedForces()[d] += armature_[d] * a[d];
+  }
   const coupling::RigidFluidCoupling* c_;
+  std::vector<double> armature_;  // per DOF; empty: off
 };
+
+// Armature per DOF of the joints not prescribed (the stabilised ones), or empty when off.
+std::vector<double> stabilisedArmature(const rigid::RigidModel& m, const ControllerParams& p, bool on) {
+  if (!on) return {};
+  std::vector<double> a(m.dofs(), 0.0);
+  for (int j = 0; j < m.joints(); ++j) {
+    const rigid::JointInfo info = m.joint(j);
+    bool prescribed = false;
+    for (const auto* names : {&p.controlled, &p.kinematic, &p.pd_driven})
+      for (const auto& name : *names) prescribed = prescribed || m.findJoint(name) == j;
+    if (!prescribed && info.type != rigid::JointType::ball && info.type != rigid::JointType::free)
+      a[info.dof] = m.dofArmature(info.dof);
+  }
+  return a;
+}
 
 const ControllerParams& checked(const ControllerParams& p, const FluidControlParams& f, const rigid::RigidModel& m) {
   if (std::string err = validate(p, f, m); !err.empty()) throw std::invalid_argument(err);
@@ -49,14 +74,14 @@ std::string validate(const ControllerParams& p, const FluidControlParams& f, con
 
 struct FluidController::World {
   World(const rigid::RigidModel& m, const std::vector<std::pair<std::string, double>>& initial,
-        const fluid::FluidParams& fp, const coupling::RigidFluidParams& cp)
-      : data(m), force(nullptr) {
+        const fluid::FluidParams& fp, const coupling::RigidFluidParams& cp, std::vector<double> armature)
+      : data(m), force(nullptr, {}) {
     for (const auto& [name, rad] : initial) data.qpos()[m.joint(m.findJoint(name)).qpos] = rad;
     data.kinematics();
     fluid::FluidParams one = fp;
     one.threads = 1;  // the parallelism is across evaluations (§5)
     coupling = std::make_unique<coupling::RigidFluidCoupling>(data, one, cp);
-    force = CouplingReaction(coupling.get());
+    force = CouplingReaction(coupling.get(), std::move(armature));
   }
   rigid::RigidData data;
   std::unique_ptr<coupling::RigidFluidCoupling> coupling;
@@ -76,11 +101,12 @@ FluidController::FluidController(const rigid::RigidModel& model, ControllerParam
   for (const auto& [name, rad] : initial)
     if (model.findJoint(name) < 0) throw std::invalid_argument("joint '" + name + "' is not in the model " + model.path());
   pres_ = prescription(p_, model);
-  main_ = std::make_unique<World>(model, initial, fluid, cp);
+  const auto armature = stabilisedArmature(model, p_, f_.armature_added_mass);
+  main_ = std::make_unique<World>(model, initial, fluid, cp, armature);
   captureHolds(pres_, main_->data.qpos());
   pool_ = std::make_unique<fluid::WorkerPool>(p_.threads);
   for (int k = 0; k < fluid::piece_count(pool_.get()); ++k)
-    workers_.push_back(std::make_unique<World>(model, initial, fluid, cp));
+    workers_.push_back(std::make_unique<World>(model, initial, fluid, cp, armature));
   const int n = int(p_.controlled.size());
   direction_.assign(n, 0.0);
   derivative_.assign(n, 0.0);
@@ -206,8 +232,10 @@ FrameRecord FluidController::frame() {
   FrameRecord r;
   // §7.1: the sense of the stroke at the frame's middle.
   const double mid_s = w.data.time_s() + 0.5 * p_.frame_s;
-  for (int i = 0; i < n && !f_.stroke.empty(); ++i)
-    senses_[i] = senseAt(p_.senses[i], strokePattern(f_.stroke[i], p_), f_.stroke[i].sign, mid_s);
+  // Without a stroke, the given senses (setSenses: the swimmer's phases, §7.2).
+  for (int i = 0; i < n; ++i)
+    senses_[i] = f_.stroke.empty() ? p_.senses[i]
+                                   : senseAt(p_.senses[i], strokePattern(f_.stroke[i], p_), f_.stroke[i].sign, mid_s);
   // Strength 0 holds the controlled joints (the "controller off" case of §7.1's comparison): no search.
   if (frame_ % p_.search_every_frames == 0 && p_.strength_rad_per_s > 0) {
     derivative_ = derivatives();
@@ -252,6 +280,12 @@ FrameRecord FluidController::frame() {
   max_forcing_iterations_ = std::max(max_forcing_iterations_, w.forcing_iterations);
   ++frame_;
   return r;
+}
+
+void FluidController::setSenses(const std::vector<Sense>& senses) {
+  if (senses.size() != p_.controlled.size())
+    throw std::invalid_argument("senses: one per controlled joint (" + std::to_string(p_.controlled.size()) + ")");
+  p_.senses = senses;
 }
 
 }  // namespace creaturelab::control

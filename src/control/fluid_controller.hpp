@@ -33,6 +33,15 @@ struct FluidControlParams {
   // Controlled angles kept within +-this (0: no limit). The paper gives no joint range; without one
   // the flyer's outer wings fold back over the body (flyer.toml).
   double limit_rad = 0;
+  // Added-mass stabilisation of free bodies (the swimmer, §7.2): the armature A of a DOF that no
+  // joint prescribes is taken as an estimate of the fluid's added mass on it, and the fluid's lagged
+  // force gets A a^n (a^n: the DOF's last acceleration) added, so the solid integrates
+  // (M + A) a^{n+1} = F^n + A a^n. The explicit (staggered) step with the fluid force of the last
+  // step, F^n ~ F - m_a a^n, has the amplification -m_a / M per step and blows up for M < m_a
+  // (added-mass instability, Causin, Gerbeau & Nobile 2005, CMAME 194; Förster, Wall & Ramm 2007,
+  // CMAME 196); with A it is (A - m_a) / (M + A), stable for m_a < M + 2A. The change to the
+  // dynamics, A (a^{n+1} - a^n), is first order in the step (swimmer.toml's convergence runs).
+  bool armature_added_mass = false;
 };
 
 // "" when usable with the model, else what is wrong.
@@ -71,6 +80,10 @@ class FluidController {
   const Vec3& frameBodiesForce_n() const { return frame_bodies_force_; }
   // The senses the last frame descended with (§7.1: they follow the stroke when f.stroke is set).
   const std::vector<Sense>& frameSenses() const { return senses_; }
+  // Replaces the controlled joints' senses from the next search on (the swimmer's phases, §7.2).
+  void setSenses(const std::vector<Sense>& senses);
+  // Replaces the strength (rad/s) from the next frame on (the swimmer's power and recovery strokes).
+  void setStrength(double rad_per_s) { p_.strength_rad_per_s = rad_per_s; }
 
  private:
   struct World;

@@ -18,6 +18,7 @@ std::string validate(const RigidFluidParams& p, const fluid::FluidParams& fluid)
   if (!(p.depth_m > 0)) return "depth_m must be positive";
   if (!(p.max_marker_cells_per_step > 0 && p.max_marker_cells_per_step <= 2))
     return "max_marker_cells_per_step must be in (0, 2]";
+  if (auto e = validate(p.mouth); !e.empty()) return e;
   return validate(p.inflow, fluid);
 }
 
@@ -42,6 +43,9 @@ RigidFluidCoupling::RigidFluidCoupling(const rigid::RigidData& data, const fluid
     : p_(p), fluid_(checked(p, f)) {
   const double dx = fluid_.grid().dx_m;
   markers_ = outlineMarkers(data.model(), data, p_.marker_spacing_cells * dx);
+  mouth_begin_ = markers_.size();
+  const auto mouth = mouthMarkers(data.model(), p_.mouth, p_.marker_spacing_cells * dx);
+  markers_.insert(markers_.end(), mouth.begin(), mouth.end());
   placeMarkers(data);
   if (p_.inflow.stream_m_per_s != 0) fillStream(fluid_.grid(), p_.inflow.stream_m_per_s);
   const int nb = data.model().bodies();
@@ -107,6 +111,7 @@ void RigidFluidCoupling::forceFluid(const rigid::RigidData& data, double dt) {
                         std::to_string(cells_per_step_) + " cells in one step of " + std::to_string(dt) +
                         " s (limit max_marker_cells_per_step = " + std::to_string(p_.max_marker_cells_per_step) +
                         "); take a smaller step");
+  addMouthFlux(data);
   locate(current_);
   std::swap(previous_, current_);
   if (p_.forcing == Forcing::projected) {
@@ -116,6 +121,20 @@ void RigidFluidCoupling::forceFluid(const rigid::RigidData& data, double dt) {
     sweeps(dt);
   }
   reaction(data);
+}
+
+// The mouth's markers move with their body plus the phase's flux along the mouth's normal, turned
+// with the geom (mouth.hpp; §7.2). The flux of the step is the one at its start.
+void RigidFluidCoupling::addMouthFlux(const rigid::RigidData& data) {
+  const double flux = mouthFlux_m_per_s(p_.mouth, time_s_);
+  if (flux == 0.0) return;
+  const double norm = std::hypot(p_.mouth.normal_x, p_.mouth.normal_z);
+  const double nx = p_.mouth.normal_x / norm, nz = p_.mouth.normal_z / norm;
+  for (std::size_t k = mouth_begin_; k < markers_.size(); ++k) {
+    const double* R = data.geomRotation(markers_[k].geom);  // row-major
+    velocity_[k].x += flux * (R[0] * nx + R[2] * nz);
+    velocity_[k].y += flux * (R[6] * nx + R[8] * nz);
+  }
 }
 
 // The marker forces f for which the projected velocity meets the markers' velocity,

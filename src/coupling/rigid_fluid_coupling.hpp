@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "coupling/inflow.hpp"
+#include "coupling/mouth.hpp"
 #include "coupling/outline.hpp"
 #include "fluid/fluid_solver2.hpp"
 #include "ib/kernel.hpp"
@@ -74,6 +75,8 @@ struct RigidFluidParams {
   // would jump over the fluid it should push, and the explicit reaction lags by a step).
   double max_marker_cells_per_step = 1.0;
   InflowParams inflow;
+  // The swimmer's mouth (mouth.hpp, §7.2): markers after the outlines' whose velocity carries a flux.
+  MouthParams mouth;
 };
 
 // "" when usable, else what is wrong.
@@ -119,6 +122,8 @@ class RigidFluidCoupling {
   const std::vector<fluid::Vec2>& markerForce_n_per_m() const { return force_; }
   const std::vector<fluid::Vec2>& markerPosition_m() const { return previous_; }  // fluid frame
   const std::vector<OutlineMarker>& markers() const { return markers_; }
+  // Markers from this index on are the mouth's (mouth.hpp); markers().size() when there is none.
+  std::size_t mouthBegin() const { return mouth_begin_; }
   // Largest marker displacement of the last step, cells.
   double markerCellsPerStep() const { return cells_per_step_; }
   // Forcing::projected: CG iterations and the largest marker velocity miss of the last step.
@@ -139,6 +144,7 @@ class RigidFluidCoupling {
   void projectedForcing(double dt_s);
   void reaction(const rigid::RigidData& data);
   void sumReaction();
+  void addMouthFlux(const rigid::RigidData& data);
 
   RigidFluidParams p_;
   fluid::FluidSolver2 fluid_;
@@ -152,6 +158,7 @@ class RigidFluidCoupling {
   std::vector<Vec3> body_force_n_, body_torque_n_m_, body_point_m_;
   double cells_per_step_ = 0;
   double time_s_ = 0;
+  std::size_t mouth_begin_ = 0;
 };
 
 }  // namespace creaturelab::coupling

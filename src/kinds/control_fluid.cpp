@@ -8,6 +8,7 @@
 #include "fluid/diagnostics2.hpp"
 #include "kinds/control_params.hpp"
 #include "kinds/flyer_measures.hpp"
+#include "kinds/swimmer.hpp"
 
 namespace creaturelab::kinds {
 namespace {
@@ -50,6 +51,7 @@ coupling::RigidFluidParams rigidFluidParams(const ParamReader& r) {
   c.inflow.stream_columns = int(r.integer("stream_columns"));
   c.inflow.source_m_per_s = r.real("source_m_per_s");
   c.inflow.source_rows = int(r.integer("source_rows"));
+  c.mouth = mouthParams(r);
   return c;
 }
 
@@ -59,6 +61,7 @@ control::FluidControlParams fluidControlParams(const ParamReader& r) {
   f.average_steps = int(r.integer("average_steps"));
   f.limit_rad = r.real("controlled_limit_deg") / kDeg;
   f.stroke = parseStrokeSense(r.text("stroke_sense"), splitList(r.text("controlled"), ','));
+  f.armature_added_mass = r.boolean("armature_added_mass");
   return f;
 }
 
@@ -179,6 +182,8 @@ ControlFluidKind::ControlFluidKind() {
       {"mean_up_force_n", "N", "§7.1: the fluid's upward force on all bodies (per depth_m), mean over the last "
                                "force_cycles flap periods (flap_period_s > 0) or the last average_frames"},
   };
+  for (auto& spec : swimmerParams()) params_.push_back(std::move(spec));
+  for (auto& spec : swimmerMetrics()) metrics_.push_back(std::move(spec));
 }
 
 std::string ControlFluidKind::doc() const {
@@ -191,6 +196,7 @@ std::string ControlFluidKind::validate(const Params& params) const {
     const auto model = loadModel(r);
     const auto p = controllerParams(r);
     if (auto e = control::validate(p, fluidControlParams(r), model); !e.empty()) return e;
+    if (auto e = validateSwimmer(r, model); !e.empty()) return e;
     const auto f = fluidParams(r);
     const auto c = rigidFluidParams(r);
     if (auto e = coupling::validate(c, f); !e.empty()) return e;
@@ -293,11 +299,22 @@ Result ControlFluidKind::run(const Params& params) const {
   const int j0_body = model.joint(j0_id).body;
   const Vec3 stream = {1, 0, 0};
   double max_residual = 0, max_cells = 0;
+  // The swimmer (swimmer.hpp, §7.2): the joints' senses follow the mouth's phases; the rise.
+  RiseRecorder rise(r, model, result);
+  const auto phase_senses = phaseSenses(r, n);
+  const auto phase_strengths = phaseStrengths(r);
+  const coupling::PhaseSchedule schedule = cp.mouth.schedule;
+  const double density_ratio = densityRatio(model, controller.coupling(), r.real("density_kg_per_m3"));
   try {
     controller.hold(int(r.integer("warmup_frames") * r.integer("substeps")));
+    rise.start(controller.data());
     if (field_every > 0) recordField();
     for (long f = 0; f < frames; ++f) {
+      const int phase = coupling::phaseAt(schedule, controller.data().time_s());
+      if (!phase_senses.empty()) controller.setSenses(phase_senses[phase]);
+      if (!phase_strengths.empty()) controller.setStrength(phase_strengths[phase]);
       const control::FrameRecord fr = controller.frame();
+      rise.record(controller.data());
       max_cells = std::max(max_cells, controller.coupling().markerCellsPerStep());
       time.values.push_back(fr.time_s);
       residual.values.push_back(fr.servo_residual_rad);
@@ -326,7 +343,9 @@ Result ControlFluidKind::run(const Params& params) const {
       if (field_every > 0 && (f + 1) % field_every == 0) recordField();
     }
   } catch (const std::exception& e) {
-    throw RunFailure("control_fluid at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what(), result);
+    throw RunFailure("control_fluid at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what() +
+                         (rise.active() ? stabilityHint(density_ratio) : std::string()),
+                     result);
   }
   const int tail = int(std::min<long>(r.integer("average_frames"), frames));
   std::vector<std::vector<double>> angles;
@@ -346,6 +365,7 @@ Result ControlFluidKind::run(const Params& params) const {
                                                         int(r.integer("force_cycles")))
                                        : tailMean(body_fz.values, tail),
                           "N"};
+  rise.measure(result, density_ratio);
   return result;
 }
 

@@ -79,6 +79,7 @@ std::string RigidModel::bodyName(int body) const {
 
 int RigidModel::bodyParent(int body) const { return model_->body_parentid[body]; }
 double RigidModel::bodyMass_kg(int body) const { return model_->body_mass[body]; }
+double RigidModel::dofArmature(int dof) const { return model_->dof_armature[dof]; }
 
 bool RigidModel::inSubtree(int body, int ancestor) const {
   for (int b = body;; b = model_->body_parentid[b]) {

@@ -52,6 +52,8 @@ class RigidModel {
   // True when `body` is `ancestor` or lies outboard of it (in its subtree).
   bool inSubtree(int body, int ancestor) const;
   double subtreeMass_kg(int body) const;
+  // MJCF armature of a DOF (kg or kg m^2): inertia added to the DOF alone.
+  double dofArmature(int dof) const;
   // MuJoCo's geom type number (2 sphere, 3 capsule, 4 ellipsoid, 5 cylinder, 6 box, 7 mesh) and
   // size parameters (half-sizes; capsule: radius, half-length).
   int geomType(int geom) const;

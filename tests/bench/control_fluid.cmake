@@ -1,4 +1,5 @@
 # Google Benchmark program for the controller in the coupled fluid (issue 16): frames per second of
-# the block in a 128^2 stream, and of a chain with 1-4 controlled joints, serial and parallel.
+# the block in a 128^2 stream, of a chain with 1-4 controlled joints, serial and parallel, and of the
+# swimmer (swimmer.toml).
 creaturelab_bench(bench_control_fluid SOURCES ${CMAKE_CURRENT_LIST_DIR}/bench_control_fluid.cpp LIBS cl_control)
 target_compile_definitions(bench_control_fluid PRIVATE CREATURELAB_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -19,6 +19,7 @@ creaturelab_cli_test(fluid_fields)   # /fields shape and chunks, XDMF sidecar, -
 creaturelab_cli_test(control)        # block_effort checks, figures, --jobs/threads determinism, bad MJCF and controller input
 creaturelab_cli_test(control_fluid)  # small block_flow: --jobs/threads determinism, figures, bad input exit 2, unstable step exit 3
 creaturelab_cli_test(flyer)          # small flyer: senses follow the stroke, PD wings flap, --jobs determinism, figures, exit 2 and 3
+creaturelab_cli_test(swimmer)  # small swimmer: rise series and figures, unstabilised free creature exit 3, bad phases exit 2
 creaturelab_cli_test(jellyfish)      # metrics, series, tracks, fields; --jobs determinism; KNOWN; bad input
 creaturelab_cli_test(fish)           # metrics, tracks, skin artifacts (glb parses); --jobs determinism; exit 3 in air; bad input
 creaturelab_cli_test(run_folder)     # --points shares, --force, --resume with another configuration

@@ -6,5 +6,6 @@ creaturelab_test(coupling_unit_test unit
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/coupling_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/control_fluid_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/coupling_mouth_test.cpp
   LIBS cl_control
 )
