@@ -8,6 +8,7 @@
 #include "fluid/diagnostics2.hpp"
 #include "kinds/control_params.hpp"
 #include "kinds/flyer_measures.hpp"
+#include "kinds/ib_params.hpp"
 #include "kinds/swimmer.hpp"
 
 namespace creaturelab::kinds {
@@ -19,20 +20,11 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 fluid::WallType wall(const ParamReader& r, const std::string& name) { return *fluid::parse_wall_type(r.text(name)); }
 
 fluid::FluidParams fluidParams(const ParamReader& r) {
-  fluid::FluidParams f;
-  f.domain_width_m = f.domain_height_m = r.real("domain_m");
-  f.cells_x = f.cells_y = int(r.integer("cells"));
-  f.density_kg_per_m3 = r.real("density_kg_per_m3");
-  f.kinematic_viscosity_m2_per_s = r.real("kinematic_viscosity_m2_per_s");
-  f.advection = *fluid::parse_advection_scheme(r.text("advection"));
-  f.threads = int(r.integer("fluid_threads"));
+  fluid::FluidParams f = squareFluidParams(r, r.real("frame_s") / double(r.integer("substeps")));
   f.walls.left.type = wall(r, "wall_left");
   f.walls.right.type = wall(r, "wall_right");
   f.walls.bottom.type = wall(r, "wall_bottom");
   f.walls.top.type = wall(r, "wall_top");
-  f.time_step_policy = fluid::TimeStepPolicy::fixed;
-  f.fixed_step_s = r.real("frame_s") / double(r.integer("substeps"));
-  f.blowup_speed_m_per_s = r.real("blowup_speed_m_per_s");
   return f;
 }
 

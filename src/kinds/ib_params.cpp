@@ -28,7 +28,7 @@ std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& d) {
   };
 }
 
-fluid::FluidParams fluidBoxParams(const ParamReader& r) {
+fluid::FluidParams squareFluidParams(const ParamReader& r, double dt_s) {
   fluid::FluidParams f;  // free-slip walls, exact (fast direct) projection
   f.domain_width_m = f.domain_height_m = r.real("domain_m");
   f.cells_x = f.cells_y = int(r.integer("cells"));
@@ -38,10 +38,12 @@ fluid::FluidParams fluidBoxParams(const ParamReader& r) {
   f.threads = int(r.integer("fluid_threads"));
   // The coupled step is fixed; a fluid running away is caught as a blow-up.
   f.time_step_policy = fluid::TimeStepPolicy::fixed;
-  f.fixed_step_s = r.real("dt_s");
+  f.fixed_step_s = dt_s;
   f.blowup_speed_m_per_s = r.real("blowup_speed_m_per_s");
   return f;
 }
+
+fluid::FluidParams fluidBoxParams(const ParamReader& r) { return squareFluidParams(r, r.real("dt_s")); }
 
 KernelScale kernelScale(const ParamReader& r) {
   const double radius_m = r.real("kernel_radius_m");

@@ -40,6 +40,11 @@ struct CouplingDefaults {
 // kernel, kernel_radius_m, semi_implicit, implicit_mobility, implicit_mass_factor.
 std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& defaults);
 
+// The square box's fluid as read by every coupled kind (control_fluid too): domain_m, cells,
+// density_kg_per_m3, kinematic_viscosity_m2_per_s, advection, fluid_threads, blowup_speed_m_per_s;
+// a fixed step of dt_s. Walls stay the defaults (free slip) for the caller to set.
+fluid::FluidParams squareFluidParams(const ParamReader& r, double dt_s);
+
 // The box's fluid from fluidBoxSpecs' parameters, dt_s (the fixed step) and blowup_speed_m_per_s,
 // which each kind declares itself: their ranges and defaults differ.
 fluid::FluidParams fluidBoxParams(const ParamReader& r);

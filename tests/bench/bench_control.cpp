@@ -7,35 +7,22 @@
 // recorded measures. Reported as frames per CPU second of the process ("frames_per_cpu_s", all
 // threads counted) and per elapsed second ("frames_per_s").
 #include <benchmark/benchmark.h>
-#include <time.h>
 
 #include <fstream>
 #include <string>
 
 #include "control/controller.hpp"
 #include "control/simple_wind.hpp"
+#include "frame_timing.hpp"
 
 namespace creaturelab::control {
 namespace {
-
-double clockSeconds(clockid_t clock) {
-  timespec t{};
-  clock_gettime(clock, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
 
 void runFrames(benchmark::State& state, const rigid::RigidModel& model, const ControllerParams& p, const Vec3& wind,
                int slices) {
   const SimpleWind force(rigid::geomSurfaces(model, slices), 1.2, constantWind(wind));
   Controller c(model, p, force);
-  const double cpu0 = clockSeconds(CLOCK_PROCESS_CPUTIME_ID), wall0 = clockSeconds(CLOCK_MONOTONIC);
-  long frames = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(c.frame());
-    ++frames;
-  }
-  state.counters["frames_per_cpu_s"] = double(frames) / (clockSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0);
-  state.counters["frames_per_s"] = double(frames) / (clockSeconds(CLOCK_MONOTONIC) - wall0);
+  bench::timeFrames(state, c);
 }
 
 // The block of block_effort.toml: one controlled hinge, gravity and a 10 m/s wind, min effort.

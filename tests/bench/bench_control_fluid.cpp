@@ -8,20 +8,14 @@
 // Reported as frames per CPU second of the process and per elapsed second. BM_FlyerFrame: the
 // driven flyer (flyer.toml), per-frame time reported, no goal set.
 #include <benchmark/benchmark.h>
-#include <time.h>
 
 #include <string>
 
 #include "control/fluid_controller.hpp"
+#include "frame_timing.hpp"
 
 namespace creaturelab::control {
 namespace {
-
-double clockSeconds(clockid_t clock) {
-  timespec t{};
-  clock_gettime(clock, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
 
 fluid::FluidParams box128() {
   fluid::FluidParams f;
@@ -48,16 +42,9 @@ rigid::RigidModel loadModel(const std::string& file, const ControllerParams& p) 
   return model;
 }
 
-// One frame per iteration; frames per CPU second of the process and per elapsed second.
+// bench::timeFrames, and the forcing's most CG iterations.
 void timeFrames(benchmark::State& state, FluidController& c) {
-  const double cpu0 = clockSeconds(CLOCK_PROCESS_CPUTIME_ID), wall0 = clockSeconds(CLOCK_MONOTONIC);
-  long frames = 0;
-  for (auto _ : state) {
-    benchmark::DoNotOptimize(c.frame());
-    ++frames;
-  }
-  state.counters["frames_per_cpu_s"] = double(frames) / (clockSeconds(CLOCK_PROCESS_CPUTIME_ID) - cpu0);
-  state.counters["frames_per_s"] = double(frames) / (clockSeconds(CLOCK_MONOTONIC) - wall0);
+  bench::timeFrames(state, c);
   state.counters["max_cg_iterations"] = c.maxForcingIterations();
 }
 

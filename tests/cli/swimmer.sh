@@ -5,12 +5,7 @@
 # free creature (twice the water it displaces) stops at the coupled stability limit, exit 3, the
 # message naming the density ratio; a phase table that does not add up exits 2, nothing written.
 # usage: swimmer.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
-bin=$1 src=$2 scratch=$3
-cd "$src"
-rm -rf "$scratch"
-mkdir -p "$scratch"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 small=(params.cells=64 params.frames=12 params.average_frames=6 params.cycle_s=0.1 params.rise_cycles=1
        params.field_every_frames=6)
 
