@@ -556,7 +556,7 @@ void FastPressureSolver2::solve(const KroneckerOperator2& op, const Array2& b, A
   // b (round-off only, the fluxes telescope) is ignored by the singular mode's recurrence.
   // Threads share the lanes of the transforms and the modes of the tridiagonal solves; every
   // value gets the serial arithmetic (worker_pool.hpp).
-  for_pieces(workers_, 0, lanes_, [&](int l0, int l1, int) {
+  for_thread_pieces(workers_, 0, lanes_, [&](int l0, int l1, int) {
     if (transposed) {
       transpose_rows(b, l0, l1, [output_scale](double value) { return value * output_scale; }, work_);
       forward_transform(work_, 1.0, l0, l1);
@@ -577,7 +577,7 @@ void FastPressureSolver2::solve(const KroneckerOperator2& op, const Array2& b, A
   });
   if (dense) std::swap(work_, im_);
   for_pieces(workers_, 0, lines_, [&](int k0, int k1, int) { solve_modes(k0, k1); });
-  for_pieces(workers_, 0, lanes_, [&](int l0, int l1, int) {
+  for_thread_pieces(workers_, 0, lanes_, [&](int l0, int l1, int) {
     if (transposed) {
       inverse_transform(work_, l0, l1);  // the dense path writes im_
       const Array2& result = dense ? im_ : work_;

@@ -99,6 +99,24 @@ void for_pieces(WorkerPool* pool, int begin, int end, Body&& body) {
   });
 }
 
+/// for_pieces() with one piece per thread (the rest of the pool's parts idle): for loops whose
+/// inner vectors shorten with the piece, such as the fast pressure solver's lane-split FFT, where
+/// kPartsPerThread pieces of a few lanes each cost more in loop overhead than they gain in balance.
+/// Any split gives the same values (each lane gets the serial arithmetic).
+template <class Body>
+void for_thread_pieces(WorkerPool* pool, int begin, int end, Body&& body) {
+  if (pool == nullptr || pool->parts() == 1) {
+    if (begin < end) body(begin, end, 0);
+    return;
+  }
+  const int pieces = pool->threads();
+  pool->run([&](int part) {
+    if (part >= pieces) return;
+    const auto [lo, hi] = WorkerPool::piece(begin, end, part, pieces);
+    if (lo < hi) body(lo, hi, part);
+  });
+}
+
 /// Number of pieces for_pieces() uses (≤ kMaxParts): per-piece scratch is indexed by part.
 inline int piece_count(const WorkerPool* pool) { return pool == nullptr ? 1 : pool->parts(); }
 
