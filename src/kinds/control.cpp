@@ -36,15 +36,6 @@ ControlKind::ControlKind() {
            "controlled joints, comma-separated: hinges (one DOF) or ball joints (three, about the body's axes)"),
       text("kinematic", "", "",
            "joints that follow kinematic_pattern exactly whatever the load (hinges; ball joints hold), comma-separated"),
-      text("kinematic_pattern", "", "",
-           "'joint = pattern; ...' for kinematic hinges, pattern hold | sine(mean_deg, amplitude_deg, frequency_hz, "
-           "phase_deg) | table(t_s angle_deg, t_s angle_deg, ...) (piecewise linear, held past its ends); joints not "
-           "named hold their initial angle (§2.2; the paper's legs follow motion capture)"),
-      text("pd_driven", "", "", "hinges PD-driven to pd_pattern (§2.2: pre-specified PD targets), comma-separated"),
-      text("pd_pattern", "", "", "'joint = pattern; ...' for pd_driven hinges, as kinematic_pattern (default hold)"),
-      real("pd_kp_n_m_per_rad", 200, "N m/rad", 0, 1e7,
-           "PD stiffness of pd_driven joints (the paper gives none; explicit at each substep, keep kp h^2 / I small)"),
-      real("pd_kd_n_m_s_per_rad", 10, "N m s/rad", 0, 1e6, "PD damping of pd_driven joints"),
       text("objectives", "effort", "",
            "per controlled joint: effort (Eq. 1, N m s) | drag (|Eq. 3|, N) | drag_along (Eq. 4 along drag_direction, N)"),
       text("senses", "min", "", "per controlled joint: min | max"),
@@ -84,6 +75,7 @@ ControlKind::ControlKind() {
            "converged frame: from it every controlled angle stays this close to its final mean"),
       integer("average_frames", 30, 1, 100000, "frames at the end over which final angles are averaged"),
   };
+  addMotionPatternSpecs(params_);
   metrics_ = {
       {"final_angle_deg", "deg", "first controlled DOF (a ball: its rotation vector's x): mean angle over the last "
                                  "average_frames"},

@@ -81,14 +81,6 @@ ControlFluidKind::ControlFluidKind() {
       text("controlled", "hinge", "", "controlled hinge joints, comma-separated (one DOF each)"),
       text("kinematic", "", "",
            "hinges that follow kinematic_pattern exactly whatever the load (the fluid's too), comma-separated"),
-      text("kinematic_pattern", "", "",
-           "'joint = pattern; ...' for kinematic hinges, pattern hold | sine(mean_deg, amplitude_deg, frequency_hz, "
-           "phase_deg) | table(t_s angle_deg, ...); joints not named hold their initial angle (§2.2)"),
-      text("pd_driven", "", "", "hinges PD-driven to pd_pattern (§2.2, the flyer's inner wing joints, §7.1), comma-separated"),
-      text("pd_pattern", "", "", "'joint = pattern; ...' for pd_driven hinges, as kinematic_pattern (default hold)"),
-      real("pd_kp_n_m_per_rad", 200, "N m/rad", 0, 1e7,
-           "PD stiffness of pd_driven joints (the paper gives none; explicit at each coupled step)"),
-      real("pd_kd_n_m_s_per_rad", 10, "N m s/rad", 0, 1e6, "PD damping of pd_driven joints"),
       text("objectives", "drag_along", "",
            "per controlled joint: drag (|F|, N) | drag_along (Eq. 10: F . w, N), F the fluid's force on the bodies "
            "the joint moves, from the coupling"),
@@ -157,6 +149,7 @@ ControlFluidKind::ControlFluidKind() {
       integer("force_cycles", 2, 1, 100000, "mean_up_force_n: whole flap cycles at the end averaged"),
       real("controlled_limit_deg", 0, "deg", 0, 360, "controlled angles kept within +-this (0: no limit; the paper gives none)"),
   };
+  addMotionPatternSpecs(params_);
   metrics_ = {
       {"final_angle_deg", "deg", "first controlled joint: mean angle over the last average_frames"},
       {"flow_angle_deg", "deg",

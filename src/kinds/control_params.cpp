@@ -69,6 +69,24 @@ std::vector<std::string> splitList(const std::string& s, char sep) {
   return out;
 }
 
+void addMotionPatternSpecs(std::vector<ParamSpec>& params) {
+  const std::vector<ParamSpec> patterns = {
+      text("kinematic_pattern", "", "",
+           "'joint = pattern; ...' for kinematic hinges, pattern hold | sine(mean_deg, amplitude_deg, frequency_hz, "
+           "phase_deg) | table(t_s angle_deg, t_s angle_deg, ...) (piecewise linear, held past its ends); joints not "
+           "named hold their initial angle (§2.2; the paper's legs follow motion capture)"),
+      text("pd_driven", "", "",
+           "hinges PD-driven to pd_pattern (§2.2: pre-specified PD targets; §7.1: the flyer's inner wing joints), "
+           "comma-separated"),
+      text("pd_pattern", "", "", "'joint = pattern; ...' for pd_driven hinges, as kinematic_pattern (default hold)"),
+      real("pd_kp_n_m_per_rad", 200, "N m/rad", 0, 1e7,
+           "PD stiffness of pd_driven joints (the paper gives none; explicit at each step, keep kp h^2 / I small)"),
+      real("pd_kd_n_m_s_per_rad", 10, "N m s/rad", 0, 1e6, "PD damping of pd_driven joints"),
+  };
+  const auto kinematic = std::find_if(params.begin(), params.end(), [](const ParamSpec& p) { return p.name == "kinematic"; });
+  params.insert(kinematic == params.end() ? kinematic : kinematic + 1, patterns.begin(), patterns.end());
+}
+
 rigid::RigidModel loadModel(const ParamReader& r) {
   auto model = rigid::RigidModel::load(r.text("model_file"));
   model.setGravity({0, 0, -r.real("gravity_m_per_s2")});

@@ -19,6 +19,11 @@ std::vector<std::string> splitList(const std::string& s, char sep);
 // model_file with gravity_m_per_s2 (along -z) and the step frame_s / substeps.
 rigid::RigidModel loadModel(const ParamReader& r);
 
+// Inserts the motion patterns' parameters that controllerParams reads (§2.2) right after the
+// kind's `kinematic` parameter: kinematic_pattern, pd_driven, pd_pattern, pd_kp_n_m_per_rad,
+// pd_kd_n_m_s_per_rad.
+void addMotionPatternSpecs(std::vector<ParamSpec>& params);
+
 // Every controller parameter but steady_state (the wind kind's own; the fluid has settle_steps).
 control::ControllerParams controllerParams(const ParamReader& r);
 

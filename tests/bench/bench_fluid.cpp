@@ -117,6 +117,13 @@ void report(benchmark::State& state, int cells, double seconds_total) {
   state.counters["cells"] = cell_count;
 }
 
+// report() from CPU time, and the elapsed time per cell (ns_per_cell_wall).
+void report(benchmark::State& state, int cells, double cpu_total, double wall_total) {
+  report(state, cells, cpu_total);
+  state.counters["ns_per_cell_wall"] =
+      wall_total * 1e9 / (static_cast<double>(cells) * cells * static_cast<double>(state.iterations()));
+}
+
 // Manual time = CPU time of all threads; the counters give it per cell (ns_per_cell) and the
 // elapsed time per cell (ns_per_cell_wall), which is what threads shorten.
 // With threads_arg, the benchmark's second argument is FluidParams::threads.
@@ -138,9 +145,7 @@ void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverTy
     cpu_total += cpu;
     wall_total += wall;
   }
-  report(state, cells, cpu_total);
-  state.counters["ns_per_cell_wall"] =
-      wall_total * 1e9 / (static_cast<double>(cells) * cells * static_cast<double>(state.iterations()));
+  report(state, cells, cpu_total, wall_total);
   state.counters["threads"] = threads;
 }
 
@@ -188,9 +193,7 @@ void stage_only(benchmark::State& state, Stage stage, const StageSetup& setup) {
     cpu_total += cpu;
     wall_total += wall;
   }
-  report(state, cells, cpu_total);
-  state.counters["ns_per_cell_wall"] =
-      wall_total * 1e9 / (static_cast<double>(cells) * cells * static_cast<double>(state.iterations()));
+  report(state, cells, cpu_total, wall_total);
   state.counters["iterations"] = iterations;
 }
 void BM_Advection_SemiLagrangian(benchmark::State& state) {
