@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <new>
 #include <vector>
 
 #if defined(__SSE2__)
@@ -12,6 +13,26 @@
 #endif
 
 namespace creaturelab::fluid {
+
+/// Bytes in a cache line: the alignment of every Array2's storage.
+inline constexpr std::size_t kCacheLineBytes = 64;
+
+/// std::allocator on cache-line boundaries. glibc puts a large block 16 bytes past a page
+/// boundary, so two threads writing the two halves of a row (the fast pressure solver's
+/// lane-split transforms) would share, and fight over, one cache line in every row.
+template <class T>
+struct CacheLineAllocator {
+  using value_type = T;
+  CacheLineAllocator() = default;
+  template <class U>
+  CacheLineAllocator(const CacheLineAllocator<U>&) {}
+  T* allocate(std::size_t n) {
+    return static_cast<T*>(::operator new(n * sizeof(T), std::align_val_t{kCacheLineBytes}));
+  }
+  void deallocate(T* p, std::size_t) { ::operator delete(p, std::align_val_t{kCacheLineBytes}); }
+  template <class U>
+  bool operator==(const CacheLineAllocator<U>&) const { return true; }
+};
 
 /// A dense nx × ny array of doubles with the x index fastest: element (i, j) lives at
 /// data()[j * nx + i]. Rows of constant j are contiguous, which the solvers rely on to
@@ -51,7 +72,7 @@ class Array2 {
   }
   int nx_ = 0;
   int ny_ = 0;
-  std::vector<double> data_;
+  std::vector<double, CacheLineAllocator<double>> data_;
 };
 
 // Reductions. A single running sum (or maximum) is a chain of dependent additions, bound by

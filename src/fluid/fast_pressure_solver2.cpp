@@ -14,6 +14,9 @@
 namespace creaturelab::fluid {
 namespace {
 
+// Threads split the transforms' lanes on cache-line boundaries (worker_pool.hpp).
+constexpr int kLanesPerCacheLine = static_cast<int>(kCacheLineBytes / sizeof(double));
+
 // Radices of the FFT of length h = n/2 used by the DCT of length n, or empty when n is odd or
 // h has a prime factor above 7 (the dense transform is used then). (A radix-4 butterfly was
 // tried: with SSE2's sixteen registers it spilled and ran 15 % slower than two radix-2 stages.)
@@ -211,8 +214,8 @@ void FastPressureSolver2::setup(const KroneckerOperator2& op, int nx, int ny, bo
   }
 
   work_.resize(m, n);
-  re_.resize(0, 0);
-  im_.resize(0, 0);
+  panels_.clear();
+  dense_out_.resize(0, 0);
   basis_.resize(0, 0);
   basis_t_.resize(0, 0);
   if (dense_) {
@@ -233,10 +236,6 @@ void FastPressureSolver2::setup(const KroneckerOperator2& op, int nx, int ny, bo
     }
   } else {
     const int h = n / 2;  // the real transforms run as complex FFTs of half length
-    re_.resize(m, h);
-    im_.resize(m, h);
-    re2_.resize(m, h);
-    im2_.resize(m, h);
     radices_ = fft_radices(n);
     fft_cos_.assign(h, 0.0);
     fft_sin_.assign(h, 0.0);
@@ -262,27 +261,25 @@ void FastPressureSolver2::setup(const KroneckerOperator2& op, int nx, int ny, bo
   }
 }
 
-// Mixed-radix (2, 3, 5, 7) Stockham FFT of length h = n/2 of the lanes [l0, l1), on
-// (re_, im_) in natural order, result in natural order (Van Loan 1992, "Computational
+// Mixed-radix (2, 3, 5, 7) Stockham FFT of length h = n/2 of every lane of a panel, on
+// (re, im) in natural order, result in natural order (Van Loan 1992, "Computational
 // Frameworks for the FFT", §1.7 and ch. 2). Stage with radix r, current length L, stride s:
 //   y[q + s (r p + u)] = e^{∓2πi p u / L} Σ_t x[q + s (p + t L/r)] e^{∓2πi t u / r}
 // for p < L/r, q < s. Forward: e^{−…}; inverse: e^{+…}, no 1/h. Rows q = 0..s−1 are adjacent,
-// so with all lanes every (p, t) is one contiguous vector of s·m values and the inner loops
-// vectorise; with a part of the lanes (threads) it is s vectors of l1 − l0 values. Each value
-// gets the same arithmetic either way. The stages alternate between (re_, im_) and
-// (re2_, im2_): the result is in the second pair when the number of stages is odd
-// (result_in_second_buffers()).
-void FastPressureSolver2::fft(bool inverse, int l0, int l1) {
+// so every (p, t) is one contiguous vector of s·w values (w lanes) and the inner loops
+// vectorise. Each lane gets the same arithmetic whatever the panel's width. The stages
+// alternate between (re, im) and (re2, im2): the result is in the second pair when the number
+// of stages is odd (result_in_second_buffers()).
+void FastPressureSolver2::fft(bool inverse, FftPanel& panel) {
   const int h = lines_ / 2;
-  const long m = lanes_;
+  const long m = panel.re.nx();
   const double sgn = inverse ? 1.0 : -1.0;
-  const bool all_lanes = l0 == 0 && l1 == m;
   int length = h;
   long stride = 1;
-  const double* xr = re_.data();
-  const double* xi = im_.data();
-  double* yr = re2_.data();
-  double* yi = im2_.data();
+  const double* xr = panel.re.data();
+  const double* xi = panel.im.data();
+  double* yr = panel.re2.data();
+  double* yi = panel.im2.data();
   for (int r : radices_) {
     const int mm = length / r;
     const long block = stride * m;  // one contiguous vector per (p, t)
@@ -304,32 +301,22 @@ void FastPressureSolver2::fft(bool inverse, int l0, int l1) {
       double* bi[7];
       double wc[7], ws[7];
       for (int t = 0; t < r; ++t) {
-        ar[t] = xr + (p + static_cast<long>(t) * mm) * block + l0;
-        ai[t] = xi + (p + static_cast<long>(t) * mm) * block + l0;
-        br[t] = yr + (static_cast<long>(r) * p + t) * block + l0;
-        bi[t] = yi + (static_cast<long>(r) * p + t) * block + l0;
+        ar[t] = xr + (p + static_cast<long>(t) * mm) * block;
+        ai[t] = xi + (p + static_cast<long>(t) * mm) * block;
+        br[t] = yr + (static_cast<long>(r) * p + t) * block;
+        bi[t] = yi + (static_cast<long>(r) * p + t) * block;
         const int index = (p * t * twiddle_scale) % h;
         wc[t] = fft_cos_[index];
         ws[t] = sgn * fft_sin_[index];
       }
-      const long pieces = all_lanes ? 1 : stride;
-      const long length_of_piece = all_lanes ? block : l1 - l0;
-      for (long q = 0; q < pieces; ++q) {
-        const long o = q * m;  // offset of the piece's lanes within each vector
-        const double* ar_q[7];
-        const double* ai_q[7];
-        double* br_q[7];
-        double* bi_q[7];
-        for (int t = 0; t < r; ++t) ar_q[t] = ar[t] + o, ai_q[t] = ai[t] + o, br_q[t] = br[t] + o, bi_q[t] = bi[t] + o;
-        if (r == 2) {
-          radix2(length_of_piece, ar_q[0], ai_q[0], ar_q[1], ai_q[1], br_q[0], bi_q[0], br_q[1], bi_q[1], wc[1], ws[1]);
-        } else if (r == 3) {
-          odd_radix<3>(length_of_piece, ar_q, ai_q, br_q, bi_q, dft_cos, dft_sin, wc, ws);
-        } else if (r == 5) {
-          odd_radix<5>(length_of_piece, ar_q, ai_q, br_q, bi_q, dft_cos, dft_sin, wc, ws);
-        } else {
-          odd_radix<7>(length_of_piece, ar_q, ai_q, br_q, bi_q, dft_cos, dft_sin, wc, ws);
-        }
+      if (r == 2) {
+        radix2(block, ar[0], ai[0], ar[1], ai[1], br[0], bi[0], br[1], bi[1], wc[1], ws[1]);
+      } else if (r == 3) {
+        odd_radix<3>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
+      } else if (r == 5) {
+        odd_radix<5>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
+      } else {
+        odd_radix<7>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
       }
     }
     // The output of this stage is the input of the next.
@@ -345,19 +332,20 @@ void FastPressureSolver2::fft(bool inverse, int l0, int l1) {
 }
 
 // Forward transform along lines of the lanes [l0, l1): work_ (lines × lanes) ← its transform,
-// reading line t of the input from source.row(t) × scale (scale 1: a copy).
-void FastPressureSolver2::forward_transform(const Array2& source, double scale, int l0, int l1) {
+// reading line t of the input from source.row(t) × scale (scale 1: a copy). The FFT runs in
+// `panel`, lane l at column l − l0 (the dense path writes dense_out_).
+void FastPressureSolver2::forward_transform(const Array2& source, double scale, int l0, int l1, FftPanel& panel) {
   const int n = lines_;
   if (dense_) {
-    // out_k = Σ_j φ_k(j) in_j, four modes at a time; j ascending for every output. Into im_.
+    // out_k = Σ_j φ_k(j) in_j, four modes at a time; j ascending for every output.
     for (int k0 = 0; k0 < n; k0 += 4) {
       const int kb = std::min(4, n - k0);
-      for (int kk = 0; kk < kb; ++kk) std::fill(im_.row(k0 + kk) + l0, im_.row(k0 + kk) + l1, 0.0);
+      for (int kk = 0; kk < kb; ++kk) std::fill(dense_out_.row(k0 + kk) + l0, dense_out_.row(k0 + kk) + l1, 0.0);
       for (int j = 0; j < n; ++j) {
         const double* __restrict__ in = source.row(j);
         for (int kk = 0; kk < kb; ++kk) {
           const double c = basis_(j, k0 + kk);
-          double* __restrict__ out = im_.row(k0 + kk);
+          double* __restrict__ out = dense_out_.row(k0 + kk);
           for (int l = l0; l < l1; ++l) out[l] += c * in[l];
         }
       }
@@ -373,26 +361,26 @@ void FastPressureSolver2::forward_transform(const Array2& source, double scale, 
   auto load = [&](int t, double* out) {
     const double* in = source.row(source_row(t));
     if (scale == 1.0) {
-      std::copy(in + l0, in + l1, out + l0);
+      std::copy(in + l0, in + l1, out);
     } else {
-      for (int l = l0; l < l1; ++l) out[l] = in[l] * scale;
+      for (int l = l0; l < l1; ++l) out[l - l0] = in[l] * scale;
     }
   };
   for (int j = 0; j < h; ++j) {
-    load(2 * j, re_.row(j));
-    load(2 * j + 1, im_.row(j));
+    load(2 * j, panel.re.row(j));
+    load(2 * j + 1, panel.im.row(j));
   }
-  fft(false, l0, l1);
+  fft(false, panel);
   const bool second = result_in_second_buffers();
-  const Array2& z_re = second ? re2_ : re_;
-  const Array2& z_im = second ? im2_ : im_;
+  const Array2& z_re = second ? panel.re2 : panel.re;
+  const Array2& z_im = second ? panel.im2 : panel.im;
   for (int k = 0; k <= h / 2; ++k) {
     // Rows k and h − k of Z give V_k, V_{h−k} and their mirrors V_{n−k}, V_{n−h+k}.
     const int k2 = (h - k) % h;  // Z_h = Z_0
-    const double* __restrict__ zr_a = z_re.row(k % h);
-    const double* __restrict__ zi_a = z_im.row(k % h);
-    const double* __restrict__ zr_b = z_re.row(k2);
-    const double* __restrict__ zi_b = z_im.row(k2);
+    const double* __restrict__ zr_a = z_re.row(k % h) - l0;  // indexed by lane
+    const double* __restrict__ zi_a = z_im.row(k % h) - l0;
+    const double* __restrict__ zr_b = z_re.row(k2) - l0;
+    const double* __restrict__ zi_b = z_im.row(k2) - l0;
     const int ka = k, kb = h - k;  // the two V indices produced
     const double wa_c = twiddle_cos_[ka % h], wa_s = ka == h ? 0.0 : twiddle_sin_[ka % h];
     const double wb_c = kb == h ? -1.0 : twiddle_cos_[kb], wb_s = kb == h ? 0.0 : twiddle_sin_[kb];
@@ -425,20 +413,20 @@ void FastPressureSolver2::forward_transform(const Array2& source, double scale, 
   }
 }
 
-// Inverse transform along lines of the lanes [l0, l1) of work_, into `target` (lines × lanes):
-// the dense path writes im_.
-void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1) {
+// Inverse transform along lines of the lanes [l0, l1) of work_, into `target` (lines × lanes),
+// the FFT in `panel` as in forward_transform: the dense path writes dense_out_.
+void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1, FftPanel& panel) {
   const int n = lines_;
   if (dense_) {
     // out_j = Σ_k φ_k(j) in_k, k ascending.
     for (int j0 = 0; j0 < n; j0 += 4) {
       const int jb = std::min(4, n - j0);
-      for (int jj = 0; jj < jb; ++jj) std::fill(im_.row(j0 + jj) + l0, im_.row(j0 + jj) + l1, 0.0);
+      for (int jj = 0; jj < jb; ++jj) std::fill(dense_out_.row(j0 + jj) + l0, dense_out_.row(j0 + jj) + l1, 0.0);
       for (int k = 0; k < n; ++k) {
         const double* __restrict__ in = work_.row(k);
         for (int jj = 0; jj < jb; ++jj) {
           const double c = basis_t_(k, j0 + jj);
-          double* __restrict__ out = im_.row(j0 + jj);
+          double* __restrict__ out = dense_out_.row(j0 + jj);
           for (int l = l0; l < l1; ++l) out[l] += c * in[l];
         }
       }
@@ -452,8 +440,8 @@ void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1) {
   const int h = n / 2;
   for (int k = 0; k < h; ++k) {
     const double cw = twiddle_cos_[k], sw = twiddle_sin_[k];
-    double* __restrict__ zr = re_.row(k);
-    double* __restrict__ zi = im_.row(k);
+    double* __restrict__ zr = panel.re.row(k) - l0;  // indexed by lane
+    double* __restrict__ zi = panel.im.row(k) - l0;
     const double ca = shift_cos_[k], sa = shift_sin_[k];
     const double cb = shift_cos_[h - k], sb = shift_sin_[h - k];
     const double* __restrict__ xa = work_.row(k);
@@ -474,15 +462,15 @@ void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1) {
       zi[l] = ei + or_;
     }
   }
-  fft(true, l0, l1);
+  fft(true, panel);
   const bool second = result_in_second_buffers();
-  const Array2& z_re = second ? re2_ : re_;
-  const Array2& z_im = second ? im2_ : im_;
+  const Array2& z_re = second ? panel.re2 : panel.re;
+  const Array2& z_im = second ? panel.im2 : panel.im;
   const double inv_h = 1.0 / h;
   auto target_row = [n, h](int t) { return t < h ? 2 * t : 2 * (n - 1 - t) + 1; };  // x row of v_t
   for (int j = 0; j < h; ++j) {
-    const double* zr = z_re.row(j);
-    const double* zi = z_im.row(j);
+    const double* zr = z_re.row(j) - l0;  // indexed by lane
+    const double* zi = z_im.row(j) - l0;
     double* even = target.row(target_row(2 * j));
     double* odd = target.row(target_row(2 * j + 1));
     for (int l = l0; l < l1; ++l) {
@@ -549,17 +537,28 @@ void FastPressureSolver2::solve(const KroneckerOperator2& op, const Array2& b, A
   const int ny = b.ny();
   setup(op, nx, ny, prefer_dense);
   q.resize(nx, ny);
-  if (dense_) im_.resize(lanes_, lines_);
+  if (dense_) dense_out_.resize(lanes_, lines_);
   const bool transposed = transposed_;
   const bool dense = dense_;
+  const int h = lines_ / 2;
+  panels_.resize(static_cast<std::size_t>(workers_ == nullptr ? 1 : workers_->threads()));
+  // A thread's panel is sized (and first touched) by that thread, once per shape.
+  auto panel_for = [&](int part, int l0, int l1) -> FftPanel& {
+    FftPanel& panel = panels_[static_cast<std::size_t>(part)];
+    if (!dense) {
+      for (Array2* a : {&panel.re, &panel.im, &panel.re2, &panel.im2}) a->resize(l1 - l0, h);
+    }
+    return panel;
+  };
   // The transform is linear: scaling its input scales the solution. In a closed box the mean of
   // b (round-off only, the fluxes telescope) is ignored by the singular mode's recurrence.
   // Threads share the lanes of the transforms and the modes of the tridiagonal solves; every
   // value gets the serial arithmetic (worker_pool.hpp).
-  for_thread_pieces(workers_, 0, lanes_, [&](int l0, int l1, int) {
+  for_thread_pieces(workers_, 0, lanes_, kLanesPerCacheLine, [&](int l0, int l1, int part) {
+    FftPanel& panel = panel_for(part, l0, l1);
     if (transposed) {
       transpose_rows(b, l0, l1, [output_scale](double value) { return value * output_scale; }, work_);
-      forward_transform(work_, 1.0, l0, l1);
+      forward_transform(work_, 1.0, l0, l1, panel);
     } else if (dense) {
       for (int j = 0; j < ny; ++j) {
         const double* src = b.row(j);
@@ -570,23 +569,24 @@ void FastPressureSolver2::solve(const KroneckerOperator2& op, const Array2& b, A
           for (int l = l0; l < l1; ++l) dst[l] = src[l] * output_scale;
         }
       }
-      forward_transform(work_, 1.0, l0, l1);
+      forward_transform(work_, 1.0, l0, l1, panel);
     } else {
-      forward_transform(b, output_scale, l0, l1);
+      forward_transform(b, output_scale, l0, l1, panel);
     }
   });
-  if (dense) std::swap(work_, im_);
+  if (dense) std::swap(work_, dense_out_);
   for_pieces(workers_, 0, lines_, [&](int k0, int k1, int) { solve_modes(k0, k1); });
-  for_thread_pieces(workers_, 0, lanes_, [&](int l0, int l1, int) {
+  for_thread_pieces(workers_, 0, lanes_, kLanesPerCacheLine, [&](int l0, int l1, int part) {
+    FftPanel& panel = panel_for(part, l0, l1);
     if (transposed) {
-      inverse_transform(work_, l0, l1);  // the dense path writes im_
-      const Array2& result = dense ? im_ : work_;
+      inverse_transform(work_, l0, l1, panel);  // the dense path writes dense_out_
+      const Array2& result = dense ? dense_out_ : work_;
       transpose_columns(result, l0, l1, q);
     } else {
-      inverse_transform(q, l0, l1);  // the dense path writes im_
+      inverse_transform(q, l0, l1, panel);  // the dense path writes dense_out_
     }
   });
-  if (dense && !transposed) std::swap(q, im_);
+  if (dense && !transposed) std::swap(q, dense_out_);
 }
 
 namespace {

@@ -75,9 +75,17 @@ class FastPressureSolver2 final : public PressureSolver2 {
  private:
   void setup(const KroneckerOperator2& op, int nx, int ny, bool prefer_dense);
   // The pieces of a solve; [l0, l1) a range of lanes, [k0, k1) of modes (threads share them).
-  void forward_transform(const Array2& source, double scale, int l0, int l1);
-  void inverse_transform(Array2& target, int l0, int l1);
-  void fft(bool inverse, int l0, int l1);
+  // One FFT scratch per thread: its piece of the lanes in arrays of the piece's own width, so
+  // that the FFT's stages of two threads never write into the same rows. With shared rows cut
+  // at a cache line, each thread's half of the 256² forward transform took 240-300 µs, as long
+  // as all lanes on one thread, against 113 µs in arrays of its own (measured 2026-11-25 on
+  // idle cores; the halves of a row are neighbours in memory, which the cores then trade).
+  struct FftPanel {
+    Array2 re, im, re2, im2;
+  };
+  void forward_transform(const Array2& source, double scale, int l0, int l1, FftPanel& panel);
+  void inverse_transform(Array2& target, int l0, int l1, FftPanel& panel);
+  void fft(bool inverse, FftPanel& panel);
   bool result_in_second_buffers() const { return radices_.size() % 2 == 1; }
   void solve_modes(int k0, int k1);
 
@@ -98,7 +106,8 @@ class FastPressureSolver2 final : public PressureSolver2 {
   std::vector<double> shift_cos_, shift_sin_;      // cos, sin(π k / 2n), k < n
   Array2 basis_;                                   // dense: basis_(j, k) = φ_k(j), contiguous in j
   Array2 basis_t_;                                 // dense: basis_t_(k, j) = φ_k(j), contiguous in k
-  Array2 work_, re_, im_, re2_, im2_, rhs_;
+  Array2 work_, dense_out_, rhs_;
+  std::vector<FftPanel> panels_;  // one per thread
   std::vector<MaxAbsAccumulator> accumulators_;  // one per thread
 };
 

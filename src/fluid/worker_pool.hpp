@@ -14,6 +14,7 @@
 // dozen short parallel loops) and then sleep on a condition variable. The spinning is CPU time
 // and is counted by the benchmarks (tests/bench/bench_fluid.cpp reports process CPU time).
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -102,17 +103,22 @@ void for_pieces(WorkerPool* pool, int begin, int end, Body&& body) {
 /// for_pieces() with one piece per thread (the rest of the pool's parts idle): for loops whose
 /// inner vectors shorten with the piece, such as the fast pressure solver's lane-split FFT, where
 /// kPartsPerThread pieces of a few lanes each cost more in loop overhead than they gain in balance.
+/// Inner boundaries fall on multiples of `quantum` from begin: with quantum = one cache line of
+/// doubles and cache-aligned rows (Array2), no two threads write into one line of a row.
 /// Any split gives the same values (each lane gets the serial arithmetic).
 template <class Body>
-void for_thread_pieces(WorkerPool* pool, int begin, int end, Body&& body) {
+void for_thread_pieces(WorkerPool* pool, int begin, int end, int quantum, Body&& body) {
   if (pool == nullptr || pool->parts() == 1) {
     if (begin < end) body(begin, end, 0);
     return;
   }
   const int pieces = pool->threads();
+  const int units = (end - begin + quantum - 1) / quantum;
   pool->run([&](int part) {
     if (part >= pieces) return;
-    const auto [lo, hi] = WorkerPool::piece(begin, end, part, pieces);
+    const auto [u0, u1] = WorkerPool::piece(0, units, part, pieces);
+    const int lo = begin + u0 * quantum;
+    const int hi = std::min(end, begin + u1 * quantum);
     if (lo < hi) body(lo, hi, part);
   });
 }

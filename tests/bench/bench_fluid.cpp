@@ -49,9 +49,20 @@
 // (An earlier run the same morning at load 5: full step 29.3 CPU, 39.0 elapsed with 1 thread,
 // 39.8 / 50.8 with 2; advection 8.6, viscosity 5.8, projection 11.3.) The rest of the step,
 // about 3.8 ns, is the forces, the start-of-step maximum speed and the end-of-step summary.
-// The goal (≤ 20 ns per cell) is NOT met: not on one core (30.3 CPU), and with two threads the
-// elapsed time was 66.5 on this loaded machine (the workers wait for a core; the 2-thread figure
-// of an idle machine was not measured: the load was 5-12 whenever these benches ran).
+// On that loaded machine the goal (≤ 20 ns per cell) was not met: 30.3 CPU on one core, and with
+// two threads 66.5 elapsed (the workers wait for a core).
+//
+// On idle cores (2026-11-25, 09:47-09:50 UTC, no other process running; medians of 5
+// repetitions, two interleaved runs), after the fast pressure solver's FFT moved into one panel
+// of arrays per thread (fast_pressure_solver2.hpp: two threads transforming the two halves of
+// shared rows had been no faster than one), ns per cell, 256², upwind2_rk2 + fast pressure:
+//                                    1 thread (CPU = elapsed)   2 threads, elapsed (CPU)
+//   full step                        28.1-29.4                  19.4-19.8 (38.7-39.4)
+//   projection (fast direct)          9.8-10.3                   6.6-7.7
+//   advection (upwind2_rk2)           9.1                        5.2-6.0
+//   viscosity (iterative)             5.9-6.1                    4.2-4.7
+// Before the panels the 2-thread step took 25.6 (projection 13.9). The goal is met on two
+// threads (19.4-19.8 elapsed, a small margin), not on one core.
 //
 // The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
 // fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is
