@@ -155,10 +155,15 @@ CheckOutcome order(const CheckSpec& c, const std::vector<const Row*>& rows) {
 namespace {
 CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
   std::string problem;
-  if (c.type == "ratio") {
+  if (c.type == "ratio" || c.type == "difference") {
+    // difference: numerator - denominator, for a comparison whose reference may be near zero or
+    // negative (a creature that barely moves without its controller), where a ratio means nothing.
+    const bool ratio = c.type == "ratio";
     const std::string& num_metric = c.numerator_metric.empty() ? c.metric : c.numerator_metric;
     const std::string& den_metric = c.denominator_metric.empty() ? c.metric : c.denominator_metric;
-    const std::string what = (num_metric == den_metric ? c.metric + " ratio" : num_metric + " / " + den_metric) +
+    const std::string op = ratio ? " / " : " - ";
+    const std::string what = (num_metric == den_metric ? c.metric + (ratio ? " ratio" : " difference")
+                                                       : num_metric + op + den_metric) +
                              (c.numerator_base.empty() && c.denominator_base.empty() ? "" : " (each relative to its base)");
     CheckOutcome out{c.name, c.type, what + " in " + range(c.expect_lo, c.expect_hi), "", false};
     auto num = select(table, c.numerator, num_metric, problem);
@@ -183,7 +188,9 @@ CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
       }
       return v / b[0]->metrics.at(metric);
     };
-    const double r = side(num[0], num_metric, c.numerator_base) / side(den[0], den_metric, c.denominator_base);
+    const double n = side(num[0], num_metric, c.numerator_base);
+    const double d = side(den[0], den_metric, c.denominator_base);
+    const double r = ratio ? n / d : n - d;
     if (!problem.empty()) {
       out.got = problem;
       return out;

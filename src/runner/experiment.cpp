@@ -127,9 +127,9 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   c.numerator_metric = t["numerator_metric"].value_or(c.metric);
   c.denominator_metric = t["denominator_metric"].value_or(c.metric);
   if (c.name.empty()) ctx.fail(key, "needs a name", &t);
-  static const std::vector<std::string> types = {"argmax", "argmin", "range", "ratio", "monotonic", "order"};
+  static const std::vector<std::string> types = {"argmax", "argmin", "range", "ratio", "difference", "monotonic", "order"};
   if (std::find(types.begin(), types.end(), c.type) == types.end())
-    ctx.fail(key + ".type", "'" + c.type + "' is not one of argmax | argmin | range | ratio | monotonic | order" +
+    ctx.fail(key + ".type", "'" + c.type + "' is not one of argmax | argmin | range | ratio | difference | monotonic | order" +
                                 core::didYouMean(c.type, types), t.get("type"));
   std::vector<std::string> metric_names;
   for (const auto& m : kind.metrics()) metric_names.push_back(m.name);
@@ -162,8 +162,8 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   c.denominator = parseWhere(t.get("denominator"), ctx, key + ".denominator");
   c.numerator_base = parseWhere(t.get("numerator_base"), ctx, key + ".numerator_base");
   c.denominator_base = parseWhere(t.get("denominator_base"), ctx, key + ".denominator_base");
-  if (c.type == "ratio" && (c.numerator.empty() || c.denominator.empty()))
-    ctx.fail(key, "a ratio check needs numerator = {...} and denominator = {...} point selections", &t);
+  if ((c.type == "ratio" || c.type == "difference") && (c.numerator.empty() || c.denominator.empty()))
+    ctx.fail(key, "a " + c.type + " check needs numerator = {...} and denominator = {...} point selections", &t);
   c.relative_to = parseWhere(t.get("relative_to"), ctx, key + ".relative_to");
   if (!c.relative_to.empty() || !c.relative_metric.empty()) {
     if (c.type != "argmax" && c.type != "argmin")

@@ -34,7 +34,7 @@ using Where = std::vector<std::pair<std::string, Value>>;
 
 struct CheckSpec {
   std::string name;
-  std::string type;    // argmax | argmin | range | ratio | monotonic | order
+  std::string type;    // argmax | argmin | range | ratio | difference | monotonic | order
   std::string metric;
   std::string axis;    // argmax, argmin, monotonic, order
   double expect_lo = 0, expect_hi = 0;        // numeric expectations

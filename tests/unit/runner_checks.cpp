@@ -282,6 +282,27 @@ TEST(RunnerChecks, RatioSelectionsMustEachPickOnePoint) {
   EXPECT_TRUE(contains(o.got, "must each select one point (got 2 and 1)")) << o.got;
 }
 
+TEST(RunnerChecks, DifferenceOfTwoSelectedPointsTakesANegativeReference) {
+  // A creature that rises 0.6 cm a cycle with its controller and sinks 0.007 cm without: the
+  // ratio is negative, the difference says what the comparison means.
+  Table t{{"case"}, {"rise"}, {}};
+  t.rows.push_back(row(0, {{"case", std::string("controller")}}, {{"rise", 0.006}}));
+  t.rows.push_back(row(1, {{"case", std::string("off")}}, {{"rise", -0.00007}}));
+  CheckSpec c = spec("difference", "rise");
+  c.numerator = {{"case", std::string("controller")}};
+  c.denominator = {{"case", std::string("off")}};
+  c.expect_lo = 0.001;
+  c.expect_hi = 1;
+  CheckOutcome o = runner::evaluateCheck(c, t);
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.got, "0.00607");
+  EXPECT_EQ(o.expected, "rise difference in [0.001, 1]");
+  std::swap(c.numerator, c.denominator);
+  o = runner::evaluateCheck(c, t);
+  EXPECT_FALSE(o.passed);
+  EXPECT_EQ(o.got, "-0.00607");
+}
+
 TEST(RunnerChecks, RatioOverZeroFails) {
   Table t{{"x"}, {"m"}, {}};
   t.rows.push_back(row(0, {{"x", 1.0}}, {{"m", 1.0}}));

@@ -573,6 +573,8 @@ TEST(RunnerExperimentError, MalformedChecks) {
   EXPECT_NE(m.find("needs expect = [low, high]"), std::string::npos) << m;
   m = errorOf(head + "type = \"range\"\nexpect = [2, 1]\n");
   EXPECT_NE(m.find("low is above high"), std::string::npos) << m;
+  m = errorOf(head + "type = \"difference\"\nexpect = [0, 1]\nnumerator = { overextension = 1.0 }\n");
+  EXPECT_NE(m.find("a difference check needs numerator = {...} and denominator = {...}"), std::string::npos) << m;
   m = errorOf(head + "type = \"range\"\nexpect = \"high\"\n");
   EXPECT_NE(m.find("check[0].expect: expected [low, high]"), std::string::npos) << m;
   m = errorOf(head + "type = \"ratio\"\nexpect = [0, 1]\nnumerator = { overextension = 1.0 }\n");
