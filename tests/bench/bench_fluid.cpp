@@ -61,8 +61,11 @@
 //   projection (fast direct)          9.8-10.3                   6.6-7.7
 //   advection (upwind2_rk2)           9.1                        5.2-6.0
 //   viscosity (iterative)             5.9-6.1                    4.2-4.7
-// Before the panels the 2-thread step took 25.6 (projection 13.9). The goal is met on two
-// threads (19.4-19.8 elapsed, a small margin), not on one core.
+// Before the panels the 2-thread step took 25.6 (projection 13.9). Again at 11:16 UTC on an idle
+// machine (load average 0.03, nothing stopped or running beside it), medians of 5, twice: 1 thread
+// 27.4 / 28.2, 2 threads 18.3 / 19.0 elapsed (CPU 36.6 / 38.1); at 10:36, between other jobs
+// stopped with SIGSTOP, 30.8 and 20.6-20.9. The goal is met on two threads (18.3-19.8 elapsed on
+// idle cores, a margin of 1-9%), not on one core.
 //
 // The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
 // fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is

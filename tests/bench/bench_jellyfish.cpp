@@ -14,7 +14,9 @@
 // 7.3-8.1 simulated s per elapsed s against 12.5-13.7 with one: the workers wait for a core.
 // 2026-11-25 (speed13; the swim is bitwise as before), load average 12-13, three repetitions:
 // 20.09-20.21 simulated s per CPU s at 100² (0.495-0.498 ms per step), 10.5-10.7 per elapsed s;
-// with two fluid threads 11.9-12.1 per CPU s, 6.3-6.5 per elapsed s. Profile (perf) of the 100²
+// with two fluid threads 11.9-12.1 per CPU s, 6.3-6.5 per elapsed s. After the per-thread FFT panels
+// and cache-aligned arrays (2026-11-25 11:16 UTC, idle machine, load average 0.03): 20.27-20.61
+// (median 20.51) at 100², five repetitions: the goal holds. Profile (perf) of the 100²
 // step: Richardson sweeps 10.5 %, semi-Lagrangian backtraces 20 %, sampling 9.5 %, pressure
 // transforms and Thomas 16 %, the IB's dense LU and its products (Eigen) about 14 %.
 // The bilinear kernel's rows (peskin4:0) are marginal at
