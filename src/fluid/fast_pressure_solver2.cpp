@@ -357,6 +357,7 @@ void FastPressureSolver2::forward_transform(const Array2& source, double scale, 
   // Z = FFT_{n/2}(z), and unpack E_k = (Z_k + conj Z_{h−k})/2, O_k = (Z_k − conj Z_{h−k})/2i,
   // V_k = E_k + e^{−2πik/n} O_k for k ≤ n/2, V_{n−k} = conj V_k.
   const int h = n / 2;
+  const int width = l1 - l0;
   auto source_row = [n, h](int t) { return t < h ? 2 * t : 2 * (n - 1 - t) + 1; };  // x row of v_t
   auto load = [&](int t, double* out) {
     const double* in = source.row(source_row(t));
@@ -377,37 +378,37 @@ void FastPressureSolver2::forward_transform(const Array2& source, double scale, 
   for (int k = 0; k <= h / 2; ++k) {
     // Rows k and h − k of Z give V_k, V_{h−k} and their mirrors V_{n−k}, V_{n−h+k}.
     const int k2 = (h - k) % h;  // Z_h = Z_0
-    const double* __restrict__ zr_a = z_re.row(k % h) - l0;  // indexed by lane
-    const double* __restrict__ zi_a = z_im.row(k % h) - l0;
-    const double* __restrict__ zr_b = z_re.row(k2) - l0;
-    const double* __restrict__ zi_b = z_im.row(k2) - l0;
+    const double* __restrict__ zr_a = z_re.row(k % h);  // panel column i holds lane l0 + i
+    const double* __restrict__ zi_a = z_im.row(k % h);
+    const double* __restrict__ zr_b = z_re.row(k2);
+    const double* __restrict__ zi_b = z_im.row(k2);
     const int ka = k, kb = h - k;  // the two V indices produced
     const double wa_c = twiddle_cos_[ka % h], wa_s = ka == h ? 0.0 : twiddle_sin_[ka % h];
     const double wb_c = kb == h ? -1.0 : twiddle_cos_[kb], wb_s = kb == h ? 0.0 : twiddle_sin_[kb];
     const double ca = shift_cos_[ka], sa = shift_sin_[ka], cna = shift_cos_[n - ka], sna = shift_sin_[n - ka];
     const double cb = shift_cos_[kb], sb = shift_sin_[kb], cnb = shift_cos_[n - kb], snb = shift_sin_[n - kb];
-    double* xa = work_.row(ka);  // rows kb and n − kb coincide when kb = h: no __restrict__
-    double* xna = ka == 0 ? nullptr : work_.row(n - ka);
-    double* xb = work_.row(kb);
-    double* xnb = work_.row(n - kb);
+    double* xa = work_.row(ka) + l0;  // rows kb and n − kb coincide when kb = h: no __restrict__
+    double* xna = ka == 0 ? nullptr : work_.row(n - ka) + l0;
+    double* xb = work_.row(kb) + l0;
+    double* xnb = work_.row(n - kb) + l0;
     const bool do_b = kb != ka;
-    for (int l = l0; l < l1; ++l) {
+    for (int i = 0; i < width; ++i) {
       // E_a = (Z_a + conj Z_b)/2, O_a = (Z_a − conj Z_b)/(2i); E_b, O_b likewise with a ↔ b.
-      const double ar = zr_a[l], ai = zi_a[l], br = zr_b[l], bi = zi_b[l];
+      const double ar = zr_a[i], ai = zi_a[i], br = zr_b[i], bi = zi_b[i];
       const double ea_r = 0.5 * (ar + br), ea_i = 0.5 * (ai - bi);
       const double oa_r = 0.5 * (ai + bi), oa_i = -0.5 * (ar - br);
       // V_a = E_a + e^{−2πi a/n} O_a, with e^{−iθ} = (cos θ, −sin θ).
       const double va_r = ea_r + (wa_c * oa_r + wa_s * oa_i);
       const double va_i = ea_i + (wa_c * oa_i - wa_s * oa_r);
-      xa[l] = ca * va_r + sa * va_i;
-      if (xna != nullptr) xna[l] = cna * va_r - sna * va_i;  // V_{n−a} = conj V_a
+      xa[i] = ca * va_r + sa * va_i;
+      if (xna != nullptr) xna[i] = cna * va_r - sna * va_i;  // V_{n−a} = conj V_a
       if (do_b) {
         const double eb_r = 0.5 * (br + ar), eb_i = 0.5 * (bi - ai);
         const double ob_r = 0.5 * (bi + ai), ob_i = -0.5 * (br - ar);
         const double vb_r = eb_r + (wb_c * ob_r + wb_s * ob_i);
         const double vb_i = eb_i + (wb_c * ob_i - wb_s * ob_r);
-        xb[l] = cb * vb_r + sb * vb_i;
-        xnb[l] = cnb * vb_r - snb * vb_i;
+        xb[i] = cb * vb_r + sb * vb_i;
+        xnb[i] = cnb * vb_r - snb * vb_i;
       }
     }
   }
@@ -438,28 +439,29 @@ void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1, FftP
   // the FFTs of its even and odd samples, and z = IFFT_h(E + iO)/h = v_{2j} + i v_{2j+1}.
   // Then x_{2t} = v_t, x_{2t+1} = v_{n−1−t}.
   const int h = n / 2;
+  const int width = l1 - l0;
   for (int k = 0; k < h; ++k) {
     const double cw = twiddle_cos_[k], sw = twiddle_sin_[k];
-    double* __restrict__ zr = panel.re.row(k) - l0;  // indexed by lane
-    double* __restrict__ zi = panel.im.row(k) - l0;
+    double* __restrict__ zr = panel.re.row(k);  // panel column i holds lane l0 + i
+    double* __restrict__ zi = panel.im.row(k);
     const double ca = shift_cos_[k], sa = shift_sin_[k];
     const double cb = shift_cos_[h - k], sb = shift_sin_[h - k];
-    const double* __restrict__ xa = work_.row(k);
-    const double* __restrict__ xna = k == 0 ? nullptr : work_.row(n - k);
-    const double* __restrict__ xb = work_.row(h - k);
-    const double* __restrict__ xnb = work_.row(n - (h - k));
-    for (int l = l0; l < l1; ++l) {
-      const double a_x = xa[l], a_nx = xna != nullptr ? xna[l] : 0.0;
+    const double* __restrict__ xa = work_.row(k) + l0;
+    const double* __restrict__ xna = k == 0 ? nullptr : work_.row(n - k) + l0;
+    const double* __restrict__ xb = work_.row(h - k) + l0;
+    const double* __restrict__ xnb = work_.row(n - (h - k)) + l0;
+    for (int i = 0; i < width; ++i) {
+      const double a_x = xa[i], a_nx = xna != nullptr ? xna[i] : 0.0;
       const double ar = a_x * ca + a_nx * sa;  // V_k
       const double ai = a_x * sa - a_nx * ca;
-      const double b_x = xb[l], b_nx = xnb[l];
+      const double b_x = xb[i], b_nx = xnb[i];
       const double br = b_x * cb + b_nx * sb;  // conj V_{h−k}
       const double bi = -(b_x * sb - b_nx * cb);
       const double er = 0.5 * (ar + br), ei = 0.5 * (ai + bi);
       const double dr = 0.5 * (ar - br), di = 0.5 * (ai - bi);
       const double or_ = cw * dr - sw * di, oi = cw * di + sw * dr;  // × e^{2πik/n}
-      zr[l] = er - oi;
-      zi[l] = ei + or_;
+      zr[i] = er - oi;
+      zi[i] = ei + or_;
     }
   }
   fft(true, panel);
@@ -469,13 +471,13 @@ void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1, FftP
   const double inv_h = 1.0 / h;
   auto target_row = [n, h](int t) { return t < h ? 2 * t : 2 * (n - 1 - t) + 1; };  // x row of v_t
   for (int j = 0; j < h; ++j) {
-    const double* zr = z_re.row(j) - l0;  // indexed by lane
-    const double* zi = z_im.row(j) - l0;
-    double* even = target.row(target_row(2 * j));
-    double* odd = target.row(target_row(2 * j + 1));
-    for (int l = l0; l < l1; ++l) {
-      even[l] = zr[l] * inv_h;
-      odd[l] = zi[l] * inv_h;
+    const double* zr = z_re.row(j);
+    const double* zi = z_im.row(j);
+    double* even = target.row(target_row(2 * j)) + l0;
+    double* odd = target.row(target_row(2 * j + 1)) + l0;
+    for (int i = 0; i < width; ++i) {
+      even[i] = zr[i] * inv_h;
+      odd[i] = zi[i] * inv_h;
     }
   }
 }
