@@ -46,34 +46,23 @@ bool DiffusionBlock2::prepare(FaceAxis face_axis, int nx, int ny, const Walls& n
     for (int i = i_begin; i < i_end; ++i) {
       double d = 0.0;
       double rhs = 0.0;
+      // A tangential neighbour: a face inside, or the wall's ghost beyond the last one.
+      auto tangential = [&](bool inside, const Wall& wall) {
+        if (inside) {
+          d += 1.0;
+        } else {
+          d += diffusion_ghost_count(wall);
+          rhs += ghost_rhs(wall);
+        }
+      };
       if (axis == FaceAxis::x) {
         d += (i > 0 ? 1.0 : 0.0) + (i < nx - 1 ? 1.0 : 0.0);  // open walls: ∂u/∂n = 0 beyond
-        if (j > 0)
-          d += 1.0;
-        else {
-          d += diffusion_ghost_count(walls.bottom);
-          rhs += ghost_rhs(walls.bottom);
-        }
-        if (j < ny - 1)
-          d += 1.0;
-        else {
-          d += diffusion_ghost_count(walls.top);
-          rhs += ghost_rhs(walls.top);
-        }
+        tangential(j > 0, walls.bottom);
+        tangential(j < ny - 1, walls.top);
       } else {
         d += (j > 0 ? 1.0 : 0.0) + (j < ny - 1 ? 1.0 : 0.0);
-        if (i > 0)
-          d += 1.0;
-        else {
-          d += diffusion_ghost_count(walls.left);
-          rhs += ghost_rhs(walls.left);
-        }
-        if (i < nx - 1)
-          d += 1.0;
-        else {
-          d += diffusion_ghost_count(walls.right);
-          rhs += ghost_rhs(walls.right);
-        }
+        tangential(i > 0, walls.left);
+        tangential(i < nx - 1, walls.right);
       }
       count(i, j) = d;
       wall_rhs(i, j) = rhs;
