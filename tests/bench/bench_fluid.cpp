@@ -138,21 +138,18 @@ void report(benchmark::State& state, int cells, double cpu_total, double wall_to
       wall_total * 1e9 / (static_cast<double>(cells) * cells * static_cast<double>(state.iterations()));
 }
 
-// Manual time = CPU time of all threads; the counters give it per cell (ns_per_cell) and the
-// elapsed time per cell (ns_per_cell_wall), which is what threads shorten.
-// With threads_arg, the benchmark's second argument is FluidParams::threads.
-void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverType pressure, bool threads_arg = true,
-               ViscositySolverType viscosity = ViscositySolverType::iterative) {
-  const int cells = static_cast<int>(state.range(0));
-  const int threads = threads_arg ? static_cast<int>(state.range(1)) : 1;
-  auto solver = warmed_up(scene(cells, scheme, pressure, threads, viscosity));
+// Runs body() once per benchmark iteration after an untimed prepare(). Manual time = CPU time of
+// all threads; the counters give it per cell (ns_per_cell) and the elapsed time per cell
+// (ns_per_cell_wall), which is what threads shorten.
+template <class Prepare, class Body>
+void time_per_cell(benchmark::State& state, int cells, Prepare&& prepare, Body&& body) {
   double cpu_total = 0.0;
   double wall_total = 0.0;
   for (auto _ : state) {
+    prepare();
     const double cpu0 = cpu_seconds();
     const double wall0 = wall_seconds();
-    FluidStepReport r = solver->step();
-    benchmark::DoNotOptimize(r);
+    body();
     const double wall = wall_seconds() - wall0;
     const double cpu = cpu_seconds() - cpu0;
     state.SetIterationTime(cpu);
@@ -160,6 +157,19 @@ void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverTy
     wall_total += wall;
   }
   report(state, cells, cpu_total, wall_total);
+}
+
+// One full step per iteration, timed by time_per_cell.
+// With threads_arg, the benchmark's second argument is FluidParams::threads.
+void full_step(benchmark::State& state, AdvectionScheme scheme, PressureSolverType pressure, bool threads_arg = true,
+               ViscositySolverType viscosity = ViscositySolverType::iterative) {
+  const int cells = static_cast<int>(state.range(0));
+  const int threads = threads_arg ? static_cast<int>(state.range(1)) : 1;
+  auto solver = warmed_up(scene(cells, scheme, pressure, threads, viscosity));
+  time_per_cell(state, cells, [] {}, [&] {
+    FluidStepReport r = solver->step();
+    benchmark::DoNotOptimize(r);
+  });
   state.counters["threads"] = threads;
 }
 
@@ -187,13 +197,8 @@ void stage_only(benchmark::State& state, Stage stage, const StageSetup& setup) {
   if (stage != Stage::advection) solver->advect_velocity(context);
   if (stage == Stage::pressure) solver->apply_viscosity(context);
   const MacGrid2 before = solver->grid();
-  double cpu_total = 0.0;
-  double wall_total = 0.0;
   int iterations = 0;
-  for (auto _ : state) {
-    solver->grid() = before;
-    const double cpu0 = cpu_seconds();
-    const double wall0 = wall_seconds();
+  time_per_cell(state, cells, [&] { solver->grid() = before; }, [&] {
     if (stage == Stage::advection) {
       solver->advect_velocity(context);
     } else if (stage == Stage::viscosity) {
@@ -201,13 +206,7 @@ void stage_only(benchmark::State& state, Stage stage, const StageSetup& setup) {
     } else {
       iterations = solver->project(context).iterations;
     }
-    const double wall = wall_seconds() - wall0;
-    const double cpu = cpu_seconds() - cpu0;
-    state.SetIterationTime(cpu);
-    cpu_total += cpu;
-    wall_total += wall;
-  }
-  report(state, cells, cpu_total, wall_total);
+  });
   state.counters["iterations"] = iterations;
 }
 void BM_Advection_SemiLagrangian(benchmark::State& state) {
