@@ -264,16 +264,9 @@ double minimum(const std::vector<double>& values) { return *std::min_element(val
       ->UseManualTime()               \
       ->Unit(benchmark::kMicrosecond) \
       ->ComputeStatistics("min", minimum)
-// Stages alone at 1 and 2 threads.
-#define CL_FLUID_STAGE_BENCH(name)              \
-  BENCHMARK(name)                               \
-      ->ArgNames({"cells", "threads"})          \
-      ->ArgsProduct({{64, 100, 128, 256, 512}, {1, 2}}) \
-      ->UseManualTime()                         \
-      ->Unit(benchmark::kMicrosecond)           \
-      ->ComputeStatistics("min", minimum)
-// Full steps at 1 and 2 threads (FluidParams::threads; the results are bitwise the same).
-#define CL_FLUID_STEP_BENCH(name)                                                        \
+// Full steps and stages alone at 1 and 2 threads (FluidParams::threads; the results are bitwise
+// the same).
+#define CL_FLUID_THREADS_BENCH(name)                                                     \
   BENCHMARK(name)                                                                        \
       ->ArgNames({"cells", "threads"})                                                   \
       ->ArgsProduct({{64, 100, 128, 256, 512}, {1, 2}})                                  \
@@ -281,20 +274,20 @@ double minimum(const std::vector<double>& values) { return *std::min_element(val
       ->Unit(benchmark::kMicrosecond)                                                    \
       ->ComputeStatistics("min", minimum)
 
-CL_FLUID_STEP_BENCH(BM_FluidStep_SemiLagrangian_FastPressure);
-CL_FLUID_STEP_BENCH(BM_FluidStep_MacCormack_FastPressure);
-CL_FLUID_STEP_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure);
-CL_FLUID_STEP_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure_FastViscosity);
+CL_FLUID_THREADS_BENCH(BM_FluidStep_SemiLagrangian_FastPressure);
+CL_FLUID_THREADS_BENCH(BM_FluidStep_MacCormack_FastPressure);
+CL_FLUID_THREADS_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure);
+CL_FLUID_THREADS_BENCH(BM_FluidStep_Upwind2Rk2_FastPressure_FastViscosity);
 CL_FLUID_BENCH(BM_FluidStep_SemiLagrangian_Pcg);
-CL_FLUID_STAGE_BENCH(BM_Advection_SemiLagrangian);
-CL_FLUID_STAGE_BENCH(BM_Advection_MacCormack);
-CL_FLUID_STAGE_BENCH(BM_Advection_Upwind2Rk2);
-CL_FLUID_STAGE_BENCH(BM_Viscosity);
-CL_FLUID_STAGE_BENCH(BM_Viscosity_FastDirect);
-CL_FLUID_STAGE_BENCH(BM_Viscosity_Viscous);
-CL_FLUID_STAGE_BENCH(BM_Viscosity_Viscous_FastDirect);
-CL_FLUID_STAGE_BENCH(BM_Pressure_FastDirect);
-CL_FLUID_STAGE_BENCH(BM_Pressure_Pcg);
+CL_FLUID_THREADS_BENCH(BM_Advection_SemiLagrangian);
+CL_FLUID_THREADS_BENCH(BM_Advection_MacCormack);
+CL_FLUID_THREADS_BENCH(BM_Advection_Upwind2Rk2);
+CL_FLUID_THREADS_BENCH(BM_Viscosity);
+CL_FLUID_THREADS_BENCH(BM_Viscosity_FastDirect);
+CL_FLUID_THREADS_BENCH(BM_Viscosity_Viscous);
+CL_FLUID_THREADS_BENCH(BM_Viscosity_Viscous_FastDirect);
+CL_FLUID_THREADS_BENCH(BM_Pressure_FastDirect);
+CL_FLUID_THREADS_BENCH(BM_Pressure_Pcg);
 
 }  // namespace
 }  // namespace creaturelab::fluid
