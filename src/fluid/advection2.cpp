@@ -181,7 +181,7 @@ void SemiLagrangianAdvection2::advect_velocity(const MacGrid2& grid, const Walls
         const RowScratch s = row_scratch(scratch_, part, row);
         semi_lagrangian_rows<FaceAxis::y>(U, V, V, c, vb, j0, j1, v_out, s.xs, s.ys);
       });
-  zero_solid_normal_faces(walls, u_out, v_out);
+  set_solid_normal_faces(walls, u_out, v_out);
 }
 
 void MacCormackAdvection2::advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out,
@@ -232,7 +232,7 @@ void MacCormackAdvection2::advect_velocity(const MacGrid2& grid, const Walls& wa
         maccormack_backward_rows<FaceAxis::y>(U, V, v_hat_, grid.v_m_per_s, v_lo_, v_hi_, c, vb, j0, j1, v_out, s.xs,
                                               s.ys, s.extra);
       });
-  zero_solid_normal_faces(walls, u_out, v_out);
+  set_solid_normal_faces(walls, u_out, v_out);
 }
 
 std::unique_ptr<AdvectionSolver2> make_advection_solver(AdvectionScheme scheme) {

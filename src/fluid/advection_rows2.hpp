@@ -33,18 +33,19 @@ void for_row_pieces(WorkerPool* workers, const FaceBlock& ub, const FaceBlock& v
   });
 }
 
-// u·n = 0 on the solid walls' faces of a result (u (nx + 1) × ny, v nx × (ny + 1)).
-inline void zero_solid_normal_faces(const Walls& walls, Array2& u, Array2& v) {
+// The solid walls' faces of a result (u (nx + 1) × ny, v nx × (ny + 1)): u·n = 0, or an inflow
+// wall's speed.
+inline void set_solid_normal_faces(const Walls& walls, Array2& u, Array2& v) {
   const int nx = v.nx();
   const int ny = u.ny();
   if (is_solid(walls.left)) {
-    for (int j = 0; j < ny; ++j) u(0, j) = 0.0;
+    for (int j = 0; j < ny; ++j) u(0, j) = solid_wall_normal_velocity(walls.left, false);
   }
   if (is_solid(walls.right)) {
-    for (int j = 0; j < ny; ++j) u(nx, j) = 0.0;
+    for (int j = 0; j < ny; ++j) u(nx, j) = solid_wall_normal_velocity(walls.right, true);
   }
-  if (is_solid(walls.bottom)) std::fill(v.row(0), v.row(0) + nx, 0.0);
-  if (is_solid(walls.top)) std::fill(v.row(ny), v.row(ny) + nx, 0.0);
+  if (is_solid(walls.bottom)) std::fill(v.row(0), v.row(0) + nx, solid_wall_normal_velocity(walls.bottom, false));
+  if (is_solid(walls.top)) std::fill(v.row(ny), v.row(ny) + nx, solid_wall_normal_velocity(walls.top, true));
 }
 
 }  // namespace creaturelab::fluid

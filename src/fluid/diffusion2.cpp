@@ -139,8 +139,16 @@ LinearSolveReport DiffusionSolver2::diffuse_velocity(MacGrid2& grid, const Walls
                                                      double kinematic_viscosity_m2_per_s, double dt_s) {
   const double alpha = kinematic_viscosity_m2_per_s * dt_s / (grid.dx_m * grid.dx_m);
   if (alpha == 0.0) return {};
+  // The solvers take every face off the unknown block as zero; an inflow wall's speed enters
+  // through the block's wall terms instead (diffusion_operator2.hpp). So its faces are cleared
+  // for the solve and set again after it.
+  Walls cleared = walls;
+  for (Wall* wall : {&cleared.left, &cleared.right, &cleared.bottom, &cleared.top}) wall->inflow_m_per_s = 0.0;
+  const bool any_inflow = walls.any_inflow();
+  if (any_inflow) enforce_wall_normal_velocity(grid, cleared);
   const LinearSolveReport ru = diffuse_component(FaceAxis::x, grid.u_m_per_s, walls, alpha);
   const LinearSolveReport rv = diffuse_component(FaceAxis::y, grid.v_m_per_s, walls, alpha);
+  if (any_inflow) enforce_wall_normal_velocity(grid, walls);
   return {std::max(ru.iterations, rv.iterations), std::max(ru.relative_residual, rv.relative_residual),
           ru.converged && rv.converged};
 }

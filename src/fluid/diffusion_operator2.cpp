@@ -8,12 +8,14 @@ namespace creaturelab::fluid {
 namespace {
 
 double ghost_rhs(const Wall& wall) {
-  return wall.type == WallType::moving ? 2.0 * wall.tangential_velocity_m_per_s : 0.0;
+  return (wall.type == WallType::moving || wall.type == WallType::inflow) ? 2.0 * wall.tangential_velocity_m_per_s
+                                                                          : 0.0;
 }
 
 bool same_walls(const Walls& a, const Walls& b) {
   auto same = [](const Wall& p, const Wall& q) {
-    return p.type == q.type && p.tangential_velocity_m_per_s == q.tangential_velocity_m_per_s;
+    return p.type == q.type && p.tangential_velocity_m_per_s == q.tangential_velocity_m_per_s &&
+           p.inflow_m_per_s == q.inflow_m_per_s;
   };
   return same(a.left, b.left) && same(a.right, b.right) && same(a.bottom, b.bottom) && same(a.top, b.top);
 }
@@ -21,7 +23,8 @@ bool same_walls(const Walls& a, const Walls& b) {
 }  // namespace
 
 double diffusion_ghost_count(const Wall& wall) {
-  return (wall.type == WallType::no_slip || wall.type == WallType::moving) ? 2.0 : 0.0;
+  return (wall.type == WallType::no_slip || wall.type == WallType::moving || wall.type == WallType::inflow) ? 2.0
+                                                                                                         : 0.0;
 }
 
 bool DiffusionBlock2::prepare(FaceAxis face_axis, int nx, int ny, const Walls& new_walls) {
@@ -55,12 +58,21 @@ bool DiffusionBlock2::prepare(FaceAxis face_axis, int nx, int ny, const Walls& n
           rhs += ghost_rhs(wall);
         }
       };
+      // A neighbour along the component: an unknown face, a solid wall's face (known: zero or an
+      // inflow wall's speed) or none beyond an open wall (∂u/∂n = 0).
+      auto along = [&](bool exists, bool is_wall_face, const Wall& wall, bool high_wall) {
+        if (!exists) return;
+        d += 1.0;
+        if (is_wall_face) rhs += solid_wall_normal_velocity(wall, high_wall);
+      };
       if (axis == FaceAxis::x) {
-        d += (i > 0 ? 1.0 : 0.0) + (i < nx - 1 ? 1.0 : 0.0);  // open walls: ∂u/∂n = 0 beyond
+        along(i > 0, i - 1 == 0 && is_solid(walls.left), walls.left, false);
+        along(i < nx - 1, i + 1 == nx - 1 && is_solid(walls.right), walls.right, true);
         tangential(j > 0, walls.bottom);
         tangential(j < ny - 1, walls.top);
       } else {
-        d += (j > 0 ? 1.0 : 0.0) + (j < ny - 1 ? 1.0 : 0.0);
+        along(j > 0, j - 1 == 0 && is_solid(walls.bottom), walls.bottom, false);
+        along(j < ny - 1, j + 1 == ny - 1 && is_solid(walls.top), walls.top, true);
         tangential(i > 0, walls.left);
         tangential(i < nx - 1, walls.right);
       }

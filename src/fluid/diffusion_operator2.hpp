@@ -1,10 +1,11 @@
 #pragma once
 // The matrix of the implicit viscosity step for one velocity component (diffusion2.hpp):
-//   (1 + α d) x − α Σ_{unknown neighbours} x_n = x^n + α Σ_{moving-wall ghosts} 2 U_wall,
+//   (1 + α d) x − α Σ_{unknown neighbours} x_n = x^n + α (Σ_{moving/inflow ghosts} 2 U_wall
+//                                                     + Σ_{inflow wall faces} U_in),
 // α = ν dt / dx², on the block of unknown faces. d counts neighbours: 1 for each face
-// neighbour (unknown, or a solid wall's normal face, which is zero), 0 for a free-slip/open
-// ghost (ghost = x) and 2 for a no-slip/moving ghost (ghost = 2U − x). Shared by the iterative
-// and the fast direct solvers.
+// neighbour (unknown, or a solid wall's normal face, which is zero or an inflow wall's U_in), 0
+// for a free-slip/open ghost (ghost = x) and 2 for a no-slip/moving/inflow ghost (ghost = 2U − x).
+// Shared by the iterative and the fast direct solvers.
 
 #include "fluid/array2.hpp"
 #include "fluid/fluid_params.hpp"
@@ -20,7 +21,7 @@ struct DiffusionBlock2 {
   Walls walls{};
   int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;  // the unknown block
   bool has_wall_rhs = false;
-  Array2 count, wall_rhs;  // d and Σ 2 U_wall, on the component's array (zero off the block)
+  Array2 count, wall_rhs;  // d and the wall terms, on the component's array (zero off the block)
 
   /// (Re)builds the block for a component array of nx × ny faces, unless it is already built
   /// for this shape and these walls. Returns true when it was rebuilt.
@@ -29,7 +30,8 @@ struct DiffusionBlock2 {
 
 /// y = A x on rows [jb, je) of the unknown block, and row_dots[j] = the x·y of row j. Entries
 /// outside the block are never written. Neighbours outside the block are solid-wall normal
-/// faces (zero in x) or lie beyond the array (ghosts, accounted for in `count`).
+/// faces (zero in x; an inflow wall's value is in wall_rhs) or lie beyond the array (ghosts,
+/// accounted for in `count`).
 void apply_diffusion_rows(const DiffusionBlock2& block, int jb, int je, double alpha, const Array2& x, Array2& y,
                           double* row_dots);
 

@@ -89,12 +89,23 @@ std::string FluidParams::validate() const {
   for (const auto& [wall, name] : walls_named) {
     const std::string key = "walls." + std::string(name) + ".tangential_velocity_m_per_s";
     problems.require_finite(wall->tangential_velocity_m_per_s, key, "m/s");
-    if (wall->type != WallType::moving && wall->tangential_velocity_m_per_s != 0.0 &&
+    if (wall->type != WallType::moving && wall->type != WallType::inflow && wall->tangential_velocity_m_per_s != 0.0 &&
         std::isfinite(wall->tangential_velocity_m_per_s)) {
       problems.add(key + " = " + show(wall->tangential_velocity_m_per_s) + " has no effect on a " +
                    std::string(to_string(wall->type)) + " wall; set walls." + std::string(name) +
                    ".type = moving or the velocity to 0");
     }
+    const std::string inflow_key = "walls." + std::string(name) + ".inflow_m_per_s";
+    problems.require_finite(wall->inflow_m_per_s, inflow_key, "m/s");
+    if (wall->type != WallType::inflow && wall->inflow_m_per_s != 0.0 && std::isfinite(wall->inflow_m_per_s)) {
+      problems.add(inflow_key + " = " + show(wall->inflow_m_per_s) + " has no effect on a " +
+                   std::string(to_string(wall->type)) + " wall; set walls." + std::string(name) +
+                   ".type = inflow or the speed to 0");
+    }
+  }
+  if (walls.any_inflow() && walls.closed()) {
+    problems.add("an inflow wall needs an open wall for the fluid to leave (with every other wall closed the "
+                 "projection has no solution)");
   }
   if (!(std::isfinite(pressure_tolerance) && pressure_tolerance > 0.0 && pressure_tolerance < 1.0)) {
     problems.add("pressure_tolerance must lie between 0 and 1, exclusive (got " + show(pressure_tolerance) +
@@ -143,6 +154,8 @@ std::string_view to_string(WallType type) {
       return "moving";
     case WallType::open:
       return "open";
+    case WallType::inflow:
+      return "inflow";
   }
   return "unknown";
 }
@@ -190,7 +203,7 @@ std::string_view to_string(ViscositySolverType type) {
 }
 
 std::optional<WallType> parse_wall_type(std::string_view name) {
-  return parse(name, std::array{WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open});
+  return parse(name, std::array{WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open, WallType::inflow});
 }
 std::optional<AdvectionScheme> parse_advection_scheme(std::string_view name) {
   return parse(name, std::array{AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack, AdvectionScheme::upwind2_rk2});

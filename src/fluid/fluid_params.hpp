@@ -15,14 +15,17 @@ enum class WallType {
   free_slip,  ///< no flow through, no shear: u·n = 0, ∂u_t/∂n = 0 (the jellyfish paper's, §3.2)
   no_slip,    ///< no flow through, fluid sticks: u = 0
   moving,     ///< no flow through, fluid moves with the wall: u·n = 0, u_t = tangential velocity
-  open        ///< p = 0 on the wall, ∂u/∂n = 0; fluid may leave or enter (outflow condition)
+  open,       ///< p = 0 on the wall, ∂u/∂n = 0; fluid may leave or enter (outflow condition)
+  inflow      ///< a prescribed flux: fluid enters at inflow_m_per_s normal to the wall, u_t = tangential
+              ///< velocity; the projection keeps it (Neumann for the pressure, like a solid wall)
 };
 
 /// One wall. The tangential direction is +x for the bottom and top walls and +y for the left
 /// and right walls.
 struct Wall {
   WallType type = WallType::free_slip;
-  double tangential_velocity_m_per_s = 0.0;  ///< used only by WallType::moving
+  double tangential_velocity_m_per_s = 0.0;  ///< used only by WallType::moving and WallType::inflow
+  double inflow_m_per_s = 0.0;               ///< speed into the domain; used only by WallType::inflow
 };
 
 /// The four walls of the domain [0, width] × [0, height].
@@ -31,10 +34,15 @@ struct Walls {
   Wall right{};
   Wall bottom{};
   Wall top{};
-  /// True when no wall is open: the pressure is then defined up to a constant only.
+  /// True when no wall is open: the pressure is then defined up to a constant only (an inflow wall
+  /// then has nowhere to leave: validate() refuses it).
   bool closed() const {
     return left.type != WallType::open && right.type != WallType::open && bottom.type != WallType::open &&
            top.type != WallType::open;
+  }
+  bool any_inflow() const {
+    return left.type == WallType::inflow || right.type == WallType::inflow || bottom.type == WallType::inflow ||
+           top.type == WallType::inflow;
   }
 };
 

@@ -68,6 +68,7 @@ FluidSolver2::FluidSolver2(const FluidParams& params)
   advection_->set_workers(workers_.get());
   diffusion_->set_workers(workers_.get());
   pressure_->set_workers(workers_.get());
+  enforce_wall_normal_velocity(grid_, walls());  // an inflow wall's faces carry its speed from the start
 }
 
 double FluidSolver2::next_time_step_s() const {

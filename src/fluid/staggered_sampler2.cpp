@@ -40,14 +40,15 @@ void StaggeredComponent2::finish(const Walls& walls) {
     const int nx = padded_.nx() - 1;
     const int ny = padded_.ny() - 2;
     for (int j = 0; j < ny; ++j) {
-      if (is_solid(walls.left)) interior_row(j)[0] = 0.0;
-      if (is_solid(walls.right)) interior_row(j)[nx] = 0.0;
+      if (is_solid(walls.left)) interior_row(j)[0] = solid_wall_normal_velocity(walls.left, false);
+      if (is_solid(walls.right)) interior_row(j)[nx] = solid_wall_normal_velocity(walls.right, true);
     }
   } else {
     const int nx = padded_.nx() - 2;
     const int ny = padded_.ny() - 1;
-    if (is_solid(walls.bottom)) std::fill(interior_row(0), interior_row(0) + nx, 0.0);
-    if (is_solid(walls.top)) std::fill(interior_row(ny), interior_row(ny) + nx, 0.0);
+    if (is_solid(walls.bottom))
+      std::fill(interior_row(0), interior_row(0) + nx, solid_wall_normal_velocity(walls.bottom, false));
+    if (is_solid(walls.top)) std::fill(interior_row(ny), interior_row(ny) + nx, solid_wall_normal_velocity(walls.top, true));
   }
   fill_ghosts(walls);
 }

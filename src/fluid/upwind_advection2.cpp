@@ -109,10 +109,15 @@ void GhostedComponent2::prepare(FaceAxis axis, int nx, int ny) {
 }
 
 void GhostedComponent2::finish(const Walls& walls) {
-  // Normal ghosts: odd about a solid wall, whose face is zero (u·n = 0); constant across an
-  // open one (∂u/∂n = 0, boundary2.hpp).
+  // Normal ghosts: odd about a solid wall's face value (zero, u·n = 0, or an inflow wall's speed);
+  // constant across an open one (∂u/∂n = 0, boundary2.hpp).
   auto normal = [](const Wall& wall, double wall_value, double inside1, double inside2, double& ghost1,
                    double& ghost2) {
+    if (wall.type == WallType::inflow) {
+      ghost1 = 2.0 * wall_value - inside1;
+      ghost2 = 2.0 * wall_value - inside2;
+      return;
+    }
     ghost1 = is_solid(wall) ? -inside1 : wall_value;
     ghost2 = is_solid(wall) ? -inside2 : wall_value;
   };
@@ -120,8 +125,8 @@ void GhostedComponent2::finish(const Walls& walls) {
   if (axis_ == FaceAxis::x) {
     for (int j = 0; j < ny_; ++j) {
       double* r = row(j);
-      if (is_solid(walls.left)) r[0] = 0.0;
-      if (is_solid(walls.right)) r[n] = 0.0;
+      if (is_solid(walls.left)) r[0] = solid_wall_normal_velocity(walls.left, false);
+      if (is_solid(walls.right)) r[n] = solid_wall_normal_velocity(walls.right, true);
       normal(walls.left, r[0], r[1], r[2], r[-1], r[-2]);
       normal(walls.right, r[n], r[n - 1], r[n - 2], r[n + 1], r[n + 2]);
     }
@@ -133,8 +138,8 @@ void GhostedComponent2::finish(const Walls& walls) {
       row(ny_ + 1)[i] = tangential_ghost(walls.top, row(ny_ - 2)[i]);
     }
   } else {
-    if (is_solid(walls.bottom)) std::fill(row(0), row(0) + nx_, 0.0);
-    if (is_solid(walls.top)) std::fill(row(n), row(n) + nx_, 0.0);
+    if (is_solid(walls.bottom)) std::fill(row(0), row(0) + nx_, solid_wall_normal_velocity(walls.bottom, false));
+    if (is_solid(walls.top)) std::fill(row(n), row(n) + nx_, solid_wall_normal_velocity(walls.top, true));
     for (int i = 0; i < nx_; ++i) {
       normal(walls.bottom, row(0)[i], row(1)[i], row(2)[i], row(-1)[i], row(-2)[i]);
       normal(walls.top, row(n)[i], row(n - 1)[i], row(n - 2)[i], row(n + 1)[i], row(n + 2)[i]);
@@ -200,7 +205,7 @@ void Upwind2Rk2Advection2::advect_velocity(const MacGrid2& grid, const Walls& wa
       [&](int j0, int j1, int part) {
         v_stage_rows<true>(u1_, v1_, v0_, c, vb, j0, j1, flux_rows(scratch_, part, length), array_row, &v_out);
       });
-  zero_solid_normal_faces(walls, u_out, v_out);
+  set_solid_normal_faces(walls, u_out, v_out);
 }
 
 }  // namespace creaturelab::fluid

@@ -7,4 +7,5 @@ creaturelab_test(fluid_unit_tests unit
     ${CMAKE_CURRENT_LIST_DIR}/fluid_solver_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fluid_threads_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fluid_fast_diffusion_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/fluid_inflow_test.cpp
   LIBS cl_fluid)
