@@ -1,14 +1,19 @@
 #pragma once
-// Fluid boundaries of the creature experiments that the fluid's wall types do not give (issue 16;
-// Lentine et al. 2010 §4.3 Fig. 8, §7.1; seeds/creature-control-lentine-2010.txt):
-//  - a steady uniform stream from the left (Fig. 8): the u faces of the first `stream_columns`
-//    columns (the left wall's included) are set to the stream speed and the v faces of those cells
-//    to zero before each advection, a Dirichlet inflow held over a band; with the right wall open
-//    the stream leaves there. The paper does not say how its stream was made.
-//  - a source at the floor (§7.1, "a source term at the floor forcing fluid flow upwards"): the
-//    projection here cannot hold a mass source, so the floor is an open wall whose v faces and
-//    those of the bottom `source_rows` rows are held at the source speed (an inflow through the
-//    floor, the same flux); with the top open the injected fluid leaves there.
+// Fluid boundaries of the creature experiments (issue 16; Lentine et al. 2010 §4.3 Fig. 8, §7.1;
+// seeds/creature-control-lentine-2010.txt). The paper says neither how its stream was made nor how
+// its source was. Two ways here:
+//  - an inflow wall (fluid::WallType::inflow, boundary2.hpp): the left wall or the floor is a
+//    wall through which fluid enters at the stream or source speed, kept by the projection, so the
+//    flux is exact at any step. The floor source's default since the band below lost flux.
+//  - a held band: the normal faces of the first `stream_columns` columns (left wall included) or
+//    `source_rows` rows (floor included) are set to the speed, and the stream band's tangential
+//    faces to zero, before and after each stage, with the wall open. The projection then moves the
+//    band again (p = 0 on the open wall), so the stream it drives falls short of the speed by an
+//    amount that shrinks with the step and the band's depth: with the flyer's still wings in a
+//    0.5 m/s floor source (128², 1/120 to 1/480 s) the upward force grew 31% (3 rows), 11% (12) and
+//    7% (30) (flyer_convergence.toml). Kept for block_flow's stream (Fig. 8), whose force settles
+//    (360, 348, 353 N at 1, 2, 4 coupled steps a frame), and for comparison.
+// With the right wall or the top open, the fluid leaves there.
 #include <string>
 
 #include "fluid/fluid_params.hpp"
@@ -18,15 +23,15 @@ namespace creaturelab::coupling {
 
 struct InflowParams {
   double stream_m_per_s = 0.0;  // rightward stream speed (0: none)
-  int stream_columns = 0;       // width of the inflow band, cells
+  int stream_columns = 0;       // width of the held band, cells (0: none, with an inflow left wall)
   double source_m_per_s = 0.0;  // upward speed of the floor source (0: none)
-  int source_rows = 0;          // height of the source band, cells
+  int source_rows = 0;          // height of the held band, cells (0: none, with an inflow floor)
 };
 
 // "" when usable with these walls, else what is wrong.
 std::string validate(const InflowParams& p, const fluid::FluidParams& fluid);
 
-// The stage: sets the band velocities (no-op when both speeds are 0).
+// The stage: sets the held bands' velocities (no-op without bands).
 void applyInflow(fluid::MacGrid2& grid, const InflowParams& p);
 
 // A uniform stream everywhere (the initial condition of Fig. 8; divergence free).

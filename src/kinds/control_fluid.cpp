@@ -25,6 +25,9 @@ fluid::FluidParams fluidParams(const ParamReader& r) {
   f.walls.right.type = wall(r, "wall_right");
   f.walls.bottom.type = wall(r, "wall_bottom");
   f.walls.top.type = wall(r, "wall_top");
+  // An inflow wall enters at the stream's or the source's speed (coupling/inflow.hpp).
+  if (f.walls.left.type == fluid::WallType::inflow) f.walls.left.inflow_m_per_s = r.real("stream_m_per_s");
+  if (f.walls.bottom.type == fluid::WallType::inflow) f.walls.bottom.inflow_m_per_s = r.real("source_m_per_s");
   return f;
 }
 
@@ -118,15 +121,17 @@ ControlFluidKind::ControlFluidKind() {
       choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack", "upwind2_rk2"},
              "velocity advection scheme (upwind2_rk2: explicit, its CFL bound checked each step)"),
       integer("fluid_threads", 1, 1, 16, "threads inside each fluid step (bitwise the same for any count)"),
-      choice("wall_left", "open", {"free_slip", "no_slip", "open"}, "left wall (open: the stream enters there)"),
+      choice("wall_left", "open", {"free_slip", "no_slip", "open", "inflow"},
+             "left wall (open: the stream's band enters there; inflow: the stream enters through it)"),
       choice("wall_right", "open", {"free_slip", "no_slip", "open"}, "right wall (open: the stream leaves)"),
-      choice("wall_bottom", "free_slip", {"free_slip", "no_slip", "open"}, "floor"),
+      choice("wall_bottom", "free_slip", {"free_slip", "no_slip", "open", "inflow"},
+             "floor (inflow: the source enters through it at source_m_per_s, a flux the projection keeps)"),
       choice("wall_top", "free_slip", {"free_slip", "no_slip", "open"}, "top"),
       real("blowup_speed_m_per_s", 50.0, "m/s", 1e-6, 1e6, "a fluid faster than this stops the run (exit 3)"),
       real("stream_m_per_s", 1.0, "m/s", -1e3, 1e3, "rightward stream held in the inflow band (Fig. 8); 0: none"),
-      integer("stream_columns", 3, 0, 1000, "width of the inflow band, cells"),
+      integer("stream_columns", 3, 0, 1000, "width of the held inflow band, cells (0: none, with wall_left = inflow)"),
       real("source_m_per_s", 0.0, "m/s", -1e3, 1e3, "upward floor source (§7.1); 0: none"),
-      integer("source_rows", 0, 0, 1000, "height of the source band, cells"),
+      integer("source_rows", 0, 0, 1000, "height of the held source band, cells (0: none, with wall_bottom = inflow)"),
       // The coupling (src/coupling).
       choice("forcing", "projected", {"projected", "sweeps"},
              "projected: forces solved so the projected flow meets the bodies (leak 0.5%); sweeps: direct forcing "

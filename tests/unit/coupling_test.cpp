@@ -191,5 +191,27 @@ TEST_F(CouplingTest, BadInputIsNamed) {
   EXPECT_THROW(c.forceFluid(data, 0.01), CouplingError);
 }
 
+// The floor source through an inflow floor (no band needed) or an open floor held by a band; each
+// mismatch is named.
+TEST(Inflow, SourceWallsAndBandsAreValidatedTogether) {
+  fluid::FluidParams f;
+  f.cells_x = f.cells_y = 32;
+  f.walls.top.type = fluid::WallType::open;
+  f.walls.bottom.type = fluid::WallType::inflow;
+  f.walls.bottom.inflow_m_per_s = 0.5;
+  InflowParams p;
+  p.source_m_per_s = 0.5;
+  EXPECT_EQ(validate(p, f), "");  // an inflow floor needs no band
+  p.source_m_per_s = 0.0;
+  EXPECT_NE(validate(p, f).find("source_m_per_s"), std::string::npos);
+  f.walls.bottom = {};  // free slip
+  p.source_m_per_s = 0.5;
+  EXPECT_NE(validate(p, f).find("inflow floor"), std::string::npos) << validate(p, f);
+  f.walls.bottom.type = fluid::WallType::open;
+  EXPECT_NE(validate(p, f).find("source_rows"), std::string::npos) << validate(p, f);  // open floor: a band
+  p.source_rows = 3;
+  EXPECT_EQ(validate(p, f), "");
+}
+
 }  // namespace
 }  // namespace creaturelab::coupling
