@@ -7,7 +7,7 @@ usage: /usr/bin/python3 analysis/plot_flyer.py RUN_DIR [--out DIR]
 flyer_angles.png: per point the PD-driven inner angles, the controlled outer angles and the sense
 each followed (+1 max on the down-stroke, -1 min on the up-stroke), and the fluid's upward force
 on all bodies against time. flyer_force.txt: per point the mean upward force over the last
-force_cycles flap cycles, and per grid/step the ratio controlled / held (the experiment's check).
+force_cycles flap cycles, and per grid/step/advection the ratio controlled / held (the experiment's check).
 flyer_vorticity.png: per point the vorticity with the bodies at the last flap's lowest and highest
 wing (Fig. 12 (a), (b) analogues; Fig. 11's animation is plot_control_fluid.py's frame series).
 The vorticity with the bodies and the frame series are plot_control_fluid.py's.
@@ -33,7 +33,7 @@ def is_flyer(f):
 
 
 def resolution(f):
-    return f"{int(f.attrs['cells'])}^2, {int(f.attrs['substeps'])} steps/frame"
+    return f"{int(f.attrs['cells'])}^2, {int(f.attrs['substeps'])} steps/frame, {text(f, 'advection')}"
 
 
 def angles_figure(points, png):
@@ -90,15 +90,16 @@ def vorticity_figure(points, png):
 def force_table(points, path):
     rows = {}
     with open(path, "w") as out:
-        out.write("label        cells  substeps  mean_up_force_n\n")
+        out.write("label           cells  substeps  advection        mean_up_force_n\n")
         for f in points:
             force = float(f["metrics/mean_up_force_n"][()])
-            out.write(f"{text(f, 'label'):12s} {int(f.attrs['cells']):5d}  {int(f.attrs['substeps']):8d}  {force:15.4f}\n")
+            out.write(f"{text(f, 'label'):15s} {int(f.attrs['cells']):5d}  {int(f.attrs['substeps']):8d}  "
+                      f"{text(f, 'advection'):15s}  {force:15.4f}\n")
             rows.setdefault(resolution(f), {})[text(f, "label").split("_")[0]] = force
-        out.write("\nresolution                    controlled / held\n")
+        out.write("\nresolution                                 controlled / held\n")
         for res, v in rows.items():
             if "controlled" in v and "held" in v and v["held"] != 0:
-                out.write(f"{res:30s}{v['controlled'] / v['held']:.4f}\n")
+                out.write(f"{res:43s}{v['controlled'] / v['held']:.4f}\n")
 
 
 def main():

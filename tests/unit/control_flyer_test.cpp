@@ -105,14 +105,15 @@ struct SmallFlyer {
     fp.cells_x = fp.cells_y = 32;
     fp.density_kg_per_m3 = 1.2;
     fp.kinematic_viscosity_m2_per_s = 0;
-    fp.walls.bottom.type = fp.walls.top.type = fluid::WallType::open;
+    fp.walls.top.type = fluid::WallType::open;
+    fp.walls.bottom.type = fluid::WallType::inflow;  // the floor source (coupling/inflow.hpp)
+    fp.walls.bottom.inflow_m_per_s = 0.5;
     return fp;
   }
   static coupling::RigidFluidParams source() {
     coupling::RigidFluidParams cp;
     cp.origin_x_m = cp.origin_z_m = -2.0;
     cp.inflow.source_m_per_s = 0.5;
-    cp.inflow.source_rows = 2;
     return cp;
   }
   explicit SmallFlyer(double strength)
