@@ -90,10 +90,10 @@ def vorticity_figure(points, png):
 def force_table(points, path):
     rows = {}
     with open(path, "w") as out:
-        out.write("label           cells  substeps  advection        mean_up_force_n\n")
+        out.write("label              cells  substeps  advection        mean_up_force_n\n")
         for f in points:
             force = float(f["metrics/mean_up_force_n"][()])
-            out.write(f"{text(f, 'label'):15s} {int(f.attrs['cells']):5d}  {int(f.attrs['substeps']):8d}  "
+            out.write(f"{text(f, 'label'):18s} {int(f.attrs['cells']):5d}  {int(f.attrs['substeps']):8d}  "
                       f"{text(f, 'advection'):15s}  {force:15.4f}\n")
             rows.setdefault(resolution(f), {})[text(f, "label").split("_")[0]] = force
         out.write("\nresolution                                 controlled / held\n")
