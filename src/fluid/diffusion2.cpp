@@ -133,6 +133,12 @@ double max_of_parts(const double* parts, int count) {
   return m;
 }
 
+// The walls with every inflow speed set to zero (their faces then read u·n = 0).
+Walls without_inflow_speeds(Walls walls) {
+  for (Wall* wall : {&walls.left, &walls.right, &walls.bottom, &walls.top}) wall->inflow_m_per_s = 0.0;
+  return walls;
+}
+
 }  // namespace
 
 LinearSolveReport DiffusionSolver2::diffuse_velocity(MacGrid2& grid, const Walls& walls,
@@ -142,10 +148,8 @@ LinearSolveReport DiffusionSolver2::diffuse_velocity(MacGrid2& grid, const Walls
   // The solvers take every face off the unknown block as zero; an inflow wall's speed enters
   // through the block's wall terms instead (diffusion_operator2.hpp). So its faces are cleared
   // for the solve and set again after it.
-  Walls cleared = walls;
-  for (Wall* wall : {&cleared.left, &cleared.right, &cleared.bottom, &cleared.top}) wall->inflow_m_per_s = 0.0;
   const bool any_inflow = walls.any_inflow();
-  if (any_inflow) enforce_wall_normal_velocity(grid, cleared);
+  if (any_inflow) enforce_wall_normal_velocity(grid, without_inflow_speeds(walls));
   const LinearSolveReport ru = diffuse_component(FaceAxis::x, grid.u_m_per_s, walls, alpha);
   const LinearSolveReport rv = diffuse_component(FaceAxis::y, grid.v_m_per_s, walls, alpha);
   if (any_inflow) enforce_wall_normal_velocity(grid, walls);

@@ -110,7 +110,8 @@ void GhostedComponent2::prepare(FaceAxis axis, int nx, int ny) {
 
 void GhostedComponent2::finish(const Walls& walls) {
   // Normal ghosts: odd about a solid wall's face value (zero, u·n = 0, or an inflow wall's speed);
-  // constant across an open one (∂u/∂n = 0, boundary2.hpp).
+  // constant across an open one (∂u/∂n = 0, boundary2.hpp). The inflow case is written apart so
+  // the other solid walls keep −inside bit for bit (2·0 − 0 is +0 where −0 is −0).
   auto normal = [](const Wall& wall, double wall_value, double inside1, double inside2, double& ghost1,
                    double& ghost2) {
     if (wall.type == WallType::inflow) {
