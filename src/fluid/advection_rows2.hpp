@@ -1,7 +1,7 @@
 #pragma once
 // Row bookkeeping shared by the advection schemes (advection2.cpp, upwind_advection2.cpp):
 // which faces of a component are unknowns, how the rows of both components are cut among
-// threads, and the solid walls' normal faces of a result.
+// threads (the solid walls' normal faces of a result: boundary2.hpp's set_solid_normal_faces).
 #include <algorithm>
 
 #include "fluid/array2.hpp"
@@ -31,21 +31,6 @@ void for_row_pieces(WorkerPool* workers, const FaceBlock& ub, const FaceBlock& v
     if (lo < nu) u_rows(ub.j_begin + lo, ub.j_begin + std::min(hi, nu), part);
     if (hi > nu) v_rows(vb.j_begin + std::max(lo, nu) - nu, vb.j_begin + hi - nu, part);
   });
-}
-
-// The solid walls' faces of a result (u (nx + 1) × ny, v nx × (ny + 1)): u·n = 0, or an inflow
-// wall's speed.
-inline void set_solid_normal_faces(const Walls& walls, Array2& u, Array2& v) {
-  const int nx = v.nx();
-  const int ny = u.ny();
-  if (is_solid(walls.left)) {
-    for (int j = 0; j < ny; ++j) u(0, j) = solid_wall_normal_velocity(walls.left, false);
-  }
-  if (is_solid(walls.right)) {
-    for (int j = 0; j < ny; ++j) u(nx, j) = solid_wall_normal_velocity(walls.right, true);
-  }
-  if (is_solid(walls.bottom)) std::fill(v.row(0), v.row(0) + nx, solid_wall_normal_velocity(walls.bottom, false));
-  if (is_solid(walls.top)) std::fill(v.row(ny), v.row(ny) + nx, solid_wall_normal_velocity(walls.top, true));
 }
 
 }  // namespace creaturelab::fluid

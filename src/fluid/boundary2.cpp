@@ -4,22 +4,19 @@
 
 namespace creaturelab::fluid {
 
-void enforce_wall_normal_velocity(MacGrid2& grid, const Walls& walls) {
+void set_solid_normal_faces(const Walls& walls, Array2& u, Array2& v) {
+  const int nx = v.nx();
+  const int ny = u.ny();
   if (is_solid(walls.left)) {
-    const double u = solid_wall_normal_velocity(walls.left, false);
-    for (int j = 0; j < grid.ny; ++j) grid.u_m_per_s(0, j) = u;
+    const double wall = solid_wall_normal_velocity(walls.left, false);
+    for (int j = 0; j < ny; ++j) u(0, j) = wall;
   }
   if (is_solid(walls.right)) {
-    const double u = solid_wall_normal_velocity(walls.right, true);
-    for (int j = 0; j < grid.ny; ++j) grid.u_m_per_s(grid.nx, j) = u;
+    const double wall = solid_wall_normal_velocity(walls.right, true);
+    for (int j = 0; j < ny; ++j) u(nx, j) = wall;
   }
-  if (is_solid(walls.bottom)) {
-    std::fill(grid.v_m_per_s.row(0), grid.v_m_per_s.row(0) + grid.nx, solid_wall_normal_velocity(walls.bottom, false));
-  }
-  if (is_solid(walls.top)) {
-    std::fill(grid.v_m_per_s.row(grid.ny), grid.v_m_per_s.row(grid.ny) + grid.nx,
-              solid_wall_normal_velocity(walls.top, true));
-  }
+  if (is_solid(walls.bottom)) std::fill(v.row(0), v.row(0) + nx, solid_wall_normal_velocity(walls.bottom, false));
+  if (is_solid(walls.top)) std::fill(v.row(ny), v.row(ny) + nx, solid_wall_normal_velocity(walls.top, true));
 }
 
 }  // namespace creaturelab::fluid

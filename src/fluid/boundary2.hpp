@@ -60,7 +60,13 @@ inline FaceRange unknown_v_rows(const MacGrid2& grid, const Walls& walls) {
   return unknown_faces(walls.bottom, walls.top, grid.ny);
 }
 
-/// Sets the normal velocity on solid walls: zero (u·n = 0), or an inflow wall's speed.
-void enforce_wall_normal_velocity(MacGrid2& grid, const Walls& walls);
+/// Sets the normal velocity on solid walls' faces of u ((nx + 1) × ny) and v (nx × (ny + 1)):
+/// zero (u·n = 0), or an inflow wall's speed.
+void set_solid_normal_faces(const Walls& walls, Array2& u, Array2& v);
+
+/// The same on the grid's velocity.
+inline void enforce_wall_normal_velocity(MacGrid2& grid, const Walls& walls) {
+  set_solid_normal_faces(walls, grid.u_m_per_s, grid.v_m_per_s);
+}
 
 }  // namespace creaturelab::fluid

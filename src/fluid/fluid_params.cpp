@@ -93,7 +93,7 @@ std::string FluidParams::validate() const {
         std::isfinite(wall->tangential_velocity_m_per_s)) {
       problems.add(key + " = " + show(wall->tangential_velocity_m_per_s) + " has no effect on a " +
                    std::string(to_string(wall->type)) + " wall; set walls." + std::string(name) +
-                   ".type = moving or the velocity to 0");
+                   ".type = moving (or inflow) or the velocity to 0");
     }
     const std::string inflow_key = "walls." + std::string(name) + ".inflow_m_per_s";
     problems.require_finite(wall->inflow_m_per_s, inflow_key, "m/s");
@@ -203,7 +203,8 @@ std::string_view to_string(ViscositySolverType type) {
 }
 
 std::optional<WallType> parse_wall_type(std::string_view name) {
-  return parse(name, std::array{WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open, WallType::inflow});
+  return parse(name,
+               std::array{WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open, WallType::inflow});
 }
 std::optional<AdvectionScheme> parse_advection_scheme(std::string_view name) {
   return parse(name, std::array{AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack, AdvectionScheme::upwind2_rk2});

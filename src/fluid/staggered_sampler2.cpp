@@ -48,7 +48,8 @@ void StaggeredComponent2::finish(const Walls& walls) {
     const int ny = padded_.ny() - 1;
     if (is_solid(walls.bottom))
       std::fill(interior_row(0), interior_row(0) + nx, solid_wall_normal_velocity(walls.bottom, false));
-    if (is_solid(walls.top)) std::fill(interior_row(ny), interior_row(ny) + nx, solid_wall_normal_velocity(walls.top, true));
+    if (is_solid(walls.top))
+      std::fill(interior_row(ny), interior_row(ny) + nx, solid_wall_normal_velocity(walls.top, true));
   }
   fill_ghosts(walls);
 }

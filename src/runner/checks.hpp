@@ -1,6 +1,7 @@
 #pragma once
 // [[check]] evaluation over the sweep table (DESIGN.md): argmax, argmin, range, ratio, difference
-// (numerator − denominator, with ratio's selections), monotonic, and order (observed order of convergence: log-log slope of a metric against an axis).
+// (numerator − denominator, with ratio's selections), monotonic, and order (observed order of
+// convergence: log-log slope of a metric against an axis).
 #include <string>
 #include <vector>
 

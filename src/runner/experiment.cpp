@@ -127,10 +127,13 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   c.numerator_metric = t["numerator_metric"].value_or(c.metric);
   c.denominator_metric = t["denominator_metric"].value_or(c.metric);
   if (c.name.empty()) ctx.fail(key, "needs a name", &t);
-  static const std::vector<std::string> types = {"argmax", "argmin", "range", "ratio", "difference", "monotonic", "order"};
+  static const std::vector<std::string> types = {"argmax", "argmin", "range", "ratio",
+                                                 "difference", "monotonic", "order"};
   if (std::find(types.begin(), types.end(), c.type) == types.end())
-    ctx.fail(key + ".type", "'" + c.type + "' is not one of argmax | argmin | range | ratio | difference | monotonic | order" +
-                                core::didYouMean(c.type, types), t.get("type"));
+    ctx.fail(key + ".type",
+             "'" + c.type + "' is not one of argmax | argmin | range | ratio | difference | monotonic | order" +
+                 core::didYouMean(c.type, types),
+             t.get("type"));
   std::vector<std::string> metric_names;
   for (const auto& m : kind.metrics()) metric_names.push_back(m.name);
   for (const auto& [field, name] : {std::pair{"metric", c.metric}, std::pair{"numerator_metric", c.numerator_metric},

@@ -57,7 +57,8 @@ TEST(InflowWall, ChannelFromRestBecomesAndStaysTheUniformStream) {
         for (int i = 0; i < g.nx; ++i) EXPECT_EQ(g.v_m_per_s(i, 0), kInflow) << name(params);
         EXPECT_NEAR(max_abs(g.u_m_per_s), 0.0, 1e-10) << name(params);
         for (int j = 0; j <= g.ny; ++j)
-          for (int i = 0; i < g.nx; ++i) ASSERT_NEAR(g.v_m_per_s(i, j), kInflow, 1e-10) << name(params) << " " << i << "," << j;
+          for (int i = 0; i < g.nx; ++i)
+            ASSERT_NEAR(g.v_m_per_s(i, j), kInflow, 1e-10) << name(params) << " " << i << "," << j;
       }
     }
   }
@@ -75,7 +76,8 @@ TEST(InflowWall, ViscosityAloneKeepsTheUniformStream) {
     solver.step();
     const MacGrid2& g = solver.grid();
     for (int j = 0; j <= g.ny; ++j)
-      for (int i = 0; i < g.nx; ++i) ASSERT_NEAR(g.v_m_per_s(i, j), kInflow, 1e-11) << name(params) << " " << i << "," << j;
+      for (int i = 0; i < g.nx; ++i)
+        ASSERT_NEAR(g.v_m_per_s(i, j), kInflow, 1e-11) << name(params) << " " << i << "," << j;
   }
 }
 
