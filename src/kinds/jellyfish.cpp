@@ -33,7 +33,7 @@ std::vector<Knot> knots(const ParamReader& r) {
 
 // Calibrated parameters of the active-tension bell (issue 13). B = 1e-4 N m was chosen on 200² with
 // Peskin's grid kernel to put the pluck's f_n at the paper's resonant 0.7 Hz (§3.3, Fig. 5: 0.73 Hz
-// there). With the kind's converged defaults (hat kernel of the bell's 4 mm thickness, ν = 1.304e-5)
+// there). With the kind's defaults (hat kernel of the bell's 4 mm thickness, ν = 1.304e-5)
 // the same B rings at 0.641 / 0.629 Hz on 100² / 200² (frequency_sweep.toml), still inside Fig. 5's
 // 0.6-0.8 Hz, and was kept. T_max = 5 N/m² driven at 0.7 Hz gives the smallest diameter ratio 0.59
 // (0.53 at 0.6 Hz; Fig. 3: "56% of its maximum diameter").
@@ -279,8 +279,10 @@ JellyfishKind::JellyfishKind() {
       .domain_doc = "side of the square free-slip box: ten diameters (§3.2)",
       .cells_doc = "fluid cells across the box (Fig. 12: 100; also 50). 200 by default, with dt_s 0.00125: at "
                    "0.5-0.8 Hz, around the bell's resonance, its distance per cycle is within 1.2-3.7% of 400²'s (at "
-                   "half the step) and its stroke within 0.3-1.8% (convergence.toml); above 0.9 Hz it is not "
-                   "converged (Stokes layer thinner than a cell); 100² is the paper's quick grid (40-70% off)",
+                   "half the step) and its stroke within 0.3-1.8% (convergence.toml), but 800² moves the distance "
+                   "another 10-13% (convergence_fine.toml: not converged, the hat kernel's bell depends on its "
+                   "segments); above 0.9 Hz the Stokes layer is thinner than a cell; 100² is the paper's quick grid "
+                   "(40-70% off)",
       .cells = 200,
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 1.304e-5,
