@@ -280,8 +280,8 @@ JellyfishKind::JellyfishKind() {
       .cells_doc = "fluid cells across the box (Fig. 12: 100; also 50). 200 by default, with dt_s 0.00125: at "
                    "0.5-0.8 Hz, around the bell's resonance, its distance per cycle is within 1.2-3.7% of 400²'s (at "
                    "half the step) and its stroke within 0.3-1.8% (convergence.toml), but 800² moves the distance "
-                   "another 10-13% (convergence_fine.toml: not converged, the hat kernel's bell depends on its "
-                   "segments); above 0.9 Hz the Stokes layer is thinner than a cell; 100² is the paper's quick grid "
+                   "another 10-13% (convergence_fine.toml: not converged; its probes point at the hat kernel's "
+                   "bell depending on its segment count); above 0.9 Hz the Stokes layer is thinner than a cell; 100² is the paper's quick grid "
                    "(40-70% off)",
       .cells = 200,
       .density_doc = "paper: '1' without units, read as g/cm^3",
