@@ -4,6 +4,7 @@
 // fields, adjointness, walls left untouched, and the errors a user sees for bad markers.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -452,6 +453,56 @@ TEST_P(TransferTest, MismatchedSizesAndGridsThrow) {
   // No markers: nothing to do, whatever the field.
   transfer.spread({}, wrong_shape);
   transfer.interpolate(other, {});
+}
+
+// Why the bell's segment count matters under the hat and hardly under Peskin's function (issue
+// 13, experiments/jellyfish/convergence_fine.toml): a marker chain moves with the interpolated
+// velocity, so its curvature changes at the rate of that velocity's second derivative along the
+// chain. The hat's interpolant is only continuous (its slope jumps wherever a stencil edge crosses
+// a face, stretched or not), so the second difference along the chain, (U_{k+1} − 2U_k + U_{k−1})
+// / h², has spikes that grow as 1/h: a kink per face crossing that denser markers resolve ever more
+// sharply and the chain's bending springs (B / h per joint) resist ever more. Peskin's 4-point
+// function is C¹ with a bounded second derivative, so its second difference converges as h
+// shrinks. Here: a smooth field, a chain slanted across the grid at spacings dx/8 to dx/512.
+TEST(TransferSmoothness, SecondDifferenceAlongAChainGrowsAsOneOverSpacingOnlyForTheHat) {
+  MacGrid2 grid(kNx, kNy, kDx);
+  const double wave_m = 8 * kDx;
+  for (int j = 0; j < kNy; ++j)
+    for (int i = 0; i <= kNx; ++i) grid.u_m_per_s(i, j) = std::sin(2 * M_PI * grid.u_position_m(i, j).x / wave_m);
+  for (int j = 0; j <= kNy; ++j)
+    for (int i = 0; i < kNx; ++i) grid.v_m_per_s(i, j) = std::cos(2 * M_PI * grid.v_position_m(i, j).y / wave_m);
+
+  // Largest |second difference| of the interpolated velocity along the chain, 1/(m s).
+  auto peak_second_difference = [&](Kernel kernel, int scale, int per_cell) {
+    const double h = kDx / per_cell, angle = 0.3;
+    std::vector<Vec2> chain;
+    for (int k = 0; k <= 8 * per_cell; ++k)
+      chain.push_back({6.13 * kDx + k * h * std::cos(angle), 5.37 * kDx + k * h * std::sin(angle)});
+    Transfer transfer;
+    transfer.locate(grid, kernel, chain, scale);
+    std::vector<Vec2> velocity(chain.size());
+    transfer.interpolate(grid, velocity);
+    double peak = 0;
+    for (std::size_t k = 1; k + 1 < chain.size(); ++k)
+      for (double Vec2::*c : {&Vec2::x, &Vec2::y})
+        peak = std::max(peak, std::abs(velocity[k + 1].*c - 2 * velocity[k].*c + velocity[k - 1].*c) / (h * h));
+    return peak;
+  };
+  // Measured: hat 3.1e4, 1.1e5, 3.7e5 /(m s) at dx/8, dx/32, dx/128 (stretched twice: 2.6e4, 9.6e4,
+  // 3.2e5); Peskin's 7.0e3, 8.5e3, 8.9e3, 9.1e3 at dx/8 .. dx/512. (The field's own second
+  // derivative is at most (2π / 8 dx)² ≈ 617: neither kernel reproduces it at the grid scale, but
+  // only the hat's grows without bound.)
+  for (int scale : {1, 2}) {
+    const double coarse = peak_second_difference(Kernel::bilinear, scale, 8);
+    const double mid = peak_second_difference(Kernel::bilinear, scale, 32);
+    const double fine = peak_second_difference(Kernel::bilinear, scale, 128);
+    EXPECT_GT(mid, 3 * coarse) << "hat, scale " << scale;  // about 4x per 4x denser chain: as 1/h
+    EXPECT_GT(fine, 3 * mid) << "hat, scale " << scale;
+  }
+  const double fine = peak_second_difference(Kernel::peskin4, 1, 128);
+  const double finer = peak_second_difference(Kernel::peskin4, 1, 512);
+  EXPECT_NEAR(finer, fine, 0.03 * fine);
+  EXPECT_LT(fine, 0.1 * peak_second_difference(Kernel::bilinear, 1, 128));
 }
 
 INSTANTIATE_TEST_SUITE_P(Kernels, TransferTest, ::testing::Values(Kernel::bilinear, Kernel::peskin4),
