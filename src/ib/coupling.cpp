@@ -30,7 +30,33 @@ ImmersedBoundary2::ImmersedBoundary2(fluid::FluidSolver2& fluid, const ElasticBo
     throw std::invalid_argument("immersed boundary: implicit_mass_factor must be > 0");
   force_.resize(markers_.size());
   velocity_.resize(markers_.size());
+  if (params_.banded_solve && static_cast<int>(markers_.size()) >= kBandedFromMarkers) order_ = body_.solveOrder();
+  if (!order_.empty()) {
+    slot_.assign(markers_.size(), -1);
+    for (std::size_t k = 0; k < order_.size(); ++k) {
+      const int m = order_[k];
+      if (order_.size() != markers_.size() || m < 0 || m >= static_cast<int>(markers_.size()) || slot_[m] >= 0)
+        throw std::invalid_argument("immersed boundary: the body's solve order is not a permutation of its markers");
+      slot_[m] = static_cast<int>(k);
+    }
+  }
 }
+
+namespace {
+
+// Unknown 2 k + axis → its place in the banded solve, 2 slot[k] + axis.
+int banded_index(const std::vector<int>& slot, int unknown) { return 2 * slot[unknown / 2] + unknown % 2; }
+
+// The largest |row − column| among the nonzeros of `a`, in the banded solve's numbering.
+int bandwidth(const Eigen::SparseMatrix<double>& a, const std::vector<int>& slot) {
+  int width = 0;
+  for (int j = 0; j < a.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator k(a, j); k; ++k)
+      width = std::max(width, std::abs(banded_index(slot, static_cast<int>(k.row())) - banded_index(slot, j)));
+  return width;
+}
+
+}  // namespace
 
 void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
   const int n = 2 * static_cast<int>(markers_.size());
@@ -58,13 +84,35 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
     // opposite sides, so a dense LU (86 µs for 106 unknowns) beats sparse LU with its symbolic
     // analysis (Eigen's SparseLU took about twice as long, Transfer's stencils changing every step).
     transfer_.gram(dt_s / (rho * dx * dx), mobility_);
-    system_.setIdentity(n, n);
-    for (int j = 0; j < n; ++j)
-      for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k)
-        for (Eigen::SparseMatrix<double>::InnerIterator i(mobility_, k.row()); i; ++i)
-          system_(i.row(), j) -= dt_s * i.value() * k.value();
-    lu_.compute(system_);
-    predicted = lu_.solve(free + mobility_ * force);
+    const Eigen::VectorXd rhs = free + mobility_ * force;
+    if (!order_.empty()) {
+      // Entry (i, j) of M K joins i to j through some k with M(i, k) and K(k, j) nonzero, so the
+      // system's band is at most the sum of the two bands.
+      const int width = bandwidth(mobility_, slot_) + bandwidth(stiffness, slot_);
+      banded_.reset(n, width, width);
+      for (int i = 0; i < n; ++i) banded_.at(i, i) = 1.0;
+      for (int j = 0; j < n; ++j)
+        for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k)
+          for (Eigen::SparseMatrix<double>::InnerIterator i(mobility_, k.row()); i; ++i)
+            banded_.at(banded_index(slot_, static_cast<int>(i.row())), banded_index(slot_, j)) -=
+                dt_s * i.value() * k.value();
+      if (!banded_.factor())
+        throw std::runtime_error("immersed boundary: the semi-implicit force system is singular at t = " +
+                                 std::to_string(t1_s) + " s");
+      banded_rhs_.resize(n);
+      for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = rhs[i];
+      banded_.solve(banded_rhs_);
+      predicted.resize(n);
+      for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[banded_index(slot_, i)];
+    } else {
+      system_.setIdentity(n, n);
+      for (int j = 0; j < n; ++j)
+        for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k)
+          for (Eigen::SparseMatrix<double>::InnerIterator i(mobility_, k.row()); i; ++i)
+            system_(i.row(), j) -= dt_s * i.value() * k.value();
+      lu_.compute(system_);
+      predicted = lu_.solve(rhs);
+    }
   } else {
     // (m I − dt² K) U* = m U_free + dt F: the same with M = dt / m.
     const double mass = params_.implicit_mass_factor * rho * dx * dx;

@@ -104,6 +104,23 @@ void JellyfishBody::forces(double t_s, std::span<const fluid::Vec2> x_m, std::sp
   }
 }
 
+std::vector<int> JellyfishBody::solveOrder() const {
+  std::vector<int> order;
+  const auto& tentacle = model_.tentacle_markers;  // the left chain root → tip, then the right one
+  const int per_side = static_cast<int>(tentacle.size()) / 2;
+  for (int m = per_side - 1; m >= 0; --m) {
+    order.push_back(tentacle[m]);
+    order.push_back(tentacle[per_side + m]);
+  }
+  const int last = model_.bell_markers - 1;
+  for (int k = 0; k < last - k; ++k) {
+    order.push_back(k);
+    order.push_back(last - k);
+  }
+  if (last % 2 == 0) order.push_back(last / 2);
+  return order;
+}
+
 void JellyfishBody::stiffness(double t_s, std::span<const fluid::Vec2> x_m, double scale,
                               std::vector<Eigen::Triplet<double>>& out) const {
   toState(x_m);

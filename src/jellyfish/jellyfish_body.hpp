@@ -18,6 +18,9 @@ class JellyfishBody : public ib::ElasticBody {
   void forces(double t_s, std::span<const fluid::Vec2> x_m, std::span<fluid::Vec2> force_n_per_m) const override;
   void stiffness(double t_s, std::span<const fluid::Vec2> x_m, double scale,
                  std::vector<Eigen::Triplet<double>>& out) const override;
+  /// Tentacle tips to roots, then the bell from the aperture to the apex, each left/right pair side by
+  /// side: a muscle joins a pair, and markers near each other in space are near in this order.
+  std::vector<int> solveOrder() const override;
 
   /// Activation of muscle `m` at time t, in [0, 1] (0 relaxed). Hermite shape: the §3.3 curve
   /// mapped so that its lowest knot is 1; pulse shape: sin²(π t / duration) at the cycle's start.

@@ -166,5 +166,35 @@ BENCHMARK(BM_SimulatedSecondGridStudy)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(4.0);
 
+// The candidate converged body (issue 13, convergence_fine.toml's probes): the grid study's bell
+// with Peskin's 4-point function at the same 4 mm radius and 256 segments on every grid (markers
+// 0.25 mm apart, 419 with the tentacles: 838 unknowns in the semi-implicit system). Second argument:
+// 0 the dense LU, 1 the banded one (ib/banded_lu.hpp, the bell's solve order; the same steps to
+// round-off). One iteration is one simulated second. Measured 2026-11-27, one core: 200² dense
+// 22.7 s, banded 7.49 s; 400² banded 36.7 s.
+void BM_SimulatedSecondPeskin256(benchmark::State& state) {
+  const int cells = static_cast<int>(state.range(0));
+  SwimmerConfig c = paperConfig(cells, ib::Kernel::peskin4);
+  c.coupling.kernel_scale = cells / 200;
+  c.coupling.banded_solve = state.range(1) == 1;
+  c.fluid.kinematic_viscosity_m2_per_s = 1.304e-5;
+  c.bell.segments = 256;
+  c.bell.muscle_model = MuscleModel::active_tension;
+  c.bell.muscle_tension_n_per_m2 = 5.0;
+  c.bell.bending_rigidity_n_m = 1.0e-4;
+  c.fluid.advection = fluid::AdvectionScheme::maccormack;
+  c.fluid.cells_y = cells * 3 / 2;
+  c.fluid.domain_height_m = 1.5 * c.fluid.domain_width_m;
+  c.start_y_fraction = 0.2;
+  c.fluid.fixed_step_s = c.dt_s = 0.00125 * 200.0 / cells;
+  measure(state, c);
+}
+BENCHMARK(BM_SimulatedSecondPeskin256)
+    ->ArgNames({"cells", "banded"})
+    ->ArgsProduct({{200, 400}, {0, 1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(4.0);
+
 }  // namespace
 }  // namespace creaturelab::jellyfish

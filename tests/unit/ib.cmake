@@ -4,5 +4,6 @@ creaturelab_test(ib_unit_test unit
     ${CMAKE_CURRENT_LIST_DIR}/ib_kernel_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/ib_transfer_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/ib_coupling_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/ib_banded_lu_test.cpp
   LIBS cl_ib
 )

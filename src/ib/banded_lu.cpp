@@ -1,0 +1,65 @@
+#include "ib/banded_lu.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace creaturelab::ib {
+
+void BandedLU::reset(int n, int kl, int ku) {
+  if (n < 0 || kl < 0 || ku < 0) throw std::invalid_argument("banded LU: negative size or bandwidth");
+  n_ = n;
+  kl_ = std::min(kl, std::max(0, n - 1));
+  ku_ = std::min(ku, std::max(0, n - 1));
+  rows_ = 2 * kl_ + ku_ + 1;
+  band_.assign(static_cast<std::size_t>(rows_) * n_, 0.0);
+  pivot_.assign(n_, 0);
+}
+
+// dgbtf2: column j's pivot is the largest of its kl entries below the diagonal and itself; the row
+// swap reaches at most column ju, the last one any pivot so far has filled.
+bool BandedLU::factor() {
+  const int kv = kl_ + ku_;  // the diagonal's row in the storage
+  int ju = 0;
+  for (int j = 0; j < n_; ++j) {
+    const int km = std::min(kl_, n_ - 1 - j);
+    int p = 0;
+    double largest = std::abs(ab(kv, j));
+    for (int r = 1; r <= km; ++r)
+      if (std::abs(ab(kv + r, j)) > largest) largest = std::abs(ab(kv + r, j)), p = r;
+    pivot_[j] = j + p;
+    if (ab(kv + p, j) == 0.0) return false;
+    ju = std::max(ju, std::min(j + ku_ + p, n_ - 1));
+    if (p != 0)
+      for (int c = j; c <= ju; ++c) std::swap(ab(kv + j - c, c), ab(kv + j + p - c, c));
+    if (km == 0) continue;
+    const double inverse = 1.0 / ab(kv, j);
+    double* l = &ab(kv + 1, j);
+    for (int r = 0; r < km; ++r) l[r] *= inverse;
+    for (int c = j + 1; c <= ju; ++c) {
+      double* column = &ab(kv + j - c, c);  // row j of column c; rows j + 1 .. j + km follow it
+      const double f = column[0];
+      if (f == 0.0) continue;
+      for (int r = 0; r < km; ++r) column[r + 1] -= l[r] * f;
+    }
+  }
+  return true;
+}
+
+void BandedLU::solve(std::vector<double>& b) const {
+  if (static_cast<int>(b.size()) != n_) throw std::invalid_argument("banded LU: right-hand side of the wrong size");
+  const int kv = kl_ + ku_;
+  for (int j = 0; j < n_; ++j) {
+    if (pivot_[j] != j) std::swap(b[j], b[pivot_[j]]);
+    const int km = std::min(kl_, n_ - 1 - j);
+    for (int r = 1; r <= km; ++r) b[j + r] -= ab(kv + r, j) * b[j];
+  }
+  for (int j = n_ - 1; j >= 0; --j) {
+    b[j] /= ab(kv, j);
+    const double x = b[j];
+    for (int i = std::max(0, j - kv); i < j; ++i) b[i] -= ab(kv + i - j, j) * x;
+  }
+}
+
+}  // namespace creaturelab::ib
