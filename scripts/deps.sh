@@ -10,7 +10,7 @@ packages=(
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libopenmpi-dev openmpi-bin
   zlib1g-dev
-  libtinygltf-dev povray
+  libtinygltf-dev povray povray-includes
   libmujoco-dev libmujoco-samples
   libssl-dev
   libcairo2-dev libpango1.0-dev fonts-dejavu-core
