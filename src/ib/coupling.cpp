@@ -58,6 +58,16 @@ int bandwidth(const Eigen::SparseMatrix<double>& a, const std::vector<int>& slot
 
 }  // namespace
 
+// entry(i, j) −= dt (M K)(i, j) over the nonzeros of the product, in one fixed order whatever the
+// storage (dense or banded), so that both solves see the same sums.
+template <class Entry>
+void ImmersedBoundary2::subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffness, double dt_s, Entry entry) const {
+  for (int j = 0; j < stiffness.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator i(mobility_, k.row()); i; ++i)
+        entry(static_cast<int>(i.row()), j) -= dt_s * i.value() * k.value();
+}
+
 void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
   const int n = 2 * static_cast<int>(markers_.size());
   const double dx = fluid_.grid().dx_m;
@@ -91,11 +101,9 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
       const int width = bandwidth(mobility_, slot_) + bandwidth(stiffness, slot_);
       banded_.reset(n, width, width);
       for (int i = 0; i < n; ++i) banded_.at(i, i) = 1.0;
-      for (int j = 0; j < n; ++j)
-        for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k)
-          for (Eigen::SparseMatrix<double>::InnerIterator i(mobility_, k.row()); i; ++i)
-            banded_.at(banded_index(slot_, static_cast<int>(i.row())), banded_index(slot_, j)) -=
-                dt_s * i.value() * k.value();
+      subtract_dt_mk(stiffness, dt_s, [&](int i, int j) -> double& {
+        return banded_.at(banded_index(slot_, i), banded_index(slot_, j));
+      });
       if (!banded_.factor())
         throw std::runtime_error("immersed boundary: the semi-implicit force system is singular at t = " +
                                  std::to_string(t1_s) + " s");
@@ -106,10 +114,7 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
       for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[banded_index(slot_, i)];
     } else {
       system_.setIdentity(n, n);
-      for (int j = 0; j < n; ++j)
-        for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k)
-          for (Eigen::SparseMatrix<double>::InnerIterator i(mobility_, k.row()); i; ++i)
-            system_(i.row(), j) -= dt_s * i.value() * k.value();
+      subtract_dt_mk(stiffness, dt_s, [&](int i, int j) -> double& { return system_(i, j); });
       lu_.compute(system_);
       predicted = lu_.solve(rhs);
     }

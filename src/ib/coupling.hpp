@@ -125,6 +125,8 @@ class ImmersedBoundary2 {
   std::vector<Eigen::Triplet<double>> triplets_;
   // The stencil mobility's M, the system I − dt M K and its LU (kept to reuse their storage).
   Eigen::SparseMatrix<double> mobility_;
+  template <class Entry>
+  void subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffness, double dt_s, Entry entry) const;
   Eigen::MatrixXd system_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   // The banded solve (bodies with a solveOrder() of at least kBandedFromMarkers markers): the

@@ -142,12 +142,13 @@ BENCHMARK(BM_SimulatedSecondFluidThreads)
 // fluid/fast_diffusion2.hpp; not bitwise the default's swim, the same to the viscosity tolerance).
 // It is slower here (2026-11-25, load 10-12, CPU ms per step): 200², 6.17 against 4.63; 400²,
 // 33.2 against 26.7 (α = ν dt / dx² = 4.1e-3 and 8.2e-3: the iterative solver's Richardson range).
-void BM_SimulatedSecondGridStudy(benchmark::State& state) {
-  const int cells = static_cast<int>(state.range(0));
-  SwimmerConfig c = paperConfig(cells, ib::Kernel::bilinear);
-  c.coupling.kernel_scale = cells / 100;
+// The grid study's settings (convergence.toml): active tension, ν = 1.304e-5, MacCormack, the
+// 1.5-tall box, dt ∝ dx; the kernel at the bell's 4 mm radius.
+SwimmerConfig gridStudyConfig(int cells, ib::Kernel kernel, int kernel_scale, int segments) {
+  SwimmerConfig c = paperConfig(cells, kernel);
+  c.coupling.kernel_scale = kernel_scale;
   c.fluid.kinematic_viscosity_m2_per_s = 1.304e-5;
-  c.bell.segments = cells * 64 / 200;
+  c.bell.segments = segments;
   c.bell.muscle_model = MuscleModel::active_tension;
   c.bell.muscle_tension_n_per_m2 = 5.0;
   c.bell.bending_rigidity_n_m = 1.0e-4;
@@ -156,6 +157,12 @@ void BM_SimulatedSecondGridStudy(benchmark::State& state) {
   c.fluid.domain_height_m = 1.5 * c.fluid.domain_width_m;
   c.start_y_fraction = 0.2;
   c.fluid.fixed_step_s = c.dt_s = 0.00125 * 200.0 / cells;
+  return c;
+}
+
+void BM_SimulatedSecondGridStudy(benchmark::State& state) {
+  const int cells = static_cast<int>(state.range(0));
+  SwimmerConfig c = gridStudyConfig(cells, ib::Kernel::bilinear, cells / 100, cells * 64 / 200);
   if (state.range(1) == 1) c.fluid.viscosity_solver = fluid::ViscositySolverType::fast_direct;
   measure(state, c);
 }
@@ -174,19 +181,8 @@ BENCHMARK(BM_SimulatedSecondGridStudy)
 // 22.7 s, banded 7.49 s; 400² banded 36.7 s.
 void BM_SimulatedSecondPeskin256(benchmark::State& state) {
   const int cells = static_cast<int>(state.range(0));
-  SwimmerConfig c = paperConfig(cells, ib::Kernel::peskin4);
-  c.coupling.kernel_scale = cells / 200;
+  SwimmerConfig c = gridStudyConfig(cells, ib::Kernel::peskin4, cells / 200, 256);
   c.coupling.banded_solve = state.range(1) == 1;
-  c.fluid.kinematic_viscosity_m2_per_s = 1.304e-5;
-  c.bell.segments = 256;
-  c.bell.muscle_model = MuscleModel::active_tension;
-  c.bell.muscle_tension_n_per_m2 = 5.0;
-  c.bell.bending_rigidity_n_m = 1.0e-4;
-  c.fluid.advection = fluid::AdvectionScheme::maccormack;
-  c.fluid.cells_y = cells * 3 / 2;
-  c.fluid.domain_height_m = 1.5 * c.fluid.domain_width_m;
-  c.start_y_fraction = 0.2;
-  c.fluid.fixed_step_s = c.dt_s = 0.00125 * 200.0 / cells;
   measure(state, c);
 }
 BENCHMARK(BM_SimulatedSecondPeskin256)
