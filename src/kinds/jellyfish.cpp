@@ -351,6 +351,12 @@ JellyfishKind::JellyfishKind() {
       {"damping_ratio", "", "the same fit's sigma / sqrt(sigma^2 + omega^2)"},
       {"mode_residual", "", "rms residual of that fit over the decay's rms: how much of the decay is not one mode"},
       {"lateral_drift_m", "m", "x displacement of the centroid over the window"},
+      {"forward_travel_m", "m",
+       "sum of the centroid's upward steps over the window: the bell surges forward on each contraction and "
+       "slides back on each re-expansion, and distance_m is what is left of the surge"},
+      {"net_fraction", "",
+       "distance_m / forward_travel_m: near 1 a stroke that keeps its surge; small, a nearly reciprocal one, "
+       "whose distance is a small difference of two large excursions and converges slowly in the grid"},
       {"muscle_work_j", "J/m",
        "muscles' net work over the whole cycles of the window, per metre of depth: the work the body did on the "
        "fluid, sum F . dX (the body has no internal dissipation, so over periodic cycles the muscles' work goes "
@@ -444,6 +450,7 @@ Result JellyfishKind::run(const Params& p) const {
 
   jellyfish::SwimmerObservation start;
   double start_work = 0, end_work = 0, start_fluid = 0, end_fluid = 0, min_ratio = std::numeric_limits<double>::infinity(), max_cfl = 0, max_speed = 0;
+  double forward_travel = 0, last_y = 0;
   // Stroke amplitude over the window's second half; the free decay after the last active cycle.
   const long second_half_step = plan.warmup_steps + (plan.total_steps - plan.warmup_steps) / 2;
   double late_min = std::numeric_limits<double>::infinity(), late_max = -late_min;
@@ -455,6 +462,7 @@ Result JellyfishKind::run(const Params& p) const {
   const long release_step = active_cycles > 0 ? std::lround(release_s / dt) : -1;
   std::vector<double> decay_t, decay_d;
   if (plan.warmup_steps == 0) start = swimmer.observe();
+  last_y = swimmer.observe().centroid_m.y;
   try {
     for (long step = 1; step <= plan.total_steps; ++step) {
       const auto report = swimmer.step();
@@ -470,7 +478,11 @@ Result JellyfishKind::run(const Params& p) const {
         end_work = swimmer.muscle_work_j_per_m();
         end_fluid = swimmer.fluid_work_j_per_m();
       }
-      if (step > plan.warmup_steps) min_ratio = std::min(min_ratio, o.diameter_ratio);
+      if (step > plan.warmup_steps) {
+        min_ratio = std::min(min_ratio, o.diameter_ratio);
+        forward_travel += std::max(0.0, o.centroid_m.y - last_y);
+      }
+      last_y = o.centroid_m.y;
       if (step > second_half_step) {
         late_min = std::min(late_min, o.diameter_ratio);
         late_max = std::max(late_max, o.diameter_ratio);
@@ -518,6 +530,8 @@ Result JellyfishKind::run(const Params& p) const {
   m["damping_ratio"] = {release_step >= 0 ? fit.damping_ratio : nan, ""};
   m["mode_residual"] = {release_step >= 0 ? fit.residual_fraction : nan, ""};
   m["lateral_drift_m"] = {end.centroid_m.x - start.centroid_m.x, "m"};
+  m["forward_travel_m"] = {forward_travel, "m"};
+  m["net_fraction"] = {forward_travel > 0 ? distance / forward_travel : nan, ""};
   m["muscle_work_j"] = {end_fluid - start_fluid, "J/m"};
   m["muscle_work_direct_j"] = {work, "J/m"};
   m["cost_of_transport"] = {distance > 0 ? fluid_work / (bell_mass * work_distance) : std::nan(""), "J/(kg m)"};

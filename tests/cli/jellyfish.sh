@@ -50,7 +50,7 @@ run = sys.argv[1]
 for k in range(2):
     with h5py.File(os.path.join(run, "point_%06d.h5" % k), "r") as f:
         m = f["metrics"]
-        for name in ("distance_m", "distance_per_cycle_m", "mean_speed_m_per_s", "min_diameter_ratio",
+        for name in ("distance_m", "distance_per_cycle_m", "mean_speed_m_per_s", "min_diameter_ratio", "net_fraction",
                      "lateral_drift_m", "muscle_work_j", "cost_of_transport"):
             assert name in m, name
         # the bell visibly contracts: at 1 Hz, above its 0.63 Hz resonance in the default (Re ~60)
@@ -68,6 +68,12 @@ for k in range(2):
         assert os.path.exists(os.path.join(run, "point_%06d.xdmf" % k))
         # the mirror-symmetric bell stays centred to round-off in the symmetric box
         assert abs(m["lateral_drift_m"][()]) < 1e-9, m["lateral_drift_m"][()]
+        # forward travel sums the upward steps at every step: at least the frames' coarser sum over
+        # the window (frames 10..20), and the net fraction is the distance over it
+        y = f["timeseries/centroid_y_m"][10:]
+        travel = m["forward_travel_m"][()]
+        assert travel >= np.clip(np.diff(y), 0, None).sum() - 1e-12, (travel, y)
+        assert abs(m["net_fraction"][()] * travel - m["distance_m"][()]) < 1e-12
 PY
 
 sed 's/known_deviation = .*//' "$scratch/jf.toml" >"$scratch/fail.toml"
