@@ -357,6 +357,10 @@ JellyfishKind::JellyfishKind() {
       {"net_fraction", "",
        "distance_m / forward_travel_m: near 1 a stroke that keeps its surge; small, a nearly reciprocal one, "
        "whose distance is a small difference of two large excursions and converges slowly in the grid"},
+      {"cycle_distance_spread", "",
+       "standard error of the mean distance per whole cycle in the window over distance_per_cycle_m (sample "
+       "deviation of the cycles' distances / sqrt(cycles)): how far the window's average is from periodic. A "
+       "grid study cannot resolve differences smaller than this; NaN with fewer than two whole cycles"},
       {"muscle_work_j", "J/m",
        "muscles' net work over the whole cycles of the window, per metre of depth: the work the body did on the "
        "fluid, sum F . dX (the body has no internal dissipation, so over periodic cycles the muscles' work goes "
@@ -435,6 +439,20 @@ CostEstimate JellyfishKind::estimateCost(const Params& p) const {
   }
 }
 
+namespace {
+// Standard error of the mean of the cycles' distances (heights at successive cycle starts), relative
+// to the window's distance per cycle.
+double cycleSpread(const std::vector<double>& start_y, double per_cycle) {
+  if (start_y.size() < 3) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> d(start_y.size() - 1);
+  for (std::size_t k = 0; k + 1 < start_y.size(); ++k) d[k] = start_y[k + 1] - start_y[k];
+  double mean = 0, var = 0;
+  for (double v : d) mean += v / double(d.size());
+  for (double v : d) var += (v - mean) * (v - mean) / double(d.size() - 1);
+  return std::sqrt(var / double(d.size())) / std::abs(per_cycle);
+}
+}  // namespace
+
 Result JellyfishKind::run(const Params& p) const {
   ParamReader r(p);
   jellyfish::Swimmer swimmer(config(r));
@@ -451,6 +469,13 @@ Result JellyfishKind::run(const Params& p) const {
   jellyfish::SwimmerObservation start;
   double start_work = 0, end_work = 0, start_fluid = 0, end_fluid = 0, min_ratio = std::numeric_limits<double>::infinity(), max_cfl = 0, max_speed = 0;
   double forward_travel = 0, last_y = 0;
+  std::vector<double> cycle_start_y;  // centroid height at each whole cycle's start and end in the window
+  const double period_steps = 1.0 / (r.real("contraction_hz") * dt);
+  auto cycleBoundary = [&](long step) {
+    const double k = double(step - plan.warmup_steps) / period_steps;
+    return step >= plan.warmup_steps && step <= plan.work_end_step &&
+           step - plan.warmup_steps == std::lround(std::round(k) * period_steps);
+  };
   // Stroke amplitude over the window's second half; the free decay after the last active cycle.
   const long second_half_step = plan.warmup_steps + (plan.total_steps - plan.warmup_steps) / 2;
   double late_min = std::numeric_limits<double>::infinity(), late_max = -late_min;
@@ -463,6 +488,7 @@ Result JellyfishKind::run(const Params& p) const {
   std::vector<double> decay_t, decay_d;
   if (plan.warmup_steps == 0) start = swimmer.observe();
   last_y = swimmer.observe().centroid_m.y;
+  if (cycleBoundary(0)) cycle_start_y.push_back(last_y);
   try {
     for (long step = 1; step <= plan.total_steps; ++step) {
       const auto report = swimmer.step();
@@ -483,6 +509,7 @@ Result JellyfishKind::run(const Params& p) const {
         forward_travel += std::max(0.0, o.centroid_m.y - last_y);
       }
       last_y = o.centroid_m.y;
+      if (cycleBoundary(step)) cycle_start_y.push_back(o.centroid_m.y);
       if (step > second_half_step) {
         late_min = std::min(late_min, o.diameter_ratio);
         late_max = std::max(late_max, o.diameter_ratio);
@@ -531,6 +558,7 @@ Result JellyfishKind::run(const Params& p) const {
   m["mode_residual"] = {release_step >= 0 ? fit.residual_fraction : nan, ""};
   m["lateral_drift_m"] = {end.centroid_m.x - start.centroid_m.x, "m"};
   m["forward_travel_m"] = {forward_travel, "m"};
+  m["cycle_distance_spread"] = {cycleSpread(cycle_start_y, distance / cycles), ""};
   m["net_fraction"] = {forward_travel > 0 ? distance / forward_travel : nan, ""};
   m["muscle_work_j"] = {end_fluid - start_fluid, "J/m"};
   m["muscle_work_direct_j"] = {work, "J/m"};

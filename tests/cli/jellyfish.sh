@@ -74,6 +74,8 @@ for k in range(2):
         travel = m["forward_travel_m"][()]
         assert travel >= np.clip(np.diff(y), 0, None).sum() - 1e-12, (travel, y)
         assert abs(m["net_fraction"][()] * travel - m["distance_m"][()]) < 1e-12
+        # one whole cycle in the window: no spread to estimate
+        assert np.isnan(m["cycle_distance_spread"][()]), m["cycle_distance_spread"][()]
 PY
 
 sed 's/known_deviation = .*//' "$scratch/jf.toml" >"$scratch/fail.toml"
