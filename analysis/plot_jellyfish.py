@@ -16,7 +16,8 @@ Writes to RUN_DIR/figures/ (or --out):
                     driving frequency, with f_n marked (issue 13 §2).
   convergence.png   when the run sweeps `cells`: distance per cycle and stroke amplitude against
                     the cell size per setting, with the observed order and Richardson's estimate
-                    (also printed, and written to convergence.txt).
+                    (also printed, and written to convergence.txt, with the net fraction and the
+                    cycle spread: the standard error of the window's mean distance per cycle).
 """
 import argparse
 import glob
@@ -332,7 +333,8 @@ def convergence(sweep, points, out):
         g = tuple(text(sweep[n][k]) if isinstance(sweep[n][k], bytes) else float(sweep[n][k]) for n in keys)
         groups.setdefault(g, []).append(k)
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
-    lines = ["setting | cell (mm) | distance per cycle (mm) | stroke amplitude | observed order | Richardson (mm)"]
+    lines = ["setting | cell (mm) | distance per cycle (mm) | stroke amplitude | net fraction | cycle spread | "
+             "observed order | Richardson (mm)"]
     for g, ks in sorted(groups.items()):
         ks = sorted(ks, key=lambda k: -float(param(points[k], "domain_m")) / float(sweep["cells"][k]))
         h = np.array([float(param(points[k], "domain_m")) / float(sweep["cells"][k]) * 1e3 for k in ks])
@@ -342,8 +344,10 @@ def convergence(sweep, points, out):
         p, rich = richardson(h, d)
         left.plot(h, d, "o-", ms=3, label=f"{name} (p = {p:.2g})")
         right.plot(h, a, "o-", ms=3, label=name)
-        for hi, di, ai in zip(h, d, a):
-            lines.append(f"{name} | {hi:g} | {di:.4g} | {ai:.4g} | {p:.3g} | {rich:.4g}")
+        net = [metric(points[k], "net_fraction") for k in ks]
+        spread = [metric(points[k], "cycle_distance_spread") for k in ks]
+        for hi, di, ai, ni, si in zip(h, d, a, net, spread):
+            lines.append(f"{name} | {hi:g} | {di:.4g} | {ai:.4g} | {ni:.3g} | {si:.3g} | {p:.3g} | {rich:.4g}")
     for ax, what in ((left, "distance per cycle (mm)"), (right, "stroke amplitude")):
         ax.set_xscale("log", base=2)
         ax.invert_xaxis()
