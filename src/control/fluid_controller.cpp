@@ -57,8 +57,6 @@ const ControllerParams& checked(const ControllerParams& p, const FluidControlPar
 
 std::string validate(const ControllerParams& p, const FluidControlParams& f, const rigid::RigidModel& model) {
   if (auto e = validate(p, model); !e.empty()) return e;
-  for (auto o : p.objectives)
-    if (o == Objective::effort) return "objectives: effort is not offered with the fluid (drag | drag_along)";
   for (const auto* names : {&p.controlled, &p.kinematic, &p.pd_driven})
     for (const auto& name : *names)
       if (model.joint(model.findJoint(name)).type == rigid::JointType::ball)
@@ -88,7 +86,10 @@ struct FluidController::World {
   CouplingReaction force;
   ServoScratch servo;
   Prescribed pr, step;
-  std::vector<Vec3> forces;  // per step of an evaluation: the joint's force
+  std::vector<Vec3> forces;     // per step of an evaluation: the joint's force
+  std::vector<double> torques;  // per step of an evaluation: the joint's actuator torque
+  MeasureScratch measure_scratch;
+  JointMeasures measures;
   double residual_rad = 0;
   int forcing_iterations = 0;
   Vec3 bodies_force_sum{};  // sum over coupled steps of the force on all moving bodies
@@ -144,17 +145,26 @@ Vec3 FluidController::jointForce(const World& w, int joint) const {
   return f;
 }
 
+// Eq. 1's actuator torque of each controlled joint after a coupled step: inverse dynamics at
+// qacc = 0 under the fluid's reaction of that step (objectives.hpp, measure), appended to `out`.
+void FluidController::jointTorques(World& w, std::vector<double>& out) const {
+  measure(w.data, layout_, w.force, w.measure_scratch, w.measures);
+  out.insert(out.end(), w.measures.torque_n_m.begin(), w.measures.torque_n_m.end());
+}
+
 // `steps` coupled steps with the prescribed angles moving linearly from `start` to pr's targets;
-// the joints' forces of each step appended to w.forces (joint-major: step s, joint j at s n + j).
-void FluidController::moveOver(World& w, Prescribed& pr, const std::vector<double>& start, int steps,
-                               std::vector<Vec3>* forces, int joints) {
+// the joints' forces and actuator torques of each step appended to w.forces and w.torques
+// (joint-major: step s, joint j at s n + j) when `record`.
+void FluidController::moveOver(World& w, Prescribed& pr, const std::vector<double>& start, int steps, bool record) {
+  const int n = int(p_.controlled.size());
   w.step = pr;
   for (int s = 0; s < steps; ++s) {
     const double a = double(s + 1) / steps;
     for (std::size_t k = 0; k < start.size(); ++k) w.step.target[k] = start[k] + a * (pr.target[k] - start[k]);
     coupledStep(w, w.step);
-    if (forces)
-      for (int j = 0; j < joints; ++j) forces->push_back(jointForce(w, j));
+    if (!record) continue;
+    for (int j = 0; j < n; ++j) w.forces.push_back(jointForce(w, j));
+    jointTorques(w, w.torques);
   }
 }
 
@@ -170,8 +180,14 @@ void FluidController::restore(World& w, const CoupledState& s) const {
 }
 
 namespace {
-double objectiveOf(const ObjectiveLayout& l, int j, const Vec3& f) {
-  if (l.kinds[j] == Objective::drag) return std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+// Joint j's objective from its mean force f and mean actuator torque (Eq. 1: effort is the
+// angular impulse |torque| x frame).
+double objectiveOf(const ObjectiveLayout& l, int j, const Vec3& f, double torque_n_m) {
+  switch (l.kinds[j]) {
+    case Objective::effort: return std::abs(torque_n_m) * l.frame_s;
+    case Objective::drag: return std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    case Objective::drag_along: break;
+  }
   return f[0] * l.direction[0] + f[1] * l.direction[1] + f[2] * l.direction[2];
 }
 }  // namespace
@@ -185,18 +201,22 @@ double FluidController::evaluate(World& w, const CoupledState& start, int joint,
   for (std::size_t k = 0; k < from.size(); ++k) from[k] = start.rigid.qpos[w.pr.qpos[k]];
   const int n = int(p_.controlled.size());
   w.forces.clear();
-  moveOver(w, w.pr, from, p_.substeps, &w.forces, n);
+  w.torques.clear();
+  moveOver(w, w.pr, from, p_.substeps, true);
   if (f_.settle_steps > 0) {
     std::vector<double> held(w.pr.target.begin(), w.pr.target.end());
-    moveOver(w, w.pr, held, f_.settle_steps, &w.forces, n);
+    moveOver(w, w.pr, held, f_.settle_steps, true);
   }
   const int steps = int(w.forces.size()) / n;
   std::vector<double> objective(n);
   for (int j = 0; j < n; ++j) {
     Vec3 f{};
-    for (int s = steps - f_.average_steps; s < steps; ++s)
+    double torque = 0;
+    for (int s = steps - f_.average_steps; s < steps; ++s) {
       for (int k = 0; k < 3; ++k) f[k] += w.forces[s * n + j][k] / f_.average_steps;
-    objective[j] = objectiveOf(layout_, j, f);
+      torque += w.torques[s * n + j] / f_.average_steps;
+    }
+    objective[j] = objectiveOf(layout_, j, f, torque);
   }
   return combined(p_.weights, objective, joint);
 }
@@ -254,27 +274,31 @@ FrameRecord FluidController::frame() {
   }
   w.residual_rad = 0;
   w.bodies_force_sum = Vec3{};
-  std::vector<Vec3> forces;
-  moveOver(w, pres_.prescribed, from, p_.substeps, &forces, n);
+  w.forces.clear();
+  w.torques.clear();
+  moveOver(w, pres_.prescribed, from, p_.substeps, true);
   for (int k = 0; k < 3; ++k) frame_bodies_force_[k] = w.bodies_force_sum[k] / p_.substeps;
   r.time_s = w.data.time_s();
   r.servo_residual_rad = w.residual_rad;
   r.target_rad.assign(pres_.prescribed.target.begin(), pres_.prescribed.target.begin() + n);
   for (int i = 0; i < n; ++i) r.angle_rad.push_back(w.data.qpos()[pres_.prescribed.qpos[i]]);
   r.derivative = derivative_;
-  // The frame's mean force on each joint's bodies (the coupled steps' exchange).
+  // The frame's mean force on each joint's bodies (the coupled steps' exchange) and mean actuator torque.
   JointMeasures& m = r.measures;
   m.torque_n_m.assign(n, 0.0);
   m.effort_n_m_s.assign(n, 0.0);
   for (int i = 0; i < n; ++i) {
     Vec3 f{};
-    for (int s = 0; s < p_.substeps; ++s)
-      for (int k = 0; k < 3; ++k) f[k] += forces[s * n + i][k] / p_.substeps;
+    for (int s = 0; s < p_.substeps; ++s) {
+      for (int k = 0; k < 3; ++k) f[k] += w.forces[s * n + i][k] / p_.substeps;
+      m.torque_n_m[i] += w.torques[s * n + i] / p_.substeps;
+    }
+    m.effort_n_m_s[i] = std::abs(m.torque_n_m[i]) * p_.frame_s;
     frame_force_[i] = f;
     m.drag_vector_n.push_back(f);
     m.drag_n.push_back(std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]));
     m.drag_along_n.push_back(f[0] * layout_.direction[0] + f[1] * layout_.direction[1] + f[2] * layout_.direction[2]);
-    m.objective.push_back(objectiveOf(layout_, i, f));
+    m.objective.push_back(objectiveOf(layout_, i, f, m.torque_n_m[i]));
   }
   for (int i = 0; i < n; ++i) r.objective.push_back(combined(p_.weights, m.objective, i));
   max_forcing_iterations_ = std::max(max_forcing_iterations_, w.forcing_iterations);

@@ -14,7 +14,8 @@
 //     averaged over the evaluation's last average_steps coupled steps;
 //   - the DOFs' evaluations run in parallel, each on its own worker's copy: results are bitwise
 //     the same for any thread count (§5, Fig. 10).
-// Effort (Eq. 1) is not offered with the fluid here (validate says so).
+//   - effort (Eq. 1): the actuator torque that holds the joint under the fluid's reaction
+//     (inverse dynamics at qacc = 0, as in the wind), averaged like the force, times the frame.
 #include <memory>
 #include <vector>
 
@@ -88,8 +89,8 @@ class FluidController {
  private:
   struct World;
   void coupledStep(World& w, const Prescribed& pr);
-  void moveOver(World& w, Prescribed& pr, const std::vector<double>& start, int steps, std::vector<Vec3>* mean,
-                int average);
+  void moveOver(World& w, Prescribed& pr, const std::vector<double>& start, int steps, bool record);
+  void jointTorques(World& w, std::vector<double>& out) const;
   double evaluate(World& w, const CoupledState& start, int joint, double offset_rad);
   void save(World& w, CoupledState& s) const;
   void restore(World& w, const CoupledState& s) const;

@@ -86,7 +86,8 @@ ControlFluidKind::ControlFluidKind() {
            "hinges that follow kinematic_pattern exactly whatever the load (the fluid's too), comma-separated"),
       text("objectives", "drag_along", "",
            "per controlled joint: drag (|F|, N) | drag_along (Eq. 10: F . w, N), F the fluid's force on the bodies "
-           "the joint moves, from the coupling"),
+           "the joint moves, from the coupling | effort (Eq. 1: |torque| x frame_s, N m s, the actuator torque "
+           "that holds the joint under the fluid's reaction)"),
       text("senses", "min", "", "per controlled joint: min | max"),
       text("weights", "", "", "rows 'w11,w12,..; w21,..': joint i descends sum_j w_ij F_j (§5)"),
       text("initial_deg", "", "", "initial angles 'joint=degrees, ...' (default: the model's reference)"),
@@ -166,6 +167,8 @@ ControlFluidKind::ControlFluidKind() {
                               "mean (Fig. 2); frames + 1 if never"},
       {"final_drag_n", "N", "first controlled joint: mean |F| of the fluid on its bodies over the last average_frames"},
       {"final_drag_along_n", "N", "the same along w (Eq. 10)"},
+      {"final_effort_n_m_s", "N m s", "first controlled joint: mean effort (Eq. 1, |torque| x frame_s) over the last "
+                                      "average_frames"},
       {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
       {"forcing_iterations_most", "", "most CG iterations of the projected forcing in any coupled step"},
       {"markers", "", "outline markers"},
@@ -242,7 +245,7 @@ Result ControlFluidKind::run(const Params& params) const {
   Series& residual = ts["servo_residual_rad"] = {{}, "rad"};
   Series& flow = ts["flow_angle_deg"] = {{}, "deg"};
   std::vector<Vec3> lines;  // per frame: anchor -> centre of mass of the first joint's bodies
-  std::vector<Series*> angle, target, objective, derivative, drag, drag_along, fx, fz;
+  std::vector<Series*> angle, target, objective, derivative, drag, drag_along, fx, fz, torque, effort;
   for (const auto& j : p.controlled) {
     angle.push_back(&(ts["angle_deg_" + j] = {{}, "deg"}));
     target.push_back(&(ts["target_deg_" + j] = {{}, "deg"}));
@@ -252,6 +255,8 @@ Result ControlFluidKind::run(const Params& params) const {
     drag_along.push_back(&(ts["drag_along_n_" + j] = {{}, "N"}));
     fx.push_back(&(ts["force_x_n_" + j] = {{}, "N"}));
     fz.push_back(&(ts["force_z_n_" + j] = {{}, "N"}));
+    torque.push_back(&(ts["torque_n_m_" + j] = {{}, "N m"}));
+    effort.push_back(&(ts["effort_n_m_s_" + j] = {{}, "N m s"}));
   }
   // §7.1: the force on all bodies, the senses followed, the PD-driven angles (the flap).
   Series& body_fx = ts["force_x_n_bodies"] = {{}, "N"};
@@ -319,6 +324,8 @@ Result ControlFluidKind::run(const Params& params) const {
         drag_along[i]->values.push_back(fr.measures.drag_along_n[i]);
         fx[i]->values.push_back(fr.measures.drag_vector_n[i][0]);
         fz[i]->values.push_back(fr.measures.drag_vector_n[i][2]);
+        torque[i]->values.push_back(fr.measures.torque_n_m[i]);
+        effort[i]->values.push_back(fr.measures.effort_n_m_s[i]);
       }
       body_fx.values.push_back(controller.frameBodiesForce_n()[0]);
       body_fz.values.push_back(controller.frameBodiesForce_n()[2]);
@@ -347,6 +354,7 @@ Result ControlFluidKind::run(const Params& params) const {
   m["converged_frame"] = {convergedFrame(angles, r.real("convergence_tolerance_deg"), tail), ""};
   m["final_drag_n"] = {tailMean(drag[0]->values, tail), "N"};
   m["final_drag_along_n"] = {tailMean(drag_along[0]->values, tail), "N"};
+  m["final_effort_n_m_s"] = {tailMean(effort[0]->values, tail), "N m s"};
   m["max_servo_residual_rad"] = {max_residual, "rad"};
   m["forcing_iterations_most"] = {double(controller.maxForcingIterations()), ""};
   m["markers"] = {double(markers.size()), ""};

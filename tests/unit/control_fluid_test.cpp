@@ -1,8 +1,9 @@
 // The controller in the coupled fluid (issue 16; Lentine et al. 2010 §4.3, §5): per-DOF
 // evaluations on their own copies of the fluid give bitwise the same frames for any thread count,
-// and a re-evaluation from the same state repeats itself exactly.
+// and a re-evaluation from the same state repeats itself exactly; effort (Eq. 1) in the fluid.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "control/fluid_controller.hpp"
@@ -67,16 +68,52 @@ TEST_F(ControlFluidTest, BitwiseSameForAnyThreadCount) {
   EXPECT_NE(one[3], 0.0);
 }
 
-TEST_F(ControlFluidTest, EffortAndSteadyStateAreRefused) {
+TEST_F(ControlFluidTest, SteadyStateIsRefused) {
   const auto model = rigid::RigidModel::load(testing::writeText(file("block.xml"), testing::blockXml(0.02, 0)));
+  ControllerParams p;
+  p.controlled = {"hinge"};
+  p.objectives = {Objective::drag};
+  p.senses = {Sense::minimize};
+  p.steady_state = true;
+  EXPECT_NE(validate(p, FluidControlParams{}, model).find("settle_steps"), std::string::npos);
+}
+
+// Eq. 1 in the fluid: the block held across a stream (strength 0) needs the actuator torque that
+// cancels the fluid's moment about the hinge, -(tau_b + (x_b - anchor) x F_b) . y from the
+// coupling's last reaction; its effort is |torque| x frame and is the effort objective's value.
+TEST_F(ControlFluidTest, EffortIsTheTorqueThatHoldsTheJointAgainstTheFluid) {
+  auto model = rigid::RigidModel::load(testing::writeText(file("block.xml"), testing::blockXml(0.1, 0)));
   ControllerParams p;
   p.controlled = {"hinge"};
   p.objectives = {Objective::effort};
   p.senses = {Sense::minimize};
-  EXPECT_NE(validate(p, FluidControlParams{}, model).find("effort"), std::string::npos);
-  p.objectives = {Objective::drag};
-  p.steady_state = true;
-  EXPECT_NE(validate(p, FluidControlParams{}, model).find("settle_steps"), std::string::npos);
+  p.strength_rad_per_s = 0;
+  p.substeps = 1;
+  model.setTimestep(p.frame_s);
+  fluid::FluidParams fp;
+  fp.domain_width_m = fp.domain_height_m = 4.0;
+  fp.cells_x = fp.cells_y = 32;
+  fp.kinematic_viscosity_m2_per_s = 0;
+  fp.walls.left.type = fp.walls.right.type = fluid::WallType::open;
+  coupling::RigidFluidParams cp;
+  cp.origin_x_m = -1.5;
+  cp.origin_z_m = -2.0;
+  cp.inflow.stream_m_per_s = 0.5;
+  cp.inflow.stream_columns = 2;
+  FluidController c(model, p, FluidControlParams{}, {{"hinge", -1.2}}, fp, cp);
+  c.hold(5);
+  FrameRecord r;
+  for (int k = 0; k < 3; ++k) r = c.frame();
+  const auto& co = c.coupling();
+  const int body = model.joint(model.findJoint("hinge")).body;
+  const double* anchor = c.data().jointAnchor(model.findJoint("hinge"));
+  const Vec3& f = co.bodyForce_n()[body];
+  const Vec3& x = co.bodyPoint_m()[body];
+  const double moment_y = co.bodyTorque_n_m()[body][1] + (x[2] - anchor[2]) * f[0] - (x[0] - anchor[0]) * f[2];
+  ASSERT_GT(std::abs(moment_y), 1e-3);  // the stream pushes on the tilted block
+  EXPECT_NEAR(r.measures.torque_n_m[0], -moment_y, 1e-9 * std::abs(moment_y));
+  EXPECT_DOUBLE_EQ(r.measures.effort_n_m_s[0], std::abs(r.measures.torque_n_m[0]) * p.frame_s);
+  EXPECT_DOUBLE_EQ(r.objective[0], r.measures.effort_n_m_s[0]);
 }
 
 }  // namespace
