@@ -41,10 +41,15 @@ def load(run_dir):
     axes = json.loads(text(index["sweep"].attrs["columns_json"]))
     if "label" in index["sweep"] and any(text(v) for v in index["sweep/label"][...]):
         axes = ["label"] + [a for a in axes if a != "label"]
-    sweep = {k: index["sweep"][k][...] for k in axes}
-    points = []
-    for path in sorted(glob.glob(os.path.join(run_dir, "point_*.h5"))):
-        points.append(h5py.File(path, "r"))
+    # Row k of the sweep is point k; a point not (yet) written drops its row, so that the sweep
+    # and the point files stay aligned (an unfinished or failed point must not relabel the rest).
+    paths = sorted(glob.glob(os.path.join(run_dir, "point_*.h5")))
+    rows = [int(os.path.basename(p)[len("point_"):-len(".h5")]) for p in paths]
+    sweep = {k: index["sweep"][k][...][rows] for k in axes}
+    missing = len(index["sweep"][axes[0]]) - len(rows) if axes else 0
+    if missing:
+        print(f"{run_dir}: {missing} point(s) not written; drawn without them")
+    points = [h5py.File(p, "r") for p in paths]
     return sweep, points
 
 
