@@ -106,7 +106,7 @@ FluidController::FluidController(const rigid::RigidModel& model, ControllerParam
   main_ = std::make_unique<World>(model, initial, fluid, cp, armature);
   captureHolds(pres_, main_->data.qpos());
   pool_ = std::make_unique<fluid::WorkerPool>(p_.threads);
-  for (int k = 0; k < fluid::piece_count(pool_.get()); ++k)
+  for (int k = 0; k < fluid::thread_piece_count(pool_.get()); ++k)
     workers_.push_back(std::make_unique<World>(model, initial, fluid, cp, armature));
   const int n = int(p_.controlled.size());
   direction_.assign(n, 0.0);

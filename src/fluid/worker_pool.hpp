@@ -123,6 +123,9 @@ void for_thread_pieces(WorkerPool* pool, int begin, int end, int quantum, Body&&
   });
 }
 
+/// Number of pieces for_thread_pieces() uses: one per thread, so per-piece scratch is indexed by part.
+inline int thread_piece_count(const WorkerPool* pool) { return pool == nullptr ? 1 : pool->threads(); }
+
 /// Number of pieces for_pieces() uses (≤ kMaxParts): per-piece scratch is indexed by part.
 inline int piece_count(const WorkerPool* pool) { return pool == nullptr ? 1 : pool->parts(); }
 
