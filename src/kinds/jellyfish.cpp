@@ -288,9 +288,13 @@ JellyfishKind::JellyfishKind() {
       .kinematic_viscosity_m2_per_s = 1.304e-5,
       .viscosity_doc = "ten times water (Re about 60 for the 4 cm bell; 2D IB jellyfish studies run Re 10-300). The "
                        "paper's 1.304e-3 has no units; read as Pa s (water at 10 C) it gives 1.304e-6 m^2/s, Re about 600, "
-                       "whose boundary layers (1.4 mm at 0.7 Hz) no affordable grid resolves: the distance did not "
-                       "converge at 4/2/1 mm cells (convergence.toml). Chosen as the most water-like viscosity at which "
-                       "it does; 1.304e-6 is one override away",
+                       "whose boundary layers (1.4 mm at 0.7 Hz) no affordable grid resolves. This value does not "
+                       "converge either: 0.5 mm cells move the 1 mm distance per cycle by 10-13% (convergence_fine.toml), "
+                       "and up to 33% with the pulse-driven bell (convergence_pulse.toml), whose Stokes layer (1.7 mm at "
+                       "0.7 Hz) spans under two 1 mm cells. At 5e-5 (Re about 16) the pulse-driven bell converges in "
+                       "the grid to 1% and, at 0.6-0.7 Hz, in the scheme to 5% (convergence_pulse_viscous.toml): the "
+                       "candidate default, not yet adopted. "
+                       "1.304e-6 is one override away",
       .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space; the default since "
                        "the first-order scheme moved distances 2-5x, issue 13), the paper's semi-Lagrangian (Stam 1999), or "
                        "upwind2_rk2 (Fromm upwind fluxes + Heun, second order, CFL <= 0.5; the scheme change of "
