@@ -291,9 +291,12 @@ JellyfishKind::JellyfishKind() {
                        "whose boundary layers (1.4 mm at 0.7 Hz) no affordable grid resolves. This value does not "
                        "converge either: 0.5 mm cells move the 1 mm distance per cycle by 10-13% (convergence_fine.toml), "
                        "and up to 33% with the pulse-driven bell (convergence_pulse.toml), whose Stokes layer (1.7 mm at "
-                       "0.7 Hz) spans under two 1 mm cells. At 5e-5 (Re about 16) the pulse-driven bell converges in "
-                       "the grid to 1% and, at 0.6-0.7 Hz, in the scheme to 5% (convergence_pulse_viscous.toml): the "
-                       "candidate default, not yet adopted. "
+                       "0.7 Hz) spans under two 1 mm cells. At 5e-5 (Re about 16) the pulse-driven bell's 0.5 and 1 mm "
+                       "cells agree to 1% with dt halved alongside (convergence_pulse_viscous.toml), and the scheme to 5% "
+                       "at 0.6-0.7 Hz, but the step alone is not converged at 1 mm: halving 0.000625 s moves the 0.7 Hz "
+                       "distance by -2.8% (first order; about 6% and 9% from the step's limit at 0.7 and 0.8 Hz, "
+                       "convergence_box_step_viscous.toml), so the grid study's 1% is two errors of opposite sign. "
+                       "The stroke amplitude is converged in grid, step and scheme to 1-3%. Not yet the default. "
                        "1.304e-6 is one override away",
       .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space; the default since "
                        "the first-order scheme moved distances 2-5x, issue 13), the paper's semi-Lagrangian (Stam 1999), or "
@@ -333,7 +336,11 @@ JellyfishKind::JellyfishKind() {
            "swimmer swim its whole window without meeting the top wall"),
       // --- measurement
       real("warmup_cycles", 1.0, "", 0, 1000, "cycles before the measured window"),
-      real("duration_s", 10.0, "s", 1e-6, 1e6, "measured window, the same for every frequency"),
+      real("duration_s", 10.0, "s", 1e-6, 1e6,
+           "measured window, the same for every frequency. Keep contraction_hz x duration_s whole: "
+           "otherwise the window ends part way through a cycle and distance_m carries that part's surge "
+           "or slide (at 0.65 Hz, 6.5 cycles in 10 s, the pulse-driven bell's net fraction was 0.56 "
+           "against 0.48-0.49 at 0.6 and 0.7 Hz; frequency_sweep_viscous_coarse.toml)"),
       real("frame_rate_hz", 25.0, "Hz", 1e-3, 1e4, "series and marker frames"),
       boolean("store_fields", false, "store vorticity fields (frames × ny × nx) with an XDMF sidecar"),
       real("field_rate_hz", 10.0, "Hz", 1e-3, 1e4, "field frames per second when store_fields"),
