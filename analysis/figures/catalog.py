@@ -68,8 +68,9 @@ FIGURES = [
            "(§3.3).",
            "frequency_sweep", "rm_fig5", None),
     Figure("rm", "Fig. 5 (converged setting)",
-           "The same claim on the pulse-driven bell at nu = 5e-5 m^2/s, 1 mm cells, whose grid and scheme studies "
-           "converge (convergence_pulse_viscous, convergence_box_step_viscous; make reproduce-full).",
+           "The same claim on the pulse-driven bell at nu = 5e-5 m^2/s, 1 mm cells, where the grid and the scheme "
+           "agree to 5% and the step is 1-9% from its limit (convergence_pulse_viscous, "
+           "convergence_box_step_viscous; make reproduce-full).",
            "frequency_sweep_viscous", "rm_fig5", None),
     Figure("rm", "Fig. 6", "Trace particles show the fluid flow around the jellyfish through a contraction cycle.",
            "morphology", "rm_fig6", []),
