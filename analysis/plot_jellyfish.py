@@ -5,8 +5,9 @@ usage: /usr/bin/python3 analysis/plot_jellyfish.py RUN_DIR [--out DIR] [--axis N
 
 Writes to RUN_DIR/figures/ (or --out):
   trajectories.png  left: the centroid's axial displacement against time for every point
-                    (Rudolf & Mould 2009 Fig. 5 left); right: distance_m against the sweep axis
-                    (Fig. 5 right) when the run sweeps a numeric parameter, else a bar per point.
+                    (Rudolf & Mould 2009 Fig. 5 left); right: the distance in the window at its
+                    whole cycles' mean speed against the sweep axis (Fig. 5 right), a curve per
+                    grid and step, when the run sweeps a numeric parameter, else a bar per point.
   morphology_<k>.png  bell outlines through one cycle after the warm-up, as a film strip
                     (Fig. 11): subumbrella (markers), exumbrella projected outward by the
                     thickness along the normals (§3.4), tentacles, muscle springs in grey.
@@ -103,6 +104,25 @@ def plucked(f):
     return np.isfinite(metric(f, "natural_hz"))
 
 
+def window_distance(f):
+    """Distance in the window at the mean speed of its whole cycles: a window that ends part way
+    through a cycle (0.65 Hz over 10 s) would add that part's surge to distance_m. Files written
+    before cycle_speed_m_per_s existed give distance_m."""
+    speed = metric(f, "cycle_speed_m_per_s")
+    return speed * float(param(f, "duration_s")) if np.isfinite(speed) else metric(f, "distance_m")
+
+
+def settings(points, indices):
+    """The points grouped by grid and step, so that a run of several settings draws one curve each."""
+    groups = {}
+    for k in indices:
+        f = points[k]
+        cell_mm = 1e3 * float(param(f, "domain_m")) / float(param(f, "cells"))
+        key = (round(cell_mm, 6), float(param(f, "dt_s")))
+        groups.setdefault(key, []).append(k)
+    return [(f"{c:g} mm, dt {dt:g} s" if len(groups) > 1 else None, ks) for (c, dt), ks in sorted(groups.items())]
+
+
 def trajectories(sweep, points, out, axis_name):
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
     axis = numeric_axis(sweep, axis_name)
@@ -119,14 +139,16 @@ def trajectories(sweep, points, out, axis_name):
     left.set_title("trajectories (Fig. 5 left)")
     if n <= 8:
         left.legend(fontsize=7)
-    dist = np.array([metric(f, "distance_m") for f in points])
+    dist = np.array([window_distance(f) for f in points])
     driven = np.array([not plucked(f) for f in points])
     if axis:
         x = sweep[axis]
-        order = [i for i in np.argsort(x) if driven[i]] or list(np.argsort(x))
-        right.plot(x[order], dist[order] * 1e3, "ko-", ms=3)
-        best = order[int(np.nanargmax(dist[order]))]
-        right.axvline(x[best], color="tab:red", lw=0.8, ls="--", label=f"max at {axis} = {x[best]:g}")
+        ranked = [i for i in np.argsort(x, kind="stable") if driven[i]] or list(np.argsort(x, kind="stable"))
+        for g, (name, ks) in enumerate(settings(points, ranked)):
+            colour = f"C{g}" if name else "k"
+            right.plot(x[ks], dist[ks] * 1e3, "o-", color=colour, ms=3, label=name)
+            best = ks[int(np.nanargmax(dist[ks]))]
+            right.axvline(x[best], color=colour, lw=0.8, ls="--", label=f"max at {axis} = {x[best]:g}")
         fn = [metric(f, "natural_hz") for f in points if plucked(f)]
         if fn and axis == "contraction_hz":
             right.axvline(np.mean(fn), color="tab:blue", lw=0.8, ls=":", label=f"f_n = {np.mean(fn):.3g} Hz (pluck)")
@@ -136,7 +158,7 @@ def trajectories(sweep, points, out, axis_name):
         right.bar(range(n), dist * 1e3, color="0.4")
         right.set_xticks(range(n), [label_of(sweep, k) for k in range(n)], rotation=20, fontsize=7)
     right.axhline(0, color="0.7", lw=0.6)
-    right.set_ylabel("distance travelled in the window (mm)")
+    right.set_ylabel("distance in the window at its whole cycles' rate (mm)")
     right.set_title("distance (Fig. 5 right)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "trajectories.png"), dpi=110)
@@ -248,13 +270,16 @@ def resonance(sweep, points, out):
     left.legend(fontsize=7)
     driven = [k for k, f in enumerate(points) if not plucked(f)]
     if driven and "contraction_hz" in sweep:
-        hz = np.array([float(sweep["contraction_hz"][k]) for k in driven])
-        order = np.argsort(hz)
-        amp = np.array([metric(points[k], "stroke_amplitude") for k in driven])
-        dpc = np.array([metric(points[k], "distance_per_cycle_m") for k in driven])
-        right.plot(hz[order], amp[order], "ko-", ms=3, label="stroke amplitude")
+        hz = {k: float(sweep["contraction_hz"][k]) for k in driven}
         twin = right.twinx()
-        twin.plot(hz[order], dpc[order] * 1e3, "s--", color="tab:green", ms=3, label="distance per cycle (mm)")
+        for g, (name, ks) in enumerate(settings(points, sorted(driven, key=lambda k: hz[k]))):
+            x = [hz[k] for k in ks]
+            amp = [metric(points[k], "stroke_amplitude") for k in ks]
+            dpc = [metric(points[k], "distance_per_cycle_m") * 1e3 for k in ks]
+            right.plot(x, amp, "o-", color="k", alpha=1 - 0.3 * g, ms=3,
+                       label="stroke amplitude" + (f" ({name})" if name else ""))
+            twin.plot(x, dpc, "s--", color="tab:green", alpha=1 - 0.3 * g, ms=3,
+                      label="distance per cycle" + (f" ({name})" if name else ""))
         twin.set_ylabel("distance per cycle (mm)", color="tab:green")
         for k in plucks:
             right.axvline(metric(points[k], "natural_hz"), color="tab:blue", ls=":", lw=1)
@@ -287,7 +312,7 @@ def size_scaling(sweep, points, out):
             continue
         fn = metric(plucks[0], "natural_hz")
         hz = np.array([float(param(f, "contraction_hz")) for f in driven])
-        dist = np.array([metric(f, "distance_m") for f in driven]) * 1e3
+        dist = np.array([window_distance(f) for f in driven]) * 1e3
         colour = f"C{i}"
         left.plot(hz, dist, "o-", color=colour, ms=3, label=f"{d * 100:g} cm (f_n {fn:.3g} Hz)")
         left.axvline(fn, color=colour, ls=":", lw=1)
@@ -295,7 +320,7 @@ def size_scaling(sweep, points, out):
         peak_all.append(hz[int(np.nanargmax(dist))])
     left.set_xscale("log")
     left.set_xlabel("driving frequency (Hz)")
-    left.set_ylabel("distance in the window (mm)")
+    left.set_ylabel("distance in the window at its whole cycles' rate (mm)")
     left.set_title("distance against frequency; dotted: each size's f_n")
     left.legend(fontsize=7)
     if fn_all:

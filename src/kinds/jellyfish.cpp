@@ -337,10 +337,11 @@ JellyfishKind::JellyfishKind() {
       // --- measurement
       real("warmup_cycles", 1.0, "", 0, 1000, "cycles before the measured window"),
       real("duration_s", 10.0, "s", 1e-6, 1e6,
-           "measured window, the same for every frequency. Keep contraction_hz x duration_s whole: "
-           "otherwise the window ends part way through a cycle and distance_m carries that part's surge "
-           "or slide (at 0.65 Hz, 6.5 cycles in 10 s, the pulse-driven bell's net fraction was 0.56 "
-           "against 0.48-0.49 at 0.6 and 0.7 Hz; frequency_sweep_viscous_coarse.toml)"),
+           "measured window, the same for every frequency. When contraction_hz x duration_s is not whole the "
+           "window ends part way through a cycle and distance_m carries that part's surge or slide (at 0.65 Hz, "
+           "6.5 cycles in 10 s, the pulse-driven bell's was 14.33 mm against 10.84 and 11.65 at 0.6 and 0.7 Hz, "
+           "twice frequency_sweep_viscous's step): compare frequencies by cycle_speed_m_per_s, which counts "
+           "whole cycles only"),
       real("frame_rate_hz", 25.0, "Hz", 1e-3, 1e4, "series and marker frames"),
       boolean("store_fields", false, "store vorticity fields (frames × ny × nx) with an XDMF sidecar"),
       real("field_rate_hz", 10.0, "Hz", 1e-3, 1e4, "field frames per second when store_fields"),
@@ -350,8 +351,14 @@ JellyfishKind::JellyfishKind() {
     params_.insert(params_.end(), specs->begin(), specs->end());
   metrics_ = {
       {"distance_m", "m", "axial (+y) displacement of the bell's centroid over the measured window"},
-      {"distance_per_cycle_m", "m", "distance_m / cycles in the window"},
+      {"distance_per_cycle_m", "m",
+       "displacement over the window's whole cycles / their number (distance_m / cycles when the window has "
+       "less than one): a window that ends part way through a cycle would add that part's surge or slide"},
       {"mean_speed_m_per_s", "m/s", "distance_m / duration_s"},
+      {"cycle_speed_m_per_s", "m/s",
+       "distance_per_cycle_m x contraction_hz: the mean speed over the window's whole cycles, the measure of "
+       "Fig. 5's 'distance in a given time' that does not depend on where the window cuts the last cycle"},
+      {"whole_cycles", "", "whole contraction cycles in the window (distance_per_cycle_m, the work measures)"},
       {"min_diameter_ratio", "", "smallest aperture width / drawn width in the window"},
       {"stroke_amplitude", "", "largest minus smallest diameter ratio over the second half of the window (the "
                                "frequency response's amplitude, once the start-up has died away)"},
@@ -380,7 +387,7 @@ JellyfishKind::JellyfishKind() {
        "the same from -sum T dr (tension x rest-length shortening): adds the semi-implicit step's damping of the "
        "stiff muscle, which falls in proportion to dt (0.51, 0.25, 0.13 J/m at dt 0.01, 0.005, 0.0025 s at 0.7 Hz)"},
       {"cost_of_transport", "J/(kg m)",
-       "muscle_work_j / (bell mass per metre x distance over those cycles at the window's mean rate); NaN if distance <= 0"},
+       "muscle_work_j / (bell mass per metre x distance over those whole cycles); NaN if that distance <= 0"},
       {"cycles", "", "contraction cycles in the measured window"},
       {"max_cfl", "", "largest max(|u|,|v|) dt / dx of any step"},
       {"max_marker_speed_m_per_s", "m/s", "largest marker speed of any step"},
@@ -479,7 +486,7 @@ Result JellyfishKind::run(const Params& p) const {
 
   jellyfish::SwimmerObservation start;
   double start_work = 0, end_work = 0, start_fluid = 0, end_fluid = 0, min_ratio = std::numeric_limits<double>::infinity(), max_cfl = 0, max_speed = 0;
-  double forward_travel = 0, last_y = 0;
+  double forward_travel = 0, last_y = 0, cycles_end_y = 0;
   std::vector<double> cycle_start_y;  // centroid height at each whole cycle's start and end in the window
   const double period_steps = 1.0 / (r.real("contraction_hz") * dt);
   auto cycleBoundary = [&](long step) {
@@ -512,6 +519,7 @@ Result JellyfishKind::run(const Params& p) const {
         start_fluid = swimmer.fluid_work_j_per_m();
       }
       if (step == plan.work_end_step) {
+        cycles_end_y = o.centroid_m.y;
         end_work = swimmer.muscle_work_j_per_m();
         end_fluid = swimmer.fluid_work_j_per_m();
       }
@@ -543,14 +551,19 @@ Result JellyfishKind::run(const Params& p) const {
   // Work is counted over whole cycles, so that the two work measures compare like with like
   // (over whole cycles the elastic energy stored, far larger than one cycle's work, nearly cancels).
   const double work_cycles = std::round((plan.work_end_step - plan.warmup_steps) * dt * r.real("contraction_hz"));
-  const double work_distance = distance / cycles * std::max(1.0, work_cycles);
+  // A window that ends part way through a cycle adds that part's surge or slide to distance_m (see
+  // duration_s), so the per-cycle measures count the whole cycles only.
+  const double work_distance = work_cycles >= 1 ? cycles_end_y - start.centroid_m.y : distance / cycles;
+  const double per_cycle = work_distance / std::max(1.0, work_cycles);
   const double work = end_work - start_work;
   const double fluid_work = end_fluid - start_fluid;
   const double bell_mass = r.real("density_kg_per_m3") * swimmer.body().model().bell_area_m2;
   auto& m = result.metrics;
   m["distance_m"] = {distance, "m"};
-  m["distance_per_cycle_m"] = {distance / cycles, "m"};
+  m["distance_per_cycle_m"] = {per_cycle, "m"};
   m["mean_speed_m_per_s"] = {distance / duration, "m/s"};
+  m["cycle_speed_m_per_s"] = {per_cycle * r.real("contraction_hz"), "m/s"};
+  m["whole_cycles"] = {work_cycles, ""};
   m["min_diameter_ratio"] = {min_ratio, ""};
   m["stroke_amplitude"] = {late_max - late_min, ""};
   // Two estimates of the free decay (jellyfish/ringdown.hpp): zero crossings of the first two periods
@@ -569,11 +582,11 @@ Result JellyfishKind::run(const Params& p) const {
   m["mode_residual"] = {release_step >= 0 ? fit.residual_fraction : nan, ""};
   m["lateral_drift_m"] = {end.centroid_m.x - start.centroid_m.x, "m"};
   m["forward_travel_m"] = {forward_travel, "m"};
-  m["cycle_distance_spread"] = {cycleSpread(cycle_start_y, distance / cycles), ""};
+  m["cycle_distance_spread"] = {cycleSpread(cycle_start_y, per_cycle), ""};
   m["net_fraction"] = {forward_travel > 0 ? distance / forward_travel : nan, ""};
   m["muscle_work_j"] = {end_fluid - start_fluid, "J/m"};
   m["muscle_work_direct_j"] = {work, "J/m"};
-  m["cost_of_transport"] = {distance > 0 ? fluid_work / (bell_mass * work_distance) : std::nan(""), "J/(kg m)"};
+  m["cost_of_transport"] = {work_distance > 0 ? fluid_work / (bell_mass * work_distance) : nan, "J/(kg m)"};
   m["cycles"] = {cycles, ""};
   m["max_cfl"] = {max_cfl, ""};
   m["max_marker_speed_m_per_s"] = {max_speed, "m/s"};

@@ -78,6 +78,22 @@ for k in range(2):
         assert np.isnan(m["cycle_distance_spread"][()]), m["cycle_distance_spread"][()]
 PY
 
+# A window of 1.5 cycles: the per-cycle measures count its one whole cycle (frames 10 to 20), while
+# distance_m runs to the window's end half way through the next cycle.
+"$bin" run "$scratch/jf.toml" params.duration_s=1.5 params.store_fields=false 'sweep.expansion=["staggered"]' \
+  --out "$scratch/h" >/dev/null 2>&1
+/usr/bin/python3 - "$scratch/h" <<'PY'
+import sys, os, h5py
+with h5py.File(os.path.join(sys.argv[1], "point_000000.h5"), "r") as f:
+    m = f["metrics"]
+    y = f["timeseries/centroid_y_m"][...]
+    assert len(y) == 26 and m["whole_cycles"][()] == 1.0, (len(y), m["whole_cycles"][()])
+    assert abs(m["distance_per_cycle_m"][()] - (y[20] - y[10])) < 1e-15, (m["distance_per_cycle_m"][()], y)
+    assert m["cycle_speed_m_per_s"][()] == m["distance_per_cycle_m"][()]   # 1 Hz
+    assert abs(m["distance_m"][()] - (y[25] - y[10])) < 1e-15
+    assert abs(m["distance_m"][()] - m["distance_per_cycle_m"][()]) > 1e-6, (m["distance_m"][()], y)
+PY
+
 sed 's/known_deviation = .*//' "$scratch/jf.toml" >"$scratch/fail.toml"
 set +e
 "$bin" run "$scratch/fail.toml" --out "$scratch/c" --force >/dev/null 2>&1
