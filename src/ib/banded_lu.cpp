@@ -62,4 +62,14 @@ void BandedLU::solve(std::vector<double>& b) const {
   }
 }
 
+void BandedLU::multiply(const std::vector<double>& x, std::vector<double>& y) const {
+  if (static_cast<int>(x.size()) != n_) throw std::invalid_argument("banded LU: vector of the wrong size");
+  const int kv = kl_ + ku_;
+  y.assign(n_, 0.0);
+  for (int j = 0; j < n_; ++j) {
+    const double xj = x[j];
+    for (int i = std::max(0, j - ku_); i <= std::min(n_ - 1, j + kl_); ++i) y[i] += ab(kv + i - j, j) * xj;
+  }
+}
+
 }  // namespace creaturelab::ib

@@ -29,6 +29,8 @@ class BandedLU {
   bool factor();
   /// Solves A x = b in place with the factors of factor().
   void solve(std::vector<double>& b) const;
+  /// y = A x, for a matrix not yet factored (a fixed order of operations, like factor()).
+  void multiply(const std::vector<double>& x, std::vector<double>& y) const;
 
  private:
   double& ab(int row, int j) { return band_[static_cast<std::size_t>(j) * rows_ + row]; }

@@ -22,12 +22,14 @@ std::optional<ImplicitMobility> parse_implicit_mobility(std::string_view name) {
 
 ImmersedBoundary2::ImmersedBoundary2(fluid::FluidSolver2& fluid, const ElasticBody& body,
                                      std::vector<fluid::Vec2> markers_m, CouplingParams params)
-    : fluid_(fluid), body_(body), markers_(std::move(markers_m)), params_(params) {
+    : fluid_(fluid), body_(body), markers_(std::move(markers_m)), params_(params), banded_solver_(params.factor_reuse) {
   if (static_cast<int>(markers_.size()) != body_.markerCount())
     throw std::invalid_argument("immersed boundary: " + std::to_string(markers_.size()) + " markers for a body of " +
                                 std::to_string(body_.markerCount()));
   if (!(params_.implicit_mass_factor > 0))
     throw std::invalid_argument("immersed boundary: implicit_mass_factor must be > 0");
+  if (!(params_.factor_reuse.tolerance >= 0) || params_.factor_reuse.max_sweeps < 1)
+    throw std::invalid_argument("immersed boundary: factor reuse needs a tolerance >= 0 and at least one sweep");
   force_.resize(markers_.size());
   velocity_.resize(markers_.size());
   if (params_.banded_solve && static_cast<int>(markers_.size()) >= kBandedFromMarkers) order_ = body_.solveOrder();
@@ -104,12 +106,11 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
       subtract_dt_mk(stiffness, dt_s, [&](int i, int j) -> double& {
         return banded_.at(banded_index(slot_, i), banded_index(slot_, j));
       });
-      if (!banded_.factor())
-        throw std::runtime_error("immersed boundary: the semi-implicit force system is singular at t = " +
-                                 std::to_string(t1_s) + " s");
       banded_rhs_.resize(n);
       for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = rhs[i];
-      banded_.solve(banded_rhs_);
+      if (!banded_solver_.solve(banded_, banded_rhs_))
+        throw std::runtime_error("immersed boundary: the semi-implicit force system is singular at t = " +
+                                 std::to_string(t1_s) + " s");
       predicted.resize(n);
       for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[banded_index(slot_, i)];
     } else {

@@ -51,6 +51,7 @@
 
 #include "fluid/fluid_solver2.hpp"
 #include "ib/banded_lu.hpp"
+#include "ib/reused_banded_solve.hpp"
 #include "ib/kernel.hpp"
 #include "ib/transfer.hpp"
 
@@ -91,6 +92,9 @@ struct CouplingParams {
   // stencil only: solve banded when the body gives a solveOrder() and has kBandedFromMarkers
   // markers or more (the same system; false keeps the dense LU, for comparison).
   bool banded_solve = true;
+  // banded only: refine on an earlier step's factors, factoring anew when that stops converging
+  // (ib/reused_banded_solve.hpp); tolerance 0 factors every step.
+  FactorReuse factor_reuse;
 };
 
 struct CouplingStepReport {
@@ -112,6 +116,8 @@ class ImmersedBoundary2 {
   /// The force spread in the last step (after the semi-implicit correction), N/m.
   const std::vector<fluid::Vec2>& applied_force_n_per_m() const { return force_; }
   const CouplingParams& params() const { return params_; }
+  /// The banded solve's counts so far: systems solved, factorisations, refinement sweeps.
+  const ReusedBandedSolve& banded_solver() const { return banded_solver_; }
 
  private:
   void semiImplicitForce(double t1_s, double dt_s);
@@ -133,6 +139,7 @@ class ImmersedBoundary2 {
   // unknown 2 k + axis of marker order_[k]; slot_[marker] = k.
   std::vector<int> order_, slot_;
   BandedLU banded_;
+  ReusedBandedSolve banded_solver_;
   std::vector<double> banded_rhs_;
 };
 

@@ -40,6 +40,7 @@ class Swimmer {
   SwimmerObservation observe() const;
   double time_s() const { return fluid_->time_s(); }
   const std::vector<fluid::Vec2>& markers_m() const { return coupling_->markers_m(); }
+  const ib::ImmersedBoundary2& coupling() const { return *coupling_; }
   /// Work the body has done on the fluid since the start, Σ_steps Σ_k F_k · (X_k^{n+1} − X_k^n), J per
   /// metre of depth, with F the force actually spread (Peskin 2002: with adjoint spreading and
   /// interpolation this is the power the fluid receives).

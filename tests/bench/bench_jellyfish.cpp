@@ -28,6 +28,7 @@
 #include <benchmark/benchmark.h>
 #include <time.h>
 
+#include <cmath>
 #include <exception>
 #include <memory>
 
@@ -94,6 +95,9 @@ void measure(benchmark::State& state, const SwimmerConfig& config) {
   state.counters["fluid_threads"] = config.fluid.threads;
   state.counters["ms_per_step"] = 1e3 * cpu / static_cast<double>(seconds * steps_per_second);
   state.counters["markers"] = static_cast<double>(swimmer->markers_m().size());
+  const ib::ReusedBandedSolve& solver = swimmer->coupling().banded_solver();
+  if (solver.solves() > 0)
+    state.counters["factorizations_per_solve"] = double(solver.factorizations()) / double(solver.solves());
 }
 
 void BM_SimulatedSecond(benchmark::State& state) {
@@ -191,6 +195,33 @@ BENCHMARK(BM_SimulatedSecondPeskin256)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->MinTime(4.0);
+
+// The setting of the converged study (issue 13; convergence_pulse_viscous.toml,
+// frequency_sweep_viscous.toml): the grid study's bell with 256 segments, Peskin's function at the
+// 4 mm radius, a 0.3 s pulse of 14 N/m² per cycle at 0.7 Hz, ν = 5e-5 m²/s, a 0.3 m box (150 cells:
+// 2 mm, dt 0.00125 s; 300: 1 mm, dt 0.000625 s). Second argument: 0 factors the banded
+// semi-implicit system every step; d refines on earlier factors (ib/reused_banded_solve.hpp) to a
+// residual of 10^-d. Issue 13 §4's goal for a converged point, 11 simulated s in 60 CPU s, is 0.18 simulated
+// s per CPU s.
+void BM_SimulatedSecondViscousPulse(benchmark::State& state) {
+  const int cells = static_cast<int>(state.range(0));
+  SwimmerConfig c = gridStudyConfig(cells, ib::Kernel::peskin4, cells / 150, 256);
+  c.fluid.domain_width_m = 0.3;
+  c.fluid.domain_height_m = 0.45;
+  c.fluid.kinematic_viscosity_m2_per_s = 5e-5;
+  c.bell.muscle_tension_n_per_m2 = 14.0;
+  c.activation.shape = ActivationShape::pulse;
+  c.activation.pulse_duration_s = 0.3;
+  c.fluid.fixed_step_s = c.dt_s = 0.1875 / cells;
+  c.coupling.factor_reuse.tolerance = state.range(1) == 0 ? 0.0 : std::pow(10.0, -double(state.range(1)));
+  measure(state, c);
+}
+BENCHMARK(BM_SimulatedSecondViscousPulse)
+    ->ArgNames({"cells", "reuse_digits"})
+    ->ArgsProduct({{150, 300}, {0, 8, 10, 12}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 }  // namespace
 }  // namespace creaturelab::jellyfish

@@ -512,6 +512,7 @@ TEST(Coupling, BandedSolveOfAnOrderedBodyMatchesTheDenseOne) {
     fluid::FluidSolver2 fluid(p);
     CouplingParams c;
     c.kernel = Kernel::peskin4;
+    c.factor_reuse.tolerance = 0;  // a fresh factorisation every step: the banded LU itself
     ImmersedBoundary2 ib(fluid, body, jitteredRing(kMarkers, 5), c);
     for (int s = 0; s < 4; ++s) ib.step(0.01);
     return ib.markers_m();
@@ -527,6 +528,49 @@ TEST(Coupling, BandedSolveOfAnOrderedBodyMatchesTheDenseOne) {
   }
   EXPECT_GT(moved, 1e-4);            // the jitter relaxes: the system did something
   EXPECT_LT(differ, 1e-12 * moved);  // and both solves agree to round-off
+}
+
+// The banded solve refines on an earlier step's factors (ib/reused_banded_solve.hpp): over steps
+// that change the system little it factors less often than it solves, and the markers follow the
+// run that factors every step to within the refinement's tolerance.
+TEST(Coupling, ReusedFactorsGiveTheStepsOfFreshOnes) {
+  constexpr int kMarkers = 320;
+  const OrderedMembrane body(kMarkers, 2000.0);
+  auto run = [&](double tolerance, long* factorizations) {
+    fluid::FluidSolver2 fluid(smallBox());
+    CouplingParams c;
+    c.kernel = Kernel::peskin4;
+    c.factor_reuse.tolerance = tolerance;
+    ImmersedBoundary2 ib(fluid, body, jitteredRing(kMarkers, 5), c);
+    for (int s = 0; s < 10; ++s) ib.step(0.002);
+    *factorizations = ib.banded_solver().factorizations();
+    EXPECT_EQ(ib.banded_solver().solves(), 10);
+    return ib.markers_m();
+  };
+  long fresh_count = 0, reused_count = 0;
+  const std::vector<Vec2> fresh = run(0.0, &fresh_count), reused = run(1e-12, &reused_count);
+  const std::vector<Vec2> start = jitteredRing(kMarkers, 5);
+  double moved = 0, differ = 0;
+  for (int k = 0; k < kMarkers; ++k) {
+    moved = std::max(moved, std::hypot(fresh[k].x - start[k].x, fresh[k].y - start[k].y));
+    differ = std::max(differ, std::hypot(fresh[k].x - reused[k].x, fresh[k].y - reused[k].y));
+  }
+  EXPECT_EQ(fresh_count, 10);
+  EXPECT_LT(reused_count, 5);
+  EXPECT_GT(moved, 1e-5);
+  EXPECT_LT(differ, 1e-10 * moved);
+  RecordProperty("factorizations", std::to_string(reused_count));
+}
+
+TEST(Coupling, FactorReuseNeedsASweepAndATolerance) {
+  fluid::FluidSolver2 fluid(smallBox());
+  const MembraneBody body(8, 1.0);
+  CouplingParams c;
+  c.factor_reuse.max_sweeps = 0;
+  EXPECT_THROW(ImmersedBoundary2(fluid, body, jitteredRing(8, 1), c), std::invalid_argument);
+  c.factor_reuse = {};
+  c.factor_reuse.tolerance = -1;
+  EXPECT_THROW(ImmersedBoundary2(fluid, body, jitteredRing(8, 1), c), std::invalid_argument);
 }
 
 TEST(Coupling, MarkerCountMustMatchTheBody) {
