@@ -16,9 +16,8 @@
 // so with four sweeps 1e-12 needed a new factorisation at 87% of the steps and 1e-10 at 72%, and
 // gained nothing; 1e-8 with six sweeps at 17% (1.7% on 1 mm, where the kernel spans twice the cells
 // and a step moves the markers half as far across it), the bell's height after the 400 steps equal
-// to 12 digits. A whole 11 s point
-// (2 mm, 0.7 Hz): distance 10.1062241675 mm either way (1.1e-11 relative), the stroke to 9e-12, the
-// centroid's series within 1.9e-12 m.
+// to 12 digits. A whole 11 s point (2 mm, 0.7 Hz): distance 10.1062241675 mm either way (1.1e-11
+// relative), the stroke to 9e-12, the centroid's series within 1.9e-12 m.
 // Deterministic: whether to factor depends on the residuals alone, which the same inputs reproduce
 // bit for bit. tolerance = 0 factors every step (the plain banded LU, bit for bit).
 #include <vector>

@@ -104,6 +104,7 @@ struct Schedule {
   long warmup_steps = 0;
   long total_steps = 0;
   long work_end_step = 0;  // end of the last whole cycle in the window (muscle work is per whole cycles)
+  double whole_cycles = 0;  // whole cycles in the window; 0: shorter than a cycle (work_end_step = total_steps)
   long steps_per_frame = 1;
   long steps_per_field = 0;  // 0: no fields
 };
@@ -114,6 +115,7 @@ Schedule schedule(const ParamReader& r) {
   s.warmup_steps = std::lround(r.real("warmup_cycles") / r.real("contraction_hz") / dt);
   s.total_steps = s.warmup_steps + std::lround(r.real("duration_s") / dt);
   const double whole_cycles = std::floor(r.real("duration_s") * r.real("contraction_hz") + 1e-9);
+  s.whole_cycles = whole_cycles;
   s.work_end_step = whole_cycles >= 1 ? s.warmup_steps + std::lround(whole_cycles / r.real("contraction_hz") / dt)
                                       : s.total_steps;
   s.work_end_step = std::min(s.work_end_step, s.total_steps);
@@ -550,11 +552,12 @@ Result JellyfishKind::run(const Params& p) const {
   const double cycles = duration * r.real("contraction_hz");
   // Work is counted over whole cycles, so that the two work measures compare like with like
   // (over whole cycles the elastic energy stored, far larger than one cycle's work, nearly cancels).
-  const double work_cycles = std::round((plan.work_end_step - plan.warmup_steps) * dt * r.real("contraction_hz"));
   // A window that ends part way through a cycle adds that part's surge or slide to distance_m (see
-  // duration_s), so the per-cycle measures count the whole cycles only.
-  const double work_distance = work_cycles >= 1 ? cycles_end_y - start.centroid_m.y : distance / cycles;
-  const double per_cycle = work_distance / std::max(1.0, work_cycles);
+  // duration_s), so the per-cycle measures count the whole cycles only. A window shorter than one
+  // cycle counts all of itself, work and distance alike.
+  const double work_cycles = plan.whole_cycles;
+  const double work_distance = work_cycles >= 1 ? cycles_end_y - start.centroid_m.y : distance;
+  const double per_cycle = work_cycles >= 1 ? work_distance / work_cycles : distance / cycles;
   const double work = end_work - start_work;
   const double fluid_work = end_fluid - start_fluid;
   const double bell_mass = r.real("density_kg_per_m3") * swimmer.body().model().bell_area_m2;

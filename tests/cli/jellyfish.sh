@@ -93,6 +93,16 @@ with h5py.File(os.path.join(sys.argv[1], "point_000000.h5"), "r") as f:
     assert abs(m["distance_m"][()] - (y[25] - y[10])) < 1e-15
     assert abs(m["distance_m"][()] - m["distance_per_cycle_m"][()]) > 1e-6, (m["distance_m"][()], y)
 PY
+# Half a cycle: no whole cycle, so the per-cycle distance is the window's over its 0.5 cycles.
+"$bin" run "$scratch/jf.toml" params.duration_s=0.5 params.store_fields=false 'sweep.expansion=["staggered"]' \
+  --out "$scratch/i" >/dev/null 2>&1
+/usr/bin/python3 - "$scratch/i" <<'PY'
+import sys, os, h5py
+with h5py.File(os.path.join(sys.argv[1], "point_000000.h5"), "r") as f:
+    m = f["metrics"]
+    assert m["whole_cycles"][()] == 0.0 and m["cycles"][()] == 0.5
+    assert m["distance_per_cycle_m"][()] == m["distance_m"][()] / 0.5, (m["distance_per_cycle_m"][()], m["distance_m"][()])
+PY
 
 sed 's/known_deviation = .*//' "$scratch/jf.toml" >"$scratch/fail.toml"
 set +e
