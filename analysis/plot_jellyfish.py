@@ -113,14 +113,18 @@ def window_distance(f):
 
 
 def settings(points, indices):
-    """The points grouped by grid and step, so that a run of several settings draws one curve each."""
+    """The points grouped by grid, step and advection scheme, so that a run of several settings draws one
+    curve each."""
     groups = {}
     for k in indices:
         f = points[k]
         cell_mm = 1e3 * float(param(f, "domain_m")) / float(param(f, "cells"))
-        key = (round(cell_mm, 6), float(param(f, "dt_s")))
+        key = (round(cell_mm, 6), float(param(f, "dt_s")), text(param(f, "advection")))
         groups.setdefault(key, []).append(k)
-    return [(f"{c:g} mm, dt {dt:g} s" if len(groups) > 1 else None, ks) for (c, dt), ks in sorted(groups.items())]
+    schemes = {scheme for _, _, scheme in groups}
+    def name(c, dt, scheme):
+        return f"{c:g} mm, dt {dt:g} s" + (f", {scheme}" if len(schemes) > 1 else "")
+    return [(name(*key) if len(groups) > 1 else None, ks) for key, ks in sorted(groups.items())]
 
 
 def trajectories(sweep, points, out, axis_name):

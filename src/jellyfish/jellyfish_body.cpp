@@ -38,7 +38,10 @@ double JellyfishBody::activation(int m, double t_s) const {
   if (activation_.active_cycles > 0 && t * activation_.contraction_hz >= activation_.active_cycles) return 0.0;
   if (activation_.shape == ActivationShape::hermite)
     return std::clamp((1.0 - muscleFactor(m, t_s)) / (1.0 - lowest_knot_), 0.0, 1.0);
-  const double since_s = wrapPhase(activation_.contraction_hz * t) / activation_.contraction_hz;
+  double since_s = wrapPhase(activation_.contraction_hz * t) / activation_.contraction_hz;
+  const double half_s = 0.5 * activation_.pulse_duration_s;
+  if (since_s > half_s && activation_.pulse_stagger > 0)  // the staggered release (jellyfish_params.hpp)
+    since_s = half_s + (since_s - half_s) / (1.0 - activation_.pulse_stagger * (1.0 - model_.muscles[m].aperture_position));
   if (since_s >= activation_.pulse_duration_s) return 0.0;
   const double s = std::sin(M_PI * since_s / activation_.pulse_duration_s);
   return s * s;

@@ -51,6 +51,7 @@ std::string validate(const ActivationParams& a) {
     if (!std::isfinite(k.value) || !std::isfinite(k.tangent)) e.add("knot " + std::to_string(i) + " is not finite");
   }
   if (!(a.stagger >= 0 && a.stagger < 1)) e.add("stagger must be in [0, 1)");
+  if (!(a.pulse_stagger >= 0 && a.pulse_stagger < 1)) e.add("pulse stagger must be in [0, 1)");
   if (!(a.synaptic_delay_s >= 0)) e.add("synaptic delay must be >= 0");
   if (a.shape == ActivationShape::pulse && !(positive(a.pulse_duration_s) && a.pulse_duration_s * a.contraction_hz <= 1))
     e.add("pulse duration must be > 0 and no longer than the period (1 / contraction_hz)");

@@ -109,6 +109,12 @@ struct ActivationParams {
   ActivationShape shape = ActivationShape::hermite;
   // pulse only. Not given by the paper; Hoover, Porras & Miller 2019 use a fixed-duration pulse.
   double pulse_duration_s = 0.3;
+  // pulse only: staggered expansion (§3.3, Fig. 4 right) for the pulse. Its contraction, the rising
+  // half, is the same for every muscle; the release replays at speed 1 / (1 - pulse_stagger (1 - a)),
+  // a = 0 at the apex and 1 at the aperture, so the apex relaxes first and the bell re-expands from
+  // the apex down, as the Hermite curve's `stagger` does. 0 releases every muscle alike (unison),
+  // the setting every pulse experiment before stagger.toml was measured with.
+  double pulse_stagger = 0.0;
   // Cycles with activation; 0 = every cycle. 1 with a short pulse is a pluck: one contraction,
   // then the bell rings down freely (natural_frequency.toml).
   int active_cycles = 0;

@@ -33,12 +33,19 @@ std::vector<Knot> knots(const ParamReader& r) {
 
 // Calibrated parameters of the active-tension bell (issue 13). B = 1e-4 N m was chosen on 200² with
 // Peskin's grid kernel to put the pluck's f_n at the paper's resonant 0.7 Hz (§3.3, Fig. 5: 0.73 Hz
-// there). With the kind's defaults (hat kernel of the bell's 4 mm thickness, ν = 1.304e-5)
-// the same B rings at 0.641 / 0.629 Hz on 100² / 200² (frequency_sweep.toml), still inside Fig. 5's
-// 0.6-0.8 Hz, and was kept. T_max = 5 N/m² driven at 0.7 Hz gives the smallest diameter ratio 0.59
-// (0.53 at 0.6 Hz; Fig. 3: "56% of its maximum diameter").
+// there). On the converged default setting (below) the same B rings at f_n = 0.575 Hz
+// (frequency_peak_viscous.toml, 1 mm pluck), and was kept. T_max = 14 N/m² with the 0.3 s pulse was
+// chosen at ν = 1.304e-5 on 1 mm to close the bell to Fig. 3's 0.56 of its diameter at 0.6 Hz
+// (convergence_pulse.toml's probes); in the default, more viscous fluid its stroke amplitude is
+// 0.35 at 0.6 Hz.
 constexpr double kCalibratedBendingRigidity = 1.0e-4;
-constexpr double kCalibratedTension = 5.0;
+constexpr double kCalibratedTension = 14.0;
+
+// The default setting is the converged one of convergence.toml (issue 13 §1): ν = 5e-5 m²/s, the
+// 0.3 s activation pulse, Peskin's kernel at the bell's 4 mm, 256 segments, 1 mm cells in a 0.3 m box
+// at 0.000625 s. Until 2026-11-29 the defaults were ν = 1.304e-5, the Hermite curve at T_max 5, the
+// hat kernel, segments following the grid, 2 mm cells in a 0.4 m box at 0.00125 s; the files
+// measured on that setting pin it in their [params].
 
 // bell_segments = 0 follows the grid: the fewest even segments whose drawn length is at most
 // marker_spacing_cells cells (issue 13: markers about half a cell apart, so that the boundary does
@@ -86,6 +93,7 @@ jellyfish::SwimmerConfig config(const ParamReader& r) {
   a.synaptic_delay_s = r.real("synaptic_delay_s");
   a.shape = r.text("activation_shape") == "pulse" ? jellyfish::ActivationShape::pulse : jellyfish::ActivationShape::hermite;
   a.pulse_duration_s = r.real("pulse_duration_s");
+  a.pulse_stagger = r.real("pulse_stagger");
   a.active_cycles = int(r.integer("active_cycles"));
 
   c.fluid = fluidBoxParams(r);
@@ -214,7 +222,8 @@ JellyfishKind::JellyfishKind() {
       // --- activation (§3.3, Fig. 4)
       real("contraction_hz", act.contraction_hz, "Hz", 1e-3, 100, "contraction frequency (Fig. 12: 0.7 Hz)"),
       choice("expansion", "staggered", {"staggered", "unison"},
-             "staggered: aperture springs expand more slowly than apex springs (§3.3, Fig. 4 right); unison: all alike"),
+             "hermite shape: staggered: aperture springs expand more slowly than apex springs (§3.3, Fig. 4 right); "
+             "unison: all alike. The pulse's counterpart is pulse_stagger"),
       real("stagger", act.stagger, "", 0, 0.99,
            "apex springs expand 1/(1 - stagger) times faster than the aperture's (not given in the paper; see "
            "jellyfish/contraction_curve.hpp)"),
@@ -222,10 +231,16 @@ JellyfishKind::JellyfishKind() {
               "Hermite knots of the rest-length curve used (knot0_* .. knot{N-1}_*); the paper gives none"),
       real("synaptic_delay_s", act.synaptic_delay_s, "s", 0, 10,
            "Spencer's synaptic delay per muscle pair from the aperture (§3.1); 0 = off"),
-      choice("activation_shape", "hermite", {"hermite", "pulse"},
-             "hermite: the §3.3 curve (activation 1 at its lowest knot); pulse: sin^2 over pulse_duration_s at each "
-             "cycle's start (Hoover, Porras & Miller 2019)"),
+      choice("activation_shape", "pulse", {"hermite", "pulse"},
+             "pulse (default): sin^2 over pulse_duration_s at each cycle's start, then the elastic bell recoils "
+             "freely (Hoover, Porras & Miller 2019); hermite: the §3.3 curve (activation 1 at its lowest knot), whose "
+             "tension held through the cycle made the distance a small difference of surge and slide that did not "
+             "converge in the grid (convergence_peskin4.toml)"),
       real("pulse_duration_s", act.pulse_duration_s, "s", 1e-4, 100, "pulse shape: length of the contraction pulse"),
+      real("pulse_stagger", act.pulse_stagger, "", 0, 0.99,
+           "pulse shape: staggered expansion (§3.3, Fig. 4 right): the apex muscle's release, the pulse's falling half, "
+           "runs 1/(1 - pulse_stagger) times faster than the aperture's, so the apex relaxes first; 0 = every muscle "
+           "alike (unison; expansion and stagger shape the Hermite curve only). stagger.toml compares 0.5 with 0"),
       integer("active_cycles", 0, 0, 100000,
               "cycles with activation, 0 = all; 1 with a short pulse is a pluck (natural_frequency.toml)"),
   };
@@ -242,10 +257,11 @@ JellyfishKind::JellyfishKind() {
       real("bell_diameter_m", bell.diameter_m, "m", 1e-4, 10, "Fig. 12: 40 mm"),
       real("bell_height_m", bell.height_m, "m", 1e-4, 10, "Fig. 12: 28 mm"),
       real("bell_thickness_m", bell.thickness_m, "m", 1e-5, 1, "Fig. 12: 4 mm; the markers are the subumbrella"),
-      integer("bell_segments", 0, 0, 2048,
+      integer("bell_segments", 256, 0, 2048,
               "springs along the subumbrella (even, >= 8; apex in the middle); 0 = follow the grid: the fewest "
               "with markers at most marker_spacing_cells apart. The body is defined by continuum properties, so "
-              "refining it refines the same bell (issue 13)"),
+              "refining it refines the same bell (issue 13). 256 by default: markers 0.25 cells apart on 1 mm and "
+              "0.5 on 0.5 mm, so the grid study refines the fluid around one discretised body"),
       real("marker_spacing_cells", 0.5, "", 0.05, 4,
            "bell_segments = 0: largest marker spacing in cells (immersed boundaries want <= 1; 0.5 is Peskin 2002's "
            "rule and keeps the membrane's leak small, membrane.toml)"),
@@ -269,37 +285,35 @@ JellyfishKind::JellyfishKind() {
            "rest_length: muscle cross-section per metre of depth per metre of band arc (not given; a 0.1 mm layer "
            "every two 1.98 mm segments, see jellyfish_params.hpp)"),
       real("muscle_tension_n_per_m2", kCalibratedTension, "N/m^2", 0, 1e9,
-           "active_tension: peak tension per metre of depth per metre of band arc. Not given by the paper; calibrated: 5 "
-           "contracts the 4 cm bell to about the paper's 0.56 of its diameter (Fig. 3): 0.53-0.59 driven at 0.6-0.7 Hz"),
+           "active_tension: peak tension per metre of depth per metre of band arc. Not given by the paper; calibrated: 14 "
+           "with the 0.3 s pulse closes the 4 cm bell to Fig. 3's 0.56 of its diameter at 0.6 Hz and ν = 1.304e-5 "
+           "(convergence_pulse.toml); with the Hermite curve 5 did (0.53-0.59 at 0.6-0.7 Hz)"),
       boolean("tentacles", bell.tentacles, "passive tentacle chains at the aperture (§3.2)"),
       real("tentacle_length_m", bell.tentacle_length_m, "m", 1e-5, 10, "not given; half a diameter"),
       real("tentacle_area_factor", bell.tentacle_area_factor, "", 1e-9, 10, "Fig. 12: 1/100 of the bell's section"),
   };
   // --- fluid (§3.2, Fig. 12)
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
-      .domain_m = 0.4,
-      .domain_doc = "side of the square free-slip box: ten diameters (§3.2)",
-      .cells_doc = "fluid cells across the box (Fig. 12: 100; also 50). 200 by default, with dt_s 0.00125: at "
-                   "0.5-0.8 Hz, around the bell's resonance, its distance per cycle is within 1.2-3.7% of 400²'s (at "
-                   "half the step) and its stroke within 0.3-1.8% (convergence.toml), but 800² moves the distance "
-                   "another 10-13% (convergence_fine.toml: not converged; its probes point at the hat kernel's "
-                   "bell depending on its segment count); above 0.9 Hz the Stokes layer is thinner than a cell; 100² is the paper's quick grid "
-                   "(40-70% off)",
-      .cells = 200,
+      .domain_m = 0.3,
+      .domain_doc = "width of the free-slip box (1.5 times as tall, box_aspect): 7.5 diameters. The paper's ten (§3.2, "
+                    "0.4 m) moves the 1 mm distance per cycle by 0.4% at most at 0.6-0.8 Hz and costs a third more "
+                    "(convergence_box_step_viscous.toml)",
+      .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m; also 50). 300 by default, 1 mm cells: at "
+                   "0.6-0.8 Hz the 0.5 mm grid (dt halved alongside) moves the distance per cycle by +0.9 / -0.5 / -1.0% "
+                   "and the stroke amplitude by +1.4 to +3.0% (convergence.toml); 2 mm is 5-10% off in distance "
+                   "(frequency_peak_viscous.toml)",
+      .cells = 300,
       .density_doc = "paper: '1' without units, read as g/cm^3",
-      .kinematic_viscosity_m2_per_s = 1.304e-5,
-      .viscosity_doc = "ten times water (Re about 60 for the 4 cm bell; 2D IB jellyfish studies run Re 10-300). The "
+      .kinematic_viscosity_m2_per_s = 5e-5,
+      .viscosity_doc = "38 times water, Re about 16 for the 4 cm bell (2D IB jellyfish studies run Re 10-300). The "
                        "paper's 1.304e-3 has no units; read as Pa s (water at 10 C) it gives 1.304e-6 m^2/s, Re about 600, "
-                       "whose boundary layers (1.4 mm at 0.7 Hz) no affordable grid resolves. This value does not "
-                       "converge either: 0.5 mm cells move the 1 mm distance per cycle by 10-13% (convergence_fine.toml), "
-                       "and up to 33% with the pulse-driven bell (convergence_pulse.toml), whose Stokes layer (1.7 mm at "
-                       "0.7 Hz) spans under two 1 mm cells. At 5e-5 (Re about 16) the pulse-driven bell's 0.5 and 1 mm "
-                       "cells agree to 1% with dt halved alongside (convergence_pulse_viscous.toml), and the scheme to 5% "
-                       "at 0.6-0.7 Hz, but the step alone is not converged at 1 mm: halving 0.000625 s moves the 0.7 Hz "
-                       "distance by -2.8% (first order; about 6% and 9% from the step's limit at 0.7 and 0.8 Hz, "
-                       "convergence_box_step_viscous.toml), so the grid study's 1% is two errors of opposite sign. "
-                       "The stroke amplitude is converged in grid, step and scheme to 1-3%. Not yet the default. "
-                       "1.304e-6 is one override away",
+                       "whose boundary layers (1.4 mm at 0.7 Hz) no affordable grid resolves. 1.304e-5 (Re 60, the "
+                       "default until 2026-11-29) does not converge either: 0.5 mm cells move the 1 mm distance per "
+                       "cycle by 10-13% with the Hermite drive (convergence_fine.toml) and up to 33% with the pulse "
+                       "(convergence_pulse.toml), whose free recoil is damped in a Stokes layer (1.7 mm at 0.7 Hz) under "
+                       "two 1 mm cells. At 5e-5 the layer is 3.4 mm: 0.5 and 1 mm agree to 1% (convergence.toml) and "
+                       "upwind2_rk2 to 2.6-4.4% of MacCormack on 0.5 mm at 0.6-0.7 Hz. The step is the largest "
+                       "remaining error: see dt_s. 1.304e-6 is one override away",
       .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space; the default since "
                        "the first-order scheme moved distances 2-5x, issue 13), the paper's semi-Lagrangian (Stam 1999), or "
                        "upwind2_rk2 (Fromm upwind fluxes + Heun, second order, CFL <= 0.5; the scheme change of "
@@ -308,29 +322,33 @@ JellyfishKind::JellyfishKind() {
   });
   // --- coupling (§3.2; Peskin 2002)
   const std::vector<ParamSpec> coupling_specs = couplingSpecs({
-      .kernel = "bilinear",
-      .kernel_doc = "spreading/interpolation: the paper's bilinear hat (§3.2), stretched to kernel_radius_m, or "
-                    "Peskin's 4-point function",
+      .kernel = "peskin4",
+      .kernel_doc = "spreading/interpolation: Peskin's 4-point function (default), or the paper's bilinear hat "
+                    "(§3.2), stretched to kernel_radius_m; with the hat the coupled bell did not converge in its "
+                    "segment count (+11% from 128 to 256 on 2 mm, convergence_fine.toml), with Peskin's it does "
+                    "(convergence_peskin4.toml)",
       .mobility_doc = "fluid response assumed by the semi-implicit force: through the markers' stencils "
                       "(ib/coupling.hpp), or each marker alone",
       .kernel_radius_m = 0.004,
       .kernel_radius_doc = "radius of the kernel's support: the bell's thickness (Fig. 12: 4 mm), so the regularised "
                            "boundary is as thick as the umbrella on every grid and a grid study refines one body (with "
                            "the grid's own kernel, 2-4 cells, the distance moved 2-5x per halving, issue 13). A whole "
-                           "multiple of the kernel's reach in cells (1 bilinear, 2 peskin4): 1, 2, 4 cells on 100², "
-                           "200², 400²; a grid too coarse for it (50²) keeps its own kernel; 0 = the grid's own "
-                           "kernel. Metric kernel_cells",
+                           "multiple of the kernel's reach in cells (1 bilinear, 2 peskin4): Peskin's is stretched 1, 2, "
+                           "4 times on 2, 1, 0.5 mm cells; a grid too coarse for it keeps its own kernel; 0 = the "
+                           "grid's own kernel. Metric kernel_cells",
   });
   const std::vector<ParamSpec> rest = {
       real("viscosity_tolerance", fluid::FluidParams{}.viscosity_tolerance, "", 1e-14, 1e-2,
            "relative residual of the implicit viscous solve (fluid/diffusion2.hpp); raising it perturbs the flow "
            "slightly, a test of how sensitive a distance over several cycles is"),
-      real("dt_s", 0.00125, "s", 1e-7, 0.1,
-           "coupled step; the grid study halves it with the cell (dt ∝ dx: 0.0025, 0.00125, 0.000625 s on 100², "
-           "200², 400²; convergence.toml). 0.00125 rather than 0.0025 on 200²: the coupled step is first order in "
-           "time and at the resonance 0.0025 s was 9% off in distance per cycle (1.603 against 1.460 mm at 0.6 Hz, "
-           "1.419 at 0.000625 s), the grid only 0.4% (400², same step: 1.466). The paper's 0.01 s is stable with "
-           "the semi-implicit step"),
+      real("dt_s", 0.000625, "s", 1e-7, 0.1,
+           "coupled step, first order in time (ib/coupling.hpp); the grid study halves it with the cell (dt ∝ dx: "
+           "0.00125, 0.000625, 0.0003125 s on 2, 1, 0.5 mm; convergence.toml). On 1 mm cells halving 0.000625 s "
+           "moves the 0.7 Hz distance per cycle by -2.8% (1.595 -> 1.550 mm) and the stroke amplitude by -0.4%; the "
+           "changes shrink at about first order, and Richardson puts 0.000625 s 0.8 / 5.9 / 8.6% above the step's "
+           "limit at 0.6 / 0.7 / 0.8 Hz (convergence_box_step_viscous.toml): the largest error left in "
+           "the default; 0.0003125 s would cost twice as much. The paper's 0.01 s is "
+           "stable with the semi-implicit step"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
       real("start_y_fraction", 0.2, "", 0.05, 0.95, "aperture's starting height in the box (the bell swims up)"),
       real("box_aspect", 1.5, "", 0.25, 8,

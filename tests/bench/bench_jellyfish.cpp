@@ -129,14 +129,14 @@ BENCHMARK(BM_SimulatedSecondFluidThreads)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(2.0);
 
-// The grid study's bell (issue 13, experiments/jellyfish/convergence.toml): the kind's defaults,
+// The grid study's bell (issue 13, experiments/jellyfish/convergence_hat.toml): the kind's defaults until 2026-11-29,
 // active tension (5 N/m²) on the calibrated bell (B = 1e-4 N m), MacCormack advection, a box 1.5
 // times as tall as wide, markers half a cell apart (64 segments on 200², 128 on 400²), dt ∝ dx,
 // the bilinear kernel stretched to the bell's 4 mm thickness (2 cells on 200², 4 on 400²) in
 // fluid ten times as viscous as water.
 // Issue 13 §4's goal: an 11 s point (10 s window + a 0.7 Hz warm-up cycle) in <= 60 s on one core,
 // i.e. >= 0.18 simulated s per CPU s at the converged setting: 200² at dt 0.00125 s (dt/dx 0.625
-// s/m; convergence.toml). Measured 2026-11-25 at load 12.6 on the 2-core machine: 200², 0.283
+// s/m; convergence_hat.toml). Measured 2026-11-25 at load 12.6 on the 2-core machine: 200², 0.283
 // simulated s per CPU s (4.41 ms per step; an 11 s point in 39 s of CPU). Before the step was
 // halved (0.0025 s): 0.49. 400² at 0.000625 s: 20-22 minutes of wall time per point at load 9-17
 // with two points sharing the cores (about 10 minutes of CPU); a profile of a 400² step (perf,
@@ -146,7 +146,7 @@ BENCHMARK(BM_SimulatedSecondFluidThreads)
 // fluid/fast_diffusion2.hpp; not bitwise the default's swim, the same to the viscosity tolerance).
 // It is slower here (2026-11-25, load 10-12, CPU ms per step): 200², 6.17 against 4.63; 400²,
 // 33.2 against 26.7 (α = ν dt / dx² = 4.1e-3 and 8.2e-3: the iterative solver's Richardson range).
-// The grid study's settings (convergence.toml): active tension, ν = 1.304e-5, MacCormack, the
+// The grid study's settings (convergence_hat.toml): active tension, ν = 1.304e-5, MacCormack, the
 // 1.5-tall box, dt ∝ dx; the kernel at the bell's 4 mm radius.
 SwimmerConfig gridStudyConfig(int cells, ib::Kernel kernel, int kernel_scale, int segments) {
   SwimmerConfig c = paperConfig(cells, kernel);
@@ -196,7 +196,7 @@ BENCHMARK(BM_SimulatedSecondPeskin256)
     ->Unit(benchmark::kMillisecond)
     ->MinTime(4.0);
 
-// The setting of the converged study (issue 13; convergence_pulse_viscous.toml,
+// The kind's default setting since 2026-11-29, the converged study's (issue 13; convergence.toml,
 // frequency_sweep_viscous.toml): the grid study's bell with 256 segments, Peskin's function at the
 // 4 mm radius, a 0.3 s pulse of 14 N/m² per cycle at 0.7 Hz, ν = 5e-5 m²/s, a 0.3 m box (150 cells:
 // 2 mm, dt 0.00125 s; 300: 1 mm, dt 0.000625 s). Second argument: 0 factors the banded

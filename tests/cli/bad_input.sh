@@ -70,7 +70,9 @@ expect_bad out_of_range "params.mass_kg: got 5, expected a value in [1e-15, 1]" 
 write kernel_radius <<'EOF'
 kind = "jellyfish"
 [params]
+domain_m = 0.4
 cells = 200
+kernel = "bilinear"
 kernel_radius_m = 0.003
 EOF
 expect_bad kernel_radius "kernel_radius_m = 0.003 m must be a whole multiple" "$scratch/kernel_radius.toml"

@@ -74,6 +74,39 @@ TEST(JellyfishActivation, PulseIsSineSquaredThenZeroAndStopsAfterTheActiveCycles
   EXPECT_EQ(body.muscleFactor(0, 2.1), 1.0);
 }
 
+// The staggered release (§3.3, Fig. 4 right, for the pulse): every muscle contracts alike; in the
+// falling half the muscle at aperture position a runs 1/(1 - s (1 - a)) times faster, so the apex's
+// pulse ends at τ/2 + (1 - s) τ/2 and the aperture's at τ; s = 0 is the unstaggered pulse.
+TEST(JellyfishActivation, StaggeredPulseReleasesTheApexFirstAndContractsAlike) {
+  const BellModel model = buildBell(activeBell(32, 10.0));
+  ActivationParams a = pulse(0.4, 0);
+  a.pulse_stagger = 0.5;
+  const JellyfishBody staggered(model, a);
+  const JellyfishBody unison(model, pulse(0.4, 0));
+  int apex = 0, aperture = 0;
+  for (int m = 0; m < int(model.muscles.size()); ++m) {
+    if (model.muscles[m].aperture_position < model.muscles[apex].aperture_position) apex = m;
+    if (model.muscles[m].aperture_position > model.muscles[aperture].aperture_position) aperture = m;
+  }
+  ASSERT_EQ(model.muscles[aperture].aperture_position, 1.0);
+  ASSERT_LT(model.muscles[apex].aperture_position, 0.2);
+  for (int m = 0; m < int(model.muscles.size()); ++m)
+    for (double t : {0.0, 0.05, 0.1, 0.2, 1.15})
+      EXPECT_EQ(staggered.activation(m, t), unison.activation(m, t)) << "muscle " << m << " t " << t;
+  for (double t : {0.25, 0.3, 0.35, 0.399})
+    EXPECT_NEAR(staggered.activation(aperture, t), unison.activation(aperture, t), 1e-15) << "t " << t;
+  const double speed = 1.0 / (1.0 - 0.5 * (1.0 - model.muscles[apex].aperture_position));
+  const double apex_end_s = 0.2 + 0.2 / speed;
+  EXPECT_NEAR(staggered.activation(apex, 0.2 + 0.1 / speed), 0.5, 1e-12);  // sin²(3π/4)
+  EXPECT_GT(staggered.activation(apex, apex_end_s - 1e-3), 0.0);
+  EXPECT_EQ(staggered.activation(apex, apex_end_s + 1e-9), 0.0);
+  EXPECT_GT(unison.activation(apex, apex_end_s + 1e-9), 0.1);
+  for (double t = 0.2; t < 0.4; t += 0.01)  // the apex relaxes first
+    EXPECT_LE(staggered.activation(apex, t), staggered.activation(aperture, t) + 1e-15) << "t " << t;
+  a.pulse_stagger = 1.0;
+  EXPECT_NE(validate(a).find("pulse stagger"), std::string::npos);
+}
+
 // The Hermite shape maps the §3.3 curve so that its lowest knot (0.56) is full activation.
 TEST(JellyfishActivation, HermiteActivationIsTheCurveScaledToItsLowestKnot) {
   const BellModel model = buildBell(activeBell(32, 10.0));
