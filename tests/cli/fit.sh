@@ -29,19 +29,12 @@ expect_bad() {
 }
 
 # --- a short jellyfish run to fit: 2 cycles on the 50² grid
-cat >"$scratch/swim.toml" <<'TOML'
+cat >"$scratch/swim.toml" <<TOML
 kind = "jellyfish"
 title = "two cycles"
 [params]
 cells = 50
-# the setting this test was written on, the kind's defaults until 2026-11-29 (cheap on 50²)
-activation_shape = "hermite"
-muscle_tension_n_per_m2 = 5.0
-kinematic_viscosity_m2_per_s = 1.304e-5
-kernel = "bilinear"
-domain_m = 0.4
-dt_s = 0.00125
-bell_segments = 0
+$jellyfish_earlier_defaults
 duration_s = 2.857142857142857
 TOML
 "$bin" run "$scratch/swim.toml" --out "$scratch/swim" --jobs 1 >/dev/null 2>&1 || fail "jellyfish run failed"
@@ -88,11 +81,7 @@ PY
   cat "$scratch/ratio/params.toml"
   echo 'cells = 50'
   echo 'duration_s = 1.0'
-  # the fitted knots drive the Hermite curve, on the cheap setting of the swim above
-  echo 'activation_shape = "hermite"'
-  echo 'domain_m = 0.4'
-  echo 'dt_s = 0.00125'
-  echo 'bell_segments = 0'
+  echo "$jellyfish_earlier_defaults"  # the fitted knots drive the Hermite curve, as in the swim above
 } >"$scratch/merged.toml"
 "$bin" run "$scratch/merged.toml" --out "$scratch/merged" --jobs 1 >/dev/null 2>"$scratch/merged.stderr" ||
   fail "the merged fragment was not accepted: $(cat "$scratch/merged.stderr")"

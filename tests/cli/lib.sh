@@ -7,3 +7,12 @@ cd "$src"
 rm -rf "$scratch"
 mkdir -p "$scratch"
 fail() { echo "FAIL: $*" >&2; exit 1; }
+# The jellyfish kind's defaults until 2026-11-29 (the Hermite curve, hat kernel, 0.4 m box, twice
+# today's step): the cheap setting the jellyfish CLI tests were written on; their [params] expand it.
+jellyfish_earlier_defaults='activation_shape = "hermite"
+muscle_tension_n_per_m2 = 5.0
+kinematic_viscosity_m2_per_s = 1.304e-5
+kernel = "bilinear"
+domain_m = 0.4
+dt_s = 0.00125
+bell_segments = 0'

@@ -39,19 +39,12 @@ diff "$scratch/threads.digest" "$scratch/mpi.digest" || fail "the MPI run differ
 echo "mpirun -np 3 gives the threaded run's digests ($points points)"
 
 # The jellyfish (issue 5): a 3-point frequency sweep on the 50² grid, one point per rank.
-cat >"$scratch/jf.toml" <<'TOML'
+cat >"$scratch/jf.toml" <<TOML
 kind = "jellyfish"
 title = "three short strokes"
 [params]
 cells = 50
-# the setting this test was written on, the kind's defaults until 2026-11-29 (cheap on 50²)
-activation_shape = "hermite"
-muscle_tension_n_per_m2 = 5.0
-kinematic_viscosity_m2_per_s = 1.304e-5
-kernel = "bilinear"
-domain_m = 0.4
-dt_s = 0.00125
-bell_segments = 0
+$jellyfish_earlier_defaults
 duration_s = 1.0
 [sweep]
 contraction_hz = [0.8, 1.0, 1.2]

@@ -7,19 +7,12 @@
 # usage: render.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 
-cat >"$scratch/swim.toml" <<'TOML'
+cat >"$scratch/swim.toml" <<TOML
 kind = "jellyfish"
 title = "a short swim to render"
 [params]
 cells = 50
-# the setting this test was written on, the kind's defaults until 2026-11-29 (cheap on 50²)
-activation_shape = "hermite"
-muscle_tension_n_per_m2 = 5.0
-kinematic_viscosity_m2_per_s = 1.304e-5
-kernel = "bilinear"
-domain_m = 0.4
-dt_s = 0.00125
-bell_segments = 0
+$jellyfish_earlier_defaults
 contraction_hz = 1.0
 warmup_cycles = 0
 duration_s = 0.8
