@@ -12,6 +12,8 @@ Writes to RUN_DIR/figures/ (or --out):
                     (Fig. 11): subumbrella (markers), exumbrella projected outward by the
                     thickness along the normals (§3.4), tentacles, muscle springs in grey.
   vorticity_<k>.png  when the point stored fields: vorticity with the bell and tracers (Fig. 6).
+  wake.png, wake.txt  when points stored fields: the starting and stopping vortices' circulation
+                    below the aperture per cycle (analysis/jellyfish_wake.py; stagger.toml).
   resonance.png     when a point was plucked (finite natural_hz): the pluck's free decay, and
                     stroke amplitude and distance per cycle of the driven points against the
                     driving frequency, with f_n marked (issue 13 §2).
@@ -25,6 +27,7 @@ import glob
 import os
 
 import h5py
+import jellyfish_wake
 import matplotlib
 
 matplotlib.use("Agg")
@@ -412,6 +415,7 @@ def main():
     if not a.no_morphology:
         morphology(sweep, points, out, a.cycles)
     vorticity(sweep, points, out)
+    jellyfish_wake.wake(points, [label_of(sweep, k) for k in range(len(points))], out)
     resonance(sweep, points, out)
     size_scaling(sweep, points, out)
     convergence(sweep, points, out)

@@ -103,17 +103,20 @@ class Run:
         return [f for f in self.points() if text(f.attrs.get("status", "ok")) == "ok"]
 
     def labels(self):
-        """A short label per sweep row: the [[case]] label, else the swept values."""
+        """A short label per sweep row: the [[case]] label, followed by the swept values that differ
+        among the rows sharing it (a case crossed with a [sweep]); else the swept values."""
         n = len(self.sweep.get("point_index", []))
         out = []
         axes = json.loads(self._columns_json()) if n else []
         if n:
-            axes = [a for a in axes if len(set(map(str, self.sweep.get(a, [])))) > 1]
+            axes = [a for a in axes if a != "label" and a in self.sweep and len(set(map(str, self.sweep[a]))) > 1]
+        cases = self.sweep.get("label", [""] * n)
         for k in range(n):
-            lab = self.sweep.get("label", [""] * n)[k]
-            if not lab:
-                lab = ", ".join(f"{a}={self.sweep[a][k]}" for a in axes if a in self.sweep and a != "label")
-            out.append(lab or str(k))
+            lab = cases[k]
+            same = [j for j in range(n) if cases[j] == lab]
+            varying = [a for a in axes if not lab or len({str(self.sweep[a][j]) for j in same}) > 1]
+            values = ", ".join(f"{a}={self.sweep[a][k]}" for a in varying)
+            out.append(", ".join(v for v in (lab, values) if v) or str(k))
         return out
 
     def _columns_json(self):

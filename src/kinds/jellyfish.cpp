@@ -36,8 +36,9 @@ std::vector<Knot> knots(const ParamReader& r) {
 // there). On the converged default setting (below) the same B rings at f_n = 0.575 Hz
 // (frequency_peak_viscous.toml, 1 mm pluck), and was kept. T_max = 14 N/m² with the 0.3 s pulse was
 // chosen at ν = 1.304e-5 on 1 mm to close the bell to Fig. 3's 0.56 of its diameter at 0.6 Hz
-// (convergence_pulse.toml's probes); in the default, more viscous fluid its stroke amplitude is
-// 0.35 at 0.6 Hz.
+// (convergence_pulse.toml's probes); in the default, more viscous fluid the bell closes only to 0.67
+// of its diameter at 0.6 Hz and 0.72 at 0.7 Hz (frequency_peak_viscous.toml), not Fig. 3's 0.56, and
+// was not recalibrated: every converged measurement was made with 14.
 constexpr double kCalibratedBendingRigidity = 1.0e-4;
 constexpr double kCalibratedTension = 14.0;
 
@@ -287,7 +288,8 @@ JellyfishKind::JellyfishKind() {
       real("muscle_tension_n_per_m2", kCalibratedTension, "N/m^2", 0, 1e9,
            "active_tension: peak tension per metre of depth per metre of band arc. Not given by the paper; calibrated: 14 "
            "with the 0.3 s pulse closes the 4 cm bell to Fig. 3's 0.56 of its diameter at 0.6 Hz and ν = 1.304e-5 "
-           "(convergence_pulse.toml); with the Hermite curve 5 did (0.53-0.59 at 0.6-0.7 Hz)"),
+           "(convergence_pulse.toml); at the default ν = 5e-5 it closes to 0.67 / 0.72 at 0.6 / 0.7 Hz. With the Hermite "
+           "curve 5 did (0.53-0.59 at 0.6-0.7 Hz)"),
       boolean("tentacles", bell.tentacles, "passive tentacle chains at the aperture (§3.2)"),
       real("tentacle_length_m", bell.tentacle_length_m, "m", 1e-5, 10, "not given; half a diameter"),
       real("tentacle_area_factor", bell.tentacle_area_factor, "", 1e-9, 10, "Fig. 12: 1/100 of the bell's section"),
