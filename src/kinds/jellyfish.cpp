@@ -314,8 +314,8 @@ JellyfishKind::JellyfishKind() {
                        "cycle by 10-13% with the Hermite drive (convergence_fine.toml) and up to 33% with the pulse "
                        "(convergence_pulse.toml), whose free recoil is damped in a Stokes layer (1.7 mm at 0.7 Hz) under "
                        "two 1 mm cells. At 5e-5 the layer is 3.4 mm: 0.5 and 1 mm agree to 1% (convergence.toml) and "
-                       "upwind2_rk2 to 2.6-4.4% of MacCormack on 0.5 mm at 0.6-0.7 Hz. The step is the largest "
-                       "remaining error: see dt_s. 1.304e-6 is one override away",
+                       "upwind2_rk2 to 2.6-4.4% of MacCormack on 0.5 mm at 0.6-0.7 Hz, 5.7% at 0.8 Hz (where the "
+                       "cycles' own scatter is 6%). The step is the largest remaining error: see dt_s. 1.304e-6 is one override away",
       .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space; the default since "
                        "the first-order scheme moved distances 2-5x, issue 13), the paper's semi-Lagrangian (Stam 1999), or "
                        "upwind2_rk2 (Fromm upwind fluxes + Heun, second order, CFL <= 0.5; the scheme change of "
