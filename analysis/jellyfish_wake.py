@@ -16,16 +16,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
-def _attr(f, name):
-    return f["params"].attrs[name] if "params" in f and name in f["params"].attrs else f.attrs.get(name)
-
-
-def circulation_series(f):
-    """(time_s, positive, negative) circulation below the aperture on the right half, m^2/s."""
+def circulation_series(f, param):
+    """(time_s, positive, negative) circulation below the aperture on the right half, m^2/s. param(f, name)
+    reads a point's parameter (plot_jellyfish.param)."""
     w = f["fields/vorticity_per_s"]
     tf = f["fields/time_s"][...]
     ny, nx = w.shape[1], w.shape[2]
-    dx = float(_attr(f, "domain_m")) / int(_attr(f, "cells"))
+    dx = float(param(f, "domain_m")) / int(param(f, "cells"))
     x = (np.arange(nx) + 0.5) * dx - 0.5 * nx * dx
     y = (np.arange(ny) + 0.5) * dx
     tm = f["lagrangian/time_s"][...]
@@ -40,24 +37,24 @@ def circulation_series(f):
     return tf, pos, neg
 
 
-def cycle_peaks(f, tf, pos, neg):
+def cycle_peaks(f, param, tf, pos, neg):
     """Mean over the window's whole cycles of each cycle's peak starting and stopping circulation."""
-    hz = float(_attr(f, "contraction_hz"))
-    warm = float(_attr(f, "warmup_cycles")) / hz
-    cycles = int(np.floor(float(_attr(f, "duration_s")) * hz + 1e-9))
+    hz = float(param(f, "contraction_hz"))
+    warm = float(param(f, "warmup_cycles")) / hz
+    cycles = int(np.floor(float(param(f, "duration_s")) * hz + 1e-9))
     spans = [(tf >= warm + c / hz) & (tf < warm + (c + 1) / hz) for c in range(cycles)]
     spans = [m for m in spans if m.any()]
     return float(np.mean([pos[m].max() for m in spans])), float(np.mean([neg[m].min() for m in spans])), len(spans)
 
 
-def wake(points, labels, out):
+def wake(points, labels, param, out):
     """wake.txt and wake.png for the points that stored fields; nothing when none did."""
     rows, series = [], []
     for k, f in enumerate(points):
         if "fields/vorticity_per_s" not in f:
             continue
-        tf, pos, neg = circulation_series(f)
-        start, stop, n = cycle_peaks(f, tf, pos, neg)
+        tf, pos, neg = circulation_series(f, param)
+        start, stop, n = cycle_peaks(f, param, tf, pos, neg)
         rows.append(f"{labels[k]}: starting {start:.4e} m^2/s, stopping {stop:.4e}, difference {start + stop:.4e} "
                     f"(means of each of {n} cycles' peaks)")
         series.append((labels[k], tf, pos, neg))

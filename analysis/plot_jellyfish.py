@@ -415,7 +415,7 @@ def main():
     if not a.no_morphology:
         morphology(sweep, points, out, a.cycles)
     vorticity(sweep, points, out)
-    jellyfish_wake.wake(points, [label_of(sweep, k) for k in range(len(points))], out)
+    jellyfish_wake.wake(points, [label_of(sweep, k) for k in range(len(points))], param, out)
     resonance(sweep, points, out)
     size_scaling(sweep, points, out)
     convergence(sweep, points, out)
