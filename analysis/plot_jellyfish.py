@@ -305,36 +305,50 @@ def resonance(sweep, points, out):
 def size_scaling(sweep, points, out):
     """Several bell sizes, each with a pluck: distance travelled in the window against the driving
     frequency per size with its f_n marked, and the frequency of the largest distance against f_n
-    (issue 13 §3)."""
+    (issue 13 §3). A size run on several grids (cells across its own box: size_scaling.toml's 300
+    and 150) draws a curve and a peak per grid, the coarser dashed and open."""
     sizes = sorted({round(float(param(f, "bell_diameter_m")), 9) for f in points})
     if len(sizes) < 2:
         return
+    grids = sorted({int(param(f, "cells")) for f in points}, reverse=True)
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
-    fn_all, peak_all = [], []
+    peaks = {g: ([], []) for g in grids}
     for i, d in enumerate(sizes):
-        mine = [f for f in points if round(float(param(f, "bell_diameter_m")), 9) == d]
-        plucks = [f for f in mine if plucked(f)]
-        driven = sorted((f for f in mine if not plucked(f)), key=lambda f: float(param(f, "contraction_hz")))
-        if not plucks or not driven:
-            continue
-        fn = metric(plucks[0], "natural_hz")
-        hz = np.array([float(param(f, "contraction_hz")) for f in driven])
-        dist = np.array([window_distance(f) for f in driven]) * 1e3
-        colour = f"C{i}"
-        left.plot(hz, dist, "o-", color=colour, ms=3, label=f"{d * 100:g} cm (f_n {fn:.3g} Hz)")
-        left.axvline(fn, color=colour, ls=":", lw=1)
-        fn_all.append(fn)
-        peak_all.append(hz[int(np.nanargmax(dist))])
-    left.set_xscale("log")
-    left.set_xlabel("driving frequency (Hz)")
-    left.set_ylabel("distance in the window at its whole cycles' rate (mm)")
-    left.set_title("distance against frequency; dotted: each size's f_n")
+        for g_index, g in enumerate(grids):
+            mine = [f for f in points
+                    if round(float(param(f, "bell_diameter_m")), 9) == d and int(param(f, "cells")) == g]
+            plucks = [f for f in mine if plucked(f)]
+            driven = sorted((f for f in mine if not plucked(f)), key=lambda f: float(param(f, "contraction_hz")))
+            if not plucks or not driven:
+                continue
+            fn = metric(plucks[0], "natural_hz")
+            hz = np.array([float(param(f, "contraction_hz")) for f in driven])
+            dist = np.array([window_distance(f) for f in driven]) * 1e3
+            colour = f"C{i}"
+            grid = f", {g} cells" if len(grids) > 1 else ""
+            # Normalised by f_n and by the size's largest distance, so that the peaks of bells whose
+            # distances differ 20-fold compare on one axis.
+            left.plot(hz / fn, dist / np.nanmax(dist), "o-" if g_index == 0 else "o--", color=colour, ms=3,
+                      mfc=colour if g_index == 0 else "none",
+                      label=f"{d * 100:g} cm{grid} (f_n {fn:.3g} Hz, largest {np.nanmax(dist):.3g} mm)")
+            peaks[g][0].append(fn)
+            peaks[g][1].append(hz[int(np.nanargmax(dist))])
+    left.axvspan(0.8, 1.2, color="0.93", zorder=0)
+    left.axvline(1.0, color="0.5", ls=":", lw=1)
+    left.set_xlabel("driving frequency / f_n")
+    left.set_ylabel("distance in the window at its whole cycles' rate / largest")
+    left.set_title("distance against frequency per size (grey: within 20% of f_n)")
     left.legend(fontsize=7)
+    fn_all = [fn for fns, _ in peaks.values() for fn in fns]
     if fn_all:
         line = np.array([0.8 * min(fn_all), 1.25 * max(fn_all)])
         right.fill_between(line, 0.8 * line, 1.2 * line, color="0.9", label="within 20% of f_n")
         right.plot(line, line, color="0.5", lw=0.8)
-        right.plot(fn_all, peak_all, "ko", label="frequency of the largest distance")
+        for g_index, g in enumerate(grids):
+            fns, pk = peaks[g]
+            grid = f" ({g} cells across the box)" if len(grids) > 1 else ""
+            right.plot(fns, pk, "ko" if g_index == 0 else "ks", mfc="k" if g_index == 0 else "none",
+                       label="frequency of the largest distance" + grid)
         right.set_xscale("log")
         right.set_yscale("log")
     right.set_xlabel("natural frequency f_n from the pluck (Hz)")

@@ -90,6 +90,11 @@ FIGURES = [
            "the stroke at 0.55 Hz (0.955 f_n) in both schemes; at twice the step on 1 mm the mean speed's flat "
            "top tips to 0.7 Hz (1.215 f_n, 0.4% above 0.65 Hz).",
            "frequency_peak_viscous", "rm_fig5", None),
+    Figure("rm", "§3.3 (size)",
+           "The resonant frequency depends on the diameter of the umbrella: at 2, 4 and 8 cm the distance in a "
+           "given time peaks within 20% of each size's natural frequency (issue 13 §3; Hoover & Miller 2015), on "
+           "the default setting and at twice the cell and step (make reproduce-full).",
+           "size_scaling", "rm_size_scaling", None),
     Figure("rm", "Fig. 6", "Trace particles show the fluid flow around the jellyfish through a contraction cycle.",
            "morphology", "rm_fig6", []),
     Figure("rm", "Fig. 11",
