@@ -141,15 +141,40 @@ Walls without_inflow_speeds(Walls walls) {
 
 }  // namespace
 
+void DiffusionSolver2::explicit_half(FaceAxis axis, Array2& x, const Walls& walls, double beta) {
+  DiffusionBlock2& block = axis == FaceAxis::x ? explicit_u_ : explicit_v_;
+  block.prepare(axis, x.nx(), x.ny(), walls);
+  explicit_ax_.resize(x.nx(), x.ny());
+  explicit_dots_.resize(static_cast<std::size_t>(x.ny()));
+  // A x reads the neighbouring rows of x, so all of it is formed before x is overwritten.
+  for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int) {
+    apply_diffusion_rows(block, j0, j1, beta, x, explicit_ax_, explicit_dots_.data());
+  });
+  for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int) {
+    for (int j = j0; j < j1; ++j) {
+      double* __restrict__ xr = x.row(j);
+      const double* __restrict__ ax = explicit_ax_.row(j);
+      const double* __restrict__ wall = block.wall_rhs.row(j);
+      for (int i = block.i_begin; i < block.i_end; ++i) xr[i] = (2.0 * xr[i] - ax[i]) + beta * wall[i];
+    }
+  });
+}
+
 LinearSolveReport DiffusionSolver2::diffuse_velocity(MacGrid2& grid, const Walls& walls,
-                                                     double kinematic_viscosity_m2_per_s, double dt_s) {
-  const double alpha = kinematic_viscosity_m2_per_s * dt_s / (grid.dx_m * grid.dx_m);
+                                                     double kinematic_viscosity_m2_per_s, double dt_s,
+                                                     ViscosityScheme scheme) {
+  double alpha = kinematic_viscosity_m2_per_s * dt_s / (grid.dx_m * grid.dx_m);
   if (alpha == 0.0) return {};
   // The solvers take every face off the unknown block as zero; an inflow wall's speed enters
   // through the block's wall terms instead (diffusion_operator2.hpp). So its faces are cleared
   // for the solve and set again after it.
   const bool any_inflow = walls.any_inflow();
   if (any_inflow) enforce_wall_normal_velocity(grid, without_inflow_speeds(walls));
+  if (scheme == ViscosityScheme::crank_nicolson) {
+    alpha *= 0.5;
+    explicit_half(FaceAxis::x, grid.u_m_per_s, walls, alpha);
+    explicit_half(FaceAxis::y, grid.v_m_per_s, walls, alpha);
+  }
   const LinearSolveReport ru = diffuse_component(FaceAxis::x, grid.u_m_per_s, walls, alpha);
   const LinearSolveReport rv = diffuse_component(FaceAxis::y, grid.v_m_per_s, walls, alpha);
   if (any_inflow) enforce_wall_normal_velocity(grid, walls);

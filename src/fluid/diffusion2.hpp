@@ -20,8 +20,10 @@ class DiffusionSolver2 {
   virtual ~DiffusionSolver2() = default;
   /// Replaces the velocity u by the solution of (I − ν dt ∇²) u_new = u, with the walls'
   /// conditions; solid-wall normal velocity stays zero. Reports the worse of the two components.
+  /// With ViscosityScheme::crank_nicolson, u is first replaced by (I + ½ν dt ∇²) u (with the
+  /// walls' terms) and the system solved is (I − ½ν dt ∇²) u_new = that.
   LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
-                                     double dt_s);
+                                     double dt_s, ViscosityScheme scheme = ViscosityScheme::backward_euler);
   /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
   void set_workers(WorkerPool* workers) { workers_ = workers; }
 
@@ -29,6 +31,14 @@ class DiffusionSolver2 {
   /// One component (u: FaceAxis::x, v: FaceAxis::y) with α = ν dt / dx² > 0.
   virtual LinearSolveReport diffuse_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha) = 0;
   WorkerPool* workers_ = nullptr;
+
+ private:
+  // x ← (I + β ∇²) x + β · wall terms = 2x − A_β x + β · wall terms on the unknown block, so that
+  // the solve's right-hand side x + β · wall terms is Crank–Nicolson's.
+  void explicit_half(FaceAxis axis, Array2& x, const Walls& walls, double beta);
+  DiffusionBlock2 explicit_u_, explicit_v_;
+  Array2 explicit_ax_;
+  std::vector<double> explicit_dots_;
 };
 
 /// Backward-Euler diffusion solved per component by conjugate gradients.

@@ -202,6 +202,16 @@ std::string_view to_string(ViscositySolverType type) {
   return "unknown";
 }
 
+std::string_view to_string(ViscosityScheme scheme) {
+  switch (scheme) {
+    case ViscosityScheme::backward_euler:
+      return "backward_euler";
+    case ViscosityScheme::crank_nicolson:
+      return "crank_nicolson";
+  }
+  return "unknown";
+}
+
 std::optional<WallType> parse_wall_type(std::string_view name) {
   return parse(name,
                std::array{WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open, WallType::inflow});
@@ -217,6 +227,10 @@ std::optional<TimeStepPolicy> parse_time_step_policy(std::string_view name) {
 }
 std::optional<ViscositySolverType> parse_viscosity_solver_type(std::string_view name) {
   return parse(name, std::array{ViscositySolverType::iterative, ViscositySolverType::fast_direct});
+}
+
+std::optional<ViscosityScheme> parse_viscosity_scheme(std::string_view name) {
+  return parse(name, std::array{ViscosityScheme::backward_euler, ViscosityScheme::crank_nicolson});
 }
 
 }  // namespace creaturelab::fluid

@@ -71,6 +71,12 @@ enum class ViscositySolverType {
   fast_direct  ///< transform + tridiagonal solves, exact to round-off (fast_diffusion2.hpp)
 };
 
+/// Time integration of the viscous term.
+enum class ViscosityScheme {
+  backward_euler,  ///< (I − ν dt ∇²) u_new = u: Stam 1999 §2.2, first order in dt; the default
+  crank_nicolson   ///< (I − ½ν dt ∇²) u_new = (I + ½ν dt ∇²) u: second order in dt for this stage
+};
+
 /// How the time step is chosen.
 enum class TimeStepPolicy {
   cfl_adaptive,  ///< dt = min(max_step_s, cfl_safety_factor · dx / max|u_component|)
@@ -105,6 +111,7 @@ struct FluidParams {
   /// iterative is the default (all converged results were computed with it); fast_direct is
   /// faster only for large ν dt / dx² (fast_diffusion2.hpp).
   ViscositySolverType viscosity_solver = ViscositySolverType::iterative;
+  ViscosityScheme viscosity_scheme = ViscosityScheme::backward_euler;
   double viscosity_tolerance = 1e-10;  ///< ‖b − A u‖∞ ≤ tol · ‖b‖∞
   int viscosity_max_iterations = 1000;
 
@@ -139,11 +146,13 @@ std::string_view to_string(AdvectionScheme scheme);
 std::string_view to_string(PressureSolverType type);
 std::string_view to_string(TimeStepPolicy policy);
 std::string_view to_string(ViscositySolverType type);
+std::string_view to_string(ViscosityScheme scheme);
 /// Inverses of to_string (the names are the enumerator names); std::nullopt for unknown names.
 std::optional<WallType> parse_wall_type(std::string_view name);
 std::optional<AdvectionScheme> parse_advection_scheme(std::string_view name);
 std::optional<PressureSolverType> parse_pressure_solver_type(std::string_view name);
 std::optional<TimeStepPolicy> parse_time_step_policy(std::string_view name);
 std::optional<ViscositySolverType> parse_viscosity_solver_type(std::string_view name);
+std::optional<ViscosityScheme> parse_viscosity_scheme(std::string_view name);
 
 }  // namespace creaturelab::fluid

@@ -157,7 +157,8 @@ void FluidSolver2::advect_velocity(const StepContext& context) {
 
 LinearSolveReport FluidSolver2::apply_viscosity(const StepContext& context) {
   if (params_.kinematic_viscosity_m2_per_s == 0.0) return {};
-  return diffusion_->diffuse_velocity(grid_, walls(), params_.kinematic_viscosity_m2_per_s, context.dt_s);
+  return diffusion_->diffuse_velocity(grid_, walls(), params_.kinematic_viscosity_m2_per_s, context.dt_s,
+                                      params_.viscosity_scheme);
 }
 
 LinearSolveReport FluidSolver2::project(const StepContext& context) {

@@ -121,6 +121,7 @@ ControlFluidKind::ControlFluidKind() {
            "0: the paper's inviscid Eq. 5 (the advection's numerical viscosity remains)"),
       choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack", "upwind2_rk2"},
              "velocity advection scheme (upwind2_rk2: explicit, its CFL bound checked each step)"),
+      viscositySchemeSpec(),
       integer("fluid_threads", 1, 1, 16, "threads inside each fluid step (bitwise the same for any count)"),
       choice("wall_left", "open", {"free_slip", "no_slip", "open", "inflow"},
              "left wall (open: the stream's band enters there; inflow: the stream enters through it)"),

@@ -5,6 +5,12 @@
 
 namespace creaturelab::kinds {
 
+ParamSpec viscositySchemeSpec() {
+  return choice("viscosity_scheme", "backward_euler", {"backward_euler", "crank_nicolson"},
+                "time integration of the viscous term: backward Euler (Stam 1999 §2.2, first order in dt) or "
+                "Crank-Nicolson (second order in dt for that stage alone; the coupled step stays first order)");
+}
+
 std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& d) {
   return {
       real("domain_m", d.domain_m, "m", 1e-3, 100, d.domain_doc),
@@ -12,6 +18,7 @@ std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& d) {
       real("density_kg_per_m3", 1000.0, "kg/m^3", 1e-3, 1e6, d.density_doc),
       real("kinematic_viscosity_m2_per_s", d.kinematic_viscosity_m2_per_s, "m^2/s", 0, 10, d.viscosity_doc),
       choice("advection", d.advection, {"semi_lagrangian", "maccormack", "upwind2_rk2"}, d.advection_doc),
+      viscositySchemeSpec(),
       integer("fluid_threads", 1, 1, 16,
               "threads inside each fluid step; results are bitwise the same for any count (fluid/worker_pool.hpp). "
               "Helps only on idle cores: on a loaded machine two were slower than one"),
@@ -39,6 +46,7 @@ fluid::FluidParams squareFluidParams(const ParamReader& r, double dt_s) {
   f.density_kg_per_m3 = r.real("density_kg_per_m3");
   f.kinematic_viscosity_m2_per_s = r.real("kinematic_viscosity_m2_per_s");
   f.advection = *fluid::parse_advection_scheme(r.text("advection"));
+  f.viscosity_scheme = *fluid::parse_viscosity_scheme(r.text("viscosity_scheme"));
   f.threads = int(r.integer("fluid_threads"));
   // The coupled step is fixed; a fluid running away is caught as a blow-up.
   f.time_step_policy = fluid::TimeStepPolicy::fixed;

@@ -27,6 +27,8 @@ struct FluidBoxDefaults {
 
 // domain_m, cells, density_kg_per_m3, kinematic_viscosity_m2_per_s, advection, fluid_threads.
 std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& defaults);
+/// viscosity_scheme, which squareFluidParams reads: every kind that calls it declares this.
+ParamSpec viscositySchemeSpec();
 
 // What each kind says about the coupling.
 struct CouplingDefaults {

@@ -162,6 +162,45 @@ TEST(Viscosity, EigenmodeDecaysByTheBackwardEulerFactor) {
   }
 }
 
+// Crank–Nicolson (FluidParams::viscosity_scheme): the same eigenmode decays by
+// (1 − ½α λ)/(1 + ½α λ), which differs from backward Euler's 1/(1 + α λ) by far more than the
+// tolerance, and with walls that move, the steady Couette profile is a fixed point of the step
+// (the explicit half carries the same wall terms as the implicit one).
+TEST(Viscosity, CrankNicolsonEigenmodeAndCouetteFixedPoint) {
+  const int n = 16;
+  const double dx = 0.1, nu = 0.02, dt = 0.3;
+  const double pi = std::numbers::pi;
+  for (auto& diffusion : viscosity_solvers(1e-13, 100)) {
+    MacGrid2 grid(n, n, dx);
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = std::cos(pi * (i + 0.5) / n) * std::sin(pi * j / n);
+    const MacGrid2 initial = grid;
+    EXPECT_TRUE(diffusion->diffuse_velocity(grid, Walls{}, nu, dt, ViscosityScheme::crank_nicolson).converged);
+    const double lambda = 8.0 * std::pow(std::sin(pi / (2.0 * n)), 2) / (dx * dx);
+    const double half = 0.5 * nu * dt * lambda;
+    const double factor = (1.0 - half) / (1.0 + half);
+    ASSERT_GT(std::abs(factor - 1.0 / (1.0 + 2.0 * half)), 1e-4);  // ≫ the 1e-12 checked below
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i < n; ++i) EXPECT_NEAR(grid.v_m_per_s(i, j), factor * initial.v_m_per_s(i, j), 1e-12);
+    EXPECT_EQ(max_abs(grid.u_m_per_s), 0.0);
+  }
+  const int nx = 8, ny = 10;
+  const double top_speed = 0.7;
+  Walls walls;
+  walls.left.type = walls.right.type = WallType::open;
+  walls.bottom.type = WallType::no_slip;
+  walls.top.type = WallType::moving;
+  walls.top.tangential_velocity_m_per_s = top_speed;
+  for (auto& diffusion : viscosity_solvers(1e-14, 2000)) {
+    MacGrid2 grid(nx, ny, dx);
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i <= nx; ++i) grid.u_m_per_s(i, j) = top_speed * (j + 0.5) / ny;
+    diffusion->diffuse_velocity(grid, walls, 1.0, 0.05, ViscosityScheme::crank_nicolson);
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i <= nx; ++i) EXPECT_NEAR(grid.u_m_per_s(i, j), top_speed * (j + 0.5) / ny, 1e-12);
+  }
+}
+
 // Where Richardson sweeps replace CG (10 α ≤ ImplicitDiffusion2::kSweepContraction), the
 // result meets the same tolerance: against a solve to 1e-14 (the sweeps cannot reach it in
 // kMaxSweeps, so CG finishes it), the default 1e-10 solve differs by at most 1e-10 ‖b‖∞
