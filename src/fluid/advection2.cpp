@@ -45,6 +45,26 @@ void trace_row(const SampleView& U, const SampleView& V, double c, int j, int i_
     ys[i] = Y - half_c * vel_y;
   }
   int i = i_begin;
+#if defined(__AVX2__)
+  // Four faces at a time, the same arithmetic per face (X: whole numbers and halves, exact).
+  {
+    const __m256d c4 = _mm256_set1_pd(c);
+    const __m256d Y4 = _mm256_set1_pd(Y);
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d x_max = _mm256_set1_pd(U.x_max);
+    const __m256d y_max = _mm256_set1_pd(U.y_max);
+    for (; i + 4 <= i_end; i += 4) {
+      const double x0 = kAxis == FaceAxis::x ? i : i + 0.5;
+      const __m256d X4 = _mm256_set_pd(x0 + 3.0, x0 + 2.0, x0 + 1.0, x0);
+      const __m256d xm = _mm256_min_pd(_mm256_max_pd(_mm256_loadu_pd(xs + i), zero), x_max);
+      const __m256d ym = _mm256_min_pd(_mm256_max_pd(_mm256_loadu_pd(ys + i), zero), y_max);
+      const __m256d u_mid = U.sample4_clamped_on<FaceAxis::x>(xm, ym);
+      const __m256d v_mid = V.sample4_clamped_on<FaceAxis::y>(xm, ym);
+      _mm256_storeu_pd(xs + i, _mm256_sub_pd(X4, _mm256_mul_pd(c4, u_mid)));
+      _mm256_storeu_pd(ys + i, _mm256_sub_pd(Y4, _mm256_mul_pd(c4, v_mid)));
+    }
+  }
+#endif
 #if defined(__SSE2__)
   // Two faces at a time (same arithmetic per face as the scalar loop below). U and V share
   // the domain, so the midpoint is clamped once for both.
@@ -79,6 +99,18 @@ template <FaceAxis kAxis, bool kBounds>
 void sample_row(const SampleView& q, const double* __restrict__ xs, const double* __restrict__ ys, int i_begin,
                 int i_end, double* __restrict__ out, double* __restrict__ lo, double* __restrict__ hi) {
   int k = i_begin;
+#if defined(__AVX2__)
+  for (; k + 4 <= i_end; k += 4) {
+    if constexpr (kBounds) {
+      __m256d lo4, hi4;
+      _mm256_storeu_pd(out + k, q.sample4_on<kAxis>(_mm256_loadu_pd(xs + k), _mm256_loadu_pd(ys + k), &lo4, &hi4));
+      _mm256_storeu_pd(lo + k, lo4);
+      _mm256_storeu_pd(hi + k, hi4);
+    } else {
+      _mm256_storeu_pd(out + k, q.sample4_on<kAxis>(_mm256_loadu_pd(xs + k), _mm256_loadu_pd(ys + k)));
+    }
+  }
+#endif
 #if defined(__SSE2__)
   for (; k + 2 <= i_end; k += 2) {
     if constexpr (kBounds) {
