@@ -66,6 +66,23 @@
 // 27.4 / 28.2, 2 threads 18.3 / 19.0 elapsed (CPU 36.6 / 38.1); at 10:36, between other jobs
 // stopped with SIGSTOP, 30.8 and 20.6-20.9. The goal is met on two threads (18.3-19.8 elapsed on
 // idle cores, a margin of 1-9%), not on one core.
+// 2026-11-29 13:11 UTC, idle machine, two runs, 256², elapsed ns per cell: semi-Lagrangian 58.2-58.5
+// on 1 thread, 33.9-43.3 on 2; MacCormack 76.5-83.0 on 1, 39.1-52.6 on 2. The same hour the 2026-11-25 build ran the 100² swim about 1.5 times slower
+// than it did then (bench_jellyfish.cpp): today's host is slower, so the goal is not met here on
+// either thread count, and figures from different days compare only against a build run beside them.
+// 2026-12-01 19:45 UTC, idle machine, minimum of 3 repetitions, two interleaved runs of the build
+// before AVX2 (45fe289) and after it (CREATURELAB_AVX2, CMakeLists.txt: the fluid library built with
+// AVX2, its sampling four lanes wide with the same per-lane arithmetic; datasets bitwise the same),
+// 256², CPU ns per cell, before -> after:
+//                              1 thread                 2 threads (elapsed)
+//   semi-Lagrangian step       27.7-28.3 -> 21.8-22.2    13.8-22.5 -> 11.2-11.5
+//   MacCormack step            41.2-44.5 -> 32.7         22.3-29.2 -> 17.0-17.8
+//   upwind2_rk2 step           20.4-21.4 -> 15.5-15.6    11.8      ->  8.4-8.6
+//   advection SL / MacCormack  11.7-12.3 / 24.9-26.6 -> 9.0-9.2 / 18.5-20.8
+//   viscosity, pressure        4.4-4.6, 6.9 -> 4.1-4.3, 4.9-5.1
+// So on this host issue 13's 20 ns per cell is met on one core by upwind2_rk2 (15.5) and on two
+// threads by every scheme (MacCormack 17.0-17.8 elapsed), not by semi-Lagrangian (21.8-22.2) or
+// MacCormack (32.7) on one core.
 //
 // The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
 // fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is

@@ -208,6 +208,22 @@ BENCHMARK(BM_SimulatedSecondPeskin256)
 // 0.0265 simulated s per CPU s on 1 mm, an 11 s point in 8.7 / 6.9 CPU min. perf of the 1 mm step with
 // reuse: the fluid about 65% (implicit diffusion 21%, MacCormack 28%, pressure 10%), the coupling's
 // assembly 7.5%, banded solves 7.3%, residuals 5.4%, mobility (Transfer::gram) 6.9%.
+// 2026-11-29 13:00-13:15 (one other process on the second core): 300 cells with reuse 22.10 ms per step
+// (0.0283 simulated s per CPU s; an 11 s point in 6.5 CPU min, 6.5 times issue 13's 60 s). The profile
+// (perf, 0.6 s of a 0.7 Hz swim) is unchanged: implicit diffusion 21% (CG at α = ν dt / dx² = 0.031,
+// above the Richardson range), MacCormack 30%, pressure 10%, the coupling 24%.
+// The paper's grid (BM_SimulatedSecond, 100², Peskin's kernel, semi-Lagrangian) on an idle machine the
+// same hour: 12.7-14.9 simulated s per CPU s, and the build of 2026-11-25 (9274613) that measured
+// 20.3-20.6 then gives 13.2-14.6 here, interleaved with it: the machine is about 1.5 times slower
+// today, the code is not. Its bilinear rows at 100² now stop at t = 1.96 s with the crumpling error
+// (segment 12 at 0.16 of its rest length), as the 50² one did at 6.4 s: the hat kernel at dt 0.01 s.
+// 2026-12-01 19:10-19:30 UTC, idle machine, interleaved runs of the build before AVX2 (45fe289) and
+// after it (the fluid library and the banded solve with AVX2, bitwise the same datasets): 300 cells
+// with reuse 12.37 / 12.81 / 12.60 -> 11.17 / 12.02 / 11.08 ms per step (run-to-run noise about 7%;
+// an 11 s point, 17 600 steps, in 195-211 s of CPU against 218-225, still 3.3 times issue 13's 60 s),
+// and the paper's grid (100², Peskin's kernel) 25.5 / 23.4 / 24.1 -> 28.0 / 25.6 / 28.0 / 25.7 simulated
+// s per CPU s (goal ≥ 20: met on this host before and after). A 0.4 s run of the default setting
+// (creaturelab run, 640 steps) took 7.95-8.58 s of CPU before and 6.70-6.77 after.
 void BM_SimulatedSecondViscousPulse(benchmark::State& state) {
   const int cells = static_cast<int>(state.range(0));
   SwimmerConfig c = gridStudyConfig(cells, ib::Kernel::peskin4, cells / 150, 256);
