@@ -181,25 +181,42 @@ std::vector<std::unique_ptr<DiffusionSolver2>> viscosity_solvers(double toleranc
   return solvers;
 }
 
+// The free-slip box's lowest v eigenmode on n × n cells: v on faces (i + ½, j) is
+// cos(π (i + ½) / n) in x (Neumann: free-slip left/right ghosts) times sin(π j / n) in y (zero on
+// the solid bottom/top faces); u is zero.
+void set_box_eigenmode(MacGrid2& grid, int n) {
+  const double pi = std::numbers::pi;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = std::cos(pi * (i + 0.5) / n) * std::sin(pi * j / n);
+}
+// Its eigenvalue of −∇² (the 5-point operator), 1/m².
+double box_eigenvalue_per_m2(int n, double dx) {
+  const double s = std::sin(std::numbers::pi / (2.0 * n));
+  return (4.0 * s * s + 4.0 * s * s) / (dx * dx);
+}
+
+// Couette walls: open at both ends, a no-slip floor and a top moving at top_speed.
+Walls couette_walls(double top_speed) {
+  Walls walls;
+  walls.left.type = walls.right.type = WallType::open;
+  walls.bottom.type = WallType::no_slip;
+  walls.top.type = WallType::moving;
+  walls.top.tangential_velocity_m_per_s = top_speed;
+  return walls;
+}
+
 // A discrete eigenmode of the free-slip box's viscous operator decays by exactly
 // 1 / (1 + ν dt λ) in one backward-Euler step, with either solver.
 TEST(Viscosity, EigenmodeDecaysByTheBackwardEulerFactor) {
   const int n = 16;
   const double dx = 0.1, nu = 0.02, dt = 0.3;
-  const double pi = std::numbers::pi;
   for (auto& diffusion : viscosity_solvers(1e-13, 100)) {
     MacGrid2 grid(n, n, dx);
-    // v on faces (i + ½, j): cos(π (i + ½) / n) in x (Neumann: free-slip left/right ghosts) and
-    // sin(π j / n) in y (zero on the solid bottom/top faces).
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = std::cos(pi * (i + 0.5) / n) * std::sin(pi * j / n);
-    grid.v_m_per_s(0, 0) = 0.0;
+    set_box_eigenmode(grid, n);
     const MacGrid2 initial = grid;
     const LinearSolveReport report = diffusion->diffuse_velocity(grid, Walls{}, nu, dt);
     EXPECT_TRUE(report.converged);
-    const double lambda =
-        (4.0 * std::pow(std::sin(pi / (2.0 * n)), 2) + 4.0 * std::pow(std::sin(pi / (2.0 * n)), 2)) / (dx * dx);
-    const double factor = 1.0 / (1.0 + nu * dt * lambda);
+    const double factor = 1.0 / (1.0 + nu * dt * box_eigenvalue_per_m2(n, dx));
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i < n; ++i) EXPECT_NEAR(grid.v_m_per_s(i, j), factor * initial.v_m_per_s(i, j), 1e-12);
     EXPECT_EQ(max_abs(grid.u_m_per_s), 0.0);
@@ -213,15 +230,12 @@ TEST(Viscosity, EigenmodeDecaysByTheBackwardEulerFactor) {
 TEST(Viscosity, CrankNicolsonEigenmodeAndCouetteFixedPoint) {
   const int n = 16;
   const double dx = 0.1, nu = 0.02, dt = 0.3;
-  const double pi = std::numbers::pi;
   for (auto& diffusion : viscosity_solvers(1e-13, 100)) {
     MacGrid2 grid(n, n, dx);
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = std::cos(pi * (i + 0.5) / n) * std::sin(pi * j / n);
+    set_box_eigenmode(grid, n);
     const MacGrid2 initial = grid;
     EXPECT_TRUE(diffusion->diffuse_velocity(grid, Walls{}, nu, dt, ViscosityScheme::crank_nicolson).converged);
-    const double lambda = 8.0 * std::pow(std::sin(pi / (2.0 * n)), 2) / (dx * dx);
-    const double half = 0.5 * nu * dt * lambda;
+    const double half = 0.5 * nu * dt * box_eigenvalue_per_m2(n, dx);
     const double factor = (1.0 - half) / (1.0 + half);
     ASSERT_GT(std::abs(factor - 1.0 / (1.0 + 2.0 * half)), 1e-4);  // ≫ the 1e-12 checked below
     for (int j = 0; j <= n; ++j)
@@ -230,11 +244,7 @@ TEST(Viscosity, CrankNicolsonEigenmodeAndCouetteFixedPoint) {
   }
   const int nx = 8, ny = 10;
   const double top_speed = 0.7;
-  Walls walls;
-  walls.left.type = walls.right.type = WallType::open;
-  walls.bottom.type = WallType::no_slip;
-  walls.top.type = WallType::moving;
-  walls.top.tangential_velocity_m_per_s = top_speed;
+  const Walls walls = couette_walls(top_speed);
   for (auto& diffusion : viscosity_solvers(1e-14, 2000)) {
     MacGrid2 grid(nx, ny, dx);
     for (int j = 0; j < ny; ++j)
@@ -288,11 +298,7 @@ TEST(Viscosity, RichardsonSweepsMeetTheToleranceOfCg) {
 TEST(Viscosity, LongImplicitStepGivesCouetteProfile) {
   const int nx = 8, ny = 10;
   const double dx = 0.1, top_speed = 0.7;
-  Walls walls;
-  walls.left.type = walls.right.type = WallType::open;
-  walls.bottom.type = WallType::no_slip;
-  walls.top.type = WallType::moving;
-  walls.top.tangential_velocity_m_per_s = top_speed;
+  const Walls walls = couette_walls(top_speed);
   for (auto& diffusion : viscosity_solvers(1e-14, 2000)) {
     MacGrid2 grid(nx, ny, dx);
     diffusion->diffuse_velocity(grid, walls, 1.0, 1e9);
