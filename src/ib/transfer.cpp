@@ -1,9 +1,11 @@
 #include "ib/transfer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace creaturelab::ib {
 namespace {
@@ -195,21 +197,54 @@ double overlap1d(const double* wk, const double* wl, int shift, int support) {
   return sum;
 }
 
+// The markers of one face family by the first face column of their stencils (a stable counting
+// sort: ascending marker index within a column), so that gram() visits, for each marker, only the
+// markers whose stencils start within support − 1 columns of its own: on the 1 mm jellyfish about a
+// tenth of all n (the all-pairs scan was 8% of its step).
+struct StencilColumns {
+  int first = 0;                  // the smallest i0
+  std::vector<int> begin;         // markers of column first + c: order[begin[c] .. begin[c + 1])
+  std::vector<int> order;
+
+  explicit StencilColumns(const std::vector<FaceStencil>& st) : order(st.size()) {
+    if (st.empty()) return;
+    int last = st[0].i0;
+    first = st[0].i0;
+    for (const FaceStencil& s : st) first = std::min(first, s.i0), last = std::max(last, s.i0);
+    begin.assign(static_cast<std::size_t>(last - first + 2), 0);
+    for (const FaceStencil& s : st) ++begin[static_cast<std::size_t>(s.i0 - first + 1)];
+    for (std::size_t c = 1; c < begin.size(); ++c) begin[c] += begin[c - 1];
+    std::vector<int> next(begin.begin(), begin.end() - 1);
+    for (int k = 0; k < static_cast<int>(st.size()); ++k) order[static_cast<std::size_t>(next[st[k].i0 - first]++)] = k;
+  }
+};
+
 }  // namespace
 
 void Transfer::gram(double scale, Eigen::SparseMatrix<double>& out) const {
   const int n = marker_count();
   out.resize(2 * n, 2 * n);
   out.reserve(static_cast<Eigen::Index>(2 * n) * support_ * support_);
+  const StencilColumns columns[2] = {StencilColumns(u_stencils_), StencilColumns(v_stencils_)};
+  std::vector<int> near;
   // Column by column, rows ascending, so that the storage is filled in order. Entry (k, l) and
   // (l, k) sum the same products in the same order: G is exactly symmetric.
   for (int l = 0; l < n; ++l)
     for (int c = 0; c < 2; ++c) {
       const std::vector<FaceStencil>& st = c == 0 ? u_stencils_ : v_stencils_;
+      const StencilColumns& cols = columns[c];
       out.startVec(2 * l + c);
-      for (int k = 0; k < n; ++k) {
+      near.clear();
+      const int last = cols.first + static_cast<int>(cols.begin.size()) - 2;
+      for (int i = std::max(cols.first, st[l].i0 - support_ + 1); i <= std::min(last, st[l].i0 + support_ - 1); ++i)
+        for (int p = cols.begin[i - cols.first]; p < cols.begin[i - cols.first + 1]; ++p) {
+          const int k = cols.order[static_cast<std::size_t>(p)];
+          const int dj = st[k].j0 - st[l].j0;
+          if (dj < support_ && -dj < support_) near.push_back(k);
+        }
+      std::sort(near.begin(), near.end());
+      for (const int k : near) {
         const int di = st[k].i0 - st[l].i0, dj = st[k].j0 - st[l].j0;
-        if (di >= support_ || -di >= support_ || dj >= support_ || -dj >= support_) continue;
         out.insertBack(2 * k + c, 2 * l + c) =
             scale * overlap1d(st[k].wx, st[l].wx, di, support_) * overlap1d(st[k].wy, st[l].wy, dj, support_);
       }
