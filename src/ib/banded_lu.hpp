@@ -11,6 +11,7 @@
 // Storage: n columns of 2 kl + ku + 1 rows, A(i, j) in row kl + ku + i − j of column j; the kl rows
 // on top hold the fill of the row interchanges, so U has kl + ku superdiagonals. Deterministic:
 // the same matrix gives the same factors bit for bit (no threads, a fixed order of operations).
+#include <cstddef>
 #include <vector>
 
 namespace creaturelab::ib {
@@ -24,6 +25,8 @@ class BandedLU {
   int upper() const { return ku_; }
   /// A(i, j), which must lie in the band (|j − i| within ku above, kl below).
   double& at(int i, int j) { return band_[static_cast<std::size_t>(j) * rows_ + (kl_ + ku_ + i - j)]; }
+  /// Column j of the band by row: column(j)[i] is at(i, j), for i in the band.
+  double* column(int j) { return band_.data() + static_cast<std::ptrdiff_t>(j) * (rows_ - 1) + (kl_ + ku_); }
   /// Factors in place. False if a pivot is exactly zero (a singular matrix); the factors are then
   /// not usable.
   bool factor();

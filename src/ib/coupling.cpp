@@ -58,6 +58,17 @@ int bandwidth(const Eigen::SparseMatrix<double>& a, const std::vector<int>& slot
   return width;
 }
 
+// The same for a compressed matrix whose entries' rows are already in that numbering.
+int bandwidth(const Eigen::SparseMatrix<double>& a, const std::vector<int>& rows, const std::vector<int>& slot) {
+  int width = 0;
+  for (int j = 0; j < a.outerSize(); ++j) {
+    const int column = banded_index(slot, j);
+    for (int p = a.outerIndexPtr()[j]; p < a.outerIndexPtr()[j + 1]; ++p)
+      width = std::max(width, std::abs(rows[static_cast<std::size_t>(p)] - column));
+  }
+  return width;
+}
+
 }  // namespace
 
 // entry(i, j) −= dt (M K)(i, j) over the nonzeros of the product, in one fixed order whatever the
@@ -68,6 +79,22 @@ void ImmersedBoundary2::subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffn
     for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k)
       for (Eigen::SparseMatrix<double>::InnerIterator i(mobility_, k.row()); i; ++i)
         entry(static_cast<int>(i.row()), j) -= dt_s * i.value() * k.value();
+}
+
+// subtract_dt_mk into the band: the same products subtracted in the same order, with each row's
+// banded index looked up once per entry of M (mobility_rows_) rather than once per product, and
+// the column's storage found once per column of K (the lookups were most of this stage's time).
+void ImmersedBoundary2::subtract_dt_mk_banded(const Eigen::SparseMatrix<double>& stiffness, double dt_s) {
+  const int* m_outer = mobility_.outerIndexPtr();
+  const double* m_value = mobility_.valuePtr();
+  const int* m_row = mobility_rows_.data();
+  for (int j = 0; j < stiffness.outerSize(); ++j) {
+    double* column = banded_.column(banded_index(slot_, j));
+    for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k) {
+      const double kv = k.value();
+      for (int p = m_outer[k.row()]; p < m_outer[k.row() + 1]; ++p) column[m_row[p]] -= dt_s * m_value[p] * kv;
+    }
+  }
 }
 
 void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
@@ -100,12 +127,13 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
     if (!order_.empty()) {
       // Entry (i, j) of M K joins i to j through some k with M(i, k) and K(k, j) nonzero, so the
       // system's band is at most the sum of the two bands.
-      const int width = bandwidth(mobility_, slot_) + bandwidth(stiffness, slot_);
+      mobility_.makeCompressed();  // a no-op: gram() fills it in order; the loops below read its arrays
+      mobility_rows_.resize(static_cast<std::size_t>(mobility_.nonZeros()));
+      for (std::size_t p = 0; p < mobility_rows_.size(); ++p) mobility_rows_[p] = banded_index(slot_, mobility_.innerIndexPtr()[p]);
+      const int width = bandwidth(mobility_, mobility_rows_, slot_) + bandwidth(stiffness, slot_);
       banded_.reset(n, width, width);
       for (int i = 0; i < n; ++i) banded_.at(i, i) = 1.0;
-      subtract_dt_mk(stiffness, dt_s, [&](int i, int j) -> double& {
-        return banded_.at(banded_index(slot_, i), banded_index(slot_, j));
-      });
+      subtract_dt_mk_banded(stiffness, dt_s);
       banded_rhs_.resize(n);
       for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = rhs[i];
       if (!banded_solver_.solve(banded_, banded_rhs_))

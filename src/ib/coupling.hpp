@@ -133,11 +133,13 @@ class ImmersedBoundary2 {
   Eigen::SparseMatrix<double> mobility_;
   template <class Entry>
   void subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffness, double dt_s, Entry entry) const;
+  void subtract_dt_mk_banded(const Eigen::SparseMatrix<double>& stiffness, double dt_s);
   Eigen::MatrixXd system_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   // The banded solve (bodies with a solveOrder() of at least kBandedFromMarkers markers): the
   // unknown 2 k + axis of marker order_[k]; slot_[marker] = k.
   std::vector<int> order_, slot_;
+  std::vector<int> mobility_rows_;  // the banded index of the row of each stored entry of mobility_
   BandedLU banded_;
   ReusedBandedSolve banded_solver_;
   std::vector<double> banded_rhs_;
