@@ -94,6 +94,24 @@ with h5py.File(os.path.join(sys.argv[1], "point_000000.h5"), "r") as f:
     assert abs(m["distance_m"][()] - (y[25] - y[10])) < 1e-15
     assert abs(m["distance_m"][()] - m["distance_per_cycle_m"][()]) > 1e-6, (m["distance_m"][()], y)
 PY
+# Three whole cycles (frames 10, 20, 30, 40): cycle_distance_spread is the standard error of the
+# cycles' mean distance and cycle_distance_growth the rise of their least-squares line from the first
+# cycle to the last, each over the distance per cycle.
+"$bin" run "$scratch/jf.toml" params.duration_s=3.0 params.store_fields=false 'sweep.expansion=["staggered"]' \
+  --out "$scratch/g" >/dev/null 2>&1
+/usr/bin/python3 - "$scratch/g" <<'PY'
+import sys, os, h5py, numpy as np
+with h5py.File(os.path.join(sys.argv[1], "point_000000.h5"), "r") as f:
+    m = f["metrics"]
+    d = np.diff(f["timeseries/centroid_y_m"][10:41:10])
+    per_cycle = m["distance_per_cycle_m"][()]
+    assert m["whole_cycles"][()] == 3.0 and abs(per_cycle - d.mean()) < 1e-15, (per_cycle, d)
+    spread = d.std(ddof=1) / np.sqrt(3) / abs(per_cycle)
+    growth = np.polyfit([0.0, 1.0, 2.0], d, 1)[0] * 2 / abs(per_cycle)
+    assert abs(m["cycle_distance_spread"][()] - spread) < 1e-9 * spread, (m["cycle_distance_spread"][()], spread)
+    assert abs(m["cycle_distance_growth"][()] - growth) < 1e-9 * abs(growth), (m["cycle_distance_growth"][()], growth)
+    assert abs(growth) > 1e-3, growth   # the bell accelerates from rest: the line is not flat
+PY
 # Half a cycle: no whole cycle, so the per-cycle distance is the window's over its 0.5 cycles.
 "$bin" run "$scratch/jf.toml" params.duration_s=0.5 params.store_fields=false 'sweep.expansion=["staggered"]' \
   --out "$scratch/i" >/dev/null 2>&1
