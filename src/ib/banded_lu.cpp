@@ -15,6 +15,8 @@ void BandedLU::reset(int n, int kl, int ku) {
   rows_ = 2 * kl_ + ku_ + 1;
   band_.assign(static_cast<std::size_t>(rows_) * n_, 0.0);
   pivot_.assign(n_, 0);
+  lower_rows_.assign(n_, 0);
+  upper_rows_.assign(n_, 0);
 }
 
 // dgbtf2: column j's pivot is the largest of its kl entries below the diagonal and itself; the row
@@ -44,7 +46,31 @@ bool BandedLU::factor() {
       for (int r = 0; r < km; ++r) column[r + 1] -= l[r] * f;
     }
   }
+  find_factor_extents();
   return true;
+}
+
+// The band is as wide as its widest column, and row interchanges only rarely fill U to kl + ku
+// superdiagonals: on the 1 mm jellyfish's 838 unknowns (kl = ku = 189) A's columns span 256 rows
+// on average. solve() runs each column's loops over its nonzero reach only; a zero entry skipped
+// subtracts nothing (for finite right-hand sides: b − 0·x = b except for b = −0), and the others
+// are met in the same order.
+void BandedLU::find_factor_extents() {
+  const int kv = kl_ + ku_;
+  lower_rows_.assign(n_, 0);
+  upper_rows_.assign(n_, 0);
+  for (int j = 0; j < n_; ++j) {
+    for (int r = std::min(kl_, n_ - 1 - j); r > 0; --r)
+      if (ab(kv + r, j) != 0.0) {
+        lower_rows_[j] = r;
+        break;
+      }
+    for (int d = std::min(kv, j); d > 0; --d)
+      if (ab(kv - d, j) != 0.0) {
+        upper_rows_[j] = d;
+        break;
+      }
+  }
 }
 
 void BandedLU::solve(std::vector<double>& b) const {
@@ -52,13 +78,12 @@ void BandedLU::solve(std::vector<double>& b) const {
   const int kv = kl_ + ku_;
   for (int j = 0; j < n_; ++j) {
     if (pivot_[j] != j) std::swap(b[j], b[pivot_[j]]);
-    const int km = std::min(kl_, n_ - 1 - j);
-    for (int r = 1; r <= km; ++r) b[j + r] -= ab(kv + r, j) * b[j];
+    for (int r = 1; r <= lower_rows_[j]; ++r) b[j + r] -= ab(kv + r, j) * b[j];
   }
   for (int j = n_ - 1; j >= 0; --j) {
     b[j] /= ab(kv, j);
     const double x = b[j];
-    for (int i = std::max(0, j - kv); i < j; ++i) b[i] -= ab(kv + i - j, j) * x;
+    for (int i = j - upper_rows_[j]; i < j; ++i) b[i] -= ab(kv + i - j, j) * x;
   }
 }
 

@@ -41,6 +41,9 @@ class BandedLU {
   int n_ = 0, kl_ = 0, ku_ = 0, rows_ = 0;
   std::vector<double> band_;
   std::vector<int> pivot_;
+  // Per column of the factors, the farthest nonzero below the diagonal in L and above it in U.
+  std::vector<int> lower_rows_, upper_rows_;
+  void find_factor_extents();
 };
 
 }  // namespace creaturelab::ib
