@@ -374,6 +374,50 @@ def richardson(h, q):
     return p, q[2] + (q[2] - q[1]) / (ratio ** p - 1)
 
 
+def step_convergence(sweep, points, out):
+    """Distance per cycle and stroke against the step on one grid (convergence_step_scheme.toml):
+    observed order and Richardson estimate in dt from three steps halving."""
+    if "dt_s" not in sweep or len(np.unique(sweep["dt_s"])) < 3:
+        return
+    if "cells" in sweep and len(np.unique(sweep["cells"])) > 1:
+        return
+    skip = {"dt_s", "label", "cells"}
+    keys = [n for n in sweep if n not in skip]
+    groups = {}
+    for k, f in enumerate(points):
+        g = tuple(text(sweep[n][k]) if isinstance(sweep[n][k], bytes) else float(sweep[n][k]) for n in keys)
+        groups.setdefault(g, []).append(k)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
+    lines = ["setting | dt (s) | distance per cycle (mm) | stroke amplitude | cycle growth | observed order in dt | "
+             "Richardson (mm) | finest / Richardson"]
+    for g, ks in sorted(groups.items()):
+        ks = sorted(ks, key=lambda k: -float(sweep["dt_s"][k]))
+        dt = np.array([float(sweep["dt_s"][k]) for k in ks])
+        d = np.array([metric(points[k], "distance_per_cycle_m") * 1e3 for k in ks])
+        a = np.array([metric(points[k], "stroke_amplitude") for k in ks])
+        growth = [metric(points[k], "cycle_distance_growth") for k in ks]
+        name = ", ".join(f"{n}={v:g}" if isinstance(v, float) else f"{n}={v}" for n, v in zip(keys, g)) or "default"
+        p, rich = richardson(dt[-3:], d[-3:]) if len(d) >= 3 else (np.nan, np.nan)
+        left.plot(dt, d, "o-", ms=3, label=f"{name} (p = {p:.2g})")
+        if np.isfinite(rich):
+            left.plot([0.0], [rich], "x", color=left.lines[-1].get_color())
+        right.plot(dt, a, "o-", ms=3, label=name)
+        for ti, di, ai, gi in zip(dt, d, a, growth):
+            lines.append(f"{name} | {ti:g} | {di:.4g} | {ai:.4g} | {gi:.3g} | {p:.3g} | {rich:.4g} | {d[-1] / rich:.4f}")
+    for ax, what in ((left, "distance per cycle (mm); x: Richardson estimate"), (right, "stroke amplitude")):
+        ax.set_xlim(left=0)
+        ax.set_xlabel("coupled step dt (s), one grid")
+        ax.set_ylabel(what)
+        ax.legend(fontsize=6)
+    left.set_title("step convergence (issue 13 §1)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "step_convergence.png"), dpi=110)
+    plt.close(fig)
+    with open(os.path.join(out, "step_convergence.txt"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
 def convergence(sweep, points, out):
     if "cells" not in sweep or len(np.unique(sweep["cells"])) < 2:
         return
@@ -385,7 +429,7 @@ def convergence(sweep, points, out):
         groups.setdefault(g, []).append(k)
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
     lines = ["setting | cell (mm) | distance per cycle (mm) | stroke amplitude | net fraction | cycle spread | "
-             "observed order | Richardson (mm)"]
+             "cycle growth | observed order | Richardson (mm)"]
     for g, ks in sorted(groups.items()):
         ks = sorted(ks, key=lambda k: -float(param(points[k], "domain_m")) / float(sweep["cells"][k]))
         h = np.array([float(param(points[k], "domain_m")) / float(sweep["cells"][k]) * 1e3 for k in ks])
@@ -397,8 +441,9 @@ def convergence(sweep, points, out):
         right.plot(h, a, "o-", ms=3, label=name)
         net = [metric(points[k], "net_fraction") for k in ks]
         spread = [metric(points[k], "cycle_distance_spread") for k in ks]
-        for hi, di, ai, ni, si in zip(h, d, a, net, spread):
-            lines.append(f"{name} | {hi:g} | {di:.4g} | {ai:.4g} | {ni:.3g} | {si:.3g} | {p:.3g} | {rich:.4g}")
+        growth = [metric(points[k], "cycle_distance_growth") for k in ks]
+        for hi, di, ai, ni, si, gi in zip(h, d, a, net, spread, growth):
+            lines.append(f"{name} | {hi:g} | {di:.4g} | {ai:.4g} | {ni:.3g} | {si:.3g} | {gi:.3g} | {p:.3g} | {rich:.4g}")
     for ax, what in ((left, "distance per cycle (mm)"), (right, "stroke amplitude")):
         ax.set_xscale("log", base=2)
         ax.invert_xaxis()
@@ -433,6 +478,7 @@ def main():
     resonance(sweep, points, out)
     size_scaling(sweep, points, out)
     convergence(sweep, points, out)
+    step_convergence(sweep, points, out)
     print(f"figures in {out}")
 
 
