@@ -189,9 +189,8 @@ void Transfer::interpolate(const fluid::MacGrid2& grid, std::span<fluid::Vec2> v
 
 namespace {
 
-// Σ_a w_k[a] w_l[a + shift] over the stencil offsets a that both cover.
-// The offsets a with 0 ≤ a + shift < support, ascending: the sum of the loop over all a that skips
-// the others, term for term, without its branch.
+// Σ_a w_k[a] w_l[a + shift] over the stencil offsets a that both cover (0 ≤ a + shift < support),
+// ascending: term for term the loop over all a that skips the others, without its branch.
 double overlap1d(const double* wk, const double* wl, int shift, int support) {
   const int lo = std::max(0, -shift), hi = std::min(support, support - shift);
   double sum = 0.0;

@@ -404,8 +404,8 @@ JellyfishKind::JellyfishKind() {
        "grid study compares it like any other number. NaN with fewer than two whole cycles"},
       {"cycle_distance_growth", "",
        "least-squares line through the whole cycles' distances against their order, its rise from the "
-       "window's first cycle to its last over distance_per_cycle_m: positive while the bell is still "
-       "accelerating from rest. NaN with fewer than two whole cycles"},
+       "window's first cycle to its last over distance_per_cycle_m: positive while the bell still gains "
+       "speed, negative while the surge of its first strokes fades. NaN with fewer than two whole cycles"},
       {"muscle_work_j", "J/m",
        "muscles' net work over the whole cycles of the window, per metre of depth: the work the body did on the "
        "fluid, sum F . dX (the body has no internal dissipation, so over periodic cycles the muscles' work goes "
@@ -502,9 +502,10 @@ double cycleSpread(const std::vector<double>& d, double per_cycle) {
 }
 
 // The least-squares line through the cycles' distances against the cycle's index, from the first
-// cycle of the window to the last, relative to the window's distance per cycle: a bell still
-// accelerating from rest grows steadily (the viscous time D² / ν is 32 s for the 4 cm bell at the
-// default ν), and then cycleSpread measures that growth, not a scatter.
+// cycle of the window to the last, relative to the window's distance per cycle. On 1 mm the cycles
+// trend through the 10 s window rather than scatter (the viscous time D² / ν of the 4 cm bell is
+// 32 s at the default ν): 0.6 Hz rises 1.38 -> 1.99 mm, 0.8 Hz falls 1.52 -> 1.04 mm, and
+// cycleSpread then measures that trend, not a noise.
 double cycleGrowth(const std::vector<double>& d, double per_cycle) {
   if (d.size() < 2) return std::numeric_limits<double>::quiet_NaN();
   const double n = double(d.size()), mid = 0.5 * (n - 1);
