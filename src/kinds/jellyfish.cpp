@@ -262,7 +262,10 @@ JellyfishKind::JellyfishKind() {
               "springs along the subumbrella (even, >= 8; apex in the middle); 0 = follow the grid: the fewest "
               "with markers at most marker_spacing_cells apart. The body is defined by continuum properties, so "
               "refining it refines the same bell (issue 13). 256 by default: markers 0.25 cells apart on 1 mm and "
-              "0.5 on 0.5 mm, so the grid study refines the fluid around one discretised body"),
+              "0.5 on 0.5 mm, so the grid study refines the fluid around one discretised body. On 1 mm 128 / 256 "
+              "/ 512 segments give 1.642 / 1.595 / 1.574 mm per cycle at 0.7 Hz (512 within 1.6% of 256 at "
+              "0.6-0.8 Hz) and stroke amplitudes 0.313 / 0.301 / 0.295 (512 1.2-2.5% below 256, still falling; "
+              "convergence_segments.toml)"),
       real("marker_spacing_cells", 0.5, "", 0.05, 4,
            "bell_segments = 0: largest marker spacing in cells (immersed boundaries want <= 1; 0.5 is Peskin 2002's "
            "rule and keeps the membrane's leak small, membrane.toml)"),
@@ -314,8 +317,9 @@ JellyfishKind::JellyfishKind() {
                        "cycle by 10-13% with the Hermite drive (convergence_fine.toml) and up to 33% with the pulse "
                        "(convergence_pulse.toml), whose free recoil is damped in a Stokes layer (1.7 mm at 0.7 Hz) under "
                        "two 1 mm cells. At 5e-5 the layer is 3.4 mm: 0.5 and 1 mm agree to 1% (convergence.toml) and "
-                       "upwind2_rk2 to 2.6-4.4% of MacCormack on 0.5 mm at 0.6-0.7 Hz, 5.7% at 0.8 Hz (where the "
-                       "cycles' own scatter is 6%). The step is the largest remaining error: see dt_s. 1.304e-6 is one override away",
+                       "upwind2_rk2 to 2.6-4.4% of MacCormack on 0.5 mm at 0.6-0.7 Hz, 5.7% at 0.8 Hz, where the two "
+                       "schemes' step errors add (at a converged step on 1 mm: 3.5% and 2.9% at 0.7 and 0.8 Hz, "
+                       "convergence_step_scheme.toml). See dt_s and bell_segments for what is left. 1.304e-6 is one override away",
       .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space; the default since "
                        "the first-order scheme moved distances 2-5x, issue 13), the paper's semi-Lagrangian (Stam 1999), or "
                        "upwind2_rk2 (Fromm upwind fluxes + Heun, second order, CFL <= 0.5; the scheme change of "
@@ -345,12 +349,15 @@ JellyfishKind::JellyfishKind() {
            "slightly, a test of how sensitive a distance over several cycles is"),
       real("dt_s", 0.000625, "s", 1e-7, 0.1,
            "coupled step, first order in time (ib/coupling.hpp); the grid study halves it with the cell (dt ∝ dx: "
-           "0.00125, 0.000625, 0.0003125 s on 2, 1, 0.5 mm; convergence.toml). On 1 mm cells halving 0.000625 s "
-           "moves the 0.7 Hz distance per cycle by -2.8% (1.595 -> 1.550 mm) and the stroke amplitude by -0.4%; the "
-           "changes shrink at about first order, and Richardson puts 0.000625 s 0.8 / 5.9 / 8.6% above the step's "
-           "limit at 0.6 / 0.7 / 0.8 Hz (convergence_box_step_viscous.toml): the largest error left in "
-           "the default; 0.0003125 s would cost twice as much. The paper's 0.01 s is "
-           "stable with the semi-implicit step"),
+           "0.00125, 0.000625, 0.0003125 s on 2, 1, 0.5 mm; convergence.toml). On 1 mm cells with MacCormack, "
+           "0.000625 / 0.0003125 / 0.00015625 s give 1.5945 / 1.5504 / 1.5334 mm per cycle at 0.7 Hz and 1.1461 / "
+           "1.1237 / 1.1175 at 0.8 Hz (convergence_step_scheme.toml; observed order 1.4 and 1.9): 0.000625 s is "
+           "4.7% and 2.8% above the Richardson limit (0.8% at 0.6 Hz, convergence_box_step_viscous.toml), the "
+           "stroke amplitude within 0.4%. upwind2_rk2 moves under 0.3% from 0.0003125 s down, so the step "
+           "dependence is MacCormack's; explicit forces (semi_implicit = false, stable here) have a step error "
+           "as large, so it is not the semi-implicit force's. The largest error left in the default with the "
+           "segments (bell_segments); 0.0003125 s costs twice as much. The paper's 0.01 s is stable with the "
+           "semi-implicit step"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
       real("start_y_fraction", 0.2, "", 0.05, 0.95, "aperture's starting height in the box (the bell swims up)"),
       real("box_aspect", 1.5, "", 0.25, 8,
