@@ -224,6 +224,16 @@ BENCHMARK(BM_SimulatedSecondPeskin256)
 // and the paper's grid (100², Peskin's kernel) 25.5 / 23.4 / 24.1 -> 28.0 / 25.6 / 28.0 / 25.7 simulated
 // s per CPU s (goal ≥ 20: met on this host before and after). A 0.4 s run of the default setting
 // (creaturelab run, 640 steps) took 7.95-8.58 s of CPU before and 6.70-6.77 after.
+// 2026-12-01 20:55-21:10 UTC, idle machine whose speed still drifted 10-20% within minutes, six
+// interleaved runs each of the build before (65fb1d7) and after the coupling's bitwise-neutral
+// speed-ups (Transfer::gram's neighbour search, the banded assembly's index look-ups, the banded
+// solve over each column's nonzero reach): 300 cells with reuse 10.45-11.67 (median 10.79) -> 9.78-11.87
+// (median 10.19) ms per step, about 6% (an 11 s point in 172-180 s of CPU at the better figures,
+// 2.9-3.0 times issue 13's 60 s); the paper's grid unchanged, 25.8-26.4 -> 25.6-26.3 simulated s per
+// CPU s (53 markers: the dense solve). perf of the 1 mm step after: the coupling 19% (it was 24-27%:
+// banded solve 7.6 -> 5.4%, gram 7.7 -> 4.8%, assembly 8 -> 5.3%), viscosity 23%, advection 30%,
+// pressure 12%. Richardson sweeps instead of CG up to 10 α = 0.4 (tried, not kept: not bitwise) took
+// about 17% less viscous time, under 4% of the step.
 void BM_SimulatedSecondViscousPulse(benchmark::State& state) {
   const int cells = static_cast<int>(state.range(0));
   SwimmerConfig c = gridStudyConfig(cells, ib::Kernel::peskin4, cells / 150, 256);
