@@ -3,25 +3,18 @@
 #include <unistd.h>
 
 #include <Eigen/Core>
-#include <array>
-#include <cstdio>
+#include <string>
 #include <toml++/toml.h>
 
+#include "runner/git_commit.hpp"
 #include "runner/store.hpp"
 
 namespace creaturelab::runner {
 namespace {
 
-std::string gitCommit() {
-  std::array<char, 128> buf{};
-  std::string out;
-  if (FILE* p = popen("git -C '" CREATURELAB_SOURCE_DIR "' rev-parse HEAD 2>/dev/null", "r")) {
-    while (std::fgets(buf.data(), int(buf.size()), p)) out += buf.data();
-    pclose(p);
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
-  return out.empty() ? "unknown" : out;
-}
+// Baked in at build time (git_commit.cmake): reading the checkout's HEAD when a point runs named
+// whatever commit the checkout had moved to since the build, and never said that it was modified.
+std::string gitCommit() { return CREATURELAB_GIT_COMMIT; }
 
 }  // namespace
 
