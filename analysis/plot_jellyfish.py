@@ -374,6 +374,30 @@ def richardson(h, q):
     return p, q[2] + (q[2] - q[1]) / (ratio ** p - 1)
 
 
+def group_by_setting(sweep, points, skip):
+    """The sweep's points grouped by every column outside `skip`: (column names, {values: [indices]})."""
+    keys = [n for n in sweep if n not in skip]
+    groups = {}
+    for k, f in enumerate(points):
+        g = tuple(text(sweep[n][k]) if isinstance(sweep[n][k], bytes) else float(sweep[n][k]) for n in keys)
+        groups.setdefault(g, []).append(k)
+    return keys, groups
+
+
+def setting_name(keys, values):
+    return ", ".join(f"{n}={v:g}" if isinstance(v, float) else f"{n}={v}" for n, v in zip(keys, values))
+
+
+def save_study(fig, lines, out, stem):
+    """Writes a convergence study's figure STEM.png and table STEM.txt, and prints the table."""
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, stem + ".png"), dpi=110)
+    plt.close(fig)
+    with open(os.path.join(out, stem + ".txt"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
 def step_convergence(sweep, points, out):
     """Distance per cycle and stroke against the step on one grid (convergence_step_scheme.toml):
     observed order and Richardson estimate in dt from three steps halving."""
@@ -382,11 +406,7 @@ def step_convergence(sweep, points, out):
     if "cells" in sweep and len(np.unique(sweep["cells"])) > 1:
         return
     skip = {"dt_s", "label", "cells"}
-    keys = [n for n in sweep if n not in skip]
-    groups = {}
-    for k, f in enumerate(points):
-        g = tuple(text(sweep[n][k]) if isinstance(sweep[n][k], bytes) else float(sweep[n][k]) for n in keys)
-        groups.setdefault(g, []).append(k)
+    keys, groups = group_by_setting(sweep, points, skip)
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
     lines = ["setting | dt (s) | distance per cycle (mm) | stroke amplitude | cycle growth | observed order in dt | "
              "Richardson (mm) | finest / Richardson"]
@@ -396,7 +416,7 @@ def step_convergence(sweep, points, out):
         d = np.array([metric(points[k], "distance_per_cycle_m") * 1e3 for k in ks])
         a = np.array([metric(points[k], "stroke_amplitude") for k in ks])
         growth = [metric(points[k], "cycle_distance_growth") for k in ks]
-        name = ", ".join(f"{n}={v:g}" if isinstance(v, float) else f"{n}={v}" for n, v in zip(keys, g)) or "default"
+        name = setting_name(keys, g) or "default"
         p, rich = richardson(dt[-3:], d[-3:]) if len(d) >= 3 else (np.nan, np.nan)
         left.plot(dt, d, "o-", ms=3, label=f"{name} (p = {p:.2g})")
         if np.isfinite(rich):
@@ -410,23 +430,14 @@ def step_convergence(sweep, points, out):
         ax.set_ylabel(what)
         ax.legend(fontsize=6)
     left.set_title("step convergence (issue 13 §1)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "step_convergence.png"), dpi=110)
-    plt.close(fig)
-    with open(os.path.join(out, "step_convergence.txt"), "w") as fh:
-        fh.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    save_study(fig, lines, out, "step_convergence")
 
 
 def convergence(sweep, points, out):
     if "cells" not in sweep or len(np.unique(sweep["cells"])) < 2:
         return
     skip = {"cells", "dt_s", "label", "bell_segments", "domain_m"}
-    keys = [n for n in sweep if n not in skip]
-    groups = {}
-    for k, f in enumerate(points):
-        g = tuple(text(sweep[n][k]) if isinstance(sweep[n][k], bytes) else float(sweep[n][k]) for n in keys)
-        groups.setdefault(g, []).append(k)
+    keys, groups = group_by_setting(sweep, points, skip)
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
     lines = ["setting | cell (mm) | distance per cycle (mm) | stroke amplitude | net fraction | cycle spread | "
              "cycle growth | observed order | Richardson (mm)"]
@@ -435,7 +446,7 @@ def convergence(sweep, points, out):
         h = np.array([float(param(points[k], "domain_m")) / float(sweep["cells"][k]) * 1e3 for k in ks])
         d = np.array([metric(points[k], "distance_per_cycle_m") * 1e3 for k in ks])
         a = np.array([metric(points[k], "stroke_amplitude") for k in ks])
-        name = ", ".join(f"{n}={v:g}" if isinstance(v, float) else f"{n}={v}" for n, v in zip(keys, g))
+        name = setting_name(keys, g)
         p, rich = richardson(h, d)
         left.plot(h, d, "o-", ms=3, label=f"{name} (p = {p:.2g})")
         right.plot(h, a, "o-", ms=3, label=name)
@@ -451,12 +462,7 @@ def convergence(sweep, points, out):
         ax.set_ylabel(what)
         ax.legend(fontsize=6)
     left.set_title("grid convergence (issue 13 §1)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "convergence.png"), dpi=110)
-    plt.close(fig)
-    with open(os.path.join(out, "convergence.txt"), "w") as fh:
-        fh.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    save_study(fig, lines, out, "convergence")
 
 
 def main():
