@@ -61,7 +61,9 @@ std::string validate(const ControllerParams& p, const FluidControlParams& f, con
     for (const auto& name : *names)
       if (model.joint(model.findJoint(name)).type == rigid::JointType::ball)
         return "joint '" + name + "' is a ball joint: the fluid is planar (x-z), give hinges";
-  if (p.steady_state) return "steady_state: with the fluid use settle_steps (§4.3's validation mode) instead";
+  if (p.steady_state)
+    return "steady_state: with the fluid use perturbation = placed (§3.3's steady-state calculation on the fluid's "
+           "state) and settle_steps (§4.3's validation mode) instead";
   if (f.limit_rad < 0) return "the joint limit must be >= 0 (0: none)";
   if (f.settle_steps < 0) return "settle_steps must be >= 0";
   if (auto e = validate(f.stroke, p); !e.empty()) return e;
@@ -140,7 +142,7 @@ Vec3 FluidController::jointForce(const World& w, int joint) const {
   Vec3 f{};
   const auto& body = w.coupling->bodyForce_n();
   for (int b = 0; b < int(body.size()); ++b)
-    if (layout_.moves[joint][b])
+    if (f_.creature_force ? b > 0 : layout_.moves[joint][b])
       for (int k = 0; k < 3; ++k) f[k] += body[b][k];
   return f;
 }
@@ -179,6 +181,18 @@ void FluidController::restore(World& w, const CoupledState& s) const {
   w.coupling->restore(s.fluid);
 }
 
+// Perturbation::placed: pr's held joints (those without a pattern) set to their targets at rest
+// relative to their parents, the markers placed at the new pose without a step.
+void FluidController::place(World& w, const Prescribed& pr) const {
+  for (std::size_t k = 0; k < pr.qpos.size(); ++k) {
+    if (pr.pattern[k]) continue;
+    w.data.qpos()[pr.qpos[k]] = pr.target[k];
+    w.data.qvel()[pr.dof[k]] = 0.0;
+  }
+  w.data.kinematics();
+  w.coupling->placeMarkers(w.data);
+}
+
 namespace {
 // Joint j's objective from its mean force f and mean actuator torque (Eq. 1: effort is the
 // angular impulse |torque| x frame).
@@ -202,10 +216,16 @@ double FluidController::evaluate(World& w, const CoupledState& start, int joint,
   const int n = int(p_.controlled.size());
   w.forces.clear();
   w.torques.clear();
-  moveOver(w, w.pr, from, p_.substeps, true);
-  if (f_.settle_steps > 0) {
+  if (f_.perturbation == Perturbation::placed) {
+    place(w, w.pr);
     std::vector<double> held(w.pr.target.begin(), w.pr.target.end());
-    moveOver(w, w.pr, held, f_.settle_steps, true);
+    moveOver(w, w.pr, held, p_.substeps + f_.settle_steps, true);
+  } else {
+    moveOver(w, w.pr, from, p_.substeps, true);
+    if (f_.settle_steps > 0) {
+      std::vector<double> held(w.pr.target.begin(), w.pr.target.end());
+      moveOver(w, w.pr, held, f_.settle_steps, true);
+    }
   }
   const int steps = int(w.forces.size()) / n;
   std::vector<double> objective(n);

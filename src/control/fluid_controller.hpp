@@ -9,6 +9,10 @@
 //     (delta position / delta time) of each step;
 //   - optional validation mode (§4.3): settle_steps further coupled steps with the pose held, so
 //     that the disturbance of the move is swept downstream;
+//   - or (Perturbation::placed) §3.3's steady-state calculation: the pose set by +-delta without a
+//     move (the markers placed there, the relative joint velocities zero), then the frame's
+//     coupled steps and settle_steps with it held: the objective sees the pose, not the
+//     pseudo-velocity of reaching it;
 //   - the objective is the force the fluid exerts on the bodies the joint moves, from the coupling
 //     (its exchanged momentum), resolved along w (Eq. 10, drag_along) or its magnitude (drag),
 //     averaged over the evaluation's last average_steps coupled steps;
@@ -26,7 +30,16 @@
 
 namespace creaturelab::control {
 
+// How a derivative evaluation reaches the perturbed pose. moved: over one frame of coupled steps,
+// the markers carrying the pseudo-velocity (§4.3); placed: set at once, the markers placed there
+// without a velocity (§3.3's "relative joint velocities" projected out, on the fluid's state).
+enum class Perturbation { moved, placed };
+
 struct FluidControlParams {
+  Perturbation perturbation = Perturbation::moved;
+  // The objective's force: false, on the bodies the joint moves; true, on the whole creature
+  // (every body but the world; §7.1: "maximize drag (F_d) on the body").
+  bool creature_force = false;
   int settle_steps = 0;   // §4.3 validation mode: coupled steps with the pose held after the move
   int average_steps = 1;  // the objective: mean force over an evaluation's last this many steps
   // §7.1: per controlled joint, the inboard pattern whose stroke flips its sense (empty: fixed senses).
@@ -90,6 +103,7 @@ class FluidController {
   struct World;
   void coupledStep(World& w, const Prescribed& pr);
   void moveOver(World& w, Prescribed& pr, const std::vector<double>& start, int steps, bool record);
+  void place(World& w, const Prescribed& pr) const;
   void jointTorques(World& w, std::vector<double>& out) const;
   double evaluate(World& w, const CoupledState& start, int joint, double offset_rad);
   void save(World& w, CoupledState& s) const;

@@ -52,7 +52,9 @@ coupling::RigidFluidParams rigidFluidParams(const ParamReader& r) {
 
 control::FluidControlParams fluidControlParams(const ParamReader& r) {
   control::FluidControlParams f;
+  f.perturbation = r.text("perturbation") == "placed" ? control::Perturbation::placed : control::Perturbation::moved;
   f.settle_steps = int(r.integer("settle_steps"));
+  f.creature_force = r.text("objective_bodies") == "creature";
   f.average_steps = int(r.integer("average_steps"));
   f.limit_rad = r.real("controlled_limit_deg") / kDeg;
   f.stroke = parseStrokeSense(r.text("stroke_sense"), splitList(r.text("controlled"), ','));
@@ -107,6 +109,13 @@ ControlFluidKind::ControlFluidKind() {
       integer("search_every_frames", 1, 1, 100000, "re-determine the direction every k frames (§2.1)"),
       boolean("rigidify_outboard", true, "§5: hold the bodies outboard of a perturbed joint rigid with it"),
       integer("threads", 1, 1, 16, "threads for the per-DOF evaluations (§5, Fig. 10); results do not depend on it"),
+      choice("perturbation", "moved", {"moved", "placed"},
+             "how a derivative evaluation reaches its pose: moved over one frame of coupled steps (§4.3, the "
+             "markers carrying the pseudo-velocity) | placed at once, relative joint velocities zero (§3.3's "
+             "steady-state calculation on the fluid's state)"),
+      choice("objective_bodies", "moved", {"moved", "creature"},
+             "the bodies whose fluid force a joint's drag objective takes: moved (those the joint moves) | creature "
+             "(every body but the world; §7.1: 'maximize drag (F_d) on the body')"),
       integer("settle_steps", 0, 0, 100000,
               "§4.3 validation mode: coupled steps with the perturbed pose held before the force is taken (0: off)"),
       integer("average_steps", 1, 1, 100000, "the objective: mean force over an evaluation's last this many steps"),

@@ -120,5 +120,80 @@ TEST_F(ControlFluidTest, EffortIsTheTorqueThatHoldsTheJointAgainstTheFluid) {
   EXPECT_DOUBLE_EQ(r.objective[0], r.measures.effort_n_m_s[0]);
 }
 
+// A block in still fluid (no stream, no gravity) evaluated at +delta. Moved (§4.3), the markers
+// carry the pseudo-velocity delta / frame and push the fluid: the objective |F| is the fluid's
+// resistance to that motion. Placed (§3.3's steady-state calculation), the pose is set at once
+// with the joint at rest, so nothing moves the still fluid and |F| is zero to round-off.
+double stillFluidDrag(const std::string& xml, Perturbation how) {
+  auto model = rigid::RigidModel::load(xml);
+  ControllerParams p;
+  p.controlled = {"hinge"};
+  p.objectives = {Objective::drag};
+  p.senses = {Sense::minimize};
+  p.substeps = 2;
+  p.delta_rad = 0.02;
+  model.setTimestep(p.frame_s / p.substeps);
+  FluidControlParams f;
+  f.perturbation = how;
+  f.settle_steps = 2;
+  f.average_steps = 2;
+  fluid::FluidParams fp;
+  fp.domain_width_m = fp.domain_height_m = 4.0;
+  fp.cells_x = fp.cells_y = 32;
+  fp.kinematic_viscosity_m2_per_s = 0;
+  coupling::RigidFluidParams cp;
+  cp.origin_x_m = -1.5;
+  cp.origin_z_m = -2.0;
+  FluidController c(model, p, f, {{"hinge", -0.3}}, fp, cp);
+  return c.evaluate(0, p.delta_rad);
+}
+
+TEST_F(ControlFluidTest, PlacedPerturbationCarriesNoPseudoVelocity) {
+  const std::string xml = testing::writeText(file("block.xml"), testing::blockXml(0.1, 0));
+  const double moved = stillFluidDrag(xml, Perturbation::moved);
+  const double placed = stillFluidDrag(xml, Perturbation::placed);
+  ASSERT_GT(moved, 1.0);  // N: the move pushes the water
+  EXPECT_LT(placed, 1e-9 * moved);
+}
+
+// creature_force: every joint's drag objective is the force on the whole creature, the force the
+// frame reports on all its bodies; without it each joint sees only the bodies it moves.
+TEST_F(ControlFluidTest, CreatureForceIsTheForceOnAllBodies) {
+  const std::string xml = testing::writeText(file("chain.xml"), testing::chainXml(2));
+  for (bool creature : {false, true}) {
+    auto model = rigid::RigidModel::load(xml);
+    model.setGravity({0, 0, 0});
+    model.setTimestep(1.0 / 60);
+    ControllerParams p;
+    p.controlled = {"j0", "j1"};
+    p.objectives = {Objective::drag, Objective::drag};
+    p.senses = {Sense::minimize, Sense::minimize};
+    FluidControlParams f;
+    f.creature_force = creature;
+    fluid::FluidParams fp;
+    fp.domain_width_m = fp.domain_height_m = 2.0;
+    fp.cells_x = fp.cells_y = 32;
+    fp.kinematic_viscosity_m2_per_s = 0;
+    fp.walls.left.type = fp.walls.right.type = fluid::WallType::open;
+    coupling::RigidFluidParams cp;
+    cp.origin_x_m = -0.5;
+    cp.origin_z_m = -1.0;
+    cp.inflow.stream_m_per_s = 0.5;
+    cp.inflow.stream_columns = 2;
+    FluidController c(model, p, f, {{"j0", -0.3}, {"j1", 0.2}}, fp, cp);
+    c.frame();
+    const FrameRecord r = c.frame();
+    const Vec3& all = c.frameBodiesForce_n();
+    const double all_n = std::sqrt(all[0] * all[0] + all[1] * all[1] + all[2] * all[2]);
+    ASSERT_GT(all_n, 1.0);
+    if (creature) {
+      EXPECT_NEAR(r.measures.drag_n[0], all_n, 1e-12 * all_n);
+      EXPECT_NEAR(r.measures.drag_n[1], all_n, 1e-12 * all_n);
+    } else {
+      EXPECT_GT(std::abs(r.measures.drag_n[0] - r.measures.drag_n[1]), 1e-3 * all_n);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace creaturelab::control
