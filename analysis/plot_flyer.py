@@ -7,7 +7,8 @@ usage: /usr/bin/python3 analysis/plot_flyer.py RUN_DIR [--out DIR]
 flyer_angles.png: per point the PD-driven inner angles, the controlled outer angles and the sense
 each followed (+1 max on the down-stroke, -1 min on the up-stroke), and the fluid's upward force
 on all bodies against time. flyer_force.txt: per point the mean upward force over the last
-force_cycles flap cycles, and per grid/step/advection the ratio controlled / held (the experiment's check).
+force_cycles flap cycles and its ratio to the held point of the same grid, step, advection and
+flaps (the experiment's check), with the reading of F_d its evaluations used.
 flyer_vorticity.png: per point the vorticity with the bodies at the last flap's lowest and highest
 wing (Fig. 12 (a), (b) analogues; Fig. 11's animation is plot_control_fluid.py's frame series).
 The vorticity with the bodies and the frame series are plot_control_fluid.py's.
@@ -87,19 +88,27 @@ def vorticity_figure(points, png):
     plt.close(fig)
 
 
+def window(f):
+    """The setting a held point is the reference for: grid, step, scheme and the flaps averaged."""
+    return f"{resolution(f)}, {int(f.attrs['force_cycles'])} flaps"
+
+
+def reading(f):
+    """How the controller's evaluations read F_d (control_fluid's perturbation and objective_bodies)."""
+    return f"{text(f, 'perturbation') or 'moved'}, {text(f, 'objective_bodies') or 'moved'}"
+
+
 def force_table(points, path):
-    rows = {}
+    """Per point the mean upward force and its ratio to the held point (strength 0) of its window."""
+    held = {window(f): float(f["metrics/mean_up_force_n"][()])
+            for f in points if float(f.attrs["strength_rad_per_s"]) == 0}
     with open(path, "w") as out:
-        out.write("label              cells  substeps  advection        mean_up_force_n\n")
+        out.write(f"{'label':32s} {'setting':50s} {'reading':18s} mean_up_force_n  / held\n")
         for f in points:
             force = float(f["metrics/mean_up_force_n"][()])
-            out.write(f"{text(f, 'label'):18s} {int(f.attrs['cells']):5d}  {int(f.attrs['substeps']):8d}  "
-                      f"{text(f, 'advection'):15s}  {force:15.4f}\n")
-            rows.setdefault(resolution(f), {})[text(f, "label").split("_")[0]] = force
-        out.write("\nresolution                                 controlled / held\n")
-        for res, v in rows.items():
-            if "controlled" in v and "held" in v and v["held"] != 0:
-                out.write(f"{res:43s}{v['controlled'] / v['held']:.4f}\n")
+            ref = held.get(window(f))
+            ratio = f"{force / ref:.4f}" if ref else "-"
+            out.write(f"{text(f, 'label'):32s} {window(f):50s} {reading(f):18s} {force:15.4f}  {ratio}\n")
 
 
 def main():
