@@ -40,7 +40,9 @@ echo "ok   flyer small: 3 points, senses follow the stroke, PD wings flap, --job
 /usr/bin/python3 analysis/plot_control_fluid.py "$scratch/j1" || fail "control_fluid figures"
 [[ -s $scratch/j1/figures/flyer_angles.png && -s $scratch/j1/figures/flyer_force.txt && -s $scratch/j1/figures/vorticity.png ]] \
   || fail "no figures"
-grep -q "controlled / held" "$scratch/j1/figures/flyer_force.txt" || fail "no force ratio"
+# Each point's ratio to the held point of its setting: the held one's own 1, the controlled one a number.
+grep -Eq '^held +.* 1\.0000$' "$scratch/j1/figures/flyer_force.txt" || fail "no held reference in the force table"
+grep -Eq '^controlled +.* [0-9]+\.[0-9]{4}$' "$scratch/j1/figures/flyer_force.txt" || fail "no force ratio"
 echo "ok   figures"
 
 experiment=experiments/control/flyer.toml
