@@ -13,8 +13,9 @@
 //     move (the markers placed there, the relative joint velocities zero), then the frame's
 //     coupled steps and settle_steps with it held: the objective sees the pose, not the
 //     pseudo-velocity of reaching it;
-//   - the objective is the force the fluid exerts on the bodies the joint moves, from the coupling
-//     (its exchanged momentum), resolved along w (Eq. 10, drag_along) or its magnitude (drag),
+//   - the objective is the force the fluid exerts on the bodies the joint moves (creature_force:
+//     on every body), from the coupling (its exchanged momentum), resolved along w (Eq. 10,
+//     drag_along) or its magnitude (drag),
 //     averaged over the evaluation's last average_steps coupled steps;
 //   - the DOFs' evaluations run in parallel, each on its own worker's copy: results are bitwise
 //     the same for any thread count (§5, Fig. 10).

@@ -17,14 +17,30 @@ class ControlFluidTest : public testing::ScratchDirTest {
   ControlFluidTest() : ScratchDirTest("control_fluid") {}
 };
 
+// The chain's two hinged plates in a stream of 0.5 m/s, 2 m box of 32^2, at 60 frames a second.
+struct PlateStream {
+  rigid::RigidModel model;
+  fluid::FluidParams fluid;
+  coupling::RigidFluidParams coupling;
+};
+PlateStream plateStream(const std::string& xml) {
+  PlateStream s{rigid::RigidModel::load(xml), {}, {}};
+  s.model.setGravity({0, 0, 0});
+  s.model.setTimestep(1.0 / 60);
+  s.fluid.domain_width_m = s.fluid.domain_height_m = 2.0;
+  s.fluid.cells_x = s.fluid.cells_y = 32;
+  s.fluid.kinematic_viscosity_m2_per_s = 0;
+  s.fluid.walls.left.type = s.fluid.walls.right.type = fluid::WallType::open;
+  s.coupling.origin_x_m = -0.5;
+  s.coupling.origin_z_m = -1.0;
+  s.coupling.inflow.stream_m_per_s = 0.5;
+  s.coupling.inflow.stream_columns = 2;
+  return s;
+}
+
 // Two hinged plates in a stream on 32^2: three frames on `threads` threads.
 std::vector<double> run(const std::string& xml, int threads) {
-  const auto model = [&] {
-    auto m = rigid::RigidModel::load(xml);
-    m.setGravity({0, 0, 0});
-    m.setTimestep(1.0 / 60);
-    return m;
-  }();
+  const PlateStream s = plateStream(xml);
   ControllerParams p;
   p.controlled = {"j0", "j1"};
   p.objectives = {Objective::drag_along, Objective::drag};
@@ -34,17 +50,7 @@ std::vector<double> run(const std::string& xml, int threads) {
   FluidControlParams f;
   f.settle_steps = 2;
   f.average_steps = 2;
-  fluid::FluidParams fp;
-  fp.domain_width_m = fp.domain_height_m = 2.0;
-  fp.cells_x = fp.cells_y = 32;
-  fp.kinematic_viscosity_m2_per_s = 0;
-  fp.walls.left.type = fp.walls.right.type = fluid::WallType::open;
-  coupling::RigidFluidParams cp;
-  cp.origin_x_m = -0.5;
-  cp.origin_z_m = -1.0;
-  cp.inflow.stream_m_per_s = 0.5;
-  cp.inflow.stream_columns = 2;
-  FluidController c(model, p, f, {{"j0", -0.3}, {"j1", 0.2}}, fp, cp);
+  FluidController c(s.model, p, f, {{"j0", -0.3}, {"j1", 0.2}}, s.fluid, s.coupling);
   std::vector<double> out;
   for (int k = 0; k < 3; ++k) {
     const FrameRecord r = c.frame();
@@ -161,26 +167,14 @@ TEST_F(ControlFluidTest, PlacedPerturbationCarriesNoPseudoVelocity) {
 TEST_F(ControlFluidTest, CreatureForceIsTheForceOnAllBodies) {
   const std::string xml = testing::writeText(file("chain.xml"), testing::chainXml(2));
   for (bool creature : {false, true}) {
-    auto model = rigid::RigidModel::load(xml);
-    model.setGravity({0, 0, 0});
-    model.setTimestep(1.0 / 60);
+    const PlateStream s = plateStream(xml);
     ControllerParams p;
     p.controlled = {"j0", "j1"};
     p.objectives = {Objective::drag, Objective::drag};
     p.senses = {Sense::minimize, Sense::minimize};
     FluidControlParams f;
     f.creature_force = creature;
-    fluid::FluidParams fp;
-    fp.domain_width_m = fp.domain_height_m = 2.0;
-    fp.cells_x = fp.cells_y = 32;
-    fp.kinematic_viscosity_m2_per_s = 0;
-    fp.walls.left.type = fp.walls.right.type = fluid::WallType::open;
-    coupling::RigidFluidParams cp;
-    cp.origin_x_m = -0.5;
-    cp.origin_z_m = -1.0;
-    cp.inflow.stream_m_per_s = 0.5;
-    cp.inflow.stream_columns = 2;
-    FluidController c(model, p, f, {{"j0", -0.3}, {"j1", 0.2}}, fp, cp);
+    FluidController c(s.model, p, f, {{"j0", -0.3}, {"j1", 0.2}}, s.fluid, s.coupling);
     c.frame();
     const FrameRecord r = c.frame();
     const Vec3& all = c.frameBodiesForce_n();
