@@ -39,7 +39,7 @@ PlateStream plateStream(const std::string& xml) {
 }
 
 // Two hinged plates in a stream on 32^2: three frames on `threads` threads.
-std::vector<double> run(const std::string& xml, int threads) {
+std::vector<double> run(const std::string& xml, int threads, Perturbation how = Perturbation::moved) {
   const PlateStream s = plateStream(xml);
   ControllerParams p;
   p.controlled = {"j0", "j1"};
@@ -50,6 +50,7 @@ std::vector<double> run(const std::string& xml, int threads) {
   FluidControlParams f;
   f.settle_steps = 2;
   f.average_steps = 2;
+  f.perturbation = how;
   FluidController c(s.model, p, f, {{"j0", -0.3}, {"j1", 0.2}}, s.fluid, s.coupling);
   std::vector<double> out;
   for (int k = 0; k < 3; ++k) {
@@ -65,17 +66,20 @@ std::vector<double> run(const std::string& xml, int threads) {
 
 TEST_F(ControlFluidTest, BitwiseSameForAnyThreadCount) {
   const std::string xml = testing::writeText(file("chain.xml"), testing::chainXml(2));
-  const auto one = run(xml, 1);
-  // 2 threads: one joint's two evaluations each; 3: the four evaluations split 1, 1, 2, so
-  // joint 0's two run on different threads and scratch states.
-  for (int threads : {2, 3}) {
-    const auto parallel = run(xml, threads);
-    ASSERT_EQ(one.size(), parallel.size());
-    EXPECT_EQ(0, std::memcmp(one.data(), parallel.data(), one.size() * sizeof(double))) << threads << " threads";
+  for (Perturbation how : {Perturbation::moved, Perturbation::placed}) {
+    const auto one = run(xml, 1, how);
+    // 2 threads: one joint's two evaluations each; 3: the four evaluations split 1, 1, 2, so
+    // joint 0's two run on different threads and scratch states.
+    for (int threads : {2, 3}) {
+      const auto parallel = run(xml, threads, how);
+      ASSERT_EQ(one.size(), parallel.size());
+      EXPECT_EQ(0, std::memcmp(one.data(), parallel.data(), one.size() * sizeof(double)))
+          << threads << " threads, " << (how == Perturbation::placed ? "placed" : "moved");
+    }
+    // The derivatives are not zero: the fluid pushes on the plates.
+    EXPECT_NE(one[2], 0.0);
+    EXPECT_NE(one[3], 0.0);
   }
-  // The derivatives are not zero: the fluid pushes on the plates.
-  EXPECT_NE(one[2], 0.0);
-  EXPECT_NE(one[3], 0.0);
 }
 
 TEST_F(ControlFluidTest, SteadyStateIsRefused) {
