@@ -92,6 +92,27 @@ TEST_F(ControlFluidTest, SteadyStateIsRefused) {
   EXPECT_NE(validate(p, FluidControlParams{}, model).find("settle_steps"), std::string::npos);
 }
 
+// The block's 4 m box of 32^2 inviscid water, the hinge 1.5 m from the left wall; with a stream
+// (m/s), the left and right walls are open and the stream enters in a 2-column band.
+struct BlockBox {
+  fluid::FluidParams fluid;
+  coupling::RigidFluidParams coupling;
+};
+BlockBox blockBox(double stream_m_per_s) {
+  BlockBox b;
+  b.fluid.domain_width_m = b.fluid.domain_height_m = 4.0;
+  b.fluid.cells_x = b.fluid.cells_y = 32;
+  b.fluid.kinematic_viscosity_m2_per_s = 0;
+  b.coupling.origin_x_m = -1.5;
+  b.coupling.origin_z_m = -2.0;
+  if (stream_m_per_s != 0) {
+    b.fluid.walls.left.type = b.fluid.walls.right.type = fluid::WallType::open;
+    b.coupling.inflow.stream_m_per_s = stream_m_per_s;
+    b.coupling.inflow.stream_columns = 2;
+  }
+  return b;
+}
+
 // Eq. 1 in the fluid: the block held across a stream (strength 0) needs the actuator torque that
 // cancels the fluid's moment about the hinge, -(tau_b + (x_b - anchor) x F_b) . y from the
 // coupling's last reaction; its effort is |torque| x frame and is the effort objective's value.
@@ -104,17 +125,8 @@ TEST_F(ControlFluidTest, EffortIsTheTorqueThatHoldsTheJointAgainstTheFluid) {
   p.strength_rad_per_s = 0;
   p.substeps = 1;
   model.setTimestep(p.frame_s);
-  fluid::FluidParams fp;
-  fp.domain_width_m = fp.domain_height_m = 4.0;
-  fp.cells_x = fp.cells_y = 32;
-  fp.kinematic_viscosity_m2_per_s = 0;
-  fp.walls.left.type = fp.walls.right.type = fluid::WallType::open;
-  coupling::RigidFluidParams cp;
-  cp.origin_x_m = -1.5;
-  cp.origin_z_m = -2.0;
-  cp.inflow.stream_m_per_s = 0.5;
-  cp.inflow.stream_columns = 2;
-  FluidController c(model, p, FluidControlParams{}, {{"hinge", -1.2}}, fp, cp);
+  const BlockBox box = blockBox(0.5);
+  FluidController c(model, p, FluidControlParams{}, {{"hinge", -1.2}}, box.fluid, box.coupling);
   c.hold(5);
   FrameRecord r;
   for (int k = 0; k < 3; ++k) r = c.frame();
@@ -147,14 +159,8 @@ double stillFluidDrag(const std::string& xml, Perturbation how) {
   f.perturbation = how;
   f.settle_steps = 2;
   f.average_steps = 2;
-  fluid::FluidParams fp;
-  fp.domain_width_m = fp.domain_height_m = 4.0;
-  fp.cells_x = fp.cells_y = 32;
-  fp.kinematic_viscosity_m2_per_s = 0;
-  coupling::RigidFluidParams cp;
-  cp.origin_x_m = -1.5;
-  cp.origin_z_m = -2.0;
-  FluidController c(model, p, f, {{"hinge", -0.3}}, fp, cp);
+  const BlockBox box = blockBox(0.0);
+  FluidController c(model, p, f, {{"hinge", -0.3}}, box.fluid, box.coupling);
   return c.evaluate(0, p.delta_rad);
 }
 
