@@ -319,7 +319,8 @@ JellyfishKind::JellyfishKind() {
                        "two 1 mm cells. At 5e-5 the layer is 3.4 mm: 0.5 and 1 mm agree to 1% (convergence.toml) and "
                        "upwind2_rk2 to 2.6-4.4% of MacCormack on 0.5 mm at 0.6-0.7 Hz, 5.7% at 0.8 Hz, where the two "
                        "schemes' step errors add (at a converged step on 1 mm: 3.5% and 2.9% at 0.7 and 0.8 Hz, "
-                       "convergence_step_scheme.toml). See dt_s and bell_segments for what is left. 1.304e-6 is one override away",
+                       "convergence_step_scheme.toml; on 0.5 mm at half the step 3.8% at 0.8 Hz, "
+                       "convergence_fine_step.toml). See dt_s and bell_segments for what is left. 1.304e-6 is one override away",
       .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space; the default since "
                        "the first-order scheme moved distances 2-5x, issue 13), the paper's semi-Lagrangian (Stam 1999), or "
                        "upwind2_rk2 (Fromm upwind fluxes + Heun, second order, CFL <= 0.5; the scheme change of "
