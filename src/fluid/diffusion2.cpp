@@ -11,11 +11,68 @@
 namespace creaturelab::fluid {
 namespace {
 
-// One Richardson sweep x_new = x + (b − A x) = b + α (Σ_nb x − d x) on rows [jb, je) of the
-// block. Returns max |x_new − x| = ‖b − A x‖∞ over those rows, the residual of the old iterate
-// (NaN if any value is NaN).
-double richardson_sweep(int ib, int ie, int jb, int je, const Array2& count, double alpha, const Array2& b,
-                        const Array2& x, Array2& x_new) {
+// How a sweep forms the new iterate from the Jacobi value J = b + α (Σ_nb x − d x) = x + r,
+// r = b − A x: Richardson takes J itself; Chebyshev's first step takes x + ω r and its later
+// steps x + ω r + γ (x − x_prev), with x_prev read from the output before it is overwritten.
+enum class SweepRule { richardson, chebyshev_first, chebyshev };
+struct SweepWeights {
+  double omega = 1.0, gamma = 0.0;
+};
+
+// The new value of one face from its value c, Jacobi value jac and the output's old value;
+// returns its residual r = jac − c (a Richardson sweep's change x_new − x).
+template <SweepRule kRule>
+inline double sweep_face(double c, double jac, double& out, SweepWeights w) {
+  const double r = jac - c;
+  if constexpr (kRule == SweepRule::richardson) {
+    out = jac;
+  } else if constexpr (kRule == SweepRule::chebyshev_first) {
+    out = c + w.omega * r;
+  } else {
+    out = (c + w.omega * r) + w.gamma * (c - out);
+  }
+  return r;
+}
+#if defined(__AVX2__)
+template <SweepRule kRule>
+inline __m256d sweep_face4(__m256d c, __m256d jac, double* out, SweepWeights w) {
+  const __m256d r = _mm256_sub_pd(jac, c);
+  if constexpr (kRule == SweepRule::richardson) {
+    _mm256_storeu_pd(out, jac);
+  } else if constexpr (kRule == SweepRule::chebyshev_first) {
+    _mm256_storeu_pd(out, _mm256_add_pd(c, _mm256_mul_pd(_mm256_set1_pd(w.omega), r)));
+  } else {
+    const __m256d step = _mm256_add_pd(c, _mm256_mul_pd(_mm256_set1_pd(w.omega), r));
+    _mm256_storeu_pd(out,
+                     _mm256_add_pd(step, _mm256_mul_pd(_mm256_set1_pd(w.gamma), _mm256_sub_pd(c, _mm256_loadu_pd(out)))));
+  }
+  return r;
+}
+#endif
+#if defined(__SSE2__)
+template <SweepRule kRule>
+inline __m128d sweep_face2(__m128d c, __m128d jac, double* out, SweepWeights w) {
+  const __m128d r = _mm_sub_pd(jac, c);
+  if constexpr (kRule == SweepRule::richardson) {
+    _mm_storeu_pd(out, jac);
+  } else if constexpr (kRule == SweepRule::chebyshev_first) {
+    _mm_storeu_pd(out, _mm_add_pd(c, _mm_mul_pd(_mm_set1_pd(w.omega), r)));
+  } else {
+    const __m128d step = _mm_add_pd(c, _mm_mul_pd(_mm_set1_pd(w.omega), r));
+    _mm_storeu_pd(out, _mm_add_pd(step, _mm_mul_pd(_mm_set1_pd(w.gamma), _mm_sub_pd(c, _mm_loadu_pd(out)))));
+  }
+  return r;
+}
+#endif
+
+// One sweep on rows [jb, je) of the block: the new iterate (by kRule) into x_new. Returns
+// max |b − A x| over those rows, the residual of the old iterate x (NaN if any value is NaN).
+// A Richardson sweep x_new = x + (b − A x) = b + α (Σ_nb x − d x) contracts every error mode
+// by at least 10 α; Chebyshev's weights make the sweeps of a solve the optimal polynomial on
+// the matrix's spectrum (ImplicitDiffusion2::chebyshev).
+template <SweepRule kRule>
+double sweep_rows(int ib, int ie, int jb, int je, const Array2& count, double alpha, const Array2& b,
+                  const Array2& x, Array2& x_new, SweepWeights w = {}) {
   const int nx = x.nx();
   const int ny = x.ny();
   double change = 0.0;
@@ -28,31 +85,43 @@ double richardson_sweep(int ib, int ie, int jb, int je, const Array2& count, dou
     double* __restrict__ out = x_new.row(j);
     const int lo = std::max(ib, 1);
     const int hi = std::min(ie, nx - 1);
-    // The change |x_new − x| of each face is accumulated as it is computed (the maximum and the
-    // NaN flag of a row do not depend on the order in which its values meet).
+    // The residual of each face is accumulated as it is computed (the maximum and the NaN flag
+    // of a row do not depend on the order in which its values meet).
     MaxAbsAccumulator row_max;
     int i = lo;
     if (s != nullptr && n != nullptr) {
+#if defined(__AVX2__)
+      // Four faces at a time, the same operations per face as the loops below.
+      const __m256d alpha4 = _mm256_set1_pd(alpha), four4 = _mm256_set1_pd(4.0);
+      for (; i + 4 <= hi; i += 4) {
+        const __m256d ci = _mm256_loadu_pd(c + i);
+        const __m256d sum = _mm256_add_pd(_mm256_add_pd(_mm256_loadu_pd(c + i - 1), _mm256_loadu_pd(c + i + 1)),
+                                          _mm256_add_pd(_mm256_loadu_pd(s + i), _mm256_loadu_pd(n + i)));
+        const __m256d jac = _mm256_add_pd(_mm256_loadu_pd(br + i),
+                                          _mm256_mul_pd(alpha4, _mm256_sub_pd(sum, _mm256_mul_pd(four4, ci))));
+        const __m256d r = sweep_face4<kRule>(ci, jac, out + i, w);
+        row_max.add2x2(_mm256_castpd256_pd128(r), _mm256_extractf128_pd(r, 1));
+      }
+#endif
 #if defined(__SSE2__)
       const __m128d alpha2 = _mm_set1_pd(alpha), four = _mm_set1_pd(4.0);
       for (; i + 2 <= hi; i += 2) {
         const __m128d ci = _mm_loadu_pd(c + i);
         const __m128d sum = _mm_add_pd(_mm_add_pd(_mm_loadu_pd(c + i - 1), _mm_loadu_pd(c + i + 1)),
                                        _mm_add_pd(_mm_loadu_pd(s + i), _mm_loadu_pd(n + i)));
-        const __m128d o = _mm_add_pd(_mm_loadu_pd(br + i), _mm_mul_pd(alpha2, _mm_sub_pd(sum, _mm_mul_pd(four, ci))));
-        _mm_storeu_pd(out + i, o);
-        row_max.add2(_mm_sub_pd(o, ci));
+        const __m128d jac = _mm_add_pd(_mm_loadu_pd(br + i), _mm_mul_pd(alpha2, _mm_sub_pd(sum, _mm_mul_pd(four, ci))));
+        row_max.add2(sweep_face2<kRule>(ci, jac, out + i, w));
       }
 #endif
       for (; i < hi; ++i) {
-        out[i] = br[i] + alpha * (((c[i - 1] + c[i + 1]) + (s[i] + n[i])) - 4.0 * c[i]);  // d = 4 here
-        row_max.add(out[i] - c[i]);
+        const double jac = br[i] + alpha * (((c[i - 1] + c[i + 1]) + (s[i] + n[i])) - 4.0 * c[i]);  // d = 4 here
+        row_max.add(sweep_face<kRule>(c[i], jac, out[i], w));
       }
     } else {
       for (; i < hi; ++i) {
         const double vertical = (s != nullptr ? s[i] : 0.0) + (n != nullptr ? n[i] : 0.0);
-        out[i] = br[i] + alpha * (((c[i - 1] + c[i + 1]) + vertical) - d[i] * c[i]);
-        row_max.add(out[i] - c[i]);
+        const double jac = br[i] + alpha * (((c[i - 1] + c[i + 1]) + vertical) - d[i] * c[i]);
+        row_max.add(sweep_face<kRule>(c[i], jac, out[i], w));
       }
     }
     for (int e : {ib, ie - 1}) {
@@ -62,8 +131,7 @@ double richardson_sweep(int ib, int ie, int jb, int je, const Array2& count, dou
       if (e < nx - 1) sum += c[e + 1];
       if (s != nullptr) sum += s[e];
       if (n != nullptr) sum += n[e];
-      out[e] = br[e] + alpha * (sum - d[e] * c[e]);
-      row_max.add(out[e] - c[e]);
+      row_max.add(sweep_face<kRule>(c[e], br[e] + alpha * (sum - d[e] * c[e]), out[e], w));
     }
     const double row_change = row_max.result();
     change = row_change > change || row_change != row_change ? row_change : change;  // NaN sticks
@@ -125,7 +193,7 @@ double sum_rows(const std::vector<double>& row_values) {
   return total;
 }
 
-// Per-thread maxima combined by the rule of richardson_sweep's row loop (NaN sticks): the
+// Per-thread maxima combined by the rule of sweep_rows's row loop (NaN sticks): the
 // serial result, whatever the pieces.
 double max_of_parts(const double* parts, int count) {
   double m = parts[0];
@@ -236,7 +304,7 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
     while (sweeps < kMaxSweeps) {
       std::array<double, kMaxParts> change{};
       for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int part) {
-        change[part] = richardson_sweep(block.i_begin, block.i_end, j0, j1, block.count, alpha, w.b, x, w.p);
+        change[part] = sweep_rows<SweepRule::richardson>(block.i_begin, block.i_end, j0, j1, block.count, alpha, w.b, x, w.p);
       });
       const double residual = max_of_parts(change.data(), parts);
       std::swap(x, w.p);  // O(1): the newest iterate is in x; w.p keeps zeros off the block
@@ -249,6 +317,66 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
     }
   }
 
+  const int budget = max_iterations_;
+  const LinearSolveReport rest = alpha * block.max_row_sum <= kChebyshevSpread
+                                     ? chebyshev(x, alpha, target, b_norm, budget, w)
+                                     : conjugate_gradients(x, alpha, target, b_norm, budget, w);
+  return {sweeps + rest.iterations, rest.relative_residual, rest.converged};
+}
+
+LinearSolveReport ImplicitDiffusion2::chebyshev(Array2& x, double alpha, double target, double b_norm, int budget,
+                                                Workspace& w) {
+  // A's spectrum lies in [1, 1 + α g] (Gershgorin, g = block.max_row_sum). Chebyshev's
+  // semi-iteration on that interval (Saad 2003, Algorithm 12.1) with the residual formed afresh
+  // by each sweep: θ, δ the interval's centre and half-width, σ₁ = θ/δ; x₁ = x₀ + r₀/θ, then
+  // x_{k+1} = x_k + ω_k r_k + γ_k (x_k − x_{k−1}), ρ_k = 1/(2σ₁ − ρ_{k−1}), ρ₀ = 1/σ₁,
+  // ω_k = 2ρ_k/δ, γ_k = ρ_k ρ_{k−1}. The error contracts by (√κ − 1)/(√κ + 1) per sweep,
+  // κ = 1 + α g, CG's worst-case rate, but a sweep is one pass over three arrays where a CG
+  // iteration is three passes and two reductions. x_{k+1} overwrites x_{k−1} face by face.
+  const DiffusionBlock2& block = w.block;
+  const int parts = piece_count(workers_);
+  const double delta = 0.5 * alpha * block.max_row_sum;
+  const double theta = 1.0 + delta;
+  const double sigma = theta / delta;
+  double rho = 1.0 / sigma;
+  Array2* current = &x;
+  Array2* other = &w.p;  // zero off the block, as x is
+  double residual = 0.0;
+  int sweeps = 0;
+  for (;;) {
+    std::array<double, kMaxParts> part_residual{};
+    if (sweeps == 0) {
+      const SweepWeights first{1.0 / theta, 0.0};
+      for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int part) {
+        part_residual[part] = sweep_rows<SweepRule::chebyshev_first>(block.i_begin, block.i_end, j0, j1, block.count,
+                                                                      alpha, w.b, *current, *other, first);
+      });
+    } else {
+      const double rho_next = 1.0 / (2.0 * sigma - rho);
+      const SweepWeights later{2.0 * rho_next / delta, rho_next * rho};
+      rho = rho_next;
+      for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int part) {
+        part_residual[part] = sweep_rows<SweepRule::chebyshev>(block.i_begin, block.i_end, j0, j1, block.count,
+                                                                alpha, w.b, *current, *other, later);
+      });
+    }
+    residual = max_of_parts(part_residual.data(), parts);  // that of *current
+    ++sweeps;
+    if (residual <= target || !(residual == residual) || sweeps >= budget) break;
+    std::swap(current, other);
+  }
+  if (current != &x) std::swap(x, w.p);  // O(1): the accepted iterate into x
+  return {sweeps, residual / b_norm, residual <= target};
+}
+
+LinearSolveReport ImplicitDiffusion2::conjugate_gradients(Array2& x, double alpha, double target, double b_norm,
+                                                          int budget, Workspace& w) {
+  const DiffusionBlock2& block = w.block;
+  const int parts = piece_count(workers_);
+  const int nx = x.nx();
+  const int ny = x.ny();
+  const std::size_t row = static_cast<std::size_t>(nx);
+  std::array<MaxAbsAccumulator, kMaxParts> acc{};
   // Conjugate gradients for A x = b from the current x. Unpreconditioned: the diagonal 1 + α d
   // varies only at the walls (d = 2..6), so Jacobi scaling buys nothing; cond(A) ≤ 1 + 8α.
   // The inner products are sums of per-row partial sums in row order (so that threads can share
@@ -289,7 +417,7 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
   double r_norm = rr == rr ? merged_max() : rr;
   int iteration = 0;
   if (r_norm > target) {
-    while (iteration < max_iterations_) {
+    while (iteration < budget) {
       ++iteration;
       const double p_ap = apply_rows(w.p);
       const double a = rr / p_ap;
@@ -309,7 +437,7 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
       });
     }
   }
-  return {sweeps + iteration, r_norm / b_norm, r_norm <= target};
+  return {iteration, r_norm / b_norm, r_norm <= target};
 }
 
 }  // namespace creaturelab::fluid

@@ -41,23 +41,29 @@ class DiffusionSolver2 {
   std::vector<double> explicit_dots_;
 };
 
-/// Backward-Euler diffusion solved per component by conjugate gradients.
+/// Backward-Euler diffusion solved per component by an iteration.
 ///
 /// For a face value x with the 5-point Laplacian, α = ν dt / dx²:
 ///   (1 + α d) x − α Σ_{unknown neighbours} x_n = x^n + α Σ_{moving-wall ghosts} 2 U_wall,
 /// where d counts neighbours: 1 for each face neighbour (unknown, or a solid wall's normal
 /// face, which is zero), 0 for a free-slip/open ghost (ghost = x) and 2 for a no-slip/moving
-/// ghost (ghost = 2U − x). The matrix is symmetric positive definite with condition number
-/// ≤ 1 + 8α, so CG converges in a few iterations. Stops when ‖b − A x‖∞ ≤ tolerance · ‖b‖∞;
+/// ghost (ghost = 2U − x). The matrix is symmetric positive definite with its spectrum in
+/// [1, 1 + α g], g ≤ 8 (DiffusionBlock2::max_row_sum). Stops when ‖b − A x‖∞ ≤ tolerance · ‖b‖∞;
 /// starts from x^n. When 10 α ≤ kSweepContraction (water: α ~ 1e-3) up to kMaxSweeps
 /// Richardson sweeps x ← x + (b − A x), one pass each, run first and usually meet the
-/// tolerance alone; CG finishes whatever they leave. The report counts sweeps + iterations.
+/// tolerance alone. What they leave is finished by Chebyshev's semi-iteration, one pass per
+/// sweep, while α g ≤ kChebyshevSpread (the jellyfish: α g = 0.1–0.5), else by conjugate
+/// gradients, whose adaptivity wins on wide spectra (it ends in at most n iterations on n
+/// unknowns, where Chebyshev needs ~ √(α g) · ln(1/tolerance) / 2). The report counts sweeps +
+/// iterations.
 class ImplicitDiffusion2 final : public DiffusionSolver2 {
  public:
   ImplicitDiffusion2(double tolerance, int max_iterations) : tolerance_(tolerance), max_iterations_(max_iterations) {}
 
   static constexpr double kSweepContraction = 0.1;  ///< largest error factor per sweep allowed
   static constexpr int kMaxSweeps = 8;
+  /// Largest α g (κ − 1) solved by Chebyshev's semi-iteration rather than CG.
+  static constexpr double kChebyshevSpread = 64.0;
 
  private:
   LinearSolveReport diffuse_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha) override {
@@ -70,6 +76,11 @@ class ImplicitDiffusion2 final : public DiffusionSolver2 {
     std::vector<double> row_dots, row_rr;  // per-row partial inner products
   };
   LinearSolveReport solve_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha, Workspace& work);
+  // A x = w.b from x to ‖b − A x‖∞ ≤ target in at most `budget` iterations; the report's
+  // residual is relative to b_norm.
+  LinearSolveReport chebyshev(Array2& x, double alpha, double target, double b_norm, int budget, Workspace& w);
+  LinearSolveReport conjugate_gradients(Array2& x, double alpha, double target, double b_norm, int budget,
+                                        Workspace& w);
   double tolerance_;
   int max_iterations_;
   Workspace u_work_, v_work_;

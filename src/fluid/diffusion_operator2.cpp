@@ -45,6 +45,8 @@ bool DiffusionBlock2::prepare(FaceAxis face_axis, int nx, int ny, const Walls& n
   }
   // Neighbour counts d and wall right-hand sides (see the header).
   has_wall_rhs = false;
+  max_row_sum = 0.0;
+  auto unknown = [&](int i, int j) { return i >= i_begin && i < i_end && j >= j_begin && j < j_end; };
   for (int j = j_begin; j < j_end; ++j) {
     for (int i = i_begin; i < i_end; ++i) {
       double d = 0.0;
@@ -78,6 +80,8 @@ bool DiffusionBlock2::prepare(FaceAxis face_axis, int nx, int ny, const Walls& n
       }
       count(i, j) = d;
       wall_rhs(i, j) = rhs;
+      const int neighbours = unknown(i - 1, j) + unknown(i + 1, j) + unknown(i, j - 1) + unknown(i, j + 1);
+      max_row_sum = std::max(max_row_sum, d + neighbours);
       has_wall_rhs = has_wall_rhs || rhs != 0.0;
     }
   }

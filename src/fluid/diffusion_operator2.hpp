@@ -22,6 +22,9 @@ struct DiffusionBlock2 {
   int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;  // the unknown block
   bool has_wall_rhs = false;
   Array2 count, wall_rhs;  // d and the wall terms, on the component's array (zero off the block)
+  /// max over the block's rows of d + (unknown neighbours): by Gershgorin's theorem the
+  /// matrix's spectrum lies in [1, 1 + α · max_row_sum] (d ≥ the unknown neighbours, so ≥ 1).
+  double max_row_sum = 0.0;
 
   /// (Re)builds the block for a component array of nx × ny faces, unless it is already built
   /// for this shape and these walls. Returns true when it was rebuilt.

@@ -11,11 +11,11 @@
 // 1988; fast_pressure_solver2.hpp) transforms along the "across" axis (a DCT by FFT when both
 // walls there are free-slip/open, else a dense eigenbasis) and runs Thomas along the other, so
 // the step is exact to round-off for any α, where the iterative solver's work grows with α
-// (Richardson sweeps for 10 α ≤ 0.1, then CG with cond ≤ 1 + 8 α).
+// (Richardson sweeps for 10 α ≤ 0.1, then Chebyshev or CG with cond ≤ 1 + 8 α).
 //
 // Cost (tests/bench/bench_fluid.cpp): two transforms per component, so at water's α (10⁻³ ..
 // 0.05 on the paper's and the bench's grids) it is slower than the 2–4 Richardson sweeps of the
-// iterative solver; it pays for viscous flows (large α), where CG needs many iterations.
+// iterative solver; it pays for viscous flows (large α), where the iteration needs many sweeps.
 // Not bitwise the iterative solver's result: the two agree to the viscosity tolerance.
 
 #include "fluid/diffusion2.hpp"

@@ -67,7 +67,7 @@ enum class PressureSolverType {
 /// Implicit viscosity solver. Both solve the same backward-Euler system; they agree to
 /// viscosity_tolerance (not bitwise).
 enum class ViscositySolverType {
-  iterative,   ///< Richardson sweeps, then CG, to viscosity_tolerance (diffusion2.hpp); the default
+  iterative,   ///< Richardson sweeps, then Chebyshev or CG, to viscosity_tolerance (diffusion2.hpp); the default
   fast_direct  ///< transform + tridiagonal solves, exact to round-off (fast_diffusion2.hpp)
 };
 
@@ -108,8 +108,10 @@ struct FluidParams {
   int pressure_max_iterations = 5000;
 
   // --- implicit viscosity (backward Euler, Stam 1999 §2.2)
-  /// iterative is the default (all converged results were computed with it); fast_direct is
-  /// faster only for large ν dt / dx² (fast_diffusion2.hpp).
+  /// iterative is the default (all converged results were computed with it; until 2026-12-02
+  /// with CG where Chebyshev now runs, the same solution to the tolerance, so those point files
+  /// differ from a rerun by about 1e-9 relative, not bitwise); fast_direct is faster only for
+  /// large ν dt / dx² (fast_diffusion2.hpp).
   ViscositySolverType viscosity_solver = ViscositySolverType::iterative;
   ViscosityScheme viscosity_scheme = ViscosityScheme::backward_euler;
   double viscosity_tolerance = 1e-10;  ///< ‖b − A u‖∞ ≤ tol · ‖b‖∞

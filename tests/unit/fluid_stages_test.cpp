@@ -292,6 +292,54 @@ TEST(Viscosity, RichardsonSweepsMeetTheToleranceOfCg) {
   }
 }
 
+// Beyond the Richardson range and while α g ≤ kChebyshevSpread (g = 8 here: the 5-point
+// stencil's Gershgorin row sum), Chebyshev's semi-iteration finishes the solve: it meets the
+// tolerance it reports, agrees with the exact (fast direct) solution to that tolerance, and takes
+// no more sweeps than its rate (√κ − 1)/(√κ + 1), κ = 1 + α g, allows: ‖r_k‖₂ ≤ 2 σ^k ‖r_0‖₂ with
+// ‖r_0‖₂ ≤ √n (‖b‖∞ + (1 + 2 α g) ‖x^n‖∞). An unaccelerated (Richardson-rate) iteration would
+// need about κ/2 · ln(1/tolerance) sweeps, 3–30 times the bound at these α.
+TEST(Viscosity, ChebyshevSweepsMeetTheToleranceAtTheirRate) {
+  const int nx = 40, ny = 30;
+  const double dx = 0.01;
+  Walls walls;
+  walls.bottom.type = WallType::no_slip;
+  walls.top.type = WallType::moving;
+  walls.top.tangential_velocity_m_per_s = 0.05;
+  for (double alpha : {0.05, 0.5, 5.0}) {
+    SCOPED_TRACE(::testing::Message() << "alpha " << alpha);
+    const double g = 8.0;
+    ASSERT_GT(10.0 * alpha, ImplicitDiffusion2::kSweepContraction);
+    ASSERT_LE(alpha * g, ImplicitDiffusion2::kChebyshevSpread);
+    MacGrid2 grid(nx, ny, dx);
+    set_vortex_pair(grid, VortexPair{});
+    enforce_wall_normal_velocity(grid, walls);
+    for (int j = 0; j < ny; ++j)
+      for (int i = 1; i < nx; ++i) grid.u_m_per_s(i, j) += 1e-3 * (((i * 7 + j * 13) % 5) - 2);
+    for (int j = 1; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) grid.v_m_per_s(i, j) += 1e-3 * (((i * 11 + j * 3) % 7) - 3);
+    const double x_norm = std::max(max_abs(grid.u_m_per_s), max_abs(grid.v_m_per_s));
+    const double b_norm = x_norm + 2.0 * alpha * 0.05;
+    MacGrid2 exact = grid;
+    const double nu = 1e-3, dt = alpha * dx * dx / nu;
+    const double tolerance = 1e-10;
+    ImplicitDiffusion2 chebyshev(tolerance, 1000);
+    const LinearSolveReport r = chebyshev.diffuse_velocity(grid, walls, nu, dt);
+    EXPECT_TRUE(r.converged);
+    EXPECT_LE(r.relative_residual, tolerance);
+    ASSERT_TRUE(FastDiffusion2(1e-12).diffuse_velocity(exact, walls, nu, dt).converged);
+    EXPECT_LE(max_abs_difference(grid.u_m_per_s.data(), exact.u_m_per_s.data(), grid.u_m_per_s.size()),
+              2 * tolerance * b_norm);
+    EXPECT_LE(max_abs_difference(grid.v_m_per_s.data(), exact.v_m_per_s.data(), grid.v_m_per_s.size()),
+              2 * tolerance * b_norm);
+    const double kappa = 1.0 + alpha * g;
+    const double sigma = (std::sqrt(kappa) - 1.0) / (std::sqrt(kappa) + 1.0);
+    const double r0 = std::sqrt(double(nx + 1) * ny) * (b_norm + (1.0 + 2.0 * alpha * g) * x_norm);
+    const int bound = int(std::ceil(std::log(2.0 * r0 / (tolerance * b_norm)) / std::log(1.0 / sigma)));
+    EXPECT_LE(r.iterations, bound + 1);  // + 1: the sweep that measures the accepted iterate
+    EXPECT_GE(r.iterations, 2);
+  }
+}
+
 // Couette flow: a moving top wall over a no-slip bottom, open at both ends. A backward-Euler
 // step with a very long dt reaches the steady profile u = U y / H, which the ghost values
 // represent exactly (either solver; the fast one through its dense transform along y).
