@@ -83,6 +83,16 @@
 // So on this host issue 13's 20 ns per cell is met on one core by upwind2_rk2 (15.5) and on two
 // threads by every scheme (MacCormack 17.0-17.8 elapsed), not by semi-Lagrangian (21.8-22.2) or
 // MacCormack (32.7) on one core.
+// 2026-12-02 00:50 UTC, idle machine, minimum of 3 repetitions, two interleaved runs of the build
+// before (31dd5d3) and after Chebyshev's semi-iteration (fluid/diffusion2.hpp: it replaces CG for
+// α g ≤ 64, and the sweeps, Richardson's included, run four lanes wide with the same arithmetic),
+// 256², 1 thread, CPU ns per cell, before -> after:
+//   viscosity, water (3 Richardson sweeps, bitwise the same)    4.81-4.91 -> 3.74-3.83
+//   viscosity, BM_Viscosity_Viscous (α = 0.53)                 38.5-40.3 (CG, 17) -> 28.4-29.1 (22 sweeps)
+//   MacCormack step                                            37.9-38.5 -> 33.7-35.4
+// At 10 and 100 times BM_Viscosity_Viscous's ν (α g = 42 and 424) Chebyshev took 90.6 and 300 ns per
+// cell against CG's 151 and 479 (69 / 62 and 231 / 214 iterations); CG stays the solver beyond
+// α g = 64 for small grids, where it ends in at most n iterations.
 //
 // The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
 // fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is

@@ -234,6 +234,15 @@ BENCHMARK(BM_SimulatedSecondPeskin256)
 // banded solve 7.6 -> 5.4%, gram 7.7 -> 4.8%, assembly 8 -> 5.3%), viscosity 23%, advection 30%,
 // pressure 12%. Richardson sweeps instead of CG up to 10 α = 0.4 (tried, not kept: not bitwise) took
 // about 17% less viscous time, under 4% of the step.
+// 2026-12-02 00:50-01:10 UTC, idle machine, two interleaved runs each of the build before (31dd5d3)
+// and after Chebyshev's semi-iteration replaced CG in the viscosity (fluid/diffusion2.hpp; datasets
+// move at the tolerance, about 4e-9 relative over a whole point): 300 cells with reuse 11.48 / 10.26
+// -> 9.43 / 9.60 ms per step. The whole default point (creaturelab run, 0.7 Hz, 11.43 simulated s,
+// 18 286 steps), the two builds side by side on the two cores: 205 -> 188 s of CPU, 3.1 times issue
+// 13's 60 s; the distance per cycle 1.5945 mm in both. perf of the 1 mm step after: viscosity 20%
+// (8 Chebyshev sweeps per component, one pass each, where CG took 8 iterations of three), advection
+// 31%, pressure 12%, the coupling 19% (BandedLU::reset's zeroing of the band 1.3%). The paper's grid
+// (100², Peskin's kernel, water: Richardson sweeps) 23.79 -> 23.81 simulated s per CPU s, unchanged.
 void BM_SimulatedSecondViscousPulse(benchmark::State& state) {
   const int cells = static_cast<int>(state.range(0));
   SwimmerConfig c = gridStudyConfig(cells, ib::Kernel::peskin4, cells / 150, 256);
