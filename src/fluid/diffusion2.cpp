@@ -318,7 +318,9 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
   }
 
   const int budget = max_iterations_;
-  const LinearSolveReport rest = alpha * block.max_row_sum <= kChebyshevSpread
+  // (max_row_sum = 0 only for a block with no neighbours at all, A = I: CG's one iteration.)
+  const bool chebyshev_range = block.max_row_sum > 0.0 && alpha * block.max_row_sum <= kChebyshevSpread;
+  const LinearSolveReport rest = chebyshev_range
                                      ? chebyshev(x, alpha, target, b_norm, budget, w)
                                      : conjugate_gradients(x, alpha, target, b_norm, budget, w);
   return {sweeps + rest.iterations, rest.relative_residual, rest.converged};

@@ -109,9 +109,11 @@ struct FluidParams {
 
   // --- implicit viscosity (backward Euler, Stam 1999 §2.2)
   /// iterative is the default (all converged results were computed with it; until 2026-12-02
-  /// with CG where Chebyshev now runs, the same solution to the tolerance, so those point files
-  /// differ from a rerun by about 1e-9 relative, not bitwise); fast_direct is faster only for
-  /// large ν dt / dx² (fast_diffusion2.hpp).
+  /// with CG where Chebyshev now runs, the same solution to the tolerance: the jellyfish's point
+  /// files differ from a rerun by about 4e-9 relative, not bitwise, while the controlled flyer,
+  /// which amplifies any change at the solvers' tolerances, reruns to another sample of its
+  /// force, experiments/control/flyer_steady.toml); fast_direct is faster only for large
+  /// ν dt / dx² (fast_diffusion2.hpp).
   ViscositySolverType viscosity_solver = ViscositySolverType::iterative;
   ViscosityScheme viscosity_scheme = ViscosityScheme::backward_euler;
   double viscosity_tolerance = 1e-10;  ///< ‖b − A u‖∞ ≤ tol · ‖b‖∞
