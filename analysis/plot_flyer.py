@@ -7,8 +7,9 @@ usage: /usr/bin/python3 analysis/plot_flyer.py RUN_DIR [--out DIR]
 flyer_angles.png: per point the PD-driven inner angles, the controlled outer angles and the sense
 each followed (+1 max on the down-stroke, -1 min on the up-stroke), and the fluid's upward force
 on all bodies against time. flyer_force.txt: per point the mean upward force over the last
-force_cycles flap cycles and its ratio to the held point of the same grid, step, advection and
-flaps (the experiment's check), with the reading of F_d its evaluations used.
+force_cycles flap cycles, the standard deviation and standard error of its per-flap means, and its
+ratio to the held point of the same grid, step, advection and flaps (the experiment's check) with
+that ratio's standard error, and the reading of F_d its evaluations used.
 flyer_vorticity.png: per point the vorticity with the bodies at the last flap's lowest and highest
 wing (Fig. 12 (a), (b) analogues; Fig. 11's animation is plot_control_fluid.py's frame series).
 The vorticity with the bodies and the frame series are plot_control_fluid.py's.
@@ -98,17 +99,46 @@ def reading(f):
     return f"{text(f, 'perturbation') or 'moved'}, {text(f, 'objective_bodies') or 'moved'}"
 
 
+def flap_means(f):
+    """The mean upward force of each of the last force_cycles flaps (the metric's window)."""
+    per = int(round(float(f.attrs["flap_period_s"]) / float(f.attrs["frame_s"])))
+    cycles = int(f.attrs["force_cycles"])
+    force = f["timeseries/force_z_n_bodies"][...]
+    if cycles < 1 or per * cycles > len(force):
+        return np.array([])
+    return force[len(force) - per * cycles:].reshape(cycles, per).mean(axis=1)
+
+
+def standard_error(means):
+    """Standard error of the mean of the per-flap means (flaps taken as independent), NaN below 2."""
+    return float(np.std(means, ddof=1) / np.sqrt(len(means))) if len(means) > 1 else float("nan")
+
+
 def force_table(points, path):
-    """Per point the mean upward force and its ratio to the held point (strength 0) of its window."""
-    held = {window(f): float(f["metrics/mean_up_force_n"][()])
-            for f in points if float(f.attrs["strength_rad_per_s"]) == 0}
+    """Per point the mean upward force, the spread of its per-flap means, and its ratio to the held
+    point (strength 0) of its window with the ratio's standard error from both points' flaps."""
+    held = {window(f): f for f in points if float(f.attrs["strength_rad_per_s"]) == 0}
     with open(path, "w") as out:
-        out.write(f"{'label':32s} {'setting':50s} {'reading':18s} mean_up_force_n  / held\n")
+        out.write("The standard errors treat the flaps as independent samples; the ratio's combines both "
+                  "points' relative errors.\n")
+        out.write(f"{'label':32s} {'setting':50s} {'reading':18s} mean_up_force_n  flaps  flap_sd  flap_se  "
+                  f"ratio_se  / held\n")
         for f in points:
             force = float(f["metrics/mean_up_force_n"][()])
+            means = flap_means(f)
+            se = standard_error(means)
             ref = held.get(window(f))
-            ratio = f"{force / ref:.4f}" if ref else "-"
-            out.write(f"{text(f, 'label'):32s} {window(f):50s} {reading(f):18s} {force:15.4f}  {ratio}\n")
+            ratio, ratio_se = "-", "-"
+            if ref is f:
+                ratio = "1.0000"
+            elif ref is not None:
+                ref_force = float(ref["metrics/mean_up_force_n"][()])
+                ratio = f"{force / ref_force:.4f}"
+                ref_se = standard_error(flap_means(ref))
+                ratio_se = f"{force / ref_force * np.hypot(se / force, ref_se / ref_force):8.4f}"
+            sd = float(np.std(means, ddof=1)) if len(means) > 1 else float("nan")
+            out.write(f"{text(f, 'label'):32s} {window(f):50s} {reading(f):18s} {force:15.4f}  {len(means):5d}  "
+                      f"{sd:7.3f}  {se:7.3f}  {ratio_se:>8s}  {ratio}\n")
 
 
 def main():
