@@ -8,8 +8,8 @@ flyer_angles.png: per point the PD-driven inner angles, the controlled outer ang
 each followed (+1 max on the down-stroke, -1 min on the up-stroke), and the fluid's upward force
 on all bodies against time. flyer_force.txt: per point the mean upward force over the last
 force_cycles flap cycles, the standard deviation and standard error of its per-flap means, and its
-ratio to the held point of the same grid, step, advection and flaps (the experiment's check) with
-that ratio's standard error, and the reading of F_d its evaluations used.
+ratio to the held point of the same grid, step, advection, flaps and forcing tolerance (the
+experiment's check) with that ratio's standard error, and the reading of F_d its evaluations used.
 flyer_vorticity.png: per point the vorticity with the bodies at the last flap's lowest and highest
 wing (Fig. 12 (a), (b) analogues; Fig. 11's animation is plot_control_fluid.py's frame series).
 The vorticity with the bodies and the frame series are plot_control_fluid.py's.
@@ -90,8 +90,10 @@ def vorticity_figure(points, png):
 
 
 def window(f):
-    """The setting a held point is the reference for: grid, step, scheme and the flaps averaged."""
-    return f"{resolution(f)}, {int(f.attrs['force_cycles'])} flaps"
+    """The setting a held point is the reference for: grid, step, scheme, the flaps averaged and the
+    projected forcing's tolerance."""
+    return (f"{resolution(f)}, {int(f.attrs['force_cycles'])} flaps, "
+            f"forcing {float(f.attrs.get('forcing_tolerance', 0)):g}")
 
 
 def reading(f):
@@ -121,7 +123,7 @@ def force_table(points, path):
     with open(path, "w") as out:
         out.write("The standard errors treat the flaps as independent samples; the ratio's combines both "
                   "points' relative errors.\n")
-        out.write(f"{'label':32s} {'setting':50s} {'reading':18s} mean_up_force_n  flaps  flap_sd  flap_se  "
+        out.write(f"{'label':36s} {'setting':66s} {'reading':18s} mean_up_force_n  flaps  flap_sd  flap_se  "
                   f"ratio_se  / held\n")
         for f in points:
             force = float(f["metrics/mean_up_force_n"][()])
@@ -137,7 +139,7 @@ def force_table(points, path):
                 ref_se = standard_error(flap_means(ref))
                 ratio_se = f"{force / ref_force * np.hypot(se / force, ref_se / ref_force):8.4f}"
             sd = float(np.std(means, ddof=1)) if len(means) > 1 else float("nan")
-            out.write(f"{text(f, 'label'):32s} {window(f):50s} {reading(f):18s} {force:15.4f}  {len(means):5d}  "
+            out.write(f"{text(f, 'label'):36s} {window(f):66s} {reading(f):18s} {force:15.4f}  {len(means):5d}  "
                       f"{sd:7.3f}  {se:7.3f}  {ratio_se:>8s}  {ratio}\n")
 
 
