@@ -255,6 +255,27 @@ TEST(Viscosity, CrankNicolsonEigenmodeAndCouetteFixedPoint) {
   }
 }
 
+// A no-slip floor and a lid moving at 0.05 m/s (free-slip sides): walls with ghost terms.
+Walls floor_and_moving_lid() {
+  Walls walls;
+  walls.bottom.type = WallType::no_slip;
+  walls.top.type = WallType::moving;
+  walls.top.tangential_velocity_m_per_s = 0.05;
+  return walls;
+}
+// A rough field for the viscosity solvers: the vortex pair with grid-scale noise of 1e-3 m/s on
+// the unknown faces, the solid walls' normal faces zero (the stage's precondition).
+MacGrid2 rough_vortex(int nx, int ny, double dx, const Walls& walls) {
+  MacGrid2 grid(nx, ny, dx);
+  set_vortex_pair(grid, VortexPair{});
+  enforce_wall_normal_velocity(grid, walls);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 1; i < nx; ++i) grid.u_m_per_s(i, j) += 1e-3 * (((i * 7 + j * 13) % 5) - 2);
+  for (int j = 1; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) grid.v_m_per_s(i, j) += 1e-3 * (((i * 11 + j * 3) % 7) - 3);
+  return grid;
+}
+
 // Where Richardson sweeps replace CG (10 α ≤ ImplicitDiffusion2::kSweepContraction), the
 // result meets the same tolerance: against a solve to 1e-14 (the sweeps cannot reach it in
 // kMaxSweeps, so CG finishes it), the default 1e-10 solve differs by at most 1e-10 ‖b‖∞
@@ -263,20 +284,11 @@ TEST(Viscosity, CrankNicolsonEigenmodeAndCouetteFixedPoint) {
 TEST(Viscosity, RichardsonSweepsMeetTheToleranceOfCg) {
   const int nx = 40, ny = 30;
   const double dx = 0.01;
-  Walls walls;
-  walls.bottom.type = WallType::no_slip;
-  walls.top.type = WallType::moving;
-  walls.top.tangential_velocity_m_per_s = 0.05;
+  const Walls walls = floor_and_moving_lid();
   for (double ten_alpha : {0.06, 0.1}) {
     const double alpha = 0.1 * ten_alpha;
     ASSERT_LE(ten_alpha, ImplicitDiffusion2::kSweepContraction);
-    MacGrid2 grid(nx, ny, dx);
-    set_vortex_pair(grid, VortexPair{});
-    enforce_wall_normal_velocity(grid, walls);  // the stage's precondition
-    for (int j = 0; j < ny; ++j)
-      for (int i = 1; i < nx; ++i) grid.u_m_per_s(i, j) += 1e-3 * (((i * 7 + j * 13) % 5) - 2);
-    for (int j = 1; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) grid.v_m_per_s(i, j) += 1e-3 * (((i * 11 + j * 3) % 7) - 3);
+    MacGrid2 grid = rough_vortex(nx, ny, dx, walls);
     const double b_norm = std::max(max_abs(grid.u_m_per_s), max_abs(grid.v_m_per_s)) + 2.0 * alpha * 0.05;
     MacGrid2 tight = grid;
     const double nu = 1e-3, dt = alpha * dx * dx / nu;
@@ -301,22 +313,13 @@ TEST(Viscosity, RichardsonSweepsMeetTheToleranceOfCg) {
 TEST(Viscosity, ChebyshevSweepsMeetTheToleranceAtTheirRate) {
   const int nx = 40, ny = 30;
   const double dx = 0.01;
-  Walls walls;
-  walls.bottom.type = WallType::no_slip;
-  walls.top.type = WallType::moving;
-  walls.top.tangential_velocity_m_per_s = 0.05;
+  const Walls walls = floor_and_moving_lid();
   for (double alpha : {0.05, 0.5, 5.0}) {
     SCOPED_TRACE(::testing::Message() << "alpha " << alpha);
     const double g = 8.0;
     ASSERT_GT(10.0 * alpha, ImplicitDiffusion2::kSweepContraction);
     ASSERT_LE(alpha * g, ImplicitDiffusion2::kChebyshevSpread);
-    MacGrid2 grid(nx, ny, dx);
-    set_vortex_pair(grid, VortexPair{});
-    enforce_wall_normal_velocity(grid, walls);
-    for (int j = 0; j < ny; ++j)
-      for (int i = 1; i < nx; ++i) grid.u_m_per_s(i, j) += 1e-3 * (((i * 7 + j * 13) % 5) - 2);
-    for (int j = 1; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) grid.v_m_per_s(i, j) += 1e-3 * (((i * 11 + j * 3) % 7) - 3);
+    MacGrid2 grid = rough_vortex(nx, ny, dx, walls);
     const double x_norm = std::max(max_abs(grid.u_m_per_s), max_abs(grid.v_m_per_s));
     const double b_norm = x_norm + 2.0 * alpha * 0.05;
     MacGrid2 exact = grid;
