@@ -78,9 +78,7 @@ struct FluidController::World {
       : data(m), force(nullptr, {}) {
     for (const auto& [name, rad] : initial) data.qpos()[m.joint(m.findJoint(name)).qpos] = rad;
     data.kinematics();
-    fluid::FluidParams one = fp;
-    one.threads = 1;  // the parallelism is across evaluations (§5)
-    coupling = std::make_unique<coupling::RigidFluidCoupling>(data, one, cp);
+    coupling = std::make_unique<coupling::RigidFluidCoupling>(data, fp, cp);
     force = CouplingReaction(coupling.get(), std::move(armature));
   }
   rigid::RigidData data;
@@ -105,11 +103,17 @@ FluidController::FluidController(const rigid::RigidModel& model, ControllerParam
     if (model.findJoint(name) < 0) throw std::invalid_argument("joint '" + name + "' is not in the model " + model.path());
   pres_ = prescription(p_, model);
   const auto armature = stabilisedArmature(model, p_, f_.armature_added_mass);
+  // The frame's own coupled steps are serial between the evaluations, so its fluid takes the
+  // fluid's threads (fluid_threads; bitwise the same for any count). The evaluations' fluids take
+  // them only when the evaluations themselves run one at a time: nested, the two kinds of thread
+  // would compete for the same cores (§5's parallelism is across evaluations).
   main_ = std::make_unique<World>(model, initial, fluid, cp, armature);
   captureHolds(pres_, main_->data.qpos());
   pool_ = std::make_unique<fluid::WorkerPool>(p_.threads);
+  fluid::FluidParams evaluation_fluid = fluid;
+  if (p_.threads > 1) evaluation_fluid.threads = 1;
   for (int k = 0; k < fluid::thread_piece_count(pool_.get()); ++k)
-    workers_.push_back(std::make_unique<World>(model, initial, fluid, cp, armature));
+    workers_.push_back(std::make_unique<World>(model, initial, evaluation_fluid, cp, armature));
   const int n = int(p_.controlled.size());
   direction_.assign(n, 0.0);
   derivative_.assign(n, 0.0);

@@ -131,7 +131,9 @@ ControlFluidKind::ControlFluidKind() {
       choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack", "upwind2_rk2"},
              "velocity advection scheme (upwind2_rk2: explicit, its CFL bound checked each step)"),
       viscositySchemeSpec(),
-      integer("fluid_threads", 1, 1, 16, "threads inside each fluid step (bitwise the same for any count)"),
+      integer("fluid_threads", 1, 1, 16,
+              "threads inside the frame's fluid steps, and the evaluations' when threads = 1 (bitwise the same "
+              "for any count)"),
       choice("wall_left", "open", {"free_slip", "no_slip", "open", "inflow"},
              "left wall (open: the stream's band enters there; inflow: the stream enters through it)"),
       choice("wall_right", "open", {"free_slip", "no_slip", "open"}, "right wall (open: the stream leaves)"),

@@ -38,9 +38,12 @@ PlateStream plateStream(const std::string& xml) {
   return s;
 }
 
-// Two hinged plates in a stream on 32^2: three frames on `threads` threads.
-std::vector<double> run(const std::string& xml, int threads, Perturbation how = Perturbation::moved) {
-  const PlateStream s = plateStream(xml);
+// Two hinged plates in a stream on 32^2: three frames on `threads` threads for the evaluations
+// and `fluid_threads` inside the fluid steps.
+std::vector<double> run(const std::string& xml, int threads, Perturbation how = Perturbation::moved,
+                        int fluid_threads = 1) {
+  PlateStream s = plateStream(xml);
+  s.fluid.threads = fluid_threads;
   ControllerParams p;
   p.controlled = {"j0", "j1"};
   p.objectives = {Objective::drag_along, Objective::drag};
@@ -75,6 +78,13 @@ TEST_F(ControlFluidTest, BitwiseSameForAnyThreadCount) {
       ASSERT_EQ(one.size(), parallel.size());
       EXPECT_EQ(0, std::memcmp(one.data(), parallel.data(), one.size() * sizeof(double)))
           << threads << " threads, " << (how == Perturbation::placed ? "placed" : "moved");
+    }
+    // Fluid threads: with one evaluation thread every fluid takes them, with two only the frame's.
+    for (int threads : {1, 2}) {
+      const auto parallel = run(xml, threads, how, 2);
+      ASSERT_EQ(one.size(), parallel.size());
+      EXPECT_EQ(0, std::memcmp(one.data(), parallel.data(), one.size() * sizeof(double)))
+          << threads << " threads and 2 fluid threads, " << (how == Perturbation::placed ? "placed" : "moved");
     }
     // The derivatives are not zero: the fluid pushes on the plates.
     EXPECT_NE(one[2], 0.0);
