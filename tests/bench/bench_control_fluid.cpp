@@ -7,6 +7,23 @@
 // fluid), the frame itself and its measures; the flow is developed for 0.5 s first.
 // Reported as frames per CPU second of the process and per elapsed second. BM_FlyerFrame: the
 // driven flyer (flyer.toml), per-frame time reported, no goal set.
+//
+// Measured 2026-12-02, 03:38-03:45 UTC, idle machine (load below 1.4 before), elapsed ms per frame,
+// minimum-maximum of 3 repetitions (BM_ChainFluidFrame: two runs of 3), joints / evaluation threads
+// / fluid threads:
+//   block, 1 controlled joint, 1 core: 18.1 (55 frames/s; goal >= 10); with block_flow's 30-step
+//     validation mode 129 (7.8 frames/s)
+//   chain 1/1/1 26.0-31.5   1/1/2 18.7-24.0   1/2/2 16.1-20.9
+//         2/1/1 52.8-58.3   2/2/1 29.4-38.2   2/2/2 27.4-39.1
+//         3/1/1 70.5-74.1   4/1/1 90.1-99.1   4/2/1 49.7-53.5   4/2/2 48.0-56.4
+//   So the paper's comparison (Fig. 10: one DOF per processor), 2 joints on 2 cores against 1
+//   joint on one: medians 28.3-30.7 (2/2/2) against 26.5-28.4 (1/1/1), +7-8% (within the goal's
+//   20%; 2/2/1, the frame's fluid on one thread: +16-25%). Against 1 joint using both cores (its
+//   two evaluations on two threads and the fluid threaded, 1/2/2) 2 joints take 1.5 times as long:
+//   two evaluations per thread instead of one. Two single-thread processes side by side slow each
+//   other by 3-25% on this machine (two 1/1/1 runs at once: 26.6-33.3 ms).
+//   flyer (2 joints, 128^2) 218 on 1 thread, 130 on 2; swimmer 51.0 (128^2, 19.6 frames/s) and 130
+//   (192^2, 7.7 frames/s; goal >= 1).
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -49,12 +66,14 @@ void timeFrames(benchmark::State& state, FluidController& c) {
 }
 
 void runFrames(benchmark::State& state, const std::string& file, const ControllerParams& p, int settle,
-               const std::vector<std::pair<std::string, double>>& initial) {
+               const std::vector<std::pair<std::string, double>>& initial, int fluid_threads = 1) {
   const auto model = loadModel(file, p);
   FluidControlParams f;
   f.settle_steps = settle;
   f.average_steps = settle > 0 ? settle / 3 : 1;
-  FluidController c(model, p, f, initial, box128(), stream());
+  fluid::FluidParams box = box128();
+  box.threads = fluid_threads;
+  FluidController c(model, p, f, initial, box, stream());
   c.hold(30);  // the flow develops
   timeFrames(state, c);
 }
@@ -72,7 +91,8 @@ void BM_BlockFluidFrame(benchmark::State& state) {
 BENCHMARK(BM_BlockFluidFrame)->Arg(0)->Arg(30)->Unit(benchmark::kMillisecond)->Iterations(20);
 
 // The chain of parallel_dofs.toml (five capsules, 2 m) in the stream with the first range(0)
-// joints controlled, on range(1) threads: Fig. 10 with the fluid.
+// joints controlled, on range(1) threads for the evaluations and range(2) inside the frame's own
+// fluid steps (fluid_threads): Fig. 10 with the fluid.
 void BM_ChainFluidFrame(benchmark::State& state) {
   ControllerParams p;
   for (int k = 0; k < state.range(0); ++k) {
@@ -86,10 +106,11 @@ void BM_ChainFluidFrame(benchmark::State& state) {
   p.delta_rad = 0.01;  // the 2 m chain's tip within one cell per step (parallel_dofs_fluid.toml)
   p.strength_rad_per_s = 0.5;
   p.substeps = 2;  // four joints stepping together within one cell per step
-  runFrames(state, "/experiments/control/models/chain.xml", p, 0, {{"j0", -0.3}});
+  runFrames(state, "/experiments/control/models/chain.xml", p, 0, {{"j0", -0.3}}, int(state.range(2)));
 }
 BENCHMARK(BM_ChainFluidFrame)
-    ->Args({1, 1})->Args({2, 1})->Args({2, 2})->Args({3, 1})->Args({4, 1})->Args({4, 2})
+    ->Args({1, 1, 1})->Args({1, 1, 2})->Args({1, 2, 2})->Args({2, 1, 1})->Args({2, 2, 1})->Args({2, 2, 2})->Args({3, 1, 1})
+    ->Args({4, 1, 1})->Args({4, 2, 1})->Args({4, 2, 2})
     ->Unit(benchmark::kMillisecond)->Iterations(10);
 
 // The driven flyer of flyer.toml (§7.1, Figs. 11-13; models/flyer.xml): 128^2 air (nu 0.005 m^2/s)
