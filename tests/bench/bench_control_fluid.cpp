@@ -8,7 +8,7 @@
 // Reported as frames per CPU second of the process and per elapsed second. BM_FlyerFrame: the
 // driven flyer (flyer.toml), per-frame time reported, no goal set.
 //
-// Measured 2026-12-02, 03:38-03:45 UTC, idle machine (load below 1.4 before), elapsed ms per frame,
+// Measured 2026-12-02, 03:22-03:45 UTC, idle machine (load below 1.4 before), elapsed ms per frame,
 // minimum-maximum of 3 repetitions (BM_ChainFluidFrame: two runs of 3), joints / evaluation threads
 // / fluid threads:
 //   block, 1 controlled joint, 1 core: 18.1 (55 frames/s; goal >= 10); with block_flow's 30-step
@@ -17,7 +17,7 @@
 //         2/1/1 52.8-58.3   2/2/1 29.4-38.2   2/2/2 27.4-39.1
 //         3/1/1 70.5-74.1   4/1/1 90.1-99.1   4/2/1 49.7-53.5   4/2/2 48.0-56.4
 //   So the paper's comparison (Fig. 10: one DOF per processor), 2 joints on 2 cores against 1
-//   joint on one: medians 28.3-30.7 (2/2/2) against 26.5-28.4 (1/1/1), +7-8% (within the goal's
+//   joint on one: medians 28.3 and 30.7 (2/2/2) against 26.4 and 28.4 (1/1/1), +7-8% (within the goal's
 //   20%; 2/2/1, the frame's fluid on one thread: +16-25%). Against 1 joint using both cores (its
 //   two evaluations on two threads and the fluid threaded, 1/2/2) 2 joints take 1.5 times as long:
 //   two evaluations per thread instead of one. Two single-thread processes side by side slow each
