@@ -128,18 +128,22 @@ def angles_figure(points, png):
 
 
 def timing_table(points, path):
-    """Fig. 10's table: wall seconds per frame against controlled joints, per thread count (from each
-    point's wall_time_s attribute: provenance, not a dataset)."""
+    """Fig. 10's table: wall seconds per frame against controlled joints, per count of evaluation
+    threads and (control_fluid) fluid threads (from each point's wall_time_s attribute: provenance,
+    not a dataset)."""
     rows = {}
     for f in points:
         joints = sum(1 for k in f["timeseries"] if k.startswith("objective_"))
         per_frame = float(f.attrs["wall_time_s"]) / float(f.attrs["frames"])
-        rows.setdefault(joints, {})[int(f.attrs["threads"])] = per_frame
-    threads = sorted({t for r in rows.values() for t in r})
+        rows.setdefault(joints, {})[(int(f.attrs["threads"]), int(f.attrs.get("fluid_threads", 1)))] = per_frame
+    columns = sorted({c for r in rows.values() for c in r})
+    fluid = any(c[1] > 1 for c in columns)
+    names = [f"{t} thread(s)" + (f", {ft} fluid" if fluid else "") + " s/frame" for t, ft in columns]
     with open(path, "w") as out:
-        out.write("joints  " + "  ".join(f"{t} thread(s) s/frame" for t in threads) + "\n")
+        out.write("joints  " + "  ".join(f"{n:>19s}" for n in names) + "\n")
         for j in sorted(rows):
-            out.write(f"{j:6d}  " + "  ".join(f"{rows[j].get(t, float('nan')):19.6f}" for t in threads) + "\n")
+            out.write(f"{j:6d}  " + "  ".join(f"{rows[j].get(c, float('nan')):{max(19, len(n))}.6f}"
+                                             for c, n in zip(columns, names)) + "\n")
 
 
 def main():
@@ -157,7 +161,7 @@ def main():
     if any(has_ball(f) for f in points):
         frames_figure(points, os.path.join(out, "frames_top.png"), plane=(0, 1))
     angles_figure(points, os.path.join(out, "angles.png"))
-    if len({int(f.attrs["threads"]) for f in points}) > 1:
+    if len({(int(f.attrs["threads"]), int(f.attrs.get("fluid_threads", 1))) for f in points}) > 1:
         timing_table(points, os.path.join(out, "parallel_dofs.txt"))
     for f in files:
         f.close()

@@ -153,7 +153,7 @@ def main():
             frame_series(f, os.path.join(out, f"frames_{k}"))
     angles_figure(points, os.path.join(out, "angles.png"))
     convergence_table(points, os.path.join(out, "convergence.txt"))
-    if len({int(f.attrs["threads"]) for f in points}) > 1:
+    if len({(int(f.attrs["threads"]), int(f.attrs.get("fluid_threads", 1))) for f in points}) > 1:
         timing_table(points, os.path.join(out, "parallel_dofs.txt"))
     plot_swimmer.draw(points, out, draw_field)  # the swimmer's rise (§7.2), when the run tracks one
     for f in points:
