@@ -176,12 +176,13 @@ def phase_profile(f):
     steps = np.diff(ts[f"angle_deg_{joints[0]}"][w])
     moving = steps[np.abs(steps) > 0]
     reversals = float(np.mean(np.sign(moving[1:]) != np.sign(moving[:-1]))) if len(moving) > 1 else 0.0
-    return {"reversals": reversals, "inner": [ts[inner][w][m].mean() for m in bins], "outer": [outer[m].mean() for m in bins],
-            "force": [force[m].mean() for m in bins], "down": force[down].mean(), "up": force[~down].mean(),
-            "down_fraction": down.mean()}
+    return {"reversals": reversals, "inner": [ts[inner][w][m].mean() for m in bins],
+            "outer": [outer[m].mean() for m in bins], "force": [force[m].mean() for m in bins],
+            "down": force[down].mean(), "up": force[~down].mean()}
 
 
 def phase_outputs(points, png, path):
+    """flyer_phase.png and .txt (the module's docstring) for the points of seven flaps or more."""
     long = [f for f in points if int(f.attrs["force_cycles"]) >= 7 and force_window(f) is not None]
     if not long:
         return
@@ -191,7 +192,7 @@ def phase_outputs(points, png, path):
     with open(path, "w") as out:
         out.write("Phase means over each point's force window (phase 0: the inner pattern's zero, rising = "
                   "turning the wings down); the stroke split follows the sense the controller followed.\n")
-        out.write(f"{'label':36s} {'setting':66s} down_force_n  up_force_n  (held: down, up)  "
+        out.write(f"{'label':36s} {'setting':66s} down_force_n  up_force_n  (held: down, up)  reversals  "
                   f"outer_deg by phase bin / force_n by phase bin\n")
         for f in long:
             prof = phase_profile(f)
@@ -199,11 +200,12 @@ def phase_outputs(points, png, path):
             ref_prof = phase_profile(ref) if ref is not None else None
             versus = f"({ref_prof['down']:6.2f}, {ref_prof['up']:6.2f})" if ref_prof else "(-, -)"
             out.write(f"{text(f, 'label'):36s} {window(f):66s} {prof['down']:12.3f}  {prof['up']:10.3f}  "
-                      f"{versus:16s}  {prof['reversals']:9.2f}  " + " ".join(f"{a:6.1f}" for a in prof["outer"]) + " / "
-                      + " ".join(f"{x:6.2f}" for x in prof["force"]) + "\n")
+                      f"{versus:16s}  {prof['reversals']:9.2f}  " + " ".join(f"{a:6.1f}" for a in prof["outer"])
+                      + " / " + " ".join(f"{x:6.2f}" for x in prof["force"]) + "\n")
             name = f"{text(f, 'label')} ({resolution(f)})"
             line, = axes[1].plot(centres, prof["force"], marker="o", ms=3, lw=1, label=name)
-            axes[0].plot(centres, prof["outer"], marker="o", ms=3, lw=1, color=line.get_color(), label=f"{name}: outer")
+            axes[0].plot(centres, prof["outer"], marker="o", ms=3, lw=1, color=line.get_color(),
+                         label=f"{name}: outer")
     inner = phase_profile(long[0])["inner"]
     axes[0].plot(centres, inner, color="k", ls=":", lw=1, label="inner (PD), first point")
     axes[0].set_ylabel("angle (deg; + turns the wing down)")
