@@ -106,14 +106,25 @@ def reading(f):
     return f"{text(f, 'perturbation') or 'moved'}, {text(f, 'objective_bodies') or 'moved'}"
 
 
+def force_window(f):
+    """The last force_cycles flaps of the series (the metric's window), or None if too short."""
+    per = int(round(float(f.attrs["flap_period_s"]) / float(f.attrs["frame_s"])))
+    n = per * int(f.attrs["force_cycles"])
+    length = len(f["timeseries/time_s"])
+    return slice(length - n, length) if 0 < n <= length else None
+
+
+def held_references(points):
+    """The held point (strength 0) of each window: the reference of the points sharing it."""
+    return {window(f): f for f in points if float(f.attrs["strength_rad_per_s"]) == 0}
+
+
 def flap_means(f):
     """The mean upward force of each of the last force_cycles flaps (the metric's window)."""
-    per = int(round(float(f.attrs["flap_period_s"]) / float(f.attrs["frame_s"])))
-    cycles = int(f.attrs["force_cycles"])
-    force = f["timeseries/force_z_n_bodies"][...]
-    if cycles < 1 or per * cycles > len(force):
+    w = force_window(f)
+    if w is None:
         return np.array([])
-    return force[len(force) - per * cycles:].reshape(cycles, per).mean(axis=1)
+    return f["timeseries/force_z_n_bodies"][w].reshape(int(f.attrs["force_cycles"]), -1).mean(axis=1)
 
 
 def standard_error(means):
@@ -124,7 +135,7 @@ def standard_error(means):
 def force_table(points, path):
     """Per point the mean upward force, the spread of its per-flap means, and its ratio to the held
     point (strength 0) of its window with the ratio's standard error from both points' flaps."""
-    held = {window(f): f for f in points if float(f.attrs["strength_rad_per_s"]) == 0}
+    held = held_references(points)
     with open(path, "w") as out:
         out.write("The standard errors treat the flaps as independent samples; the ratio's combines both "
                   "points' relative errors.\n")
@@ -149,14 +160,6 @@ def force_table(points, path):
 
 
 PHASE_BINS = 8
-
-
-def force_window(f):
-    """The last force_cycles flaps of the series (the metric's window), or None if too short."""
-    per = int(round(float(f.attrs["flap_period_s"]) / float(f.attrs["frame_s"])))
-    n = per * int(f.attrs["force_cycles"])
-    length = len(f["timeseries/time_s"])
-    return slice(length - n, length) if 0 < n <= length else None
 
 
 def phase_profile(f):
@@ -186,7 +189,7 @@ def phase_outputs(points, png, path):
     long = [f for f in points if int(f.attrs["force_cycles"]) >= 7 and force_window(f) is not None]
     if not long:
         return
-    held = {window(f): f for f in long if float(f.attrs["strength_rad_per_s"]) == 0}
+    held = held_references(long)
     centres = (np.arange(PHASE_BINS) + 0.5) / PHASE_BINS
     fig, axes = plt.subplots(2, 1, figsize=(9, 7), sharex=True)
     with open(path, "w") as out:
