@@ -212,6 +212,16 @@ std::string_view to_string(ViscosityScheme scheme) {
   return "unknown";
 }
 
+std::string_view to_string(ForceStage stage) {
+  switch (stage) {
+    case ForceStage::before_advection:
+      return "before_advection";
+    case ForceStage::after_advection:
+      return "after_advection";
+  }
+  return "unknown";
+}
+
 std::optional<WallType> parse_wall_type(std::string_view name) {
   return parse(name,
                std::array{WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open, WallType::inflow});
@@ -231,6 +241,10 @@ std::optional<ViscositySolverType> parse_viscosity_solver_type(std::string_view 
 
 std::optional<ViscosityScheme> parse_viscosity_scheme(std::string_view name) {
   return parse(name, std::array{ViscosityScheme::backward_euler, ViscosityScheme::crank_nicolson});
+}
+
+std::optional<ForceStage> parse_force_stage(std::string_view name) {
+  return parse(name, std::array{ForceStage::before_advection, ForceStage::after_advection});
 }
 
 }  // namespace creaturelab::fluid

@@ -77,6 +77,14 @@ enum class ViscosityScheme {
   crank_nicolson   ///< (I − ½ν dt ∇²) u_new = (I + ½ν dt ∇²) u: second order in dt for this stage
 };
 
+/// Where the external force density (the immersed boundary's) enters the step's splitting.
+/// Both are first order in dt; they differ in whether the force's velocity increment is advected.
+enum class ForceStage {
+  before_advection,  ///< u += dt f/ρ, then advect (Stam 1999 §2.2, "add force"; Rudolf & Mould §3.2); the default
+  after_advection    ///< advect u^n, then u += dt f/ρ: the force is a source of the momentum equation at the
+                     ///< step's start (Peskin 2002 §6), its increment is not carried by −u·∇u
+};
+
 /// How the time step is chosen.
 enum class TimeStepPolicy {
   cfl_adaptive,  ///< dt = min(max_step_s, cfl_safety_factor · dx / max|u_component|)
@@ -98,6 +106,7 @@ struct FluidParams {
   Walls walls{};  ///< all free-slip, as in the paper (§3.2)
 
   AdvectionScheme advection = AdvectionScheme::semi_lagrangian;
+  ForceStage force_stage = ForceStage::before_advection;
 
   // --- pressure projection
   PressureSolverType pressure_solver = PressureSolverType::fast_direct;
@@ -151,6 +160,7 @@ std::string_view to_string(PressureSolverType type);
 std::string_view to_string(TimeStepPolicy policy);
 std::string_view to_string(ViscositySolverType type);
 std::string_view to_string(ViscosityScheme scheme);
+std::string_view to_string(ForceStage stage);
 /// Inverses of to_string (the names are the enumerator names); std::nullopt for unknown names.
 std::optional<WallType> parse_wall_type(std::string_view name);
 std::optional<AdvectionScheme> parse_advection_scheme(std::string_view name);
@@ -158,5 +168,6 @@ std::optional<PressureSolverType> parse_pressure_solver_type(std::string_view na
 std::optional<TimeStepPolicy> parse_time_step_policy(std::string_view name);
 std::optional<ViscositySolverType> parse_viscosity_solver_type(std::string_view name);
 std::optional<ViscosityScheme> parse_viscosity_scheme(std::string_view name);
+std::optional<ForceStage> parse_force_stage(std::string_view name);
 
 }  // namespace creaturelab::fluid

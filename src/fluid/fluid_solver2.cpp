@@ -106,8 +106,10 @@ FluidStepReport FluidSolver2::run_step(double dt_s, double start_speed_m_per_s) 
     throw FluidCflError(steps_done_, time_s_, dt_s, report.cfl_number, bound);
   }
 
-  if (stages_.external_forces) apply_external_forces(context);
+  const bool force_first = params_.force_stage == ForceStage::before_advection;
+  if (force_first && stages_.external_forces) apply_external_forces(context);
   if (stages_.advection) advect_velocity(context);
+  if (!force_first && stages_.external_forces) apply_external_forces(context);
   if (stages_.viscosity) report.viscosity = apply_viscosity(context);
   if (stages_.pressure) report.pressure = project(context);
   if (stages_.tracers) advect_tracers(context);

@@ -103,6 +103,7 @@ jellyfish::SwimmerConfig config(const ParamReader& r) {
   c.fluid.domain_height_m = c.fluid.cells_y * c.fluid.domain_width_m / c.fluid.cells_x;
   c.coupling = couplingParams(r);
   c.fluid.viscosity_tolerance = r.real("viscosity_tolerance");
+  c.fluid.force_stage = *fluid::parse_force_stage(r.text("force_stage"));
   c.dt_s = r.real("dt_s");
   c.start_y_fraction = r.real("start_y_fraction");
   return c;
@@ -359,6 +360,10 @@ JellyfishKind::JellyfishKind() {
            "as large, so it is not the semi-implicit force's. The largest error left in the default with the "
            "segments (bell_segments); 0.0003125 s costs twice as much. The paper's 0.01 s is stable with the "
            "semi-implicit step"),
+      choice("force_stage", "before_advection", {"before_advection", "after_advection"},
+             "where the bell's force enters the fluid step: before the advection (Stam 1999 §2.2, the paper's order), "
+             "which then carries the force's velocity increment, or after it (the force a source of the momentum "
+             "equation, Peskin 2002 §6). Both are first order in dt"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
       real("start_y_fraction", 0.2, "", 0.05, 0.95, "aperture's starting height in the box (the bell swims up)"),
       real("box_aspect", 1.5, "", 0.25, 8,
