@@ -3,25 +3,50 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace creaturelab::ib {
 
 void BandedLU::reset(int n, int kl, int ku) {
   if (n < 0 || kl < 0 || ku < 0) throw std::invalid_argument("banded LU: negative size or bandwidth");
+  if (reach_known_)
+    zero_reach();  // the whole storage is then zero, whatever shape it takes next
+  else
+    std::fill(band_.begin(), band_.end(), 0.0);
+  reach_known_ = false;
   n_ = n;
   kl_ = std::min(kl, std::max(0, n - 1));
   ku_ = std::min(ku, std::max(0, n - 1));
   rows_ = 2 * kl_ + ku_ + 1;
-  band_.assign(static_cast<std::size_t>(rows_) * n_, 0.0);
+  band_.resize(static_cast<std::size_t>(rows_) * n_, 0.0);
   pivot_.assign(n_, 0);
   lower_rows_.assign(n_, 0);
   upper_rows_.assign(n_, 0);
 }
 
+// Every entry outside a column's reach is zero (set_reach), so zeroing the reach zeroes the column.
+void BandedLU::zero_reach() {
+  for (int j = 0; j < n_; ++j)
+    if (first_row_[j] <= last_row_[j])
+      std::fill(&ab(kl_ + ku_ + first_row_[j] - j, j), &ab(kl_ + ku_ + last_row_[j] - j, j) + 1, 0.0);
+}
+
+void BandedLU::set_reach(const std::vector<int>& first, const std::vector<int>& last) {
+  if (static_cast<int>(first.size()) != n_ || static_cast<int>(last.size()) != n_)
+    throw std::invalid_argument("banded LU: a reach of the wrong size");
+  for (int j = 0; j < n_; ++j)
+    if (first[j] <= last[j] && (first[j] < std::max(0, j - ku_) || last[j] > std::min(n_ - 1, j + kl_)))
+      throw std::invalid_argument("banded LU: the reach of column " + std::to_string(j) + " leaves the band");
+  first_row_ = first;
+  last_row_ = last;
+  reach_known_ = true;
+}
+
 // dgbtf2: column j's pivot is the largest of its kl entries below the diagonal and itself; the row
 // swap reaches at most column ju, the last one any pivot so far has filled.
 bool BandedLU::factor() {
+  reach_known_ = false;
   const int kv = kl_ + ku_;  // the diagonal's row in the storage
   int ju = 0;
   for (int j = 0; j < n_; ++j) {
@@ -87,13 +112,20 @@ void BandedLU::solve(std::vector<double>& b) const {
   }
 }
 
+// Over each column's reach when it is known (set_reach): the products skipped are of exact zeros,
+// ±0 for finite x, and each y[i] meets the others in the same order (ascending j). A sum begun at +0
+// is never −0 in round-to-nearest (+0 + −0 = +0, s + (−s) = +0), and s + ±0 = s for any other s, so
+// y is the same bit for bit. The 1 mm jellyfish's matrix has 256 nonzero rows in a column on average
+// against the band's 379.
 void BandedLU::multiply(const std::vector<double>& x, std::vector<double>& y) const {
   if (static_cast<int>(x.size()) != n_) throw std::invalid_argument("banded LU: vector of the wrong size");
   const int kv = kl_ + ku_;
   y.assign(n_, 0.0);
   for (int j = 0; j < n_; ++j) {
     const double xj = x[j];
-    for (int i = std::max(0, j - ku_); i <= std::min(n_ - 1, j + kl_); ++i) y[i] += ab(kv + i - j, j) * xj;
+    const int first = reach_known_ ? first_row_[j] : std::max(0, j - ku_);
+    const int last = reach_known_ ? last_row_[j] : std::min(n_ - 1, j + kl_);
+    for (int i = first; i <= last; ++i) y[i] += ab(kv + i - j, j) * xj;
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -83,18 +84,49 @@ void ImmersedBoundary2::subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffn
 
 // subtract_dt_mk into the band: the same products subtracted in the same order, with each row's
 // banded index looked up once per entry of M (mobility_rows_) rather than once per product, and
-// the column's storage found once per column of K (the lookups were most of this stage's time).
-void ImmersedBoundary2::subtract_dt_mk_banded(const Eigen::SparseMatrix<double>& stiffness, double dt_s) {
+// the column's storage found once per column of K (the lookups were most of this stage's time), and
+// dt M(i, k) formed once per entry of M (mobility_dt_), as the product's left-to-right order forms it.
+// Each column's reach, the diagonal and the rows of M's columns met, goes to the band (set_reach).
+void ImmersedBoundary2::subtract_dt_mk_banded(const Eigen::SparseMatrix<double>& stiffness) {
   const int* m_outer = mobility_.outerIndexPtr();
-  const double* m_value = mobility_.valuePtr();
+  const double* m_dt = mobility_dt_.data();
   const int* m_row = mobility_rows_.data();
+  reach_first_.resize(static_cast<std::size_t>(stiffness.outerSize()));
+  reach_last_.resize(static_cast<std::size_t>(stiffness.outerSize()));
   for (int j = 0; j < stiffness.outerSize(); ++j) {
-    double* column = banded_.column(banded_index(slot_, j));
+    const int jb = banded_index(slot_, j);
+    double* column = banded_.column(jb);
+    int first = jb, last = jb;
     for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k) {
       const double kv = k.value();
-      for (int p = m_outer[k.row()]; p < m_outer[k.row() + 1]; ++p) column[m_row[p]] -= dt_s * m_value[p] * kv;
+      for (int p = m_outer[k.row()]; p < m_outer[k.row() + 1]; ++p) column[m_row[p]] -= m_dt[p] * kv;
+      first = std::min(first, mobility_first_[k.row()]);
+      last = std::max(last, mobility_last_[k.row()]);
     }
+    reach_first_[jb] = first;
+    reach_last_[jb] = last;
   }
+  banded_.set_reach(reach_first_, reach_last_);
+}
+
+// mobility_rows_ and mobility_dt_, and per column of M the least and greatest of its banded rows
+// (mobility_first_, _last_).
+void ImmersedBoundary2::index_mobility_rows(double dt_s) {
+  const int* m_outer = mobility_.outerIndexPtr();
+  const int* m_inner = mobility_.innerIndexPtr();
+  const double* m_value = mobility_.valuePtr();
+  mobility_rows_.resize(static_cast<std::size_t>(mobility_.nonZeros()));
+  mobility_dt_.resize(static_cast<std::size_t>(mobility_.nonZeros()));
+  mobility_first_.assign(static_cast<std::size_t>(mobility_.outerSize()), std::numeric_limits<int>::max());
+  mobility_last_.assign(static_cast<std::size_t>(mobility_.outerSize()), std::numeric_limits<int>::min());
+  for (int k = 0; k < mobility_.outerSize(); ++k)
+    for (int p = m_outer[k]; p < m_outer[k + 1]; ++p) {
+      const int row = banded_index(slot_, m_inner[p]);
+      mobility_rows_[static_cast<std::size_t>(p)] = row;
+      mobility_dt_[static_cast<std::size_t>(p)] = dt_s * m_value[p];
+      mobility_first_[k] = std::min(mobility_first_[k], row);
+      mobility_last_[k] = std::max(mobility_last_[k], row);
+    }
 }
 
 void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
@@ -128,12 +160,11 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
       // Entry (i, j) of M K joins i to j through some k with M(i, k) and K(k, j) nonzero, so the
       // system's band is at most the sum of the two bands.
       mobility_.makeCompressed();  // a no-op: gram() fills it in order; the loops below read its arrays
-      mobility_rows_.resize(static_cast<std::size_t>(mobility_.nonZeros()));
-      for (std::size_t p = 0; p < mobility_rows_.size(); ++p) mobility_rows_[p] = banded_index(slot_, mobility_.innerIndexPtr()[p]);
+      index_mobility_rows(dt_s);
       const int width = bandwidth(mobility_, mobility_rows_, slot_) + bandwidth(stiffness, slot_);
       banded_.reset(n, width, width);
       for (int i = 0; i < n; ++i) banded_.at(i, i) = 1.0;
-      subtract_dt_mk_banded(stiffness, dt_s);
+      subtract_dt_mk_banded(stiffness);
       banded_rhs_.resize(n);
       for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = rhs[i];
       if (!banded_solver_.solve(banded_, banded_rhs_))

@@ -133,13 +133,17 @@ class ImmersedBoundary2 {
   Eigen::SparseMatrix<double> mobility_;
   template <class Entry>
   void subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffness, double dt_s, Entry entry) const;
-  void subtract_dt_mk_banded(const Eigen::SparseMatrix<double>& stiffness, double dt_s);
+  void subtract_dt_mk_banded(const Eigen::SparseMatrix<double>& stiffness);
+  void index_mobility_rows(double dt_s);
   Eigen::MatrixXd system_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   // The banded solve (bodies with a solveOrder() of at least kBandedFromMarkers markers): the
   // unknown 2 k + axis of marker order_[k]; slot_[marker] = k.
   std::vector<int> order_, slot_;
   std::vector<int> mobility_rows_;  // the banded index of the row of each stored entry of mobility_
+  std::vector<double> mobility_dt_;  // dt times each stored entry of mobility_
+  std::vector<int> mobility_first_, mobility_last_;  // per column of mobility_, its least and greatest banded row
+  std::vector<int> reach_first_, reach_last_;        // per column of the band, the rows assembled (set_reach)
   BandedLU banded_;
   ReusedBandedSolve banded_solver_;
   std::vector<double> banded_rhs_;
