@@ -225,43 +225,91 @@ struct StencilColumns {
   }
 };
 
-}  // namespace
+// G's entries on and below the diagonal (k ≥ l) of one face family, column by column, rows ascending:
+// column l at [begin[l], begin[l + 1]) of row and value.
+struct LowerColumns {
+  std::vector<int> begin, row;
+  std::vector<double> value;
+};
 
-void Transfer::gram(double scale, Eigen::SparseMatrix<double>& out) const {
-  const int n = marker_count();
-  out.resize(2 * n, 2 * n);
-  out.reserve(static_cast<Eigen::Index>(2 * n) * support_ * support_);
-  const StencilColumns columns[2] = {StencilColumns(u_stencils_), StencilColumns(v_stencils_)};
+LowerColumns lower_columns(const std::vector<FaceStencil>& st, int support, double scale) {
+  const int n = static_cast<int>(st.size());
+  const StencilColumns cols(st);
+  LowerColumns lower;
+  lower.begin.reserve(static_cast<std::size_t>(n) + 1);
+  lower.begin.push_back(0);
   // The overlapping markers of one marker as a bit set over the marker indices, read out in
   // ascending order (a few words per marker, where sorting the list cost more than the search).
   std::vector<std::uint64_t> near(static_cast<std::size_t>(n + 63) / 64);
-  // Column by column, rows ascending, so that the storage is filled in order. Entry (k, l) and
-  // (l, k) sum the same products in the same order: G is exactly symmetric.
+  const int last = cols.first + static_cast<int>(cols.begin.size()) - 2;
+  for (int l = 0; l < n; ++l) {
+    std::fill(near.begin(), near.end(), 0);
+    for (int i = std::max(cols.first, st[l].i0 - support + 1); i <= std::min(last, st[l].i0 + support - 1); ++i) {
+      const auto rows_begin = cols.row.begin() + cols.begin[i - cols.first];
+      const auto rows_end = cols.row.begin() + cols.begin[i - cols.first + 1];
+      auto p = std::lower_bound(rows_begin, rows_end, st[l].j0 - support + 1);
+      for (; p != rows_end && *p < st[l].j0 + support; ++p) {
+        const int k = cols.order[static_cast<std::size_t>(p - cols.row.begin())];
+        near[static_cast<std::size_t>(k) / 64] |= std::uint64_t{1} << (k % 64);
+      }
+    }
+    near[static_cast<std::size_t>(l) / 64] &= ~std::uint64_t{0} << (l % 64);  // k ≥ l
+    for (std::size_t w = static_cast<std::size_t>(l) / 64; w < near.size(); ++w)
+      for (std::uint64_t bits = near[w]; bits != 0; bits &= bits - 1) {
+        const int k = static_cast<int>(64 * w) + std::countr_zero(bits);
+        const int di = st[k].i0 - st[l].i0, dj = st[k].j0 - st[l].j0;
+        lower.row.push_back(k);
+        lower.value.push_back(scale * overlap1d(st[k].wx, st[l].wx, di, support) *
+                              overlap1d(st[k].wy, st[l].wy, dj, support));
+      }
+    lower.begin.push_back(static_cast<int>(lower.row.size()));
+  }
+  return lower;
+}
+
+}  // namespace
+
+// Column by column, rows ascending, written straight into the compressed storage. G(k, l) and
+// G(l, k) sum the same products in the same order (overlap1d with the stencils swapped and the shift
+// negated meets w_k[a] w_l[a + shift] at the same a), so G is exactly symmetric and each entry above
+// the diagonal is the mirror of one below it: only those on and below are computed, the ones above
+// copied from them (callgrind, the 1 mm jellyfish's 419 markers: 10.0 -> 6.8 M instructions a call).
+void Transfer::gram(double scale, Eigen::SparseMatrix<double>& out) const {
+  const int n = marker_count();
+  const LowerColumns lower[2] = {lower_columns(u_stencils_, support_, scale),
+                                 lower_columns(v_stencils_, support_, scale)};
+  // above[c][l]: entries of column l above the diagonal, one for each k < l with (l, k) below it.
+  std::vector<int> above[2] = {std::vector<int>(n, 0), std::vector<int>(n, 0)};
+  for (int c = 0; c < 2; ++c)
+    for (int l = 0; l < n; ++l)
+      for (int p = lower[c].begin[l]; p < lower[c].begin[l + 1]; ++p)
+        if (lower[c].row[p] != l) ++above[c][lower[c].row[p]];
+  out.resize(2 * n, 2 * n);
+  int* outer = out.outerIndexPtr();
+  outer[0] = 0;
+  for (int l = 0; l < n; ++l)
+    for (int c = 0; c < 2; ++c)
+      outer[2 * l + c + 1] = outer[2 * l + c] + above[c][l] + (lower[c].begin[l + 1] - lower[c].begin[l]);
+  out.resizeNonZeros(outer[2 * n]);
+  int* inner = out.innerIndexPtr();
+  double* value = out.valuePtr();
+  // next[2 k + c]: where column 2 k + c's next entry above the diagonal goes; l ascending, so its
+  // rows ascend, and they all come before its diagonal.
+  std::vector<int> next(outer, outer + 2 * n);
   for (int l = 0; l < n; ++l)
     for (int c = 0; c < 2; ++c) {
-      const std::vector<FaceStencil>& st = c == 0 ? u_stencils_ : v_stencils_;
-      const StencilColumns& cols = columns[c];
-      out.startVec(2 * l + c);
-      std::fill(near.begin(), near.end(), 0);
-      const int last = cols.first + static_cast<int>(cols.begin.size()) - 2;
-      for (int i = std::max(cols.first, st[l].i0 - support_ + 1); i <= std::min(last, st[l].i0 + support_ - 1); ++i) {
-        const auto rows_begin = cols.row.begin() + cols.begin[i - cols.first];
-        const auto rows_end = cols.row.begin() + cols.begin[i - cols.first + 1];
-        auto p = std::lower_bound(rows_begin, rows_end, st[l].j0 - support_ + 1);
-        for (; p != rows_end && *p < st[l].j0 + support_; ++p) {
-          const int k = cols.order[static_cast<std::size_t>(p - cols.row.begin())];
-          near[static_cast<std::size_t>(k) / 64] |= std::uint64_t{1} << (k % 64);
-        }
+      const LowerColumns& lc = lower[c];
+      int at = outer[2 * l + c] + above[c][l];
+      for (int p = lc.begin[l]; p < lc.begin[l + 1]; ++p, ++at) {
+        const int k = lc.row[p];
+        inner[at] = 2 * k + c;
+        value[at] = lc.value[p];
+        if (k == l) continue;
+        const int mirror = next[2 * k + c]++;
+        inner[mirror] = 2 * l + c;
+        value[mirror] = lc.value[p];
       }
-      for (std::size_t w = 0; w < near.size(); ++w)
-        for (std::uint64_t bits = near[w]; bits != 0; bits &= bits - 1) {
-          const int k = static_cast<int>(64 * w) + std::countr_zero(bits);
-          const int di = st[k].i0 - st[l].i0, dj = st[k].j0 - st[l].j0;
-          out.insertBack(2 * k + c, 2 * l + c) =
-              scale * overlap1d(st[k].wx, st[l].wx, di, support_) * overlap1d(st[k].wy, st[l].wy, dj, support_);
-        }
     }
-  out.finalize();
 }
 
 void Transfer::gram(Eigen::MatrixXd& g) const {

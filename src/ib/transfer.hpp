@@ -54,7 +54,8 @@ struct FaceStencil {
 ///
 /// Deterministic: markers are visited in index order and each stencil row by row, so the
 /// sums are the same on every run. No allocation after the first locate() with the largest
-/// marker count, except in gram(), which builds its neighbour index at each call; no I/O.
+/// marker count, except in gram(), which builds its neighbour index and the entries on and below
+/// the diagonal at each call; no I/O.
 class Transfer {
  public:
   /// Throws std::invalid_argument naming the marker index and position if a marker's stencil

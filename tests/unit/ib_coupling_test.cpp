@@ -452,6 +452,55 @@ TEST(Coupling, SparseGramMatrixIsTheScaledDenseOneAndExactlySymmetric) {
   }
 }
 
+// Each stored entry of the sparse Gram matrix is, bit for bit, scale · (Σ_a wx_k[a] wx_l[a + di]) ·
+// (Σ_b wy_k[b] wy_l[b + dj]) of its own row k and column l, summed over ascending offsets (gram()
+// computes the entries on and below the diagonal and copies each one above from its mirror); rows
+// ascend in each column, and every overlapping pair is stored. 150 markers: the bit set of the
+// neighbour search spans three words.
+TEST(Coupling, SparseGramEntriesAreTheirOverlapsBitForBit) {
+  fluid::FluidParams p = smallBox();
+  p.cells_x = p.cells_y = 32;
+  fluid::FluidSolver2 fluid(p);
+  const std::vector<Vec2> x = jitteredRing(150, 3);
+  for (const int stretch : {1, 2})
+    for (Kernel kernel : {Kernel::bilinear, Kernel::peskin4}) {
+      Transfer t;
+      t.locate(fluid.grid(), kernel, x, stretch);
+      const double scale = 0.37;
+      Eigen::SparseMatrix<double> g;
+      t.gram(scale, g);
+      const int s = t.stencil_faces();
+      auto overlap = [s](const double* wk, const double* wl, int shift) {
+        double sum = 0.0;
+        for (int a = 0; a < s; ++a)
+          if (a + shift >= 0 && a + shift < s) sum += wk[a] * wl[a + shift];
+        return sum;
+      };
+      long stored = 0, overlapping = 0;
+      for (int col = 0; col < g.outerSize(); ++col) {
+        int previous = -1;
+        for (Eigen::SparseMatrix<double>::InnerIterator e(g, col); e; ++e, ++stored) {
+          const int row = static_cast<int>(e.row()), k = row / 2, l = col / 2, c = col % 2;
+          ASSERT_EQ(row % 2, c);
+          ASSERT_GT(row, previous);
+          previous = row;
+          const FaceStencil& sk = c == 0 ? t.u_stencil(k) : t.v_stencil(k);
+          const FaceStencil& sl = c == 0 ? t.u_stencil(l) : t.v_stencil(l);
+          const double want = scale * overlap(sk.wx, sl.wx, sk.i0 - sl.i0) * overlap(sk.wy, sl.wy, sk.j0 - sl.j0);
+          ASSERT_EQ(e.value(), want) << to_string(kernel) << " x" << stretch << " (" << row << ", " << col << ")";
+        }
+      }
+      for (int c = 0; c < 2; ++c)
+        for (int k = 0; k < 150; ++k)
+          for (int l = 0; l < 150; ++l) {
+            const FaceStencil& sk = c == 0 ? t.u_stencil(k) : t.v_stencil(k);
+            const FaceStencil& sl = c == 0 ? t.u_stencil(l) : t.v_stencil(l);
+            overlapping += std::abs(sk.i0 - sl.i0) < s && std::abs(sk.j0 - sl.j0) < s;
+          }
+      EXPECT_EQ(stored, overlapping) << to_string(kernel) << " x" << stretch;
+    }
+}
+
 // The whole coupled step (all fluid stages on) twice from the same start: bitwise equal markers
 // and velocities (DESIGN.md: determinism).
 TEST(Coupling, TwoRunsAreBitwiseEqual) {
