@@ -59,17 +59,6 @@ int bandwidth(const Eigen::SparseMatrix<double>& a, const std::vector<int>& slot
   return width;
 }
 
-// The same for a compressed matrix whose entries' rows are already in that numbering.
-int bandwidth(const Eigen::SparseMatrix<double>& a, const std::vector<int>& rows, const std::vector<int>& slot) {
-  int width = 0;
-  for (int j = 0; j < a.outerSize(); ++j) {
-    const int column = banded_index(slot, j);
-    for (int p = a.outerIndexPtr()[j]; p < a.outerIndexPtr()[j + 1]; ++p)
-      width = std::max(width, std::abs(rows[static_cast<std::size_t>(p)] - column));
-  }
-  return width;
-}
-
 }  // namespace
 
 // entry(i, j) −= dt (M K)(i, j) over the nonzeros of the product, in one fixed order whatever the
@@ -110,8 +99,8 @@ void ImmersedBoundary2::subtract_dt_mk_banded(const Eigen::SparseMatrix<double>&
 }
 
 // mobility_rows_ and mobility_dt_, and per column of M the least and greatest of its banded rows
-// (mobility_first_, _last_).
-void ImmersedBoundary2::index_mobility_rows(double dt_s) {
+// (mobility_first_, _last_). Returns M's bandwidth in the banded numbering (as bandwidth() does).
+int ImmersedBoundary2::index_mobility_rows(double dt_s) {
   const int* m_outer = mobility_.outerIndexPtr();
   const int* m_inner = mobility_.innerIndexPtr();
   const double* m_value = mobility_.valuePtr();
@@ -127,6 +116,13 @@ void ImmersedBoundary2::index_mobility_rows(double dt_s) {
       mobility_first_[k] = std::min(mobility_first_[k], row);
       mobility_last_[k] = std::max(mobility_last_[k], row);
     }
+  int width = 0;
+  for (int k = 0; k < mobility_.outerSize(); ++k)
+    if (m_outer[k] < m_outer[k + 1]) {
+      const int column = banded_index(slot_, k);
+      width = std::max({width, column - mobility_first_[k], mobility_last_[k] - column});
+    }
+  return width;
 }
 
 void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
@@ -160,8 +156,7 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
       // Entry (i, j) of M K joins i to j through some k with M(i, k) and K(k, j) nonzero, so the
       // system's band is at most the sum of the two bands.
       mobility_.makeCompressed();  // a no-op: gram() fills it in order; the loops below read its arrays
-      index_mobility_rows(dt_s);
-      const int width = bandwidth(mobility_, mobility_rows_, slot_) + bandwidth(stiffness, slot_);
+      const int width = index_mobility_rows(dt_s) + bandwidth(stiffness, slot_);
       banded_.reset(n, width, width);
       for (int i = 0; i < n; ++i) banded_.at(i, i) = 1.0;
       subtract_dt_mk_banded(stiffness);

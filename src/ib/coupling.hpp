@@ -134,7 +134,7 @@ class ImmersedBoundary2 {
   template <class Entry>
   void subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffness, double dt_s, Entry entry) const;
   void subtract_dt_mk_banded(const Eigen::SparseMatrix<double>& stiffness);
-  void index_mobility_rows(double dt_s);
+  int index_mobility_rows(double dt_s);
   Eigen::MatrixXd system_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   // The banded solve (bodies with a solveOrder() of at least kBandedFromMarkers markers): the
