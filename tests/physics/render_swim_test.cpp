@@ -26,7 +26,11 @@ const Swim& swim() {
                                                  {"duration_s", 1.0 / 0.7},
                                                  {"frame_rate_hz", 25.0},
                                                  {"activation_shape", kinds::Value(std::string("hermite"))},
-                                                 {"dt_s", 0.00125}});
+                                                 {"dt_s", 0.00125},
+                                                 // the defaults until 2026-12-03, which this test was written on
+                                                 {"force_stage", kinds::Value(std::string("before_advection"))},
+                                                 {"box_aspect", 1.5},
+                                                 {"start_y_fraction", 0.2}});
     Swim out;
     out.result = kind.run(p);
     const auto& t = out.result.topology;

@@ -33,7 +33,8 @@ const kinds::Result& shortRun() {
     // Fig. 12's angular stiffness read per joint of the 32-segment chain. The diameter then follows
     // the driving curve, which is what the fits below recover (the kind's default active-tension
     // bell, soft and driven by a tension, does not follow it).
-    // On the kind's defaults until 2026-11-29 (the Hermite curve, hat kernel, 2 mm cells in the 0.4 m box).
+    // On the kind's defaults until 2026-11-29 (the Hermite curve, hat kernel, 2 mm cells in the 0.4 m box)
+    // and until 2026-12-03 (the force before the advection in a box 1.5 times as tall).
     kinds::Params p = kinds::withDefaults(kind, {{"muscle_model", kinds::Value(std::string("rest_length"))},
                                                  {"bending_rigidity_n_m", kinds::Value(2.352e-3)},
                                                  {"activation_shape", kinds::Value(std::string("hermite"))},
@@ -42,7 +43,10 @@ const kinds::Result& shortRun() {
                                                  {"domain_m", 0.4},
                                                  {"cells", std::int64_t(200)},
                                                  {"dt_s", 0.00125},
-                                                 {"bell_segments", std::int64_t(0)}});
+                                                 {"bell_segments", std::int64_t(0)},
+                                                 {"force_stage", kinds::Value(std::string("before_advection"))},
+                                                 {"box_aspect", 1.5},
+                                                 {"start_y_fraction", 0.2}});
     p["duration_s"] = 3 / 0.7;
     return kind.run(p);
   }();
