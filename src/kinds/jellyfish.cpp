@@ -42,11 +42,13 @@ std::vector<Knot> knots(const ParamReader& r) {
 constexpr double kCalibratedBendingRigidity = 1.0e-4;
 constexpr double kCalibratedTension = 14.0;
 
-// The default setting is the converged one of convergence.toml (issue 13 §1): ν = 5e-5 m²/s, the
-// 0.3 s activation pulse, Peskin's kernel at the bell's 4 mm, 256 segments, 1 mm cells in a 0.3 m box
-// at 0.000625 s. Until 2026-11-29 the defaults were ν = 1.304e-5, the Hermite curve at T_max 5, the
-// hat kernel, segments following the grid, 2 mm cells in a 0.4 m box at 0.00125 s; the files
-// measured on that setting pin it in their [params].
+// The default setting is the converged one of convergence_force_after.toml (issue 13 §1, §4): ν = 5e-5
+// m²/s, the 0.3 s activation pulse, Peskin's kernel at the bell's 4 mm, 256 segments, 1 mm cells in a
+// square 0.3 m box, the force added after the advection at 0.00125 s. From 2026-11-29 to 2026-12-03 it
+// was the same body and fluid with the force before the advection at 0.000625 s in a box 1.5 times as
+// tall (convergence.toml's setting, whose step limits on 1 mm this one's meets within 0.1-1.4%); until 2026-11-29
+// ν = 1.304e-5, the Hermite curve at T_max 5, the hat kernel, segments following the grid, 2 mm cells
+// in a 0.4 m box at 0.00125 s. The files measured on an earlier setting pin it in their [params].
 
 // bell_segments = 0 follows the grid: the fewest even segments whose drawn length is at most
 // marker_spacing_cells cells (issue 13: markers about half a cell apart, so that the boundary does
@@ -301,7 +303,7 @@ JellyfishKind::JellyfishKind() {
   // --- fluid (§3.2, Fig. 12)
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
       .domain_m = 0.3,
-      .domain_doc = "width of the free-slip box (1.5 times as tall, box_aspect): 7.5 diameters. The paper's ten (§3.2, "
+      .domain_doc = "width of the free-slip box (as tall, box_aspect): 7.5 diameters. The paper's ten (§3.2, "
                     "0.4 m) moves the 1 mm distance per cycle by 0.4% at most at 0.6-0.8 Hz and costs a third more "
                     "(convergence_box_step_viscous.toml)",
       .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m; also 50). 300 by default, 1 mm cells: at "
@@ -349,26 +351,30 @@ JellyfishKind::JellyfishKind() {
       real("viscosity_tolerance", fluid::FluidParams{}.viscosity_tolerance, "", 1e-14, 1e-2,
            "relative residual of the implicit viscous solve (fluid/diffusion2.hpp); raising it perturbs the flow "
            "slightly, a test of how sensitive a distance over several cycles is"),
-      real("dt_s", 0.000625, "s", 1e-7, 0.1,
+      real("dt_s", 0.00125, "s", 1e-7, 0.1,
            "coupled step, first order in time (ib/coupling.hpp); the grid study halves it with the cell (dt ∝ dx: "
-           "0.00125, 0.000625, 0.0003125 s on 2, 1, 0.5 mm; convergence.toml). On 1 mm cells with MacCormack, "
-           "0.000625 / 0.0003125 / 0.00015625 s give 1.5945 / 1.5504 / 1.5334 mm per cycle at 0.7 Hz and 1.1461 / "
-           "1.1237 / 1.1175 at 0.8 Hz (convergence_step_scheme.toml; observed order 1.4 and 1.9): 0.000625 s is "
-           "4.7% and 2.8% above the Richardson limit (0.8% at 0.6 Hz, convergence_box_step_viscous.toml), the "
-           "stroke amplitude within 0.4%. upwind2_rk2 moves under 0.3% from 0.0003125 s down, so the step "
-           "dependence is MacCormack's; explicit forces (semi_implicit = false, stable here) have a step error "
-           "as large, so it is not the semi-implicit force's. The largest error left in the default with the "
-           "segments (bell_segments); 0.0003125 s costs twice as much. The paper's 0.01 s is stable with the "
-           "semi-implicit step"),
-      choice("force_stage", "before_advection", {"before_advection", "after_advection"},
-             "where the bell's force enters the fluid step: before the advection (Stam 1999 §2.2, the paper's order), "
-             "which then carries the force's velocity increment, or after it (the force a source of the momentum "
-             "equation, Peskin 2002 §6). Both are first order in dt"),
+           "0.0025, 0.00125, 0.000625 s on 2, 1, 0.5 mm; convergence_force_after.toml). On 1 mm cells with the "
+           "force after the advection (force_stage) 0.00125 / 0.000625 / 0.0003125 s give 1.4916 / 1.5063 / 1.5132 mm per cycle at 0.7 Hz, 1.8% below the Richardson limit (2.7% and 1.0% at 0.6 and 0.8 Hz), the stroke within 0.3%. With the force "
+           "before it (the default until 2026-12-03, at 0.000625 s) the step error was MacCormack's and 3-4 times "
+           "as large: 1.5945 / 1.5504 / 1.5334 mm per cycle at 0.7 Hz from 0.000625 s down, 4.7% above its "
+           "limit (convergence_step_scheme.toml). The paper's 0.01 s is stable with the semi-implicit step"),
+      choice("force_stage", "after_advection", {"before_advection", "after_advection"},
+             "where the bell's force enters the fluid step: after the advection (the default since 2026-12-03: the "
+             "force a source of the momentum equation, Peskin 2002 §6), or before it (Stam 1999 §2.2, the paper's "
+             "order), when MacCormack then carries the force's velocity increment before the projection removes its "
+             "gradient part. Both are first order in dt; on 1 mm at 0.7 Hz, 0.0025 / 0.00125 / "
+             "0.000625 s give 1.438 / 1.492 / 1.506 mm per cycle with the force after (observed order 1.9, limit "
+             "1.512) and 1.799 / 1.665 / 1.595 with it before (order 1, limit 1.523; probes of 2026-12-03 and "
+             "convergence_step_scheme.toml in the tall box), so the force after lets 1 mm take 0.00125 s"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
-      real("start_y_fraction", 0.2, "", 0.05, 0.95, "aperture's starting height in the box (the bell swims up)"),
-      real("box_aspect", 1.5, "", 0.25, 8,
-           "box height / width (domain_m is the width); cells * box_aspect must be whole. A tall box lets a fast "
-           "swimmer swim its whole window without meeting the top wall"),
+      real("start_y_fraction", 0.3, "", 0.05, 0.95,
+           "aperture's starting height in the box (the bell swims up): 0.09 m in the default box, as in the tall "
+           "box at 0.2 before 2026-12-03"),
+      real("box_aspect", 1.0, "", 0.25, 8,
+           "box height / width (domain_m is the width); cells * box_aspect must be whole. The default bell swims "
+           "9-11 mm in its window at 0.6-0.8 Hz: the tall box (1.5, the default until 2026-12-03) moved the 1 mm "
+           "distance per cycle by +0.01 to +0.03% (convergence_force_after.toml) and cost half as much again. A fast swimmer "
+           "needs a taller one to swim its whole window without meeting the top wall"),
       // --- measurement
       real("warmup_cycles", 1.0, "", 0, 1000, "cycles before the measured window"),
       real("duration_s", 10.0, "s", 1e-6, 1e6,
