@@ -46,9 +46,10 @@ constexpr double kCalibratedTension = 14.0;
 // m²/s, the 0.3 s activation pulse, Peskin's kernel at the bell's 4 mm, 256 segments, 1 mm cells in a
 // square 0.3 m box, the force added after the advection at 0.00125 s. From 2026-11-29 to 2026-12-03 it
 // was the same body and fluid with the force before the advection at 0.000625 s in a box 1.5 times as
-// tall (convergence.toml's setting, whose step limits on 1 mm this one's meets within 0.1-1.4%); until 2026-11-29
-// ν = 1.304e-5, the Hermite curve at T_max 5, the hat kernel, segments following the grid, 2 mm cells
-// in a 0.4 m box at 0.00125 s. The files measured on an earlier setting pin it in their [params].
+// tall (convergence.toml's setting; the two meet in their 1 mm step limits within 0.1-1.4%); until
+// 2026-11-29 ν = 1.304e-5, the Hermite curve at T_max 5, the hat kernel, segments following the grid,
+// 2 mm cells in a 0.4 m box at 0.00125 s. The files measured on an earlier setting pin it in their
+// [params].
 
 // bell_segments = 0 follows the grid: the fewest even segments whose drawn length is at most
 // marker_spacing_cells cells (issue 13: markers about half a cell apart, so that the boundary does
@@ -307,9 +308,9 @@ JellyfishKind::JellyfishKind() {
                     "0.4 m) moves the 1 mm distance per cycle by 0.4% at most at 0.6-0.8 Hz and costs a third more "
                     "(convergence_box_step_viscous.toml)",
       .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m; also 50). 300 by default, 1 mm cells: at "
-                   "0.6-0.8 Hz the 0.5 mm grid (dt halved alongside) moves the distance per cycle by +0.9 / -0.5 / -1.0% "
-                   "and the stroke amplitude by +1.4 to +3.0% (convergence.toml); 2 mm is 5-10% off in distance "
-                   "(frequency_peak_viscous.toml)",
+                   "0.6-0.8 Hz the 0.5 mm grid (dt halved alongside) moves the distance per cycle by +3.6 / +1.8 / "
+                   "-2.9% and the stroke amplitude by +1.4 to +3.3%, 2 mm is 7-24% off in distance "
+                   "(convergence_force_after.toml; on the earlier default +0.9 / -0.5 / -1.0%, convergence.toml)",
       .cells = 300,
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 5e-5,
@@ -354,10 +355,12 @@ JellyfishKind::JellyfishKind() {
       real("dt_s", 0.00125, "s", 1e-7, 0.1,
            "coupled step, first order in time (ib/coupling.hpp); the grid study halves it with the cell (dt ∝ dx: "
            "0.0025, 0.00125, 0.000625 s on 2, 1, 0.5 mm; convergence_force_after.toml). On 1 mm cells with the "
-           "force after the advection (force_stage) 0.00125 / 0.000625 / 0.0003125 s give 1.4916 / 1.5063 / 1.5132 mm per cycle at 0.7 Hz, 1.8% below the Richardson limit (2.7% and 1.0% at 0.6 and 0.8 Hz), the stroke within 0.3%. With the force "
-           "before it (the default until 2026-12-03, at 0.000625 s) the step error was MacCormack's and 3-4 times "
-           "as large: 1.5945 / 1.5504 / 1.5334 mm per cycle at 0.7 Hz from 0.000625 s down, 4.7% above its "
-           "limit (convergence_step_scheme.toml). The paper's 0.01 s is stable with the semi-implicit step"),
+           "force after the advection (force_stage) 0.00125 / 0.000625 / 0.0003125 s give 1.4916 / 1.5063 / "
+           "1.5132 mm per cycle at 0.7 Hz, 1.8% below the Richardson limit (2.7% and 1.0% at 0.6 and 0.8 Hz), "
+           "the stroke within 0.3%. With the force before it (the default until 2026-12-03) 0.000625 / 0.0003125 "
+           "/ 0.00015625 s gave 1.5945 / 1.5504 / 1.5334, 4.7% above its limit at 0.000625 s where the force "
+           "after is 0.8% below (convergence_step_scheme.toml). The paper's 0.01 s is stable with the "
+           "semi-implicit step"),
       choice("force_stage", "after_advection", {"before_advection", "after_advection"},
              "where the bell's force enters the fluid step: after the advection (the default since 2026-12-03: the "
              "force a source of the momentum equation, Peskin 2002 §6), or before it (Stam 1999 §2.2, the paper's "
@@ -373,8 +376,8 @@ JellyfishKind::JellyfishKind() {
       real("box_aspect", 1.0, "", 0.25, 8,
            "box height / width (domain_m is the width); cells * box_aspect must be whole. The default bell swims "
            "9-11 mm in its window at 0.6-0.8 Hz: the tall box (1.5, the default until 2026-12-03) moved the 1 mm "
-           "distance per cycle by +0.01 to +0.03% (convergence_force_after.toml) and cost half as much again. A fast swimmer "
-           "needs a taller one to swim its whole window without meeting the top wall"),
+           "distance per cycle by +0.01 to +0.03% (convergence_force_after.toml) and cost half as much again. "
+           "A fast swimmer needs a taller one to swim its whole window without meeting the top wall"),
       // --- measurement
       real("warmup_cycles", 1.0, "", 0, 1000, "cycles before the measured window"),
       real("duration_s", 10.0, "s", 1e-6, 1e6,
