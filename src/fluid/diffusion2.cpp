@@ -335,6 +335,11 @@ LinearSolveReport ImplicitDiffusion2::chebyshev(Array2& x, double alpha, double 
   // ω_k = 2ρ_k/δ, γ_k = ρ_k ρ_{k−1}. The error contracts by (√κ − 1)/(√κ + 1) per sweep,
   // κ = 1 + α g, CG's worst-case rate, but a sweep is one pass over three arrays where a CG
   // iteration is three passes and two reductions. x_{k+1} overwrites x_{k−1} face by face.
+  // Not kept: two or three sweeps fused into one pass over the rows (a row wavefront, bitwise the
+  // same, with a spare array for the iterate the solve may stop at; branch visc-fuse, 9c07ce9). It
+  // was no faster: the sweeps are bound by their arithmetic more than by memory (a 10-sweep solve
+  // costs 7.0 ns per face at 150², arrays in L2, 8.0 at 300²), while the spare array takes the pass
+  // beyond L2 and a pass computes one sweep past the accepted iterate half the time.
   const DiffusionBlock2& block = w.block;
   const int parts = piece_count(workers_);
   const double delta = 0.5 * alpha * block.max_row_sum;
