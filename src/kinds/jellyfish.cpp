@@ -43,8 +43,10 @@ constexpr double kCalibratedBendingRigidity = 1.0e-4;
 constexpr double kCalibratedTension = 14.0;
 
 // The default setting is the converged one of convergence_force_after.toml (issue 13 §1, §4): ν = 5e-5
-// m²/s, the 0.3 s activation pulse, Peskin's kernel at the bell's 4 mm, 256 segments, 1 mm cells in a
-// square 0.3 m box, the force added after the advection at 0.00125 s. From 2026-11-29 to 2026-12-03 it
+// m²/s, the 0.3 s activation pulse, Peskin's kernel at the bell's 4 mm, 256 segments, 1 mm cells, the
+// force added after the advection at 0.00125 s, in a 0.25 m by 0.3 m box with the aperture 0.18 m above
+// its floor (convergence_box_force_after.toml; on 2026-12-03 before that a square 0.3 m box with the
+// aperture at 0.09 m, whose floor pushed the bell 2.9% farther at 0.6 Hz). From 2026-11-29 to 2026-12-03 it
 // was the same body and fluid with the force before the advection at 0.000625 s in a box 1.5 times as
 // tall (convergence.toml's setting; the two meet in their 1 mm step limits within 0.1-1.4%); until
 // 2026-11-29 ν = 1.304e-5, the Hermite curve at T_max 5, the hat kernel, segments following the grid,
@@ -303,15 +305,18 @@ JellyfishKind::JellyfishKind() {
   };
   // --- fluid (§3.2, Fig. 12)
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
-      .domain_m = 0.3,
-      .domain_doc = "width of the free-slip box (as tall, box_aspect): 7.5 diameters. The paper's ten (§3.2, "
-                    "0.4 m) moves the 1 mm distance per cycle by 0.4% at most at 0.6-0.8 Hz and costs a third more "
-                    "(convergence_box_step_viscous.toml)",
-      .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m; also 50). 300 by default, 1 mm cells: at "
+      .domain_m = 0.25,
+      .domain_doc = "width of the free-slip box (its height is box_aspect times it): 6.25 diameters. The default "
+                    "0.25 m by 0.3 m box, the aperture 0.18 m above the floor, is 0.9 / 0.5 / 0.3% below a 0.4 m by "
+                    "0.6 m one (10 diameters, the paper's width, §3.2) in the 1 mm distance per cycle at 0.6 / 0.7 / "
+                    "0.8 Hz, at a third of its cells (convergence_box_force_after.toml). The depth below the bell "
+                    "matters most: with the aperture 0.09 m above the floor (the square 0.3 m box of 2026-12-03) "
+                    "the bell swims 2.9 / 0.7 / 1.2% farther",
+      .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m; also 50). 250 by default, 1 mm cells: at "
                    "0.6-0.8 Hz the 0.5 mm grid (dt halved alongside) moves the distance per cycle by +3.6 / +1.8 / "
                    "-2.9% and the stroke amplitude by +1.4 to +3.3%, 2 mm is 7-24% off in distance "
                    "(convergence_force_after.toml; on the earlier default +0.9 / -0.5 / -1.0%, convergence.toml)",
-      .cells = 300,
+      .cells = 250,
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 5e-5,
       .viscosity_doc = "38 times water, Re about 16 for the 4 cm bell (2D IB jellyfish studies run Re 10-300). The "
@@ -370,14 +375,18 @@ JellyfishKind::JellyfishKind() {
              "1.512) and 1.799 / 1.665 / 1.595 with it before (order 1, limit 1.523; probes of 2026-12-03 and "
              "convergence_step_scheme.toml in the tall box), so the force after lets 1 mm take 0.00125 s"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
-      real("start_y_fraction", 0.3, "", 0.05, 0.95,
-           "aperture's starting height in the box (the bell swims up): 0.09 m in the default box, as in the tall "
-           "box at 0.2 before 2026-12-03"),
-      real("box_aspect", 1.0, "", 0.25, 8,
-           "box height / width (domain_m is the width); cells * box_aspect must be whole. The default bell swims "
-           "9-11 mm in its window at 0.6-0.8 Hz: the tall box (1.5, the default until 2026-12-03) moved the 1 mm "
-           "distance per cycle by +0.01 to +0.03% (convergence_force_after.toml) and cost half as much again. "
-           "A fast swimmer needs a taller one to swim its whole window without meeting the top wall"),
+      real("start_y_fraction", 0.6, "", 0.05, 0.95,
+           "aperture's starting height in the box (the bell swims up, its wake goes down): 0.18 m above the floor "
+           "in the default box. At 0.09 m (0.3 in the square 0.3 m box of "
+           "2026-12-03, 0.2 in the tall one before it) the floor pushes the bell 2.9% farther at 0.6 Hz; at 0.18 m "
+           "with 0.27 m above (a 0.45 m tall box) it is within 0.1% of a 0.4 m by 0.6 m box "
+           "(convergence_box_force_after.toml)"),
+      real("box_aspect", 1.2, "", 0.25, 8,
+           "box height / width (domain_m is the width); cells * box_aspect must be whole. The default box is 0.3 m "
+           "tall: 0.12 m above the aperture, where the bell swims 9-11 mm in its window at 0.6-0.8 Hz; 0.27 m "
+           "above moves its distance per cycle by +0.9% at 0.6 Hz at 1.5 times the cells "
+           "(convergence_box_force_after.toml). A fast swimmer needs a taller box to swim its whole window "
+           "without meeting the top wall"),
       // --- measurement
       real("warmup_cycles", 1.0, "", 0, 1000, "cycles before the measured window"),
       real("duration_s", 10.0, "s", 1e-6, 1e6,
