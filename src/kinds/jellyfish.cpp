@@ -42,7 +42,8 @@ std::vector<Knot> knots(const ParamReader& r) {
 constexpr double kCalibratedBendingRigidity = 1.0e-4;
 constexpr double kCalibratedTension = 14.0;
 
-// The default setting is the converged one of convergence_force_after.toml (issue 13 §1, §4): ν = 5e-5
+// The default setting is that of convergence_force_after.toml (issue 13 §1, §4; in the default box its
+// 0.6 Hz grid pair is 5.8% apart, the step 3.4% of it, convergence_box_force_after.toml): ν = 5e-5
 // m²/s, the 0.3 s activation pulse, Peskin's kernel at the bell's 4 mm, 256 segments, 1 mm cells, the
 // force added after the advection at 0.00125 s, in a 0.25 m by 0.3 m box with the aperture 0.18 m above
 // its floor (convergence_box_force_after.toml; on 2026-12-03 before that a square 0.3 m box with the
@@ -313,9 +314,11 @@ JellyfishKind::JellyfishKind() {
                     "matters most: with the aperture 0.09 m above the floor (the square 0.3 m box of 2026-12-03) "
                     "the bell swims 2.9 / 0.7 / 1.2% farther",
       .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m; also 50). 250 by default, 1 mm cells: at "
-                   "0.6-0.8 Hz the 0.5 mm grid (dt halved alongside) moves the distance per cycle by +3.6 / +1.8 / "
-                   "-2.9% and the stroke amplitude by +1.4 to +3.3%, 2 mm is 7-24% off in distance "
-                   "(convergence_force_after.toml; on the earlier default +0.9 / -0.5 / -1.0%, convergence.toml)",
+                   "0.6-0.8 Hz the 0.5 mm grid (dt halved alongside) moves the distance per cycle by +5.8 / +2.0 / "
+                   "-1.7% in the default box, beyond the 5% check at 0.6 Hz, where halving the step alone gives "
+                   "+3.4% (convergence_box_force_after.toml); in the square 0.3 m box +3.6 / +1.8 / -2.9%, the "
+                   "stroke +1.4 to +3.3%, 2 mm 7-24% off (convergence_force_after.toml; on the earlier default "
+                   "+0.9 / -0.5 / -1.0%, convergence.toml)",
       .cells = 250,
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 5e-5,
@@ -362,8 +365,10 @@ JellyfishKind::JellyfishKind() {
            "0.0025, 0.00125, 0.000625 s on 2, 1, 0.5 mm; convergence_force_after.toml). On 1 mm cells with the "
            "force after the advection (force_stage) 0.00125 / 0.000625 / 0.0003125 s give 1.4916 / 1.5063 / "
            "1.5132 mm per cycle at 0.7 Hz, 1.8% below the Richardson limit (2.7% and 1.0% at 0.6 and 0.8 Hz), "
-           "the stroke within 0.3%. With the force before it (the default until 2026-12-03) 0.000625 / 0.0003125 "
-           "/ 0.00015625 s gave 1.5945 / 1.5504 / 1.5334, 4.7% above its limit at 0.000625 s where the force "
+           "the stroke within 0.3%, in the square 0.3 m box; in the default box halving it moves the 0.6 Hz "
+           "distance +3.4% (convergence_box_force_after.toml). With the force before it (the default until "
+           "2026-12-03) 0.000625 / 0.0003125 / 0.00015625 s gave 1.5945 / 1.5504 / 1.5334, 4.7% above its limit "
+           "at 0.000625 s where the force "
            "after is 0.8% below (convergence_step_scheme.toml). The paper's 0.01 s is stable with the "
            "semi-implicit step"),
       choice("force_stage", "after_advection", {"before_advection", "after_advection"},
@@ -384,9 +389,9 @@ JellyfishKind::JellyfishKind() {
       real("box_aspect", 1.2, "", 0.25, 8,
            "box height / width (domain_m is the width); cells * box_aspect must be whole. The default box is 0.3 m "
            "tall: 0.12 m above the aperture, where the bell swims 9-11 mm in its window at 0.6-0.8 Hz; 0.27 m "
-           "above moves its distance per cycle by +0.9% at 0.6 Hz at 1.5 times the cells "
-           "(convergence_box_force_after.toml). A fast swimmer needs a taller box to swim its whole window "
-           "without meeting the top wall"),
+           "above (a 0.3 m by 0.45 m box) moves its distance per cycle by +0.8 / +0.4 / +0.3% at 0.6 / 0.7 / "
+           "0.8 Hz at 1.8 times the cells (convergence_box_force_after.toml). A fast swimmer needs a taller box "
+           "to swim its whole window without meeting the top wall"),
       // --- measurement
       real("warmup_cycles", 1.0, "", 0, 1000, "cycles before the measured window"),
       real("duration_s", 10.0, "s", 1e-6, 1e6,
