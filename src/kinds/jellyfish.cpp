@@ -387,7 +387,8 @@ JellyfishKind::JellyfishKind() {
            "with 0.27 m above (a 0.45 m tall box) it is within 0.1% of a 0.4 m by 0.6 m box "
            "(convergence_box_force_after.toml)"),
       real("box_aspect", 1.2, "", 0.25, 8,
-           "box height / width (domain_m is the width); cells * box_aspect must be whole. The default box is 0.3 m "
+           "box height / width (domain_m is the width); cells * box_aspect must be whole (with the default 1.2: "
+           "cells a multiple of 5). The default box is 0.3 m "
            "tall: 0.12 m above the aperture, where the bell swims 9-11 mm in its window at 0.6-0.8 Hz; 0.27 m "
            "above (a 0.3 m by 0.45 m box) moves its distance per cycle by +0.8 / +0.4 / +0.3% at 0.6 / 0.7 / "
            "0.8 Hz at 1.8 times the cells (convergence_box_force_after.toml). A fast swimmer needs a taller box "
