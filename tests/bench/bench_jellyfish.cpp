@@ -288,13 +288,13 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // Peskin's kernel) at 18.8 simulated s per CPU s against 23.8 on 2026-12-02: about 61-66 s there, just
 // above issue 13's 60 s.
 void BM_SimulatedSecondDefault(benchmark::State& state) {
-  const bool square = state.range(0) == 300;
+  const int width_mm = static_cast<int>(state.range(0));
   SwimmerConfig c = viscousPulseConfig(300);  // 1 mm cells: 300 across 0.3 m
-  c.fluid.domain_width_m = square ? 0.3 : 0.25;
-  c.fluid.cells_x = square ? 300 : 250;
+  c.fluid.domain_width_m = width_mm / 1000.0;  // the literal 0.25 or 0.3, correctly rounded
+  c.fluid.cells_x = width_mm;
   c.fluid.domain_height_m = 0.3;
   c.fluid.cells_y = 300;
-  c.start_y_fraction = square ? 0.3 : 0.6;
+  c.start_y_fraction = width_mm == 300 ? 0.3 : 0.6;  // the aperture 0.09 m up in the square box, else 0.18 m
   c.fluid.force_stage = fluid::ForceStage::after_advection;
   c.fluid.fixed_step_s = c.dt_s = 0.00125;
   measure(state, c);
