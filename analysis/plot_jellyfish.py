@@ -21,6 +21,9 @@ Writes to RUN_DIR/figures/ (or --out):
                     the cell size per setting, with the observed order and Richardson's estimate
                     (also printed, and written to convergence.txt, with the net fraction and the
                     cycle spread: the standard error of the window's mean distance per cycle).
+                    A run that also varies the step draws a series per ratio dt / dx.
+  step_convergence.png  when a grid runs at three or more steps: distance per cycle and stroke
+                    against the step, with the order and Richardson's estimate in dt (and .txt).
 """
 import argparse
 import glob
@@ -399,14 +402,16 @@ def save_study(fig, lines, out, stem):
 
 
 def step_convergence(sweep, points, out):
-    """Distance per cycle and stroke against the step on one grid (convergence_step_scheme.toml):
-    observed order and Richardson estimate in dt from three steps halving."""
+    """Distance per cycle and stroke against the step on one grid (convergence_step_scheme.toml; in a
+    grid study such as convergence_default.toml, each grid run at three or more steps): observed order
+    and Richardson estimate in dt from the three smallest steps halving."""
     if "dt_s" not in sweep or len(np.unique(sweep["dt_s"])) < 3:
         return
-    if "cells" in sweep and len(np.unique(sweep["cells"])) > 1:
-        return
-    skip = {"dt_s", "label", "cells"}
+    skip = {"dt_s", "label"}
     keys, groups = group_by_setting(sweep, points, skip)
+    groups = {g: ks for g, ks in groups.items() if len({float(sweep["dt_s"][k]) for k in ks}) >= 3}
+    if not groups:
+        return
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
     lines = ["setting | dt (s) | distance per cycle (mm) | stroke amplitude | cycle growth | observed order in dt | "
              "Richardson (mm) | finest / Richardson"]
@@ -438,18 +443,30 @@ def convergence(sweep, points, out):
         return
     skip = {"cells", "dt_s", "label", "bell_segments", "domain_m"}
     keys, groups = group_by_setting(sweep, points, skip)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
+    cell_mm = lambda k: float(param(points[k], "domain_m")) / float(sweep["cells"][k]) * 1e3  # noqa: E731
+    # A study that also varies the step on a grid (convergence_default.toml) draws one series per ratio
+    # dt / dx, so that each line is a refinement with dt ∝ dx and its order is computed on that alone.
+    series = {}
+    for g, ks in groups.items():
+        ratios = {}
+        for k in ks:
+            r = float(sweep["dt_s"][k]) / cell_mm(k) if "dt_s" in sweep else 0.0
+            ratios.setdefault(float(f"{r:.6g}"), []).append(k)
+        for r, rks in ratios.items():
+            series[(g, r if len(ratios) > 1 else None)] = rks
+    fig, (left, right) = plt.subplots(1, 2, figsize=(16, 4.5))
     lines = ["setting | cell (mm) | distance per cycle (mm) | stroke amplitude | net fraction | cycle spread | "
              "cycle growth | observed order | Richardson (mm)"]
-    for g, ks in sorted(groups.items()):
-        ks = sorted(ks, key=lambda k: -float(param(points[k], "domain_m")) / float(sweep["cells"][k]))
-        h = np.array([float(param(points[k], "domain_m")) / float(sweep["cells"][k]) * 1e3 for k in ks])
+    for (g, r), ks in sorted(series.items(), key=lambda item: (item[0][0], item[0][1] or 0.0)):
+        ks = sorted(ks, key=lambda k: -cell_mm(k))
+        h = np.array([cell_mm(k) for k in ks])
         d = np.array([metric(points[k], "distance_per_cycle_m") * 1e3 for k in ks])
         a = np.array([metric(points[k], "stroke_amplitude") for k in ks])
-        name = setting_name(keys, g)
+        name = setting_name(keys, g) + ("" if r is None else f", dt = {r * 1e3:g} ms per mm of cell")
         p, rich = richardson(h, d)
-        left.plot(h, d, "o-", ms=3, label=f"{name} (p = {p:.2g})")
-        right.plot(h, a, "o-", ms=3, label=name)
+        style = "o-" if len(ks) > 1 else "s"
+        left.plot(h, d, style, ms=3, label=f"{name} (p = {p:.2g})")
+        right.plot(h, a, style, ms=3, label=name)
         net = [metric(points[k], "net_fraction") for k in ks]
         spread = [metric(points[k], "cycle_distance_spread") for k in ks]
         growth = [metric(points[k], "cycle_distance_growth") for k in ks]
@@ -460,7 +477,8 @@ def convergence(sweep, points, out):
         ax.invert_xaxis()
         ax.set_xlabel("cell size (mm), dt ∝ dx, markers ≤ half a cell apart")
         ax.set_ylabel(what)
-        ax.legend(fontsize=6)
+    # One legend, beside the right panel, for both (the same colours): inside, it hid points.
+    right.legend(*left.get_legend_handles_labels(), fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     left.set_title("grid convergence (issue 13 §1)")
     save_study(fig, lines, out, "convergence")
 
