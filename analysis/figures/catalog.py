@@ -70,7 +70,8 @@ FIGURES = [
            "stagger_quick", "rm_fig4", None),
     Figure("rm", "Fig. 4 (default setting)",
            "Fig. 4 on the kind's default setting at its speed peak (0.65 Hz): staggered / unison distance per cycle "
-           "0.848 on 1 mm, 0.846 at half the step, 0.836 on 0.5 mm, 0.834 there with upwind2_rk2 (the grid, step and "
+           "0.848 on 1 mm at 0.00125 s, 0.846 at the default 0.000625 s, 0.836 on 0.5 mm, 0.834 there with upwind2_rk2 "
+           "(the grid, step and "
            "scheme checks pass), not the paper's 1.68; unison swims forward (stagger_default, make reproduce-full).",
            "stagger_default", "rm_fig4", None),
     Figure("rm", "Fig. 5",
@@ -84,11 +85,10 @@ FIGURES = [
            "frequency_sweep_viscous", "rm_fig5", None),
     Figure("rm", "Fig. 5 (default setting)",
            "The same claim on the kind's default setting since 2026-12-03: 1 mm cells, the force added after the "
-           "advection at 0.00125 s, whose grid (0.5 mm: +3.6, +1.8, -2.9% at 0.6-0.8 Hz), scheme (0.7%) and step "
-           "(1.0-2.7% from its limit) checks pass in a square 0.3 m box (convergence_force_after); in the default "
-           "0.25 m by 0.3 m box, 0.3-0.9% from a 0.4 m by 0.6 m one, the grid pair is +5.8, +2.0, -1.7% apart and "
-           "the 0.6 Hz check fails, mostly for the step (convergence_box_force_after). The mean speed peaks at "
-           "0.65 Hz (1.13 f_n; 0.8% above 0.7 Hz) and the stroke at 0.55 Hz (0.956 f_n), as on the earlier "
+           "advection at 0.000625 s, in a 0.25 m by 0.3 m box 0.3-0.9% from a 0.4 m by 0.6 m one "
+           "(convergence_box_force_after), whose grid (0.5 mm: +2.9, +1.3, -2.8% at 0.6-0.8 Hz), step (+0.4 to "
+           "+1.8%) and scheme (upwind2_rk2: -0.4 to -0.6%) checks pass (convergence_default). The mean speed peaks at 0.65 Hz (1.13 "
+           "f_n; 1.3% above 0.7 Hz, about 4% on 0.5 mm) and the stroke at 0.55 Hz (0.956 f_n), as on the earlier "
            "converged setting.",
            "frequency_sweep_default", "rm_fig5", None),
     Figure("rm", "Fig. 5 (converged setting), QUICK",

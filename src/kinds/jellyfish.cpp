@@ -42,17 +42,17 @@ std::vector<Knot> knots(const ParamReader& r) {
 constexpr double kCalibratedBendingRigidity = 1.0e-4;
 constexpr double kCalibratedTension = 14.0;
 
-// The default setting is that of convergence_force_after.toml (issue 13 §1, §4; in the default box its
-// 0.6 Hz grid pair is 5.8% apart, the step 3.4% of it, convergence_box_force_after.toml): ν = 5e-5
-// m²/s, the 0.3 s activation pulse, Peskin's kernel at the bell's 4 mm, 256 segments, 1 mm cells, the
-// force added after the advection at 0.00125 s, in a 0.25 m by 0.3 m box with the aperture 0.18 m above
-// its floor (convergence_box_force_after.toml; on 2026-12-03 before that a square 0.3 m box with the
-// aperture at 0.09 m, whose floor pushed the bell 2.9% farther at 0.6 Hz). From 2026-11-29 to 2026-12-03 it
-// was the same body and fluid with the force before the advection at 0.000625 s in a box 1.5 times as
-// tall (convergence.toml's setting; the two meet in their 1 mm step limits within 0.1-1.4%); until
-// 2026-11-29 ν = 1.304e-5, the Hermite curve at T_max 5, the hat kernel, segments following the grid,
-// 2 mm cells in a 0.4 m box at 0.00125 s. The files measured on an earlier setting pin it in their
-// [params].
+// The default setting is that of convergence_default.toml (issue 13 §1, §4: the grid, step and scheme
+// checks pass at 0.6-0.8 Hz, the grid +2.9 / +1.3 / -2.8%): ν = 5e-5 m²/s, the 0.3 s activation pulse,
+// Peskin's kernel at the bell's 4 mm, 256 segments, 1 mm cells, the force added after the advection at
+// 0.000625 s, in a 0.25 m by 0.3 m box with the aperture 0.18 m above its floor
+// (convergence_box_force_after.toml). On 2026-12-03 before that the step was 0.00125 s, first in a square
+// 0.3 m box with the aperture at 0.09 m, whose floor pushed the bell 2.9% farther at 0.6 Hz, then in this
+// box, where it missed the 0.6 Hz grid check (+5.8%). From 2026-11-29 to 2026-12-03 it was the same body
+// and fluid with the force before the advection at 0.000625 s in a box 1.5 times as tall
+// (convergence.toml's setting; the two meet in their 1 mm step limits within 0.1-1.4%); until 2026-11-29
+// ν = 1.304e-5, the Hermite curve at T_max 5, the hat kernel, segments following the grid, 2 mm cells in
+// a 0.4 m box at 0.00125 s. The files measured on an earlier setting pin it in their [params].
 
 // bell_segments = 0 follows the grid: the fewest even segments whose drawn length is at most
 // marker_spacing_cells cells (issue 13: markers about half a cell apart, so that the boundary does
@@ -314,11 +314,10 @@ JellyfishKind::JellyfishKind() {
                     "matters most: with the aperture 0.09 m above the floor (the square 0.3 m box of 2026-12-03) "
                     "the bell swims 2.9 / 0.7 / 1.2% farther",
       .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m; also 50). 250 by default, 1 mm cells: at "
-                   "0.6-0.8 Hz the 0.5 mm grid (dt halved alongside) moves the distance per cycle by +5.8 / +2.0 / "
-                   "-1.7% in the default box, beyond the 5% check at 0.6 Hz, where halving the step alone gives "
-                   "+3.4% (convergence_box_force_after.toml); in the square 0.3 m box +3.6 / +1.8 / -2.9%, the "
-                   "stroke +1.4 to +3.3%, 2 mm 7-24% off (convergence_force_after.toml; on the earlier default "
-                   "+0.9 / -0.5 / -1.0%, convergence.toml)",
+                   "0.6-0.8 Hz the 0.5 mm grid (dt halved alongside, at the default 0.000625 s) moves the distance "
+                   "per cycle by +2.9 / +1.3 / -2.8%, the stroke by +1.4 / +1.3 / +3.1%, 2 mm is 12-15% off "
+                   "(convergence_default.toml); at twice the step +5.8 / +2.0 / -1.7%, beyond the 5% check at "
+                   "0.6 Hz (convergence_box_force_after.toml)",
       .cells = 250,
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 5e-5,
@@ -360,17 +359,16 @@ JellyfishKind::JellyfishKind() {
       real("viscosity_tolerance", fluid::FluidParams{}.viscosity_tolerance, "", 1e-14, 1e-2,
            "relative residual of the implicit viscous solve (fluid/diffusion2.hpp); raising it perturbs the flow "
            "slightly, a test of how sensitive a distance over several cycles is"),
-      real("dt_s", 0.00125, "s", 1e-7, 0.1,
+      real("dt_s", 0.000625, "s", 1e-7, 0.1,
            "coupled step, first order in time (ib/coupling.hpp); the grid study halves it with the cell (dt ∝ dx: "
-           "0.0025, 0.00125, 0.000625 s on 2, 1, 0.5 mm; convergence_force_after.toml). On 1 mm cells with the "
-           "force after the advection (force_stage) 0.00125 / 0.000625 / 0.0003125 s give 1.4916 / 1.5063 / "
-           "1.5132 mm per cycle at 0.7 Hz, 1.8% below the Richardson limit (2.7% and 1.0% at 0.6 and 0.8 Hz), "
-           "the stroke within 0.3%, in the square 0.3 m box; in the default box halving it moves the 0.6 Hz "
-           "distance +3.4% (convergence_box_force_after.toml). With the force before it (the default until "
-           "2026-12-03) 0.000625 / 0.0003125 / 0.00015625 s gave 1.5945 / 1.5504 / 1.5334, 4.7% above its limit "
-           "at 0.000625 s where the force "
-           "after is 0.8% below (convergence_step_scheme.toml). The paper's 0.01 s is stable with the "
-           "semi-implicit step"),
+           "0.00125, 0.000625, 0.0003125 s on 2, 1, 0.5 mm; convergence_default.toml). On 1 mm in the default box "
+           "0.00125 / 0.000625 / 0.0003125 s give 1.6167 / 1.6722 / 1.7026, 1.4741 / 1.4898 / 1.4963 and 1.0863 / "
+           "1.1004 / 1.1083 mm per cycle at 0.6 / 0.7 / 0.8 Hz (observed order 0.87, 1.3, 0.83): 0.000625 s lies "
+           "3.9 / 0.7 / 1.6% below the Richardson limits, 0.00125 s (the default on the morning of 2026-12-03) 7.0 "
+           "/ 1.8 / 2.9%, and missed the 0.6 Hz grid check; the stroke moves under 0.5%. With the force before the "
+           "advection (force_stage; the default until 2026-12-03) 0.000625 / 0.0003125 / 0.00015625 s gave "
+           "1.5945 / 1.5504 / 1.5334 at 0.7 Hz, 4.7% above its limit at 0.000625 s (convergence_step_scheme.toml). "
+           "The paper's 0.01 s is stable with the semi-implicit step"),
       choice("force_stage", "after_advection", {"before_advection", "after_advection"},
              "where the bell's force enters the fluid step: after the advection (the default since 2026-12-03: the "
              "force a source of the momentum equation, Peskin 2002 §6), or before it (Stam 1999 §2.2, the paper's "
@@ -378,7 +376,8 @@ JellyfishKind::JellyfishKind() {
              "gradient part. Both are first order in dt; on 1 mm at 0.7 Hz, 0.0025 / 0.00125 / "
              "0.000625 s give 1.438 / 1.492 / 1.506 mm per cycle with the force after (observed order 1.9, limit "
              "1.512) and 1.799 / 1.665 / 1.595 with it before (order 1, limit 1.523; probes of 2026-12-03 and "
-             "convergence_step_scheme.toml in the tall box), so the force after lets 1 mm take 0.00125 s"),
+             "convergence_step_scheme.toml in the tall box); at 0.6 Hz in the default box the force after is first "
+             "order too (dt_s)"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
       real("start_y_fraction", 0.6, "", 0.05, 0.95,
            "aperture's starting height in the box (the bell swims up, its wake goes down): 0.18 m above the floor "

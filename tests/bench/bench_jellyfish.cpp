@@ -268,11 +268,11 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 
-// The kind's default setting since 2026-12-03 (issue 13 §4; experiments/jellyfish/
-// convergence_force_after.toml): BM_SimulatedSecondViscousPulse's bell, fluid and 1 mm cells with the
-// force added after the advection (FluidParams::force_stage), whose step error lets 1 mm take
-// 0.00125 s, in a square 0.3 m box (the tall one's extra half is still water at 0.6-0.8 Hz). Issue 13
-// §4's goal, an 11 s point in 60 s of CPU, is 0.18 simulated s per CPU s (sim_s_per_wall_s).
+// The kind's default setting (issue 13 §4; experiments/jellyfish/convergence_default.toml):
+// BM_SimulatedSecondViscousPulse's bell, fluid and 1 mm cells with the force added after the advection
+// (FluidParams::force_stage). On the morning of 2026-12-03 it took 0.00125 s in a square 0.3 m box
+// (convergence_force_after.toml), the first figures below. Issue 13 §4's goal, an 11 s point in 60 s
+// of CPU, is 0.18 simulated s per CPU s (sim_s_per_wall_s).
 // Measured 2026-12-03 09:31-09:35 UTC, idle machine, two runs interleaved with
 // BM_SimulatedSecondViscousPulse/300/8 (the default until then): 7731 / 8041 ms per simulated second
 // (9.66 / 10.05 ms per step, 0.129 / 0.124 simulated s per CPU s; new factors at 6.6% of the steps)
@@ -280,15 +280,23 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // times slower than on 2026-12-02 (BM_SimulatedSecond/100: 19.8 against 23.8), where the earlier
 // default's whole point took 188 s: this one would take about 67 s there, above the goal.
 // The setting of 2026-12-03 before the box study (a square 0.3 m box, aperture 0.09 m up) is
-// BM_SimulatedSecondDefault/width_mm:300; the default since (convergence_box_force_after.toml: a 0.25 m by
-// 0.3 m box, aperture 0.18 m up, 1 mm cells, 75 000 cells against 90 000) is /width_mm:250. Measured
-// 2026-12-03 12:27-12:30 UTC, idle machine, two interleaved runs: 250 6737 / 7281 ms per simulated second
-// (8.42 / 9.10 ms per step), 300 8064 / 7819 (10.08 / 9.77): 0.84-0.93 of the square box's cost. An 11.43 s
-// point at 0.7 Hz is then 77-83 s of CPU on this host, which ran the paper's grid (BM_SimulatedSecond/100,
-// Peskin's kernel) at 18.8 simulated s per CPU s against 23.8 on 2026-12-02: about 61-66 s there, just
-// above issue 13's 60 s.
+// BM_SimulatedSecondDefault/width_mm:300/dt_us:1250; the box since (convergence_box_force_after.toml: a
+// 0.25 m by 0.3 m box, aperture 0.18 m up, 1 mm cells, 75 000 cells against 90 000) is width_mm:250.
+// Measured 2026-12-03 12:27-12:30 UTC, idle machine, two interleaved runs at 0.00125 s: 250 6737 / 7281 ms
+// per simulated second (8.42 / 9.10 ms per step), 300 8064 / 7819 (10.08 / 9.77): 0.84-0.93 of the square
+// box's cost. An 11.43 s point at 0.7 Hz is then 77-83 s of CPU on this host, which ran the paper's grid
+// (BM_SimulatedSecond/100, Peskin's kernel) at 18.8 simulated s per CPU s against 23.8 on 2026-12-02: about
+// 61-66 s there, just above issue 13's 60 s. The default step is 0.000625 s since the step study in the
+// default box (convergence_default.toml: at 0.6 Hz 0.00125 s lay about 7% below its step limit and missed
+// the grid check), width_mm:250/dt_us:625. Measured 2026-12-03 15:50-15:53 UTC, idle machine, two runs:
+// 11501 / 11584 ms per simulated second (7.19 / 7.24 ms per step: the banded system is refactored at
+// 0.87% of the steps against 6.6% at 0.00125 s, whose runs gave 6283 / 5883 ms, 7.85 / 7.35 ms per step;
+// width_mm:300 7264 / 6843). An 11.43 s point at 0.7 Hz is then 131-132 s of CPU; the host ran the paper's
+// grid at 19.8-19.9 simulated s per CPU s (23.8 on 2026-12-02), so about 110 s there: 1.8 times issue 13's
+// 60 s.
 void BM_SimulatedSecondDefault(benchmark::State& state) {
   const int width_mm = static_cast<int>(state.range(0));
+  const int dt_us = static_cast<int>(state.range(1));
   SwimmerConfig c = viscousPulseConfig(300);  // 1 mm cells: 300 across 0.3 m
   c.fluid.domain_width_m = width_mm / 1000.0;  // the literal 0.25 or 0.3, correctly rounded
   c.fluid.cells_x = width_mm;
@@ -296,13 +304,14 @@ void BM_SimulatedSecondDefault(benchmark::State& state) {
   c.fluid.cells_y = 300;
   c.start_y_fraction = width_mm == 300 ? 0.3 : 0.6;  // the aperture 0.09 m up in the square box, else 0.18 m
   c.fluid.force_stage = fluid::ForceStage::after_advection;
-  c.fluid.fixed_step_s = c.dt_s = 0.00125;
+  c.fluid.fixed_step_s = c.dt_s = dt_us / 1e6;  // the literal 0.000625 or 0.00125, correctly rounded
   measure(state, c);
 }
 BENCHMARK(BM_SimulatedSecondDefault)
-    ->ArgNames({"width_mm"})
-    ->Arg(250)
-    ->Arg(300)
+    ->ArgNames({"width_mm", "dt_us"})
+    ->Args({250, 625})
+    ->Args({250, 1250})
+    ->Args({300, 1250})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
