@@ -310,7 +310,9 @@ JellyfishKind::JellyfishKind() {
       .domain_doc = "width of the free-slip box (its height is box_aspect times it): 6.25 diameters. The default "
                     "0.25 m by 0.3 m box, the aperture 0.18 m above the floor, is 0.9 / 0.5 / 0.3% below a 0.4 m by "
                     "0.6 m one (10 diameters, the paper's width, §3.2) in the 1 mm distance per cycle at 0.6 / 0.7 / "
-                    "0.8 Hz, at a third of its cells (convergence_box_force_after.toml). The depth below the bell "
+                    "0.8 Hz and 0.00125 s, at a third of its cells (convergence_box_force_after.toml); at the default step "
+                    "0.000625 s -1.3 / -0.3 / -0.5%, beyond that study's 1% at 0.6 Hz (convergence_default.toml), "
+                    "about 1% of it for the 0.12 m of water above the aperture. The depth below the bell "
                     "matters most: with the aperture 0.09 m above the floor (the square 0.3 m box of 2026-12-03) "
                     "the bell swims 2.9 / 0.7 / 1.2% farther",
       .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m; also 50). 250 by default, 1 mm cells: at "
