@@ -42,13 +42,14 @@ std::vector<Knot> knots(const ParamReader& r) {
 constexpr double kCalibratedBendingRigidity = 1.0e-4;
 constexpr double kCalibratedTension = 14.0;
 
-// The default setting is that of convergence_default.toml (issue 13 §1, §4: the grid, step and scheme
-// checks pass at 0.6-0.8 Hz, the grid +2.9 / +1.3 / -2.8%): ν = 5e-5 m²/s, the 0.3 s activation pulse,
-// Peskin's kernel at the bell's 4 mm, 256 segments, 1 mm cells, the force added after the advection at
-// 0.000625 s, in a 0.25 m by 0.3 m box with the aperture 0.18 m above its floor
-// (convergence_box_force_after.toml). On 2026-12-03 before that the step was 0.00125 s, first in a square
-// 0.3 m box with the aperture at 0.09 m, whose floor pushed the bell 2.9% farther at 0.6 Hz, then in this
-// box, where it missed the 0.6 Hz grid check (+5.8%). From 2026-11-29 to 2026-12-03 it was the same body
+// The default setting is that of convergence_default.toml (issue 13 §1, §4: the grid, step, scheme and
+// box checks pass at 0.6-0.8 Hz): ν = 5e-5 m²/s, the 0.3 s activation pulse, Peskin's kernel at the
+// bell's 4 mm, 256 segments, 1 mm cells, the force added after the advection at 0.000625 s, in a 0.25 m
+// by 0.36 m box with the aperture 0.18 m above its floor (convergence_box_default.toml). In the
+// afternoon of 2026-12-03 the box was 0.3 m tall, 1.3% short of a 0.4 m by 0.6 m box at 0.6 Hz
+// (convergence_short_box.toml); before that the step was 0.00125 s, first in a square
+// 0.3 m box with the aperture at 0.09 m, whose floor pushed the bell 2.9% farther at 0.6 Hz, then in the
+// 0.3 m tall box, where it missed the 0.6 Hz grid check (+5.8%). From 2026-11-29 to 2026-12-03 it was the same body
 // and fluid with the force before the advection at 0.000625 s in a box 1.5 times as tall
 // (convergence.toml's setting; the two meet in their 1 mm step limits within 0.1-1.4%); until 2026-11-29
 // ν = 1.304e-5, the Hermite curve at T_max 5, the hat kernel, segments following the grid, 2 mm cells in
@@ -308,19 +309,17 @@ JellyfishKind::JellyfishKind() {
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
       .domain_m = 0.25,
       .domain_doc = "width of the free-slip box (its height is box_aspect times it): 6.25 diameters. The default "
-                    "0.25 m by 0.3 m box, the aperture 0.18 m above the floor, is 0.9 / 0.5 / 0.3% below a 0.4 m by "
-                    "0.6 m one (10 diameters, the paper's width, §3.2) in the 1 mm distance per cycle at 0.6 / 0.7 / "
-                    "0.8 Hz and 0.00125 s, at a third of its cells (convergence_box_force_after.toml); at the default step "
-                    "0.000625 s -1.3 / -0.3 / -0.5%, beyond that study's 1% at 0.6 Hz (convergence_default.toml), "
-                    "about 1% of it for the 0.12 m of water above the aperture. The depth below the bell "
+                    "0.25 m by 0.36 m box, the aperture 0.18 m above the floor, is 0.53 / 0.17 / 0.22% below a 0.4 m "
+                    "by 0.6 m one (10 diameters, the paper's width, §3.2) in the 1 mm distance per cycle at 0.6 / 0.7 / "
+                    "0.8 Hz and the default step, at 3/8 of its cells (convergence_default.toml); the width (0.25 to "
+                    "0.4 m) moves it by at most 0.3% (convergence_box_force_after.toml). The depth below the bell "
                     "matters most: with the aperture 0.09 m above the floor (the square 0.3 m box of 2026-12-03) "
                     "the bell swims 2.9 / 0.7 / 1.2% farther",
       .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m; also 50). 250 by default, 1 mm cells: at "
                    "0.6-0.8 Hz the 0.5 mm grid (dt halved alongside, at the default 0.000625 s) moves the distance "
-                   "per cycle by +2.9 / +1.3 / -2.8%, the stroke by +1.4 / +1.3 / +3.1%, 2 mm is 12-15% off "
+                   "per cycle by +2.4 / +1.3 / -3.1%, the stroke by +1.3 / +1.3 / +3.1%, 2 mm is 11-15% off "
                    "(convergence_default.toml); at twice the step +5.8 / +2.0 / -1.7%, beyond the 5% check at "
-                   "0.6 Hz (convergence_box_force_after.toml)",
-      .cells = 250,
+                   "0.6 Hz (in the 0.3 m tall box, convergence_box_force_after.toml)",
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 5e-5,
       .viscosity_doc = "38 times water, Re about 16 for the 4 cm bell (2D IB jellyfish studies run Re 10-300). The "
@@ -364,13 +363,13 @@ JellyfishKind::JellyfishKind() {
       real("dt_s", 0.000625, "s", 1e-7, 0.1,
            "coupled step, first order in time (ib/coupling.hpp); the grid study halves it with the cell (dt ∝ dx: "
            "0.00125, 0.000625, 0.0003125 s on 2, 1, 0.5 mm; convergence_default.toml). On 1 mm in the default box "
-           "0.00125 / 0.000625 / 0.0003125 s give 1.6167 / 1.6722 / 1.7026, 1.4741 / 1.4898 / 1.4963 and 1.0863 / "
-           "1.1004 / 1.1083 mm per cycle at 0.6 / 0.7 / 0.8 Hz (observed order 0.87, 1.3, 0.83): 0.000625 s lies "
-           "3.9 / 0.7 / 1.6% below the Richardson limits, 0.00125 s (the default on the morning of 2026-12-03) 7.0 "
-           "/ 1.8 / 2.9%, and missed the 0.6 Hz grid check; the stroke moves under 0.5%. With the force before the "
-           "advection (force_stage; the default until 2026-12-03) 0.000625 / 0.0003125 / 0.00015625 s gave "
-           "1.5945 / 1.5504 / 1.5334 at 0.7 Hz, 4.7% above its limit at 0.000625 s (convergence_step_scheme.toml). "
-           "The paper's 0.01 s is stable with the semi-implicit step"),
+           "0.00125 / 0.000625 / 0.0003125 s give 1.6251 / 1.6858 / 1.7067, 1.4781 / 1.4924 / 1.4994 and 1.0882 / "
+           "1.1037 / 1.1104 mm per cycle at 0.6 / 0.7 / 0.8 Hz (observed order 1.5, 1.0, 1.2): 0.000625 s lies "
+           "1.9 / 0.9 / 1.0% below the Richardson limits, 0.00125 s (the default on the morning of 2026-12-03) 5.4 "
+           "/ 1.9 / 2.4%, and missed the 0.6 Hz grid check in the 0.3 m tall box; the stroke moves under 0.5%. With "
+           "the force before the advection (force_stage; the default until 2026-12-03) 0.000625 / 0.0003125 / "
+           "0.00015625 s gave 1.5945 / 1.5504 / 1.5334 at 0.7 Hz, 4.7% above its limit at 0.000625 s "
+           "(convergence_step_scheme.toml). The paper's 0.01 s is stable with the semi-implicit step"),
       choice("force_stage", "after_advection", {"before_advection", "after_advection"},
              "where the bell's force enters the fluid step: after the advection (the default since 2026-12-03: the "
              "force a source of the momentum equation, Peskin 2002 §6), or before it (Stam 1999 §2.2, the paper's "
@@ -378,24 +377,25 @@ JellyfishKind::JellyfishKind() {
              "gradient part. Both are first order in dt; on 1 mm at 0.7 Hz, 0.0025 / 0.00125 / "
              "0.000625 s give 1.438 / 1.492 / 1.506 mm per cycle with the force after (observed order 1.9, limit "
              "1.512) and 1.799 / 1.665 / 1.595 with it before (order 1, limit 1.523; probes of 2026-12-03 and "
-             "convergence_step_scheme.toml in the tall box); at 0.6 Hz in the default box the force after is first "
-             "order too (dt_s)"),
+             "convergence_step_scheme.toml in the tall box); in the default box at 0.000625 s and below the force after "
+             "shows order 1.0-1.5 at 0.6-0.8 Hz (dt_s; in the 0.3 m tall box 0.83-1.3)"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
-      real("start_y_fraction", 0.6, "", 0.05, 0.95,
+      real("start_y_fraction", 0.5, "", 0.05, 0.95,
            "aperture's starting height in the box (the bell swims up, its wake goes down): 0.18 m above the floor "
            "in the default box. At 0.09 m (0.3 in the square 0.3 m box of "
            "2026-12-03, 0.2 in the tall one before it) the floor pushes the bell 2.9% farther at 0.6 Hz; at 0.18 m "
            "with 0.27 m above (a 0.45 m tall box) it is within 0.1% of a 0.4 m by 0.6 m box "
-           "(convergence_box_force_after.toml)"),
-      real("box_aspect", 1.2, "", 0.25, 8,
-           "box height / width (domain_m is the width); cells * box_aspect must be whole (with the default 1.2: "
-           "cells a multiple of 5). The default box is 0.3 m "
-           "tall: 0.12 m above the aperture, where the bell swims 9-11 mm in its window at 0.6-0.8 Hz; 0.27 m "
-           "above (a 0.3 m by 0.45 m box) moves its distance per cycle by +0.8 / +0.4 / +0.3% at 0.6 / 0.7 / "
-           "0.8 Hz at 1.8 times the cells (convergence_box_force_after.toml, at 0.00125 s); at the default step 0.18 "
-           "m above (box_aspect 1.44, start_y_fraction 0.5) moves it +0.8 / +0.2 / +0.3%, to within 0.53% of a "
-           "0.4 m by 0.6 m box (convergence_box_default.toml). A fast swimmer needs a taller box "
-           "to swim its whole window without meeting the top wall"),
+           "(convergence_box_force_after.toml, at 0.00125 s). 0.6 in the 0.3 m tall box, the default until the "
+           "evening of 2026-12-03"),
+      real("box_aspect", 1.44, "", 0.25, 8,
+           "box height / width (domain_m is the width); cells * box_aspect must be whole (with the default 1.44: "
+           "cells a multiple of 25). The default box is 0.36 m tall, 0.18 m of water above the aperture, where "
+           "the bell swims 9-11 mm in its window at 0.6-0.8 Hz: at the default step it lies -0.53 / -0.17 / "
+           "-0.22% from a 0.4 m by 0.6 m box in distance per cycle at 0.6 / 0.7 / 0.8 Hz, where the 0.3 m tall "
+           "box (1.2, the default until the evening of 2026-12-03, 0.12 m above the aperture) lay -1.3 / -0.3 / "
+           "-0.5%, beyond the 1% bound at 0.6 Hz (convergence_short_box.toml); 0.195 and 0.22 m above change "
+           "it by 0.04% more (convergence_box_default.toml). A fast swimmer needs a taller box to swim its "
+           "whole window without meeting the top wall"),
       // --- measurement
       real("warmup_cycles", 1.0, "", 0, 1000, "cycles before the measured window"),
       real("duration_s", 10.0, "s", 1e-6, 1e6,
