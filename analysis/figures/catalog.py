@@ -69,7 +69,8 @@ FIGURES = [
            "staggered / unison ratio 0.886 against 0.840; both below the paper's 1.68.",
            "stagger_quick", "rm_fig4", None),
     Figure("rm", "Fig. 4 (default setting)",
-           "Fig. 4 on the kind's default setting at its speed peak (0.65 Hz): staggered / unison distance per cycle "
+           "Fig. 4 on the kind's default setting at its speed peak (0.65 Hz), in the 0.25 m by 0.3 m box (the default "
+           "box until the evening of 2026-12-03, pinned): staggered / unison distance per cycle "
            "0.848 on 1 mm at 0.00125 s, 0.846 at the default 0.000625 s, 0.836 on 0.5 mm, 0.834 there with upwind2_rk2 "
            "(the grid, step and "
            "scheme checks pass), not the paper's 1.68; unison swims forward (stagger_default, make reproduce-full).",
@@ -85,11 +86,10 @@ FIGURES = [
            "frequency_sweep_viscous", "rm_fig5", None),
     Figure("rm", "Fig. 5 (default setting)",
            "The same claim on the kind's default setting since 2026-12-03: 1 mm cells, the force added after the "
-           "advection at 0.000625 s, in a 0.25 m by 0.3 m box 0.3-1.3% below a 0.4 m by 0.6 m one (the 0.6 Hz "
-           "box check, 1%, fails), whose grid (0.5 mm: +2.9, +1.3, -2.8% at 0.6-0.8 Hz), step (+0.4 to "
-           "+1.8%) and scheme (upwind2_rk2: -0.4 to -0.6%) checks pass (convergence_default). The mean speed peaks at 0.65 Hz (1.13 "
-           "f_n; 1.3% above 0.7 Hz, about 4% on 0.5 mm) and the stroke at 0.55 Hz (0.956 f_n), as on the earlier "
-           "converged setting.",
+           "advection at 0.000625 s, in a 0.25 m by 0.36 m box 0.2-0.5% below a 0.4 m by 0.6 m one, whose grid "
+           "(0.5 mm: +2.4, +1.3, -3.1% at 0.6-0.8 Hz), step (+0.5 to +1.2%), scheme (upwind2_rk2: -0.4 to -0.6%) "
+           "and box (1%) checks pass (convergence_default). The mean speed peaks at 0.65 Hz (1.13 f_n; 1.5% above "
+           "0.7 Hz, 4.0% on 0.5 mm) and the stroke at 0.55 Hz (0.955 f_n), as on the earlier converged setting.",
            "frequency_sweep_default", "rm_fig5", None),
     Figure("rm", "Fig. 5 (converged setting), QUICK",
            "Fig. 5 on that setting, QUICK: 2 mm cells at twice the step. Against 1 mm at 0.000625 s "
