@@ -320,6 +320,7 @@ JellyfishKind::JellyfishKind() {
                    "per cycle by +2.4 / +1.3 / -3.1%, the stroke by +1.3 / +1.3 / +3.1%, 2 mm is 11-15% off "
                    "(convergence_default.toml); at twice the step +5.8 / +2.0 / -1.7%, beyond the 5% check at "
                    "0.6 Hz (in the 0.3 m tall box, convergence_box_force_after.toml)",
+      .cells = 250,
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 5e-5,
       .viscosity_doc = "38 times water, Re about 16 for the 4 cm bell (2D IB jellyfish studies run Re 10-300). The "

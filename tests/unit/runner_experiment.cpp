@@ -680,6 +680,27 @@ TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
   EXPECT_GE(n, 3);
 }
 
+TEST(RunnerExperiment, JellyfishDefaultsAreTheSettingItsConvergenceStudyMeasures) {
+  // The kind's defaults are documented as convergence_default.toml's "1 mm" case (src/kinds/jellyfish.cpp);
+  // a default that drifts from it (a dropped or changed default) would leave the study measuring
+  // another setting than the one `creaturelab run` gives.
+  const std::filesystem::path file =
+      std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / "experiments/jellyfish/convergence_default.toml";
+  const std::vector<Point> study = points(runner::loadExperiment(file.string(), {}, registry()));
+  int compared = 0;
+  for (const Point& p : study) {
+    if (p.label != "1 mm") continue;
+    const double hz = std::get<double>(p.params.at("contraction_hz"));
+    const std::vector<Point> plain =
+        points(load("kind = \"jellyfish\"\n[params]\ncontraction_hz = " + std::to_string(hz) + "\n"));
+    ASSERT_EQ(plain.size(), 1u);
+    for (const auto& [name, value] : p.params)
+      EXPECT_EQ(plain[0].params.at(name), value) << name << " at " << hz << " Hz";
+    ++compared;
+  }
+  EXPECT_EQ(compared, 3);
+}
+
 }  // namespace
 
 TEST(RunnerExperiment, KnownDeviationIsReadAndMustSayWhy) {
