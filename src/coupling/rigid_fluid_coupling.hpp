@@ -50,6 +50,12 @@ namespace creaturelab::coupling {
 // CG tolerance and the kernel's width).
 enum class Forcing { sweeps, projected };
 
+// The projected forcing's CG preconditioner. mass: the direct-forcing mass rho dA_k / dt per marker
+// (a diagonal); gram: the forcing operator without the projection, dt/(rho dx^2) G + eps D (G the
+// stencils' Gram matrix, transfer.hpp), factored once per step. Markers half a cell apart share
+// most of their 4 x 4 stencils, which the diagonal ignores.
+enum class ForcingPreconditioner { mass, gram };
+
 struct RigidFluidParams {
   Forcing forcing = Forcing::projected;
   ib::Kernel kernel = ib::Kernel::peskin4;
@@ -64,6 +70,7 @@ struct RigidFluidParams {
   // projected: CG stops when every marker's velocity is met to this fraction of the largest speed.
   double forcing_tolerance = 1e-3;
   int max_forcing_iterations = 50;
+  ForcingPreconditioner forcing_preconditioner = ForcingPreconditioner::mass;
   // projected: Tikhonov weight on the marker forces (relative to the direct-forcing mass), which
   // damps forces that do not reach the fluid (see projectedForcing); it lets the markers slip by
   // about this fraction of their forcing.
@@ -152,6 +159,8 @@ class RigidFluidCoupling {
   ib::Transfer transfer_;
   std::vector<fluid::Vec2> previous_, current_, velocity_, sampled_, sweep_, force_, z_, direction_, applied_;
   fluid::MacGrid2 work_;
+  Eigen::SparseMatrix<double> gram_;  // the gram preconditioner's A0 (scratch of projectedForcing)
+  Eigen::VectorXd packed_;            // its right-hand side and solution, 2 k + component
   int iterations_ = 0;
   double forcing_residual_m_per_s_ = 0;
   fluid::FaceVectorField2 spread_;

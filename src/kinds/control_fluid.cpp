@@ -38,6 +38,8 @@ coupling::RigidFluidParams rigidFluidParams(const ParamReader& r) {
   c.marker_spacing_cells = r.real("marker_spacing_cells");
   c.forcing_tolerance = r.real("forcing_tolerance");
   c.max_forcing_iterations = int(r.integer("max_forcing_iterations"));
+  c.forcing_preconditioner = r.text("forcing_preconditioner") == "gram" ? coupling::ForcingPreconditioner::gram
+                                                                         : coupling::ForcingPreconditioner::mass;
   c.depth_m = r.real("depth_m");
   c.origin_x_m = r.real("origin_x_m");
   c.origin_z_m = r.real("origin_z_m");
@@ -153,6 +155,9 @@ ControlFluidKind::ControlFluidKind() {
       real("marker_spacing_cells", 0.5, "cells", 1e-3, 1e3, "outline marker spacing; at most 1 cell (leak)"),
       real("forcing_tolerance", 1e-3, "", 1e-12, 1, "projected forcing: CG tolerance, fraction of the largest speed"),
       integer("max_forcing_iterations", 50, 1, 10000, "projected forcing: CG iterations at most per step"),
+      choice("forcing_preconditioner", "mass", {"mass", "gram"},
+             "projected forcing: CG preconditioner (mass: each marker's direct-forcing mass; gram: the forcing "
+             "without the projection, its stencils' Gram matrix factored each step)"),
       real("depth_m", 1.0, "m", 1e-6, 1e3, "bodies' extent along y (the fluid is per metre of depth)"),
       real("origin_x_m", -1.2, "m", -1e4, 1e4, "world x of the fluid box's left wall"),
       real("origin_z_m", -2.0, "m", -1e4, 1e4, "world z of the fluid box's floor"),
