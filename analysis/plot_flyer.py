@@ -96,9 +96,10 @@ def vorticity_figure(points, png):
 
 def window(f):
     """The setting a held point is the reference for: grid, step, scheme, the flaps averaged and the
-    projected forcing's tolerance."""
+    projected forcing's tolerance and preconditioner (points before it was a parameter: mass)."""
+    preconditioner = text(f, "forcing_preconditioner") or "mass"
     return (f"{resolution(f)}, {int(f.attrs['force_cycles'])} flaps, "
-            f"forcing {float(f.attrs.get('forcing_tolerance', 0)):g}")
+            f"forcing {float(f.attrs.get('forcing_tolerance', 0)):g} {preconditioner}")
 
 
 def reading(f):
@@ -139,7 +140,7 @@ def force_table(points, path):
     with open(path, "w") as out:
         out.write("The standard errors treat the flaps as independent samples; the ratio's combines both "
                   "points' relative errors.\n")
-        out.write(f"{'label':36s} {'setting':66s} {'reading':18s} mean_up_force_n  flaps  flap_sd  flap_se  "
+        out.write(f"{'label':36s} {'setting':71s} {'reading':18s} mean_up_force_n  flaps  flap_sd  flap_se  "
                   f"ratio_se  / held\n")
         for f in points:
             force = float(f["metrics/mean_up_force_n"][()])
@@ -155,7 +156,7 @@ def force_table(points, path):
                 ref_se = standard_error(flap_means(ref))
                 ratio_se = f"{force / ref_force * np.hypot(se / force, ref_se / ref_force):8.4f}"
             sd = float(np.std(means, ddof=1)) if len(means) > 1 else float("nan")
-            out.write(f"{text(f, 'label'):36s} {window(f):66s} {reading(f):18s} {force:15.4f}  {len(means):5d}  "
+            out.write(f"{text(f, 'label'):36s} {window(f):71s} {reading(f):18s} {force:15.4f}  {len(means):5d}  "
                       f"{sd:7.3f}  {se:7.3f}  {ratio_se:>8s}  {ratio}\n")
 
 
@@ -195,14 +196,14 @@ def phase_outputs(points, png, path):
     with open(path, "w") as out:
         out.write("Phase means over each point's force window (phase 0: the inner pattern's zero, rising = "
                   "turning the wings down); the stroke split follows the sense the controller followed.\n")
-        out.write(f"{'label':36s} {'setting':66s} down_force_n  up_force_n  (held: down, up)  reversals  "
+        out.write(f"{'label':36s} {'setting':71s} down_force_n  up_force_n  (held: down, up)  reversals  "
                   f"outer_deg by phase bin / force_n by phase bin\n")
         for f in long:
             prof = phase_profile(f)
             ref = held.get(window(f))
             ref_prof = phase_profile(ref) if ref is not None else None
             versus = f"({ref_prof['down']:6.2f}, {ref_prof['up']:6.2f})" if ref_prof else "(-, -)"
-            out.write(f"{text(f, 'label'):36s} {window(f):66s} {prof['down']:12.3f}  {prof['up']:10.3f}  "
+            out.write(f"{text(f, 'label'):36s} {window(f):71s} {prof['down']:12.3f}  {prof['up']:10.3f}  "
                       f"{versus:16s}  {prof['reversals']:9.2f}  " + " ".join(f"{a:6.1f}" for a in prof["outer"])
                       + " / " + " ".join(f"{x:6.2f}" for x in prof["force"]) + "\n")
             name = f"{text(f, 'label')} ({resolution(f)})"

@@ -24,6 +24,16 @@
 //   other by 3-25% on this machine (two 1/1/1 runs at once: 26.6-33.3 ms).
 //   flyer (2 joints, 128^2) 218 on 1 thread, 130 on 2; swimmer 51.0 (128^2, 19.6 frames/s) and 130
 //   (192^2, 7.7 frames/s; goal >= 1).
+// Measured 2026-12-03, 20:45-20:47 UTC, idle machine, one run of 20 frames each, elapsed ms per frame
+// with the projected forcing's preconditioner mass -> gram (forcing_preconditioner; the most CG
+// iterations in any step of the run in brackets):
+//   block, 1 joint, 1 core          21.5 (50) -> 10.1 (26)   with 30 settle steps 142 -> 90.6
+//   flyer 128^2, 1 / 2 threads      249 / 141 (50) -> 183 / 93.0 (22)
+//   flyer 256^2, 1 thread           1191 (50) -> 596 (26)
+//   swimmer 128^2 / 192^2           63.7 / 171 -> 47.3 / 100
+//   The gram factor costs a sparse LDL^T per coupled step (with the Gram assembly and the AMD
+//   ordering about 15% of a held 256^2 flyer step in perf), so it pays more the finer the grid:
+//   the held 256^2 flyer's CG went from 17 projections a step on average to a few.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -43,8 +53,15 @@ fluid::FluidParams box128() {
   return f;
 }
 
-coupling::RigidFluidParams stream() {
+coupling::ForcingPreconditioner preconditioner(benchmark::State& state, int arg) {
+  const bool gram = state.range(arg) != 0;
+  state.counters["gram_preconditioner"] = gram;
+  return gram ? coupling::ForcingPreconditioner::gram : coupling::ForcingPreconditioner::mass;
+}
+
+coupling::RigidFluidParams stream(coupling::ForcingPreconditioner pc) {
   coupling::RigidFluidParams c;
+  c.forcing_preconditioner = pc;
   c.origin_x_m = -1.2;
   c.origin_z_m = -2.0;
   c.inflow.stream_m_per_s = 1.0;
@@ -66,29 +83,36 @@ void timeFrames(benchmark::State& state, FluidController& c) {
 }
 
 void runFrames(benchmark::State& state, const std::string& file, const ControllerParams& p, int settle,
-               const std::vector<std::pair<std::string, double>>& initial, int fluid_threads = 1) {
+               const std::vector<std::pair<std::string, double>>& initial, coupling::ForcingPreconditioner pc,
+               int fluid_threads = 1) {
   const auto model = loadModel(file, p);
   FluidControlParams f;
   f.settle_steps = settle;
   f.average_steps = settle > 0 ? settle / 3 : 1;
   fluid::FluidParams box = box128();
   box.threads = fluid_threads;
-  FluidController c(model, p, f, initial, box, stream());
+  FluidController c(model, p, f, initial, box, stream(pc));
   c.hold(30);  // the flow develops
   timeFrames(state, c);
 }
 
 // block_flow.toml's block, minimising drag along the stream; range(0) settle steps (0: none, the
-// paper's complex examples; 30: block_flow's validation mode).
+// paper's complex examples; 30: block_flow's validation mode); range(1) the forcing's preconditioner
+// (0 mass, 1 gram).
 void BM_BlockFluidFrame(benchmark::State& state) {
   ControllerParams p;
   p.controlled = {"hinge"};
   p.objectives = {Objective::drag_along};
   p.senses = {Sense::minimize};
   p.delta_rad = 0.03;
-  runFrames(state, "/experiments/control/models/block.xml", p, int(state.range(0)), {{"hinge", -0.5}});
+  runFrames(state, "/experiments/control/models/block.xml", p, int(state.range(0)), {{"hinge", -0.5}},
+            preconditioner(state, 1));
 }
-BENCHMARK(BM_BlockFluidFrame)->Arg(0)->Arg(30)->Unit(benchmark::kMillisecond)->Iterations(20);
+BENCHMARK(BM_BlockFluidFrame)
+    ->ArgNames({"settle", "gram"})
+    ->ArgsProduct({{0, 30}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(20);
 
 // The chain of parallel_dofs.toml (five capsules, 2 m) in the stream with the first range(0)
 // joints controlled, on range(1) threads for the evaluations and range(2) inside the frame's own
@@ -106,7 +130,8 @@ void BM_ChainFluidFrame(benchmark::State& state) {
   p.delta_rad = 0.01;  // the 2 m chain's tip within one cell per step (parallel_dofs_fluid.toml)
   p.strength_rad_per_s = 0.5;
   p.substeps = 2;  // four joints stepping together within one cell per step
-  runFrames(state, "/experiments/control/models/chain.xml", p, 0, {{"j0", -0.3}}, int(state.range(2)));
+  runFrames(state, "/experiments/control/models/chain.xml", p, 0, {{"j0", -0.3}},
+            coupling::ForcingPreconditioner::mass, int(state.range(2)));
 }
 BENCHMARK(BM_ChainFluidFrame)
     ->Args({1, 1, 1})->Args({1, 1, 2})->Args({1, 2, 2})->Args({2, 1, 1})->Args({2, 2, 1})->Args({2, 2, 2})->Args({3, 1, 1})
@@ -117,7 +142,8 @@ BENCHMARK(BM_ChainFluidFrame)
 // in a 4 m box with the inflow floor (0.5 m/s) and an open top, inner wing joints PD-driven (30 deg,
 // 0.5 Hz), the two outer joints controlled (drag, sense following the stroke) with flyer.toml's
 // validation mode (8 settle steps, force over 4) and 4 coupled steps a frame. The paper: 3.2 s per
-// frame for the flyer without flesh (§7, its timing table).
+// frame for the flyer without flesh (§7, its timing table). range(0) evaluation threads, range(1)
+// cells per side, range(2) the forcing's preconditioner (0 mass, 1 gram).
 void BM_FlyerFrame(benchmark::State& state) {
   ControllerParams p;
   p.controlled = {"outer_r", "outer_l"};
@@ -142,6 +168,7 @@ void BM_FlyerFrame(benchmark::State& state) {
   f.limit_rad = 3.141592653589793 / 2;
   f.stroke = {{"inner_r", 1.0}, {"inner_l", 1.0}};
   fluid::FluidParams box = box128();
+  box.cells_x = box.cells_y = int(state.range(1));
   box.density_kg_per_m3 = 1.2;
   box.kinematic_viscosity_m2_per_s = 0.005;
   box.walls.left.type = box.walls.right.type = fluid::WallType::free_slip;
@@ -153,17 +180,24 @@ void BM_FlyerFrame(benchmark::State& state) {
   source.inflow.stream_m_per_s = 0.0;
   source.inflow.source_m_per_s = 0.5;
   source.inflow.source_rows = 0;
+  source.forcing_preconditioner = preconditioner(state, 2);
   FluidController c(model, p, f, {}, box, source);
   c.hold(30);
   timeFrames(state, c);
 }
-BENCHMARK(BM_FlyerFrame)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(20);
+BENCHMARK(BM_FlyerFrame)
+    ->ArgNames({"threads", "cells", "gram"})
+    ->ArgsProduct({{1, 2}, {128}, {0, 1}})
+    ->Args({1, 256, 0})
+    ->Args({1, 256, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(20);
 
 // The swimmer of experiments/control/swimmer.toml (Lentine et al. 2010 §7.2, Fig. 7; issue 16's
 // goal: >= 1 frame per second on one core, 128^2): five controlled legs, the mouth's phases, the
 // free root stabilised by its armature, range(0)^2 cells in 3 m (128; 192: swimmer.toml's grid),
 // closed walls but the open top. One iteration is one frame in phase 1 (draw in, minimise the
-// downward force), the fluid at rest before.
+// downward force), the fluid at rest before. range(1): the forcing's preconditioner (0 mass, 1 gram).
 void BM_SwimmerFrame(benchmark::State& state) {
   ControllerParams p;
   p.controlled = {"leg_l2", "leg_l1", "leg_r1", "leg_r2", "leg_top"};
@@ -185,6 +219,7 @@ void BM_SwimmerFrame(benchmark::State& state) {
   cp.origin_x_m = -1.5;
   cp.origin_z_m = -1.0;
   cp.max_forcing_iterations = 100;
+  cp.forcing_preconditioner = preconditioner(state, 1);
   cp.mouth.body = "body";
   cp.mouth.centre_z_m = -0.21;
   cp.mouth.width_m = 0.14;
@@ -193,7 +228,11 @@ void BM_SwimmerFrame(benchmark::State& state) {
   FluidController c(model, p, f, {}, fp, cp);
   timeFrames(state, c);
 }
-BENCHMARK(BM_SwimmerFrame)->Arg(128)->Arg(192)->Unit(benchmark::kMillisecond)->Iterations(20);
+BENCHMARK(BM_SwimmerFrame)
+    ->ArgNames({"cells", "gram"})
+    ->ArgsProduct({{128, 192}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(20);
 
 }  // namespace
 }  // namespace creaturelab::control
