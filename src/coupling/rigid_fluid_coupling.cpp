@@ -230,8 +230,13 @@ void RigidFluidCoupling::projectedForcing(double dt) {
     // q = P S p dt / rho, in work_.
     spread_.fill(0.0);
     transfer_.spread(direction_, spread_);
-    work_.u_m_per_s = spread_.x;
-    work_.v_m_per_s = spread_.y;
+    // The spread field becomes work_'s velocity by a swap, not a copy; spread_ takes work_'s old
+    // arrays (the right shape after the first iteration) and is zeroed again before its next use.
+    std::swap(work_.u_m_per_s, spread_.x);
+    std::swap(work_.v_m_per_s, spread_.y);
+    if (spread_.x.nx() != work_.u_m_per_s.nx() || spread_.x.ny() != work_.u_m_per_s.ny() ||
+        spread_.y.nx() != work_.v_m_per_s.nx() || spread_.y.ny() != work_.v_m_per_s.ny())
+      spread_ = fluid::FaceVectorField2(g.nx, g.ny);
     const double to_velocity = dt / rho;
     scaleBy(work_.u_m_per_s, to_velocity);
     scaleBy(work_.v_m_per_s, to_velocity);
