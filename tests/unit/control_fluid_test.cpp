@@ -41,9 +41,11 @@ PlateStream plateStream(const std::string& xml) {
 // Two hinged plates in a stream on 32^2: three frames on `threads` threads for the evaluations
 // and `fluid_threads` inside the fluid steps.
 std::vector<double> run(const std::string& xml, int threads, Perturbation how = Perturbation::moved,
-                        int fluid_threads = 1) {
+                        int fluid_threads = 1,
+                        coupling::ForcingPreconditioner pc = coupling::ForcingPreconditioner::mass) {
   PlateStream s = plateStream(xml);
   s.fluid.threads = fluid_threads;
+  s.coupling.forcing_preconditioner = pc;
   ControllerParams p;
   p.controlled = {"j0", "j1"};
   p.objectives = {Objective::drag_along, Objective::drag};
@@ -69,27 +71,36 @@ std::vector<double> run(const std::string& xml, int threads, Perturbation how = 
 
 TEST_F(ControlFluidTest, BitwiseSameForAnyThreadCount) {
   const std::string xml = testing::writeText(file("chain.xml"), testing::chainXml(2));
-  for (Perturbation how : {Perturbation::moved, Perturbation::placed}) {
-    const auto one = run(xml, 1, how);
-    // 2 threads: one joint's two evaluations each; 3: the four evaluations split 1, 1, 2, so
-    // joint 0's two run on different threads and scratch states.
-    for (int threads : {2, 3}) {
-      const auto parallel = run(xml, threads, how);
-      ASSERT_EQ(one.size(), parallel.size());
-      EXPECT_EQ(0, std::memcmp(one.data(), parallel.data(), one.size() * sizeof(double)))
-          << threads << " threads, " << (how == Perturbation::placed ? "placed" : "moved");
+  using coupling::ForcingPreconditioner;
+  std::vector<std::vector<double>> single;  // one thread, each preconditioner and perturbation
+  for (ForcingPreconditioner pc : {ForcingPreconditioner::mass, ForcingPreconditioner::gram})
+    for (Perturbation how : {Perturbation::moved, Perturbation::placed}) {
+      const std::string name = std::string(how == Perturbation::placed ? "placed" : "moved") +
+                               (pc == ForcingPreconditioner::gram ? ", gram" : ", mass");
+      const auto one = run(xml, 1, how, 1, pc);
+      single.push_back(one);
+      // 2 threads: one joint's two evaluations each; 3: the four evaluations split 1, 1, 2, so
+      // joint 0's two run on different threads and scratch states.
+      for (int threads : {2, 3}) {
+        const auto parallel = run(xml, threads, how, 1, pc);
+        ASSERT_EQ(one.size(), parallel.size());
+        EXPECT_EQ(0, std::memcmp(one.data(), parallel.data(), one.size() * sizeof(double)))
+            << threads << " threads, " << name;
+      }
+      // Fluid threads: with one evaluation thread every fluid takes them, with two only the frame's.
+      for (int threads : {1, 2}) {
+        const auto parallel = run(xml, threads, how, 2, pc);
+        ASSERT_EQ(one.size(), parallel.size());
+        EXPECT_EQ(0, std::memcmp(one.data(), parallel.data(), one.size() * sizeof(double)))
+            << threads << " threads and 2 fluid threads, " << name;
+      }
+      // The derivatives are not zero: the fluid pushes on the plates.
+      EXPECT_NE(one[2], 0.0);
+      EXPECT_NE(one[3], 0.0);
     }
-    // Fluid threads: with one evaluation thread every fluid takes them, with two only the frame's.
-    for (int threads : {1, 2}) {
-      const auto parallel = run(xml, threads, how, 2);
-      ASSERT_EQ(one.size(), parallel.size());
-      EXPECT_EQ(0, std::memcmp(one.data(), parallel.data(), one.size() * sizeof(double)))
-          << threads << " threads and 2 fluid threads, " << (how == Perturbation::placed ? "placed" : "moved");
-    }
-    // The derivatives are not zero: the fluid pushes on the plates.
-    EXPECT_NE(one[2], 0.0);
-    EXPECT_NE(one[3], 0.0);
-  }
+  // gram took its own path: it solves the same forcing to the same tolerance, not to the same bits.
+  for (int how = 0; how < 2; ++how)
+    EXPECT_NE(0, std::memcmp(single[how].data(), single[2 + how].data(), single[how].size() * sizeof(double)));
 }
 
 TEST_F(ControlFluidTest, SteadyStateIsRefused) {
