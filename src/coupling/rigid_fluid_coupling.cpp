@@ -142,7 +142,8 @@ void RigidFluidCoupling::addMouthFlux(const rigid::RigidData& data) {
 // The marker forces f for which the projected velocity meets the markers' velocity,
 //   I P (u~ + dt/rho S f) = V,
 // by conjugate gradients on A f = I P S f dt/rho (symmetric positive semi-definite: S = I^T / dx^2
-// and P is an orthogonal projection), preconditioned by the direct-forcing mass rho dA_k / dt.
+// and P is an orthogonal projection), preconditioned by the direct-forcing mass rho dA_k / dt or by
+// the factored forcing without the projection (RigidFluidParams::forcing_preconditioner).
 // This is the immersed-boundary projection of Taira & Colonius 2007 (J. Comput. Phys. 225) with
 // our rigid markers: one fluid projection per iteration.
 void RigidFluidCoupling::projectedForcing(double dt) {
