@@ -93,7 +93,10 @@ struct CouplingParams {
   // markers or more (the same system; false keeps the dense LU, for comparison).
   bool banded_solve = true;
   // banded only: refine on an earlier step's factors, factoring anew when that stops converging
-  // (ib/reused_banded_solve.hpp); tolerance 0 factors every step.
+  // (ib/reused_banded_solve.hpp), with M applied rather than formed (Transfer::apply_gram); tolerance
+  // 0 factors the formed system every step (the plain banded LU, bit for bit). Not the dense solve:
+  // on the paper's 100² grid at 0.01 s the system changes so much per step that the refinement
+  // failed at 95% of the steps (tried 2026-12-04: 22.5 -> 21.2 simulated s per CPU s).
   FactorReuse factor_reuse;
 };
 
@@ -121,6 +124,12 @@ class ImmersedBoundary2 {
 
  private:
   void semiImplicitForce(double t1_s, double dt_s);
+  void assembleBanded(const Eigen::SparseMatrix<double>& stiffness, double dt_s);
+  void applySystem(const Eigen::SparseMatrix<double>& stiffness, double dt_scale, const Eigen::VectorXd& x,
+                   std::vector<double>& ax);
+  std::vector<double> rightHandSide(const Eigen::VectorXd& free, const Eigen::VectorXd& force, double scale);
+  Eigen::VectorXd solveWithoutAssembly(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& free,
+                                       const Eigen::VectorXd& force, double scale, double t1_s, double dt_s);
 
   fluid::FluidSolver2& fluid_;
   const ElasticBody& body_;
@@ -147,6 +156,7 @@ class ImmersedBoundary2 {
   BandedLU banded_;
   ReusedBandedSolve banded_solver_;
   std::vector<double> banded_rhs_;
+  std::vector<double> natural_x_, natural_y_, natural_ax_, gram_patch_;  // solveWithoutAssembly's scratch
 };
 
 /// Bodies with a solveOrder() and at least this many markers solve the semi-implicit system banded;

@@ -23,14 +23,20 @@ bool ReusedBandedSolve::factorAndSolve(const BandedLU& a, std::vector<double>& b
 }
 
 bool ReusedBandedSolve::solve(const BandedLU& a, std::vector<double>& b) {
+  return solve(
+      a.size(), [&](const std::vector<double>& x, std::vector<double>& ax) { a.multiply(x, ax); },
+      [&]() -> const BandedLU& { return a; }, b);
+}
+
+bool ReusedBandedSolve::solve(int n, const Apply& apply, const Assemble& assemble, std::vector<double>& b) {
   ++solves_;
-  if (!(policy_.tolerance > 0) || !have_factors_ || factors_.size() != a.size()) return factorAndSolve(a, b);
+  if (!(policy_.tolerance > 0) || !have_factors_ || factors_.size() != n) return factorAndSolve(assemble(), b);
   const double limit = policy_.tolerance * largest(b);
   x_ = b;
   factors_.solve(x_);
   for (int sweep = 1; sweep <= policy_.max_sweeps; ++sweep) {
     ++sweeps_;
-    a.multiply(x_, ax_);
+    apply(x_, ax_);
     r_.resize(b.size());
     for (std::size_t i = 0; i < b.size(); ++i) r_[i] = b[i] - ax_[i];
     if (largest(r_) <= limit) {
@@ -41,7 +47,7 @@ bool ReusedBandedSolve::solve(const BandedLU& a, std::vector<double>& b) {
     factors_.solve(r_);
     for (std::size_t i = 0; i < b.size(); ++i) x_[i] += r_[i];
   }
-  return factorAndSolve(a, b);
+  return factorAndSolve(assemble(), b);
 }
 
 }  // namespace creaturelab::ib

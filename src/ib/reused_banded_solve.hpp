@@ -20,6 +20,7 @@
 // relative), the stroke to 9e-12, the centroid's series within 1.9e-12 m.
 // Deterministic: whether to factor depends on the residuals alone, which the same inputs reproduce
 // bit for bit. tolerance = 0 factors every step (the plain banded LU, bit for bit).
+#include <functional>
 #include <vector>
 
 #include "ib/banded_lu.hpp"
@@ -37,6 +38,12 @@ class ReusedBandedSolve {
   /// Solves a x = b, b overwritten by x; `a` holds this step's matrix, not factored. False if a
   /// fresh factorisation meets an exactly zero pivot (a singular matrix).
   bool solve(const BandedLU& a, std::vector<double>& b);
+  /// The same with A given by its product: apply(x, ax) sets ax = A x, and assemble() returns
+  /// this step's A in a band, not factored; it is called only when the solve factors, so that a
+  /// caller whose apply() is cheaper than forming A forms it only on those steps. n: A's size.
+  using Apply = std::function<void(const std::vector<double>&, std::vector<double>&)>;
+  using Assemble = std::function<const BandedLU&()>;
+  bool solve(int n, const Apply& apply, const Assemble& assemble, std::vector<double>& b);
   long factorizations() const { return factorizations_; }
   long solves() const { return solves_; }
   long sweeps() const { return sweeps_; }

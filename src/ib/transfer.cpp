@@ -267,7 +267,61 @@ LowerColumns lower_columns(const std::vector<FaceStencil>& st, int support, doub
   return lower;
 }
 
+// One component's G x on the faces of its stencils: spread onto a zeroed patch spanning them,
+// then read back, in marker order both times (deterministic).
+template <int S = 0>
+void apply_gram_component(const std::vector<FaceStencil>& st, int c, const double* x, double* out,
+                          std::vector<double>& patch, int support = S) {
+  if constexpr (S != 0) support = S;
+  int i_lo = st[0].i0, i_hi = st[0].i0, j_lo = st[0].j0, j_hi = st[0].j0;
+  for (const FaceStencil& s : st) {
+    i_lo = std::min(i_lo, s.i0), i_hi = std::max(i_hi, s.i0);
+    j_lo = std::min(j_lo, s.j0), j_hi = std::max(j_hi, s.j0);
+  }
+  const long width = i_hi - i_lo + support;
+  patch.assign(static_cast<std::size_t>(width * (j_hi - j_lo + support)), 0.0);
+  for (std::size_t k = 0; k < st.size(); ++k) {
+    const FaceStencil& s = st[k];
+    const double value = x[2 * k + c];
+    double* corner = patch.data() + (s.j0 - j_lo) * width + (s.i0 - i_lo);
+    for (int b = 0; b < support; ++b) {
+      double* row = corner + b * width;
+      const double row_value = value * s.wy[b];
+      for (int a = 0; a < support; ++a) row[a] += row_value * s.wx[a];
+    }
+  }
+  for (std::size_t k = 0; k < st.size(); ++k) {
+    const FaceStencil& s = st[k];
+    const double* corner = patch.data() + (s.j0 - j_lo) * width + (s.i0 - i_lo);
+    double sum = 0.0;
+    for (int b = 0; b < support; ++b) {
+      const double* row = corner + b * width;
+      double row_sum = 0.0;
+      for (int a = 0; a < support; ++a) row_sum += s.wx[a] * row[a];
+      sum += s.wy[b] * row_sum;
+    }
+    out[2 * k + c] = sum;
+  }
+}
+
 }  // namespace
+
+void Transfer::apply_gram(std::span<const double> x, std::span<double> out, std::vector<double>& patch) const {
+  const std::size_t n = 2 * static_cast<std::size_t>(marker_count());
+  if (x.size() != n || out.size() != n)
+    throw std::invalid_argument("immersed-boundary transfer: apply_gram takes vectors of twice the " +
+                                std::to_string(marker_count()) + " located markers");
+  if (n == 0) return;
+  for (int c = 0; c < 2; ++c) {
+    const std::vector<FaceStencil>& st = c == 0 ? u_stencils_ : v_stencils_;
+    if (support_ == 4)
+      apply_gram_component<4>(st, c, x.data(), out.data(), patch);
+    else if (support_ == 8)
+      apply_gram_component<8>(st, c, x.data(), out.data(), patch);
+    else
+      apply_gram_component(st, c, x.data(), out.data(), patch, support_);
+  }
+}
 
 // Column by column, rows ascending, written straight into the compressed storage. G(k, l) and
 // G(l, k) sum the same products in the same order (overlap1d with the stencils swapped and the shift

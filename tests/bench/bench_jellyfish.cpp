@@ -96,8 +96,10 @@ void measure(benchmark::State& state, const SwimmerConfig& config) {
   state.counters["ms_per_step"] = 1e3 * cpu / static_cast<double>(seconds * steps_per_second);
   state.counters["markers"] = static_cast<double>(swimmer->markers_m().size());
   const ib::ReusedBandedSolve& solver = swimmer->coupling().banded_solver();
-  if (solver.solves() > 0)
+  if (solver.solves() > 0) {
     state.counters["factorizations_per_solve"] = double(solver.factorizations()) / double(solver.solves());
+    state.counters["sweeps_per_solve"] = double(solver.sweeps()) / double(solver.solves());
+  }
 }
 
 void BM_SimulatedSecond(benchmark::State& state) {
@@ -299,6 +301,13 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // 2026-12-03 18:55 UTC, idle machine, one run of three iterations: 13243 ms per simulated second (8.28 ms per
 // step) beside 11575 for the 0.3 m tall box (1.14 times); the 11.43 s point 151 s of CPU, the host running the
 // paper's grid at 19.9 simulated s per CPU s: about 127 s on the host of 2026-12-02, 2.1 times the goal.
+// 2026-12-04 00:35-00:45 UTC, idle machine, two interleaved runs each of the build before (54d6eee) and
+// after the banded refinement stopped forming G and I − dt M K on the steps it does not factor
+// (ib/coupling.cpp, solveWithoutAssembly; datasets move at the refinement's tolerance, a whole point's
+// distance 2.5e-11 relative at 0.7 Hz): 11020 / 11139 -> 9274 / 9277 ms per simulated second (6.89 /
+// 6.96 -> 5.80 / 5.80 ms per step, -16.5%; new factors at 0.87% of the solves in both, 4.65 sweeps per
+// solve). The 11.43 s point is then 106 s of CPU (127 before), 1.8 times issue 13's 60 s; the paper's
+// grid (dense, unchanged) 22.65 / 22.63 -> 22.65 / 22.49 simulated s per CPU s.
 void BM_SimulatedSecondDefault(benchmark::State& state) {
   const int width_mm = static_cast<int>(state.range(0));
   const int height_mm = static_cast<int>(state.range(1));

@@ -452,6 +452,43 @@ TEST(Coupling, SparseGramMatrixIsTheScaledDenseOneAndExactlySymmetric) {
   }
 }
 
+// The coupling's refinement sweeps apply G through the stencils (Transfer::apply_gram) instead of
+// forming it: the product must be the formed matrix's to round-off, on both kernels and stretches
+// (support 2 to 8 faces, the templated and the general loop), and refuse vectors of the wrong size.
+TEST(Coupling, AppliedGramIsTheFormedOnesProduct) {
+  fluid::FluidParams p = smallBox();
+  p.cells_x = p.cells_y = 48;
+  fluid::FluidSolver2 fluid(p);
+  const std::vector<Vec2> x = jitteredRing(150, 3);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<double> patch;
+  for (const int stretch : {1, 2, 3})
+    for (Kernel kernel : {Kernel::bilinear, Kernel::peskin4}) {
+      Transfer t;
+      t.locate(fluid.grid(), kernel, x, stretch);
+      Eigen::SparseMatrix<double> g;
+      t.gram(1.0, g);
+      Eigen::VectorXd v(300);
+      for (double& e : v) e = unit(rng);
+      const Eigen::VectorXd want = g * v;
+      std::vector<double> in(v.data(), v.data() + v.size()), got(300, 0.0);
+      t.apply_gram(in, got, patch);
+      double largest = 0.0, error = 0.0;
+      for (int i = 0; i < 300; ++i) {
+        largest = std::max(largest, std::abs(want[i]));
+        error = std::max(error, std::abs(got[i] - want[i]));
+      }
+      EXPECT_GT(largest, 1e-3) << to_string(kernel) << " x" << stretch;  // not a product of zeros
+      EXPECT_LE(error, 1e-14 * largest) << to_string(kernel) << " x" << stretch << " (support " << t.stencil_faces()
+                                        << ")";
+    }
+  Transfer t;
+  t.locate(fluid.grid(), Kernel::peskin4, x);
+  std::vector<double> wrong(299), out(300);
+  EXPECT_THROW(t.apply_gram(wrong, out, patch), std::invalid_argument);
+}
+
 // Each stored entry of the sparse Gram matrix is, bit for bit, scale · (Σ_a wx_k[a] wx_l[a + di]) ·
 // (Σ_b wy_k[b] wy_l[b + dj]) of its own row k and column l, summed over ascending offsets (gram()
 // computes the entries on and below the diagonal and copies each one above from its mirror); rows

@@ -1,7 +1,8 @@
 // Refinement on an earlier step's banded LU factors (ib/reused_banded_solve.hpp): a sequence of
 // slowly drifting systems like the coupling's I − dt M K is solved to the tolerance with far fewer
 // factorisations than systems; a jump in the matrix makes it factor anew and still solve; tolerance 0
-// is the plain banded LU bit for bit; a singular matrix is reported. And BandedLU::multiply.
+// is the plain banded LU bit for bit; a singular matrix is reported; a matrix given by its product is
+// formed only to factor. And BandedLU::multiply.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -82,6 +83,31 @@ TEST(ReusedBandedSolve, SolvesDriftingSystemsToTheToleranceWithFewFactorisations
   EXPECT_EQ(solver.solves(), 200);
   EXPECT_LT(solver.factorizations(), 50);  // reused: 23 for these 200 systems, not one each
   EXPECT_GT(solver.sweeps(), 0);
+}
+
+// Given A by its product, the solve asks for A itself only on the steps it factors, and answers as
+// the solve given A does: the same factorisations, and the same bits when the product is A's own.
+TEST(ReusedBandedSolve, AnAppliedMatrixIsAssembledOnlyToFactor) {
+  const Drifting d(5);
+  ReusedBandedSolve given({1e-12, 4}), applied({1e-12, 4});
+  BandedLU a;
+  long assembled = 0;
+  for (int step = 0; step < 200; ++step) {
+    d.fill(a, 1.0 + 1e-3 * step);
+    std::vector<double> x = rhs(step), y = rhs(step);
+    ASSERT_TRUE(given.solve(a, x));
+    ASSERT_TRUE(applied.solve(
+        kN, [&](const std::vector<double>& v, std::vector<double>& av) { a.multiply(v, av); },
+        [&]() -> const BandedLU& {
+          ++assembled;
+          return a;
+        },
+        y));
+    ASSERT_EQ(x, y) << step;
+  }
+  EXPECT_EQ(assembled, applied.factorizations());
+  EXPECT_EQ(applied.factorizations(), given.factorizations());
+  EXPECT_LT(assembled, 50);
 }
 
 TEST(ReusedBandedSolve, AJumpInTheMatrixFactorsAnewAndStillSolves) {
