@@ -301,7 +301,7 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // 2026-12-03 18:55 UTC, idle machine, one run of three iterations: 13243 ms per simulated second (8.28 ms per
 // step) beside 11575 for the 0.3 m tall box (1.14 times); the 11.43 s point 151 s of CPU, the host running the
 // paper's grid at 19.9 simulated s per CPU s: about 127 s on the host of 2026-12-02, 2.1 times the goal.
-// 2026-12-04 00:35-00:45 UTC, idle machine, two interleaved runs each of the build before (54d6eee) and
+// 2026-12-04 00:26-00:30 UTC, idle machine, two interleaved runs each of the build before (54d6eee) and
 // after the banded refinement stopped forming G and I − dt M K on the steps it does not factor
 // (ib/coupling.cpp, solveWithoutAssembly; datasets move at the refinement's tolerance, a whole point's
 // distance 2.5e-11 relative at 0.7 Hz): 11020 / 11139 -> 9274 / 9277 ms per simulated second (6.89 /
