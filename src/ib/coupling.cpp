@@ -144,26 +144,12 @@ void ImmersedBoundary2::assembleBanded(const Eigen::SparseMatrix<double>& stiffn
   subtract_dt_mk_banded(stiffness);
 }
 
-// (I − dt M K) x and U_free + M F with M = scale · G applied through the stencils (Transfer::apply_gram)
-// instead of formed, in the natural numbering (2 marker + axis).
-void ImmersedBoundary2::applySystem(const Eigen::SparseMatrix<double>& stiffness, double dt_scale,
-                                    const Eigen::VectorXd& x, std::vector<double>& ax) {
-  const Eigen::VectorXd kx = stiffness * x;
-  natural_x_.assign(kx.data(), kx.data() + kx.size());
+// G v through the stencils (Transfer::apply_gram), G not formed, into natural_y_ (numbering 2 marker + axis).
+const std::vector<double>& ImmersedBoundary2::applyGram(const Eigen::VectorXd& v) {
+  natural_x_.assign(v.data(), v.data() + v.size());
   natural_y_.resize(natural_x_.size());
   transfer_.apply_gram(natural_x_, natural_y_, gram_patch_);
-  ax.resize(natural_y_.size());
-  for (std::size_t i = 0; i < ax.size(); ++i) ax[i] = x[static_cast<Eigen::Index>(i)] - dt_scale * natural_y_[i];
-}
-
-std::vector<double> ImmersedBoundary2::rightHandSide(const Eigen::VectorXd& free, const Eigen::VectorXd& force,
-                                                     double scale) {
-  natural_x_.assign(force.data(), force.data() + force.size());
-  natural_y_.resize(natural_x_.size());
-  transfer_.apply_gram(natural_x_, natural_y_, gram_patch_);
-  std::vector<double> rhs(natural_y_.size());
-  for (std::size_t i = 0; i < rhs.size(); ++i) rhs[i] = free[static_cast<Eigen::Index>(i)] + scale * natural_y_[i];
-  return rhs;
+  return natural_y_;
 }
 
 // The banded system on an earlier step's factors (ReusedBandedSolve) with M applied, not formed:
@@ -178,15 +164,15 @@ Eigen::VectorXd ImmersedBoundary2::solveWithoutAssembly(const Eigen::SparseMatri
                                                         double scale, double t1_s, double dt_s) {
   const int n = static_cast<int>(free.size());
   const double dt_scale = dt_s * scale;
-  std::vector<double> rhs = rightHandSide(free, force, scale);
-  Eigen::VectorXd xn(n), predicted(n);
+  const std::vector<double>& g_force = applyGram(force);
   banded_rhs_.resize(n);
-  for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = rhs[i];
-  const auto apply = [&](const std::vector<double>& x, std::vector<double>& ax) {
+  for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = free[i] + scale * g_force[i];
+  Eigen::VectorXd xn(n), predicted(n);
+  const auto apply = [&](const std::vector<double>& x, std::vector<double>& ax) {  // (I − dt M K) x
     for (int i = 0; i < n; ++i) xn[i] = x[banded_index(slot_, i)];
-    applySystem(stiffness, dt_scale, xn, natural_ax_);
+    const std::vector<double>& g_kx = applyGram(stiffness * xn);
     ax.resize(n);
-    for (int i = 0; i < n; ++i) ax[banded_index(slot_, i)] = natural_ax_[i];
+    for (int i = 0; i < n; ++i) ax[banded_index(slot_, i)] = xn[i] - dt_scale * g_kx[i];
   };
   const auto assemble = [&]() -> const BandedLU& {
     transfer_.gram(scale, mobility_);
@@ -226,22 +212,22 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
     const double scale = dt_s / (rho * dx * dx);
     if (!order_.empty() && params_.factor_reuse.tolerance > 0) {
       predicted = solveWithoutAssembly(stiffness, free, force, scale, t1_s, dt_s);
-    } else if (!order_.empty()) {
-      transfer_.gram(scale, mobility_);
-      const Eigen::VectorXd rhs = free + mobility_ * force;
-      assembleBanded(stiffness, dt_s);
-      banded_rhs_.resize(n);
-      for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = rhs[i];
-      if (!banded_solver_.solve(banded_, banded_rhs_)) throw singular_system(t1_s);
-      predicted.resize(n);
-      for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[banded_index(slot_, i)];
     } else {
       transfer_.gram(scale, mobility_);
       const Eigen::VectorXd rhs = free + mobility_ * force;
-      system_.setIdentity(n, n);
-      subtract_dt_mk(stiffness, dt_s, [&](int i, int j) -> double& { return system_(i, j); });
-      lu_.compute(system_);
-      predicted = lu_.solve(rhs);
+      if (!order_.empty()) {
+        assembleBanded(stiffness, dt_s);
+        banded_rhs_.resize(n);
+        for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = rhs[i];
+        if (!banded_solver_.solve(banded_, banded_rhs_)) throw singular_system(t1_s);
+        predicted.resize(n);
+        for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[banded_index(slot_, i)];
+      } else {
+        system_.setIdentity(n, n);
+        subtract_dt_mk(stiffness, dt_s, [&](int i, int j) -> double& { return system_(i, j); });
+        lu_.compute(system_);
+        predicted = lu_.solve(rhs);
+      }
     }
   } else {
     // (m I − dt² K) U* = m U_free + dt F: the same with M = dt / m.

@@ -125,9 +125,7 @@ class ImmersedBoundary2 {
  private:
   void semiImplicitForce(double t1_s, double dt_s);
   void assembleBanded(const Eigen::SparseMatrix<double>& stiffness, double dt_s);
-  void applySystem(const Eigen::SparseMatrix<double>& stiffness, double dt_scale, const Eigen::VectorXd& x,
-                   std::vector<double>& ax);
-  std::vector<double> rightHandSide(const Eigen::VectorXd& free, const Eigen::VectorXd& force, double scale);
+  const std::vector<double>& applyGram(const Eigen::VectorXd& v);
   Eigen::VectorXd solveWithoutAssembly(const Eigen::SparseMatrix<double>& stiffness, const Eigen::VectorXd& free,
                                        const Eigen::VectorXd& force, double scale, double t1_s, double dt_s);
 
@@ -156,7 +154,7 @@ class ImmersedBoundary2 {
   BandedLU banded_;
   ReusedBandedSolve banded_solver_;
   std::vector<double> banded_rhs_;
-  std::vector<double> natural_x_, natural_y_, natural_ax_, gram_patch_;  // solveWithoutAssembly's scratch
+  std::vector<double> natural_x_, natural_y_, gram_patch_;  // applyGram's scratch
 };
 
 /// Bodies with a solveOrder() and at least this many markers solve the semi-implicit system banded;

@@ -38,39 +38,46 @@ bool axis_stencil(Kernel kernel, int scale, int support, double xs, int first_fa
   return true;
 }
 
-// Σ_k (F_k / dx²) wx[a] wy[b] into face (i0 + a, j0 + b), for one component (S = stencil faces;
-// a compile-time S for the common widths, so that the inner loops unroll).
-template <double fluid::Vec2::*component, int S = 0>
-void spread_component(const std::vector<FaceStencil>& stencils, std::span<const fluid::Vec2> forces,
-                      double inv_area, fluid::Array2& field, int support = S) {
+// Σ_k value(k) wx[a] wy[b] into face (i0 + a, j0 + b), for one component (S = stencil faces; a
+// compile-time S for the common widths, so that the inner loops unroll). at(i, j) points to face
+// (i, j) of the field written, whose row runs on from it: a whole face field or a patch of one.
+template <int S = 0, class Value, class At>
+void spread_component(const std::vector<FaceStencil>& stencils, Value value, At at, int support = S) {
   if constexpr (S != 0) support = S;
   for (std::size_t k = 0; k < stencils.size(); ++k) {
     const FaceStencil& s = stencils[k];
-    const double density = forces[k].*component * inv_area;
+    const double density = value(k);
     for (int b = 0; b < support; ++b) {
-      double* row = field.row(s.j0 + b) + s.i0;
+      double* row = at(s.i0, s.j0 + b);
       const double row_density = density * s.wy[b];
       for (int a = 0; a < support; ++a) row[a] += row_density * s.wx[a];
     }
   }
 }
 
-// U_k = Σ_b wy[b] Σ_a wx[a] u(i0 + a, j0 + b), for one component (S as in spread_component).
-template <double fluid::Vec2::*component, int S = 0>
-void interpolate_component(const std::vector<FaceStencil>& stencils, const fluid::Array2& field,
-                           std::span<fluid::Vec2> velocities, int support = S) {
+// store(k, Σ_b wy[b] Σ_a wx[a] u(i0 + a, j0 + b)), for one component (S and at as in spread_component).
+template <int S = 0, class At, class Store>
+void interpolate_component(const std::vector<FaceStencil>& stencils, At at, Store store, int support = S) {
   if constexpr (S != 0) support = S;
   for (std::size_t k = 0; k < stencils.size(); ++k) {
     const FaceStencil& s = stencils[k];
     double sum = 0.0;
     for (int b = 0; b < support; ++b) {
-      const double* row = field.row(s.j0 + b) + s.i0;
+      const double* row = at(s.i0, s.j0 + b);
       double row_sum = 0.0;
       for (int a = 0; a < support; ++a) row_sum += s.wx[a] * row[a];
       sum += s.wy[b] * row_sum;
     }
-    velocities[k].*component = sum;
+    store(k, sum);
   }
+}
+
+// Face (i, j) of a face field.
+auto faces_of(fluid::Array2& field) {
+  return [&field](int i, int j) { return field.row(j) + i; };
+}
+auto faces_of(const fluid::Array2& field) {
+  return [&field](int i, int j) { return field.row(j) + i; };
 }
 
 void require_shape(const fluid::Array2& a, int nx, int ny, const char* what) {
@@ -150,17 +157,19 @@ void Transfer::spread(std::span<const fluid::Vec2> forces_n_per_m,
   require_shape(force_density_n_per_m3.x, nx_ + 1, ny_, "the x force density (u faces)");
   require_shape(force_density_n_per_m3.y, nx_, ny_ + 1, "the y force density (v faces)");
   const double inv_area = inv_cell_area_per_m2_;
-  auto& fx = force_density_n_per_m3.x;
-  auto& fy = force_density_n_per_m3.y;
+  const auto fx = [&](std::size_t k) { return forces_n_per_m[k].x * inv_area; };
+  const auto fy = [&](std::size_t k) { return forces_n_per_m[k].y * inv_area; };
+  auto& density_x = force_density_n_per_m3.x;
+  auto& density_y = force_density_n_per_m3.y;
   if (support_ == 2) {
-    spread_component<&fluid::Vec2::x, 2>(u_stencils_, forces_n_per_m, inv_area, fx);
-    spread_component<&fluid::Vec2::y, 2>(v_stencils_, forces_n_per_m, inv_area, fy);
+    spread_component<2>(u_stencils_, fx, faces_of(density_x));
+    spread_component<2>(v_stencils_, fy, faces_of(density_y));
   } else if (support_ == 4) {
-    spread_component<&fluid::Vec2::x, 4>(u_stencils_, forces_n_per_m, inv_area, fx);
-    spread_component<&fluid::Vec2::y, 4>(v_stencils_, forces_n_per_m, inv_area, fy);
+    spread_component<4>(u_stencils_, fx, faces_of(density_x));
+    spread_component<4>(v_stencils_, fy, faces_of(density_y));
   } else {
-    spread_component<&fluid::Vec2::x>(u_stencils_, forces_n_per_m, inv_area, fx, support_);
-    spread_component<&fluid::Vec2::y>(v_stencils_, forces_n_per_m, inv_area, fy, support_);
+    spread_component(u_stencils_, fx, faces_of(density_x), support_);
+    spread_component(v_stencils_, fy, faces_of(density_y), support_);
   }
 }
 
@@ -175,15 +184,17 @@ void Transfer::interpolate(const fluid::MacGrid2& grid, std::span<fluid::Vec2> v
   }
   require_shape(grid.u_m_per_s, nx_ + 1, ny_, "the u velocity");
   require_shape(grid.v_m_per_s, nx_, ny_ + 1, "the v velocity");
+  const auto ux = [&](std::size_t k, double sum) { velocities_m_per_s[k].x = sum; };
+  const auto uy = [&](std::size_t k, double sum) { velocities_m_per_s[k].y = sum; };
   if (support_ == 2) {
-    interpolate_component<&fluid::Vec2::x, 2>(u_stencils_, grid.u_m_per_s, velocities_m_per_s);
-    interpolate_component<&fluid::Vec2::y, 2>(v_stencils_, grid.v_m_per_s, velocities_m_per_s);
+    interpolate_component<2>(u_stencils_, faces_of(grid.u_m_per_s), ux);
+    interpolate_component<2>(v_stencils_, faces_of(grid.v_m_per_s), uy);
   } else if (support_ == 4) {
-    interpolate_component<&fluid::Vec2::x, 4>(u_stencils_, grid.u_m_per_s, velocities_m_per_s);
-    interpolate_component<&fluid::Vec2::y, 4>(v_stencils_, grid.v_m_per_s, velocities_m_per_s);
+    interpolate_component<4>(u_stencils_, faces_of(grid.u_m_per_s), ux);
+    interpolate_component<4>(v_stencils_, faces_of(grid.v_m_per_s), uy);
   } else {
-    interpolate_component<&fluid::Vec2::x>(u_stencils_, grid.u_m_per_s, velocities_m_per_s, support_);
-    interpolate_component<&fluid::Vec2::y>(v_stencils_, grid.v_m_per_s, velocities_m_per_s, support_);
+    interpolate_component(u_stencils_, faces_of(grid.u_m_per_s), ux, support_);
+    interpolate_component(v_stencils_, faces_of(grid.v_m_per_s), uy, support_);
   }
 }
 
@@ -267,8 +278,8 @@ LowerColumns lower_columns(const std::vector<FaceStencil>& st, int support, doub
   return lower;
 }
 
-// One component's G x on the faces of its stencils: spread onto a zeroed patch spanning them,
-// then read back, in marker order both times (deterministic).
+// One component's G x: x spread onto a zeroed patch just covering its stencils and read back
+// through them (spread_component, interpolate_component), in marker order both times.
 template <int S = 0>
 void apply_gram_component(const std::vector<FaceStencil>& st, int c, const double* x, double* out,
                           std::vector<double>& patch, int support = S) {
@@ -280,28 +291,9 @@ void apply_gram_component(const std::vector<FaceStencil>& st, int c, const doubl
   }
   const long width = i_hi - i_lo + support;
   patch.assign(static_cast<std::size_t>(width * (j_hi - j_lo + support)), 0.0);
-  for (std::size_t k = 0; k < st.size(); ++k) {
-    const FaceStencil& s = st[k];
-    const double value = x[2 * k + c];
-    double* corner = patch.data() + (s.j0 - j_lo) * width + (s.i0 - i_lo);
-    for (int b = 0; b < support; ++b) {
-      double* row = corner + b * width;
-      const double row_value = value * s.wy[b];
-      for (int a = 0; a < support; ++a) row[a] += row_value * s.wx[a];
-    }
-  }
-  for (std::size_t k = 0; k < st.size(); ++k) {
-    const FaceStencil& s = st[k];
-    const double* corner = patch.data() + (s.j0 - j_lo) * width + (s.i0 - i_lo);
-    double sum = 0.0;
-    for (int b = 0; b < support; ++b) {
-      const double* row = corner + b * width;
-      double row_sum = 0.0;
-      for (int a = 0; a < support; ++a) row_sum += s.wx[a] * row[a];
-      sum += s.wy[b] * row_sum;
-    }
-    out[2 * k + c] = sum;
-  }
+  const auto at = [&](int i, int j) { return patch.data() + (j - j_lo) * width + (i - i_lo); };
+  spread_component<S>(st, [&](std::size_t k) { return x[2 * k + c]; }, at, support);
+  interpolate_component<S>(st, at, [&](std::size_t k, double sum) { out[2 * k + c] = sum; }, support);
 }
 
 }  // namespace
