@@ -142,17 +142,32 @@ struct SampleView {
     const __m256d ty = _mm256_sub_pd(fy, j0);
     const __m128i offset =
         _mm256_cvttpd_epi32(_mm256_add_pd(_mm256_mul_pd(j0, _mm256_set1_pd(static_cast<double>(stride))), i0));
-    const double* ra = data + _mm_cvtsi128_si32(offset);
-    const double* rb = data + _mm_extract_epi32(offset, 1);
-    const double* rc = data + _mm_extract_epi32(offset, 2);
-    const double* rd = data + _mm_extract_epi32(offset, 3);
-    const __m256d low_ac = _mm256_set_m128d(_mm_loadu_pd(rc), _mm_loadu_pd(ra));
-    const __m256d low_bd = _mm256_set_m128d(_mm_loadu_pd(rd), _mm_loadu_pd(rb));
-    const __m256d high_ac = _mm256_set_m128d(_mm_loadu_pd(rc + stride), _mm_loadu_pd(ra + stride));
-    const __m256d high_bd = _mm256_set_m128d(_mm_loadu_pd(rd + stride), _mm_loadu_pd(rb + stride));
     // Lanes a, b, c, d: the lower-left, lower-right, upper-left and upper-right values.
-    const __m256d ll = _mm256_unpacklo_pd(low_ac, low_bd), lr = _mm256_unpackhi_pd(low_ac, low_bd);
-    const __m256d hl = _mm256_unpacklo_pd(high_ac, high_bd), hr = _mm256_unpackhi_pd(high_ac, high_bd);
+    __m256d ll, lr, hl, hr;
+    const int first = _mm_cvtsi128_si32(offset);
+    const __m128i consecutive = _mm_add_epi32(_mm_set1_epi32(first), _mm_setr_epi32(0, 1, 2, 3));
+    if (_mm_movemask_epi8(_mm_cmpeq_epi32(offset, consecutive)) == 0xFFFF) {
+      // Four neighbouring stencils in a row (the usual case: a row of faces traced a fraction of a
+      // cell): each corner's four values are contiguous. The same values as the gather below.
+      const double* r = data + first;
+      ll = _mm256_loadu_pd(r);
+      lr = _mm256_loadu_pd(r + 1);
+      hl = _mm256_loadu_pd(r + stride);
+      hr = _mm256_loadu_pd(r + stride + 1);
+    } else {
+      const double* ra = data + first;
+      const double* rb = data + _mm_extract_epi32(offset, 1);
+      const double* rc = data + _mm_extract_epi32(offset, 2);
+      const double* rd = data + _mm_extract_epi32(offset, 3);
+      const __m256d low_ac = _mm256_set_m128d(_mm_loadu_pd(rc), _mm_loadu_pd(ra));
+      const __m256d low_bd = _mm256_set_m128d(_mm_loadu_pd(rd), _mm_loadu_pd(rb));
+      const __m256d high_ac = _mm256_set_m128d(_mm_loadu_pd(rc + stride), _mm_loadu_pd(ra + stride));
+      const __m256d high_bd = _mm256_set_m128d(_mm_loadu_pd(rd + stride), _mm_loadu_pd(rb + stride));
+      ll = _mm256_unpacklo_pd(low_ac, low_bd);
+      lr = _mm256_unpackhi_pd(low_ac, low_bd);
+      hl = _mm256_unpacklo_pd(high_ac, high_bd);
+      hr = _mm256_unpackhi_pd(high_ac, high_bd);
+    }
     const __m256d left = _mm256_add_pd(ll, _mm256_mul_pd(ty, _mm256_sub_pd(hl, ll)));
     const __m256d right = _mm256_add_pd(lr, _mm256_mul_pd(ty, _mm256_sub_pd(hr, lr)));
     if (lo != nullptr) {

@@ -93,6 +93,15 @@
 // At 10 and 100 times BM_Viscosity_Viscous's ν (α g = 42 and 424) Chebyshev took 90.6 and 300 ns per
 // cell against CG's 151 and 479 (69 / 62 and 231 / 214 iterations); CG stays the solver beyond
 // α g = 64 for small grids, where it ends in at most n iterations.
+// 2026-12-04 20:10 UTC, idle machine, minimum of 3 repetitions, two interleaved runs of the build
+// before (4231d59) and after the sampler's contiguous loads (fluid/staggered_sampler2.hpp: four
+// neighbouring stencils in a row, the usual case, are read with four loads instead of eight half-loads
+// and a transpose; the same values, datasets bitwise the same), 256², µs per step (ns per cell):
+//                              1 thread                                2 threads (elapsed)
+//   MacCormack step            4112 / 4051 -> 3452 / 3408 (62.3 -> 52.3)   4748 / 5095 -> 4460 / 4339
+//   semi-Lagrangian step       2833 / 2784 -> 2480 / 2372 (42.9 -> 37.0)   3429 / 3452 -> 3260 / 3220
+// (-16% and -13% on one thread). This host was slow (the paper's grid 15.9-16.3 simulated s per CPU s
+// against 22.5-22.7 on the host of that morning) and ran two threads slower than one.
 //
 // The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
 // fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is

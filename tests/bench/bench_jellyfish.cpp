@@ -308,6 +308,13 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // 6.96 -> 5.80 / 5.80 ms per step, -16.5%; new factors at 0.87% of the solves in both, 4.65 sweeps per
 // solve). The 11.43 s point is then 106 s of CPU (127 before), 1.8 times issue 13's 60 s; the paper's
 // grid (dense, unchanged) 22.65 / 22.63 -> 22.65 / 22.49 simulated s per CPU s.
+// 2026-12-04 20:12-20:16 UTC, idle machine, two interleaved runs each of the build before (4231d59) and
+// after the sampler's contiguous loads (fluid/staggered_sampler2.hpp; datasets bitwise the same, a 1 s
+// run of stagger_quick.toml under MacCormack and semi-Lagrangian compared dataset by dataset): 12136 /
+// 12503 -> 11396 / 11283 ms per simulated second (7.58 / 7.81 -> 7.12 / 7.05 ms per step, -8%); the
+// paper's grid 15.9 / 16.3 -> 17.1 / 16.7 simulated s per CPU s. This host ran 1.33 times slower than
+// that morning's (the paper's grid; the default 12.3 against 9.27 s per simulated second before the
+// change), so the 11.43 s point takes 129-130 s of CPU here and about 97 s there: 1.6 times issue 13's 60 s.
 void BM_SimulatedSecondDefault(benchmark::State& state) {
   const int width_mm = static_cast<int>(state.range(0));
   const int height_mm = static_cast<int>(state.range(1));
