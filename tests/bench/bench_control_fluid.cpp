@@ -6,7 +6,7 @@
 // evaluations of one frame of coupled steps per controlled DOF, each on its own copy of the
 // fluid), the frame itself and its measures; the flow is developed for 0.5 s first.
 // Reported as frames per CPU second of the process and per elapsed second. BM_FlyerFrame: the
-// driven flyer (flyer.toml), per-frame time reported, no goal set.
+// driven flyer (flyer_quick.toml's setting), per-frame time reported, no goal set.
 //
 // Measured 2026-12-02, 03:22-03:45 UTC, idle machine (load below 1.4 before), elapsed ms per frame,
 // minimum-maximum of 3 repetitions (BM_ChainFluidFrame: two runs of 3), joints / evaluation threads
@@ -139,10 +139,11 @@ BENCHMARK(BM_ChainFluidFrame)
     ->Args({4, 1, 1})->Args({4, 2, 1})->Args({4, 2, 2})
     ->Unit(benchmark::kMillisecond)->Iterations(10);
 
-// The driven flyer of flyer.toml (§7.1, Figs. 11-13; models/flyer.xml): 128^2 air (nu 0.005 m^2/s)
-// in a 4 m box with the inflow floor (0.5 m/s) and an open top, inner wing joints PD-driven (30 deg,
-// 0.5 Hz), the two outer joints controlled (drag, sense following the stroke) with flyer.toml's
-// validation mode (8 settle steps, force over 4) and 4 coupled steps a frame. The paper: 3.2 s per
+// The driven flyer (§7.1, Figs. 11-13; models/flyer.xml) as flyer.toml ran it until 2026-12-04 (now
+// flyer_quick.toml's grid and step, the moved reading): 128^2 air (nu 0.005 m^2/s) in a 4 m box with
+// the inflow floor (0.5 m/s) and an open top, inner wing joints PD-driven (30 deg, 0.5 Hz), the two
+// outer joints controlled (drag, sense following the stroke) in validation mode (8 settle steps,
+// force over 4) and 4 coupled steps a frame. The paper: 3.2 s per
 // frame for the flyer without flesh (§7, its timing table). range(0) evaluation threads, range(1)
 // cells per side, range(2) the forcing's preconditioner (0 mass, 1 gram).
 void BM_FlyerFrame(benchmark::State& state) {
