@@ -29,6 +29,8 @@ ImmersedBoundary2::ImmersedBoundary2(fluid::FluidSolver2& fluid, const ElasticBo
                                 std::to_string(body_.markerCount()));
   if (!(params_.implicit_mass_factor > 0))
     throw std::invalid_argument("immersed boundary: implicit_mass_factor must be > 0");
+  if (!(params_.implicit_theta >= 0.5 && params_.implicit_theta <= 1.0))
+    throw std::invalid_argument("immersed boundary: implicit_theta must lie in [0.5, 1]");
   if (!(params_.factor_reuse.tolerance >= 0) || params_.factor_reuse.max_sweeps < 1)
     throw std::invalid_argument("immersed boundary: factor reuse needs a tolerance >= 0 and at least one sweep");
   force_.resize(markers_.size());
@@ -74,7 +76,7 @@ void ImmersedBoundary2::subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffn
 // subtract_dt_mk into the band: the same products subtracted in the same order, with each row's
 // banded index looked up once per entry of M (mobility_rows_) rather than once per product, and
 // the column's storage found once per column of K (the lookups were most of this stage's time), and
-// dt M(i, k) formed once per entry of M (mobility_dt_), as the product's left-to-right order forms it.
+// θ dt M(i, k) formed once per entry of M (mobility_dt_), as the product's left-to-right order forms it.
 // Each column's reach, the diagonal and the rows of M's columns met, goes to the band (set_reach).
 void ImmersedBoundary2::subtract_dt_mk_banded(const Eigen::SparseMatrix<double>& stiffness) {
   const int* m_outer = mobility_.outerIndexPtr();
@@ -100,7 +102,7 @@ void ImmersedBoundary2::subtract_dt_mk_banded(const Eigen::SparseMatrix<double>&
 
 // mobility_rows_ and mobility_dt_, and per column of M the least and greatest of its banded rows
 // (mobility_first_, _last_). Returns M's bandwidth in the banded numbering (as bandwidth() does).
-int ImmersedBoundary2::index_mobility_rows(double dt_s) {
+int ImmersedBoundary2::index_mobility_rows(double theta_dt_s) {
   const int* m_outer = mobility_.outerIndexPtr();
   const int* m_inner = mobility_.innerIndexPtr();
   const double* m_value = mobility_.valuePtr();
@@ -112,7 +114,7 @@ int ImmersedBoundary2::index_mobility_rows(double dt_s) {
     for (int p = m_outer[k]; p < m_outer[k + 1]; ++p) {
       const int row = banded_index(slot_, m_inner[p]);
       mobility_rows_[static_cast<std::size_t>(p)] = row;
-      mobility_dt_[static_cast<std::size_t>(p)] = dt_s * m_value[p];
+      mobility_dt_[static_cast<std::size_t>(p)] = theta_dt_s * m_value[p];
       mobility_first_[k] = std::min(mobility_first_[k], row);
       mobility_last_[k] = std::max(mobility_last_[k], row);
     }
@@ -132,13 +134,14 @@ std::runtime_error singular_system(double t_s) {
 }
 }  // namespace
 
-// I − dt M K into the band, M = mobility_ (gram() fills it in order, so makeCompressed() is a no-op;
-// the loops read its arrays). Entry (i, j) of M K joins i to j through some k with M(i, k) and
-// K(k, j) nonzero, so the system's band is at most the sum of the two bands.
-void ImmersedBoundary2::assembleBanded(const Eigen::SparseMatrix<double>& stiffness, double dt_s) {
+// I − θ dt M K into the band (theta_dt_s = θ dt), M = mobility_ (gram() fills it in order, so
+// makeCompressed() is a no-op; the loops read its arrays). Entry (i, j) of M K joins i to j
+// through some k with M(i, k) and K(k, j) nonzero, so the system's band is at most the sum of
+// the two bands.
+void ImmersedBoundary2::assembleBanded(const Eigen::SparseMatrix<double>& stiffness, double theta_dt_s) {
   const int n = static_cast<int>(stiffness.rows());
   mobility_.makeCompressed();
-  const int width = index_mobility_rows(dt_s) + bandwidth(stiffness, slot_);
+  const int width = index_mobility_rows(theta_dt_s) + bandwidth(stiffness, slot_);
   banded_.reset(n, width, width);
   for (int i = 0; i < n; ++i) banded_.at(i, i) = 1.0;
   subtract_dt_mk_banded(stiffness);
@@ -154,29 +157,29 @@ const std::vector<double>& ImmersedBoundary2::applyGram(const Eigen::VectorXd& v
 
 // The banded system on an earlier step's factors (ReusedBandedSolve) with M applied, not formed:
 // the right-hand side U_free + M F and each refinement sweep's product need only M's product, so
-// G and I − dt M K are formed only on the steps that factor anew (0.9% of the 1 mm jellyfish's).
+// G and I − θ dt M K are formed only on the steps that factor anew (0.9% of the 1 mm jellyfish's).
 // The answer is the same system's to the refinement's tolerance; only the rounding of M's products
 // differs from the formed matrix's (a whole default point's distance moved 2.5e-11 relative at 0.7
 // Hz, 7.9e-10 at 0.6 Hz). Forming G, forming I − dt M K and multiplying by it were 6.5%, 5.3% and
 // 5.1% of a 1 mm jellyfish step (perf, 2026-12-04).
 Eigen::VectorXd ImmersedBoundary2::solveWithoutAssembly(const Eigen::SparseMatrix<double>& stiffness,
                                                         const Eigen::VectorXd& free, const Eigen::VectorXd& force,
-                                                        double scale, double t1_s, double dt_s) {
+                                                        double scale, double t1_s, double theta_dt_s) {
   const int n = static_cast<int>(free.size());
-  const double dt_scale = dt_s * scale;
+  const double theta_dt_scale = theta_dt_s * scale;
   const std::vector<double>& g_force = applyGram(force);
   banded_rhs_.resize(n);
   for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = free[i] + scale * g_force[i];
   Eigen::VectorXd xn(n), predicted(n);
-  const auto apply = [&](const std::vector<double>& x, std::vector<double>& ax) {  // (I − dt M K) x
+  const auto apply = [&](const std::vector<double>& x, std::vector<double>& ax) {  // (I − θ dt M K) x
     for (int i = 0; i < n; ++i) xn[i] = x[banded_index(slot_, i)];
     const std::vector<double>& g_kx = applyGram(stiffness * xn);
     ax.resize(n);
-    for (int i = 0; i < n; ++i) ax[banded_index(slot_, i)] = xn[i] - dt_scale * g_kx[i];
+    for (int i = 0; i < n; ++i) ax[banded_index(slot_, i)] = xn[i] - theta_dt_scale * g_kx[i];
   };
   const auto assemble = [&]() -> const BandedLU& {
     transfer_.gram(scale, mobility_);
-    assembleBanded(stiffness, dt_s);
+    assembleBanded(stiffness, theta_dt_s);
     return banded_;
   };
   if (!banded_solver_.solve(n, apply, assemble, banded_rhs_)) throw singular_system(t1_s);
@@ -203,20 +206,21 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
   }
 
   Eigen::VectorXd predicted;
+  const double theta_dt_s = params_.implicit_theta * dt_s;  // exactly dt_s at θ = 1
   if (params_.mobility == ImplicitMobility::stencil) {
-    // (I − dt M K) U* = U_free + M F with M = dt/(ρ dx²) G. Not symmetric, and in effect dense:
-    // for the bell on 100² about half the entries of I − dt M K are nonzero, since every marker
+    // (I − θ dt M K) U* = U_free + M F with M = dt/(ρ dx²) G. Not symmetric, and in effect dense:
+    // for the bell on 100² about half the entries of I − θ dt M K are nonzero, since every marker
     // reaches its neighbours within the kernel's 4 cells along the chain and the muscles join
     // opposite sides, so a dense LU (86 µs for 106 unknowns) beats sparse LU with its symbolic
     // analysis (Eigen's SparseLU took about twice as long, Transfer's stencils changing every step).
     const double scale = dt_s / (rho * dx * dx);
     if (!order_.empty() && params_.factor_reuse.tolerance > 0) {
-      predicted = solveWithoutAssembly(stiffness, free, force, scale, t1_s, dt_s);
+      predicted = solveWithoutAssembly(stiffness, free, force, scale, t1_s, theta_dt_s);
     } else {
       transfer_.gram(scale, mobility_);
       const Eigen::VectorXd rhs = free + mobility_ * force;
       if (!order_.empty()) {
-        assembleBanded(stiffness, dt_s);
+        assembleBanded(stiffness, theta_dt_s);
         banded_rhs_.resize(n);
         for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = rhs[i];
         if (!banded_solver_.solve(banded_, banded_rhs_)) throw singular_system(t1_s);
@@ -224,15 +228,15 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
         for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[banded_index(slot_, i)];
       } else {
         system_.setIdentity(n, n);
-        subtract_dt_mk(stiffness, dt_s, [&](int i, int j) -> double& { return system_(i, j); });
+        subtract_dt_mk(stiffness, theta_dt_s, [&](int i, int j) -> double& { return system_(i, j); });
         lu_.compute(system_);
         predicted = lu_.solve(rhs);
       }
     }
   } else {
-    // (m I − dt² K) U* = m U_free + dt F: the same with M = dt / m.
+    // (m I − θ dt² K) U* = m U_free + dt F: the same with M = dt / m.
     const double mass = params_.implicit_mass_factor * rho * dx * dx;
-    Eigen::SparseMatrix<double> system = -(dt_s * dt_s) * stiffness;
+    Eigen::SparseMatrix<double> system = -(theta_dt_s * dt_s) * stiffness;
     Eigen::SparseMatrix<double> mass_matrix(n, n);
     mass_matrix.setIdentity();
     system += mass * mass_matrix;
@@ -243,7 +247,7 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
   }
   if (!predicted.allFinite())
     throw std::runtime_error("immersed boundary: the semi-implicit force is not finite at t = " + std::to_string(t1_s) + " s");
-  const Eigen::VectorXd correction = dt_s * (stiffness * predicted);
+  const Eigen::VectorXd correction = theta_dt_s * (stiffness * predicted);
   for (int i = 0; i < n / 2; ++i) {
     force_[i].x += correction[2 * i];
     force_[i].y += correction[2 * i + 1];

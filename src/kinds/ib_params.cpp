@@ -32,6 +32,9 @@ std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& d) {
       boolean("semi_implicit", true, "linearised implicit elastic forces (ib/coupling.hpp); false = explicit Peskin"),
       choice("implicit_mobility", "stencil", {"stencil", "local_mass"}, d.mobility_doc),
       real("implicit_mass_factor", 1.0, "", 1e-6, 100, "local_mass only: added mass per marker in rho dx^2"),
+      real("implicit_theta", 1.0, "", 0.5, 1.0,
+           "semi-implicit only: the linearised elastic force taken at X^n + theta dt U* (ib/coupling.hpp); 1 backward "
+           "Euler, first order, damps the recoil; 0.5 the step's middle, which does not"),
       real("implicit_reuse_tolerance", 1e-8, "", 0, 1e-4,
            "bodies of 300 markers or more (the banded semi-implicit solve): residual accepted when refining on an "
            "earlier step's LU factors, relative to the right-hand side; the system is factored anew when six "
@@ -88,6 +91,7 @@ ib::CouplingParams couplingParams(const ParamReader& r) {
   c.semi_implicit = r.boolean("semi_implicit");
   c.mobility = *ib::parse_implicit_mobility(r.text("implicit_mobility"));
   c.implicit_mass_factor = r.real("implicit_mass_factor");
+  c.implicit_theta = r.real("implicit_theta");
   c.factor_reuse.tolerance = r.real("implicit_reuse_tolerance");
   return c;
 }

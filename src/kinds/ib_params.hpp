@@ -39,7 +39,8 @@ struct CouplingDefaults {
   std::string kernel_radius_doc;
 };
 
-// kernel, kernel_radius_m, semi_implicit, implicit_mobility, implicit_mass_factor.
+// kernel, kernel_radius_m, semi_implicit, implicit_mobility, implicit_mass_factor, implicit_theta,
+// implicit_reuse_tolerance.
 std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& defaults);
 
 // The square box's fluid as read by every coupled kind (control_fluid too): domain_m, cells,

@@ -319,6 +319,7 @@ void BM_SimulatedSecondDefault(benchmark::State& state) {
   const int width_mm = static_cast<int>(state.range(0));
   const int height_mm = static_cast<int>(state.range(1));
   const int dt_us = static_cast<int>(state.range(2));
+  const int theta_pct = static_cast<int>(state.range(3));
   SwimmerConfig c = viscousPulseConfig(300);  // 1 mm cells
   c.fluid.domain_width_m = width_mm / 1000.0;  // the literal 0.25 or 0.3, correctly rounded
   c.fluid.cells_x = width_mm;
@@ -328,14 +329,16 @@ void BM_SimulatedSecondDefault(benchmark::State& state) {
   if (width_mm == 300) c.start_y_fraction = 0.3;  // the square box: the aperture 0.09 m up
   c.fluid.force_stage = fluid::ForceStage::after_advection;
   c.fluid.fixed_step_s = c.dt_s = dt_us / 1e6;  // the literal 0.000625 or 0.00125, correctly rounded
+  c.coupling.implicit_theta = theta_pct / 100.0;  // 1 or 0.5, exact
   measure(state, c);
 }
 BENCHMARK(BM_SimulatedSecondDefault)
-    ->ArgNames({"width_mm", "height_mm", "dt_us"})
-    ->Args({250, 360, 625})
-    ->Args({250, 300, 625})
-    ->Args({250, 300, 1250})
-    ->Args({300, 300, 1250})
+    ->ArgNames({"width_mm", "height_mm", "dt_us", "theta_pct"})
+    ->Args({250, 360, 625, 100})
+    ->Args({250, 360, 1250, 50})
+    ->Args({250, 300, 625, 100})
+    ->Args({250, 300, 1250, 100})
+    ->Args({300, 300, 1250, 100})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
