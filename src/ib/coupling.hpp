@@ -29,12 +29,16 @@
 //   (I − θ dt M K) U* = I u^n + M F,      F_impl = F + θ dt K U*.
 // θ = 1 (the default) is the backward-Euler end of the step above: first order, and it damps the
 // bell's elastic recoil by O(dt). θ = ½ takes the force at the middle of the markers' motion (the
-// trapezoidal rule of the linearised force), which does not damp; both are unconditionally stable
-// for linear springs (θ ≥ ½; cf. Newren, Fogelson, Guy & Kirby 2007, J. Comput. Phys. 222, on
-// backward-Euler and Crank–Nicolson immersed-boundary steps). Measured on the jellyfish's default
-// setting at 0.6 Hz (1 mm cells, issue 13 §4): halving the step from 0.00125 s moved the distance
-// per cycle by +3.7% at θ = 1 and by +1.4% at θ = ½ (experiments/jellyfish/convergence_theta.toml).
-// Any θ ≥ 0 keeps I − θ dt M K's eigenvalues ≥ 1; θ < ½ is not offered (it amplifies the stiff modes). Two mobilities (ImplicitMobility):
+// trapezoidal rule of the linearised force), which does not damp. For a linear body with the true
+// fluid response the θ-method is unconditionally stable for θ ≥ ½ and only conditionally below (cf.
+// Newren, Fogelson, Guy & Kirby 2007, J. Comput. Phys. 222, on backward-Euler and Crank–Nicolson
+// immersed-boundary steps); M here only approximates that response, so this is a guide, not a
+// proof: the membrane test runs θ = ½ at 0.01 s, the jellyfish at 0.00125-0.0025 s. θ < ½ is not
+// offered. Any θ ≥ 0 keeps I − θ dt M K's eigenvalues ≥ 1 (below). Measured on the jellyfish's
+// default setting at 0.6 Hz (1 mm cells, issue 13 §4): halving the step from 0.00125 s moved the
+// distance per cycle by +3.7% at θ = 1 and by +1.4% at θ = ½ (experiments/jellyfish/convergence_theta.toml).
+//
+// Two mobilities (ImplicitMobility):
 //  - stencil (default): M = dt/ρ · I S, the force spread and read back through the markers' own
 //    stencils, without the projection (Transfer::gram). Markers that share grid faces share
 //    their response, so a zigzag between neighbours two to a cell, which the grid cannot move,
