@@ -1,4 +1,4 @@
-# tests for physics/ib: the immersed-boundary membrane (label physics; about 15 s in total on one core)
+# tests for physics/ib: the immersed-boundary membrane (label physics; about 25 s in total on one core)
 creaturelab_test(ib_physics_tests physics
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/ib_membrane_test.cpp
