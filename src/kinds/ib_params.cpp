@@ -32,9 +32,10 @@ std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& d) {
       boolean("semi_implicit", true, "linearised implicit elastic forces (ib/coupling.hpp); false = explicit Peskin"),
       choice("implicit_mobility", "stencil", {"stencil", "local_mass"}, d.mobility_doc),
       real("implicit_mass_factor", 1.0, "", 1e-6, 100, "local_mass only: added mass per marker in rho dx^2"),
-      real("implicit_theta", 1.0, "", 0.5, 1.0,
+      real("implicit_theta", d.implicit_theta, "", 0.5, 1.0,
            "semi-implicit only: the linearised elastic force taken at X^n + theta dt U* (ib/coupling.hpp); 1 backward "
-           "Euler, first order, damps the recoil; 0.5 the step's middle, which does not"),
+           "Euler, first order, damps the recoil; 0.5 the step's middle, which does not" +
+               (d.implicit_theta_doc.empty() ? std::string() : ". " + d.implicit_theta_doc)),
       real("implicit_reuse_tolerance", 1e-8, "", 0, 1e-4,
            "bodies of 300 markers or more (the banded semi-implicit solve): residual accepted when refining on an "
            "earlier step's LU factors, relative to the right-hand side; the system is factored anew when six "

@@ -37,6 +37,8 @@ struct CouplingDefaults {
   std::string mobility_doc;
   double kernel_radius_m = 0;  // 0: the grid's own kernel
   std::string kernel_radius_doc;
+  double implicit_theta = 1.0;  // 1: backward Euler, ib::CouplingParams' own default
+  std::string implicit_theta_doc;
 };
 
 // kernel, kernel_radius_m, semi_implicit, implicit_mobility, implicit_mass_factor, implicit_theta,

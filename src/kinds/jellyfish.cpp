@@ -356,24 +356,32 @@ JellyfishKind::JellyfishKind() {
                            "multiple of the kernel's reach in cells (1 bilinear, 2 peskin4): Peskin's is stretched 1, 2, "
                            "4 times on 2, 1, 0.5 mm cells; a grid too coarse for it keeps its own kernel; 0 = the "
                            "grid's own kernel. Metric kernel_cells",
+      .implicit_theta = 0.5,
+      .implicit_theta_doc =
+          "Default 0.5 since 2026-12-05 (1 before; files measured then pin it): the backward-Euler force is the "
+          "leading step error of the coupled bell (on 1 mm at 0.6 Hz halving 0.00125 s moves the distance per cycle "
+          "+3.7% at 1, +1.4% at 0.5), so at 0.5 the step doubles (dt_s) and a converged point costs half "
+          "(BM_SimulatedSecondDefault: 5.5 against 10.7 CPU s per simulated s on 1 mm). Stable at 0.01 s on the "
+          "paper's 100² grid: all 27 points of frequency_sweep_paper_grid.toml ran with implicit_theta = 0.5 "
+          "(a probe of 2026-12-04)",
   });
   const std::vector<ParamSpec> rest = {
       real("viscosity_tolerance", fluid::FluidParams{}.viscosity_tolerance, "", 1e-14, 1e-2,
            "relative residual of the implicit viscous solve (fluid/diffusion2.hpp); raising it perturbs the flow "
            "slightly, a test of how sensitive a distance over several cycles is"),
-      real("dt_s", 0.000625, "s", 1e-7, 0.1,
-           "coupled step, first order in time (ib/coupling.hpp); the grid study halves it with the cell (dt ∝ dx: "
-           "0.00125, 0.000625, 0.0003125 s on 2, 1, 0.5 mm; convergence_default.toml). On 1 mm in the default box "
-           "0.00125 / 0.000625 / 0.0003125 s give 1.6251 / 1.6858 / 1.7067, 1.4781 / 1.4924 / 1.4994 and 1.0882 / "
-           "1.1037 / 1.1104 mm per cycle at 0.6 / 0.7 / 0.8 Hz (observed order 1.5, 1.0, 1.2): 0.000625 s lies "
-           "1.9 / 0.9 / 1.0% below the Richardson limits, 0.00125 s (the default on the morning of 2026-12-03) 5.4 "
-           "/ 1.9 / 2.4%, and missed the 0.6 Hz grid check in the 0.3 m tall box; the stroke moves under 0.5%. With "
-           "the force before the advection (force_stage; the default until 2026-12-03) 0.000625 / 0.0003125 / "
-           "0.00015625 s gave 1.5945 / 1.5504 / 1.5334 at 0.7 Hz, 4.7% above its limit at 0.000625 s "
-           "(convergence_step_scheme.toml). The paper's 0.01 s is stable with the semi-implicit step. With the "
-           "force at the step's middle (implicit_theta = 0.5) 0.00125 s holds this accuracy at half the cost: "
-           "1.6822 / 1.4922 / 1.1025 mm per cycle, 2.2 / 0.9 / 1.3% below that sequence's limits, every check of "
-           "convergence_default.toml passing with each step doubled (convergence_theta.toml)"),
+      real("dt_s", 0.00125, "s", 1e-7, 0.1,
+           "coupled step, first order in time at implicit_theta = 1 (ib/coupling.hpp). The default since 2026-12-05, "
+           "with implicit_theta = 0.5; on 1 mm in the default box it gives 1.6822 / 1.4922 / 1.1025 mm per cycle at "
+           "0.6 / 0.7 / 0.8 Hz, half of it +1.4 / +0.5 / +0.7%, 2.2 / 0.9 / 1.3% below the Richardson limits, and "
+           "every check of the grid study passes with each of its steps doubled (convergence_theta.toml: the grid "
+           "halves it with the cell, dt ∝ dx, 0.0025 / 0.00125 / 0.000625 s on 2 / 1 / 0.5 mm). At implicit_theta = "
+           "1 (the setting before 2026-12-05, at 0.000625 s) 0.00125 / 0.000625 / 0.0003125 s give 1.6251 / 1.6858 / "
+           "1.7067, 1.4781 / 1.4924 / 1.4994 and 1.0882 / 1.1037 / 1.1104 mm per cycle (observed order 1.5, 1.0, "
+           "1.2): 0.000625 s lies 1.9 / 0.9 / 1.0% below the limits, 0.00125 s 5.4 / 1.9 / 2.4% "
+           "(convergence_default.toml). With the force before the advection (force_stage; the default until "
+           "2026-12-03) 0.000625 / 0.0003125 / 0.00015625 s gave 1.5945 / 1.5504 / 1.5334 at 0.7 Hz, 4.7% above its "
+           "limit at 0.000625 s (convergence_step_scheme.toml). The paper's 0.01 s is stable with the semi-implicit "
+           "step"),
       choice("force_stage", "after_advection", {"before_advection", "after_advection"},
              "where the bell's force enters the fluid step: after the advection (the default since 2026-12-03: the "
              "force a source of the momentum equation, Peskin 2002 §6), or before it (Stam 1999 §2.2, the paper's "

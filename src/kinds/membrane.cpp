@@ -107,6 +107,8 @@ MembraneKind::MembraneKind() {
       .kernel_radius_doc = "radius of the kernel's support; 0 = the grid's own (1 cell bilinear, 2 peskin4); otherwise "
                            "a whole multiple of that, the kernel stretched to a fixed width (ib/kernel.hpp); a grid too "
                            "coarse for the radius keeps its own kernel",
+      .implicit_theta = 1.0,
+      .implicit_theta_doc = "Default 1; the membrane test measures 0.5 against it (ib_membrane_test.cpp)",
   });
   // --- fluid: a viscous liquid in a free-slip box (the test is of the method, not of sea water)
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({

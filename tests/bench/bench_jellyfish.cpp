@@ -315,8 +315,9 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // paper's grid 15.9 / 16.3 -> 17.1 / 16.7 simulated s per CPU s. This host ran 1.33 times slower than
 // that morning's (the paper's grid; the default 12.3 against 9.27 s per simulated second before the
 // change), so the 11.43 s point takes 129-130 s of CPU here and about 97 s there: 1.6 times issue 13's 60 s.
-// theta_pct: the coupling's implicit_theta in percent (ib/coupling.hpp); 100 is the default. With the force
-// at the step's middle (50) the default's accuracy holds at twice its step (convergence_theta.toml: grid,
+// theta_pct: the coupling's implicit_theta in percent (ib/coupling.hpp). The kind's default is
+// width_mm:250/height_mm:360/dt_us:1250/theta_pct:50 since 2026-12-05 (dt_us:625/theta_pct:100 before). With the
+// force at the step's middle (50) the earlier default's accuracy holds at twice its step (convergence_theta.toml: grid,
 // step, scheme and box within 3.0 / 1.4 / 0.7 / 0.6%, the distance within 0.21% of the default's).
 // 2026-12-04 21:59-22:01 UTC, idle machine, two interleaved runs: width_mm:250/height_mm:360 dt_us:625
 // theta_pct:100 10656 / 10747 ms per simulated second (6.66 / 6.72 ms per step, new factors at 0.87% of

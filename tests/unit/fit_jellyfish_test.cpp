@@ -34,7 +34,8 @@ const kinds::Result& shortRun() {
     // the driving curve, which is what the fits below recover (the kind's default active-tension
     // bell, soft and driven by a tension, does not follow it).
     // On the kind's defaults until 2026-11-29 (the Hermite curve, hat kernel, 2 mm cells in the 0.4 m box)
-    // and until 2026-12-03 (the force before the advection in a box 1.5 times as tall).
+    // and until 2026-12-03 (the force before the advection in a box 1.5 times as tall), and until
+    // 2026-12-05 (the force at the step's end).
     kinds::Params p = kinds::withDefaults(kind, {{"muscle_model", kinds::Value(std::string("rest_length"))},
                                                  {"bending_rigidity_n_m", kinds::Value(2.352e-3)},
                                                  {"activation_shape", kinds::Value(std::string("hermite"))},
@@ -46,7 +47,8 @@ const kinds::Result& shortRun() {
                                                  {"bell_segments", std::int64_t(0)},
                                                  {"force_stage", kinds::Value(std::string("before_advection"))},
                                                  {"box_aspect", 1.5},
-                                                 {"start_y_fraction", 0.2}});
+                                                 {"start_y_fraction", 0.2},
+                                                 {"implicit_theta", 1.0}});
     p["duration_s"] = 3 / 0.7;
     return kind.run(p);
   }();

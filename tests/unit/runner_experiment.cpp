@@ -681,11 +681,11 @@ TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
 }
 
 TEST(RunnerExperiment, JellyfishDefaultsAreTheSettingItsConvergenceStudyMeasures) {
-  // The kind's defaults are documented as convergence_default.toml's "1 mm" case (src/kinds/jellyfish.cpp);
-  // a default that drifts from it (a dropped or changed default) would leave the study measuring
-  // another setting than the one `creaturelab run` gives.
+  // The kind's defaults are documented as convergence_theta.toml's "1 mm" case (src/kinds/jellyfish.cpp;
+  // convergence_default.toml's until 2026-12-05); a default that drifts from it (a dropped or changed
+  // default) would leave the study measuring another setting than the one `creaturelab run` gives.
   const std::filesystem::path file =
-      std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / "experiments/jellyfish/convergence_default.toml";
+      std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / "experiments/jellyfish/convergence_theta.toml";
   const std::vector<Point> study = points(runner::loadExperiment(file.string(), {}, registry()));
   int compared = 0;
   for (const Point& p : study) {
