@@ -68,6 +68,7 @@ void measure(benchmark::State& state, const SwimmerConfig& config) {
   double cpu = 0;
   double elapsed = 0;
   long seconds = 0;
+  long viscosity_iterations = 0;
   for (auto _ : state) {
     if (seconds > 0 && seconds % 10 == 0) {
       state.PauseTiming();
@@ -77,7 +78,7 @@ void measure(benchmark::State& state, const SwimmerConfig& config) {
     const double t0 = cpuSeconds();
     const double e0 = elapsedSeconds();
     try {
-      for (long k = 0; k < steps_per_second; ++k) swimmer->step();
+      for (long k = 0; k < steps_per_second; ++k) viscosity_iterations += swimmer->step().fluid.viscosity.iterations;
     } catch (const std::exception& e) {
       state.SkipWithError(e.what());
       return;
@@ -95,6 +96,8 @@ void measure(benchmark::State& state, const SwimmerConfig& config) {
   state.counters["fluid_threads"] = config.fluid.threads;
   state.counters["ms_per_step"] = 1e3 * cpu / static_cast<double>(seconds * steps_per_second);
   state.counters["markers"] = static_cast<double>(swimmer->markers_m().size());
+  // The viscous solve's sweeps and iterations per step, of the worse of the two components.
+  state.counters["viscosity_iterations"] = double(viscosity_iterations) / double(seconds * steps_per_second);
   const ib::ReusedBandedSolve& solver = swimmer->coupling().banded_solver();
   if (solver.solves() > 0) {
     state.counters["factorizations_per_solve"] = double(solver.factorizations()) / double(solver.solves());
@@ -325,11 +328,20 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // default's cost. The 11.43 s point is then 63-64 s of CPU against 122-123 s; this host ran the paper's
 // grid (BM_SimulatedSecond/100, Peskin's kernel) at 18.7 simulated s per CPU s, the host of that morning
 // at 22.5-22.7, where it would be about 53 s, within issue 13's 60 s.
+// tol_digits: the viscous solve's tolerance, 10^-tol_digits (FluidParams::viscosity_tolerance); the kind's
+// default is 8 since 2026-12-05 (the fluid's 10 before). On the default setting it cuts the solve's
+// Chebyshev sweeps from 10 to 8 a step (counter viscosity_iterations) and moves every metric of
+// convergence_theta.toml's 21 points by at most 4.4e-7 relative. 2026-12-05 00:54-00:55 UTC, idle machine,
+// two interleaved runs: tol_digits:10 5782 / 5533, tol_digits:8 5331 / 5348 ms per simulated second (7.23 /
+// 6.92 -> 6.66 / 6.69 ms per step); the paper's grid ran at 19.3-19.6 simulated s per CPU s. The whole
+// 11.43 s default point at 0.7 Hz took 58.1 s of CPU alone on one core right after (64.5 s at 1e-10 four
+// hours earlier on the same host), and 57-60 s of wall time a point at 0.6-0.8 Hz two at a time.
 void BM_SimulatedSecondDefault(benchmark::State& state) {
   const int width_mm = static_cast<int>(state.range(0));
   const int height_mm = static_cast<int>(state.range(1));
   const int dt_us = static_cast<int>(state.range(2));
   const int theta_pct = static_cast<int>(state.range(3));
+  const int tolerance_digits = static_cast<int>(state.range(4));
   SwimmerConfig c = viscousPulseConfig(300);  // 1 mm cells
   c.fluid.domain_width_m = width_mm / 1000.0;  // the literal 0.25 or 0.3, correctly rounded
   c.fluid.cells_x = width_mm;
@@ -340,15 +352,17 @@ void BM_SimulatedSecondDefault(benchmark::State& state) {
   c.fluid.force_stage = fluid::ForceStage::after_advection;
   c.fluid.fixed_step_s = c.dt_s = dt_us / 1e6;  // the literal 0.000625 or 0.00125, correctly rounded
   c.coupling.implicit_theta = theta_pct / 100.0;  // 1 or 0.5, exact
+  c.fluid.viscosity_tolerance = std::pow(10.0, -tolerance_digits);  // the literal 1e-8 or 1e-10, correctly rounded
   measure(state, c);
 }
 BENCHMARK(BM_SimulatedSecondDefault)
-    ->ArgNames({"width_mm", "height_mm", "dt_us", "theta_pct"})
-    ->Args({250, 360, 625, 100})
-    ->Args({250, 360, 1250, 50})
-    ->Args({250, 300, 625, 100})
-    ->Args({250, 300, 1250, 100})
-    ->Args({300, 300, 1250, 100})
+    ->ArgNames({"width_mm", "height_mm", "dt_us", "theta_pct", "tol_digits"})
+    ->Args({250, 360, 1250, 50, 8})
+    ->Args({250, 360, 1250, 50, 10})
+    ->Args({250, 360, 625, 100, 10})
+    ->Args({250, 300, 625, 100, 10})
+    ->Args({250, 300, 1250, 100, 10})
+    ->Args({300, 300, 1250, 100, 10})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);

@@ -35,7 +35,7 @@ const kinds::Result& shortRun() {
     // bell, soft and driven by a tension, does not follow it).
     // On the kind's defaults until 2026-11-29 (the Hermite curve, hat kernel, 2 mm cells in the 0.4 m box)
     // and until 2026-12-03 (the force before the advection in a box 1.5 times as tall), and until
-    // 2026-12-05 (the force at the step's end).
+    // 2026-12-05 (the force at the step's end, the viscous solve to 1e-10).
     kinds::Params p = kinds::withDefaults(kind, {{"muscle_model", kinds::Value(std::string("rest_length"))},
                                                  {"bending_rigidity_n_m", kinds::Value(2.352e-3)},
                                                  {"activation_shape", kinds::Value(std::string("hermite"))},
@@ -48,7 +48,8 @@ const kinds::Result& shortRun() {
                                                  {"force_stage", kinds::Value(std::string("before_advection"))},
                                                  {"box_aspect", 1.5},
                                                  {"start_y_fraction", 0.2},
-                                                 {"implicit_theta", 1.0}});
+                                                 {"implicit_theta", 1.0},
+                                                 {"viscosity_tolerance", 1e-10}});
     p["duration_s"] = 3 / 0.7;
     return kind.run(p);
   }();
