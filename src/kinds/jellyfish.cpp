@@ -369,8 +369,9 @@ JellyfishKind::JellyfishKind() {
       real("viscosity_tolerance", 1e-8, "", 1e-14, 1e-2,
            "relative residual of the implicit viscous solve (fluid/diffusion2.hpp). 1e-8 since 2026-12-05 (the "
            "fluid's 1e-10 before; files measured then pin it): on the default setting the solve's Chebyshev sweeps "
-           "fall from 10 to 8 a step, a point's CPU by about 6%, and the distance per cycle of a whole 0.7 Hz point "
-           "moves by 2e-8 relative (1e-7: 4.4e-7), against the step's 0.5-1.4% and the grid's 1.3-3.0%"),
+           "fall from 10 to 8 a step, a point's CPU by about 5% (56.2 against 59.3 s), and the distance per cycle "
+           "of a whole 0.7 Hz point moves by 2e-8 relative (1e-7: 4.4e-7; the 44 points of the four default-setting "
+           "files at most 9.1e-7), against the step's 0.5-1.4% and the grid's 1.3-3.0%"),
       real("dt_s", 0.00125, "s", 1e-7, 0.1,
            "coupled step, first order in time (ib/coupling.hpp). 0.00125 s since 2026-12-05, with implicit_theta = "
            "0.5; on 1 mm in the default box it gives 1.6822 / 1.4922 / 1.1025 mm per cycle at "

@@ -102,6 +102,13 @@
 //   semi-Lagrangian step       2833 / 2784 -> 2480 / 2372 (42.9 -> 37.0)   3429 / 3452 -> 3260 / 3220
 // (-16% and -13% on one thread). This host was slow (the paper's grid 15.9-16.3 simulated s per CPU s
 // against 22.5-22.7 on the host of that morning) and ran two threads slower than one.
+// 2026-12-04 23:40 and 2026-12-05 01:04 UTC, idle machine, medians of 3, 256², ns per cell, 1 thread CPU / 2
+// threads elapsed: MacCormack 43.1 / 27.5 and 44.0 / 27.0, semi-Lagrangian 30.1 / 20.2 and 30.3 / 20.0,
+// upwind2_rk2 27.2 / 16.4 and 24.5 / 17.8; stages at 23:40 (1 thread / 2 threads elapsed): advection
+// MacCormack 26.5 / 15.1, semi-Lagrangian 12.1 / 7.7, upwind2_rk2 7.6 / 4.7, viscosity 5.5 / 4.0, pressure
+// 9.9 / 7.2. The host ran the paper's 100² grid at 19.2 and then 20.5-21.8 simulated s per CPU s. The goal
+// (20) held on two threads for upwind2_rk2 and, at the limit, semi-Lagrangian; MacCormack, the jellyfish's
+// default, stayed at 27 on two threads and 43-44 on one.
 //
 // The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
 // fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is

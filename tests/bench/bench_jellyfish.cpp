@@ -333,9 +333,10 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // Chebyshev sweeps from 10 to 8 a step (counter viscosity_iterations) and moves every metric of
 // convergence_theta.toml's 21 points by at most 4.4e-7 relative. 2026-12-05 00:54-00:55 UTC, idle machine,
 // two interleaved runs: tol_digits:10 5782 / 5533, tol_digits:8 5331 / 5348 ms per simulated second (7.23 /
-// 6.92 -> 6.66 / 6.69 ms per step); the paper's grid ran at 19.3-19.6 simulated s per CPU s. The whole
-// 11.43 s default point at 0.7 Hz took 58.1 s of CPU alone on one core right after (64.5 s at 1e-10 four
-// hours earlier on the same host), and 57-60 s of wall time a point at 0.6-0.8 Hz two at a time.
+// 6.92 -> 6.66 / 6.69 ms per step); the paper's grid ran at 19.3-19.6 simulated s per CPU s. Ten minutes
+// later the host ran faster (the paper's grid 20.5-21.8) and noisier: tol_digits:8 5169 / 4996 against
+// tol_digits:10 5109. The whole 11.43 s default point at 0.7 Hz, alone on one core, one after the other
+// (01:06-01:08 UTC): 56.2 s of CPU at 1e-8 against 59.3 s at 1e-10 (-5.3%); 58.1 s at 1e-8 at 00:55.
 void BM_SimulatedSecondDefault(benchmark::State& state) {
   const int width_mm = static_cast<int>(state.range(0));
   const int height_mm = static_cast<int>(state.range(1));
