@@ -337,6 +337,8 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // later the host ran faster (the paper's grid 20.5-21.8) and noisier: tol_digits:8 5169 / 4996 against
 // tol_digits:10 5109. The whole 11.43 s default point at 0.7 Hz, alone on one core, one after the other
 // (01:06-01:08 UTC): 56.2 s of CPU at 1e-8 against 59.3 s at 1e-10 (-5.3%); 58.1 s at 1e-8 at 00:55.
+// Twenty-seven default points at 0.6-1.12 Hz (creaturelab run --jobs 2, 01:13-01:27 UTC): 13.4 min of wall
+// time, 54.3-62.9 s a point: issue 13's 27-point sweep in 15 minutes on 2 cores holds on this host.
 void BM_SimulatedSecondDefault(benchmark::State& state) {
   const int width_mm = static_cast<int>(state.range(0));
   const int height_mm = static_cast<int>(state.range(1));
