@@ -102,7 +102,8 @@ FIGURES = [
            "advection at 0.000625 s, in a 0.25 m by 0.36 m box 0.2-0.5% below a 0.4 m by 0.6 m one, whose grid "
            "(0.5 mm: +2.4, +1.3, -3.1% at 0.6-0.8 Hz), step (+0.5 to +1.2%), scheme (upwind2_rk2: -0.4 to -0.6%) "
            "and box (1%) checks pass (convergence_default). The mean speed peaks at 0.65 Hz (1.13 f_n; 1.5% above "
-           "0.7 Hz, 4.0% on 0.5 mm) and the stroke at 0.55 Hz (0.955 f_n), as on the earlier converged setting.",
+           "0.7 Hz, 4.0% on 0.5 mm) and the stroke at 0.55 Hz (0.955 f_n), as on the earlier converged setting "
+           "(make reproduce-full).",
            "frequency_sweep_default", "rm_fig5", None),
     Figure("rm", "Fig. 5 (converged setting), QUICK",
            "Fig. 5 on that setting, QUICK: 2 mm cells at twice the step. Against 1 mm at 0.000625 s "

@@ -27,8 +27,8 @@
 // consistent whatever M is.
 // Where in the step the force is evaluated (implicit_theta = θ): at X^n + θ dt U*, i.e.
 //   (I − θ dt M K) U* = I u^n + M F,      F_impl = F + θ dt K U*.
-// θ = 1 (the default) is the backward-Euler end of the step above: first order, and it damps the
-// bell's elastic recoil by O(dt). θ = ½ takes the force at the middle of the markers' motion (the
+// θ = 1 (CouplingParams' default; the jellyfish kind's is ½ since 2026-12-05) is the backward-Euler
+// end of the step above: first order, and it damps the bell's elastic recoil by O(dt). θ = ½ takes the force at the middle of the markers' motion (the
 // trapezoidal rule of the linearised force), which does not damp. For a linear body with the true
 // fluid response the θ-method is unconditionally stable for θ ≥ ½ and only conditionally below (cf.
 // Newren, Fogelson, Guy & Kirby 2007, J. Comput. Phys. 222, on backward-Euler and Crank–Nicolson
