@@ -109,6 +109,15 @@
 // 9.9 / 7.2. The host ran the paper's 100² grid at 19.2 and then 20.5-21.8 simulated s per CPU s. The goal
 // (20) held on two threads for upwind2_rk2 and, at the limit, semi-Lagrangian; MacCormack, the jellyfish's
 // default, stayed at 27 on two threads and 43-44 on one.
+// 2026-12-05 02:40-03:00 UTC, idle machine but a slower hour (the paper's grid at 16.7-17.2 simulated s per
+// CPU s), two interleaved runs of the build before and after the sampler's truncation by rounding in place
+// (staggered_sampler2.hpp, sample4_shifted: vroundpd instead of a conversion to integers and back; the same
+// whole numbers, datasets bitwise the same), medians, 256², ns per cell, before -> after:
+//   advection, 1 thread CPU         MacCormack 27.9 / 29.0 -> 25.7 / 25.5, semi-Lagrangian 12.8 / 13.3 -> 11.6 / 12.0
+//   full step, 1 thread CPU         MacCormack 51.2 / 50.1 -> 49.7 / 48.5, semi-Lagrangian 37.2 / 36.3 -> 35.9 / 33.4
+//   full step, 2 threads elapsed    MacCormack 37.3 / 32.0 -> 36.7 / 30.6, semi-Lagrangian 29.3 / 23.3 -> 28.9 / 21.9,
+//                                   upwind2_rk2 21.5 / 18.5 -> 20.5 / 19.0
+// (-8 to -12% on the sampling passes, -3% on a MacCormack step). MacCormack stays far from 20 on this host.
 //
 // The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
 // fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is
