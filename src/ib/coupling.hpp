@@ -36,7 +36,8 @@
 // proof: the membrane test runs θ = ½ at 0.01 s, the jellyfish at 0.00125-0.0025 s on 1 mm, and on
 // the paper's 100² grid at 0.01 s (frequency_sweep_paper_grid.toml, 27 points, 2026-12-04) the
 // bell's chain stayed as smooth as at θ = 1 (largest second difference per segment 0.30-0.34
-// against 0.30-0.32 at 0.7 and 1.2 Hz). θ < ½ is not offered. Any θ ≥ 0 keeps I − θ dt M K's
+// against 0.30-0.32 at 0.7 and 1.2 Hz; tests/physics/jellyfish_swim_test.cpp runs 0.2, 0.7 and 1.5 Hz of
+// it over the whole window). θ < ½ is not offered. Any θ ≥ 0 keeps I − θ dt M K's
 // eigenvalues ≥ 1 (below). Measured on the jellyfish's default setting at 0.6 Hz (1 mm cells, issue
 // 13 §4): halving the step from 0.00125 s moved the distance per cycle by +3.7% at θ = 1 and by
 // +1.4% at θ = ½ (experiments/jellyfish/convergence_theta.toml).

@@ -363,7 +363,7 @@ JellyfishKind::JellyfishKind() {
           "+3.7% at 1, +1.4% at 0.5), so at 0.5 the step doubles (dt_s) and a converged point costs half "
           "(BM_SimulatedSecondDefault: 5.5 against 10.7 CPU s per simulated s on 1 mm). Stable at 0.01 s on the "
           "paper's 100² grid: all 27 points of frequency_sweep_paper_grid.toml ran with implicit_theta = 0.5 "
-          "(a probe of 2026-12-04)",
+          "(a probe of 2026-12-04; tests/physics/jellyfish_swim_test.cpp holds 0.2, 0.7 and 1.5 Hz of it)",
   });
   const std::vector<ParamSpec> rest = {
       real("viscosity_tolerance", 1e-8, "", 1e-14, 1e-2,

@@ -339,7 +339,7 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // (01:06-01:08 UTC): 56.2 s of CPU at 1e-8 against 59.3 s at 1e-10 (-5.3%); 58.1 s at 1e-8 at 00:55.
 // Twenty-seven default points at 0.6-1.12 Hz (creaturelab run --jobs 2, 01:13-01:27 UTC): 13.4 min of wall
 // time, 54.3-62.9 s a point: issue 13's 27-point sweep in 15 minutes on 2 cores holds on this host.
-// 2026-12-05 02:58-03:02 UTC, a slower hour of the same host (the paper's grid 16.7-17.2 simulated s per CPU s,
+// 2026-12-05 02:58-03:02 UTC, a slower hour of the same host (the paper's grid 16.5-17.2 simulated s per CPU s,
 // against 20.5-21.8 at 01:05), two interleaved runs of the build before and after the sampler's truncation by
 // rounding (fluid/staggered_sampler2.hpp; a 0.6 s point under each advection scheme on 1 and 2 threads bitwise
 // the same, 228 datasets): default 5857 / 6022 -> 5734 / 5727 ms per simulated second (-2 to -5%). At that
