@@ -109,7 +109,7 @@
 // 9.9 / 7.2. The host ran the paper's 100² grid at 19.2 and then 20.5-21.8 simulated s per CPU s. The goal
 // (20) held on two threads for upwind2_rk2 and, at the limit, semi-Lagrangian; MacCormack, the jellyfish's
 // default, stayed at 27 on two threads and 43-44 on one.
-// 2026-12-05 02:40-03:00 UTC, idle machine but a slower hour (the paper's grid at 16.5-17.2 simulated s per
+// 2026-12-05 02:10-02:20 UTC, idle machine but a slower hour (the paper's grid at 16.5-17.2 simulated s per
 // CPU s), two interleaved runs of the build before and after the sampler's truncation by rounding in place
 // (staggered_sampler2.hpp, sample4_shifted: vroundpd instead of a conversion to integers and back; the same
 // whole numbers, datasets bitwise the same), medians, 256², ns per cell, before -> after:

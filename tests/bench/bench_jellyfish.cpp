@@ -339,11 +339,12 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // (01:06-01:08 UTC): 56.2 s of CPU at 1e-8 against 59.3 s at 1e-10 (-5.3%); 58.1 s at 1e-8 at 00:55.
 // Twenty-seven default points at 0.6-1.12 Hz (creaturelab run --jobs 2, 01:13-01:27 UTC): 13.4 min of wall
 // time, 54.3-62.9 s a point: issue 13's 27-point sweep in 15 minutes on 2 cores holds on this host.
-// 2026-12-05 02:58-03:02 UTC, a slower hour of the same host (the paper's grid 16.5-17.2 simulated s per CPU s,
+// 2026-12-05 02:15-02:22 UTC, a slower hour of the same host (the paper's grid 16.5-17.2 simulated s per CPU s,
 // against 20.5-21.8 at 01:05), two interleaved runs of the build before and after the sampler's truncation by
 // rounding (fluid/staggered_sampler2.hpp; a 0.6 s point under each advection scheme on 1 and 2 threads bitwise
 // the same, 228 datasets): default 5857 / 6022 -> 5734 / 5727 ms per simulated second (-2 to -5%). At that
-// hour's speed the 11.43 s point takes about 65 s of CPU: the 60 s goal holds on this host's faster hours only.
+// hour's speed the 11.43 s point takes about 65 s of CPU, and the whole default point at 0.7 Hz, run alone with
+// the faster build at 02:43, took 65.3 s: the 60 s goal holds on this host's faster hours only.
 void BM_SimulatedSecondDefault(benchmark::State& state) {
   const int width_mm = static_cast<int>(state.range(0));
   const int height_mm = static_cast<int>(state.range(1));
