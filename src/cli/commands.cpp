@@ -184,8 +184,8 @@ int Commands::digest(const std::string& run_dir) const {
 }
 
 // The list's [[render]] entries, after its experiments: `creaturelab render RUN --figures ...` on
-// recorded swims (run = the run folder under results/runs/reproduce; frames, settings, figures).
-int Commands::reproduceRenders(const toml::table& list, const std::string& file) const {
+// recorded swims (run = the run folder under the list's output root; frames, settings, figures).
+int Commands::reproduceRenders(const toml::table& list, const std::string& file, const std::string& out_root) const {
   const auto* renders = list["render"].as_array();
   if (!renders) return 0;
   int code = 0;
@@ -197,7 +197,7 @@ int Commands::reproduceRenders(const toml::table& list, const std::string& file)
           !problem.empty())
         throw UsageError(file + ": [[render]]: " + problem);
     runner::RenderRunOptions o;
-    o.source = "results/runs/reproduce/" + (*t)["run"].value_or(std::string());
+    o.source = out_root + "/" + (*t)["run"].value_or(std::string());
     o.frames = (*t)["frames"].value_or(std::string());
     o.figures = (*t)["figures"].value_or(false);
     o.force = true;
@@ -231,7 +231,7 @@ int Commands::reproduce(const ReproduceArgs& args) const {
   if (!files)
     throw UsageError(args.list + ": expected experiments = [\"experiments/...toml\", {file = \"...\", set = [...]}, ...]");
   // Each entry: a path, or a table {file = "...", set = ["params.x=1", ...], name = "..."} whose
-  // overrides make a quick version of a longer experiment; the run goes to results/runs/reproduce/NAME
+  // overrides make a quick version of a longer experiment; the run goes to OUT_ROOT/NAME
   // (default: the file's stem).
   std::vector<runner::RunOptions> planned;
   for (auto&& f : *files) {
@@ -282,7 +282,7 @@ int Commands::reproduce(const ReproduceArgs& args) const {
     code = std::max(code, r.exitCode());
   }
   if (primary()) std::printf("\n== checks of every experiment\n%s", runner::formatCheckTable(all).c_str());
-  if (primary()) code = std::max(code, reproduceRenders(list, args.list));
+  if (primary()) code = std::max(code, reproduceRenders(list, args.list, args.out_root));
   return code;
 }
 

@@ -52,7 +52,7 @@ class Commands {
  private:
   bool primary() const { return cluster_.rank() == 0; }
   void printReport(const runner::RunReport& report) const;
-  int reproduceRenders(const toml::table& list, const std::string& file) const;
+  int reproduceRenders(const toml::table& list, const std::string& file, const std::string& out_root) const;
 
   const runner::Cluster& cluster_;
   kinds::Registry registry_;

@@ -99,4 +99,19 @@ rc=0
 [[ $rc == 2 ]] && grep -q "already exists: pass --force" "$scratch/exists.stderr" || fail "existing output: $rc"
 [ -z "$(ls "$scratch/out_exists")" ] || fail "wrote into an existing folder"
 "$bin" list render | grep -q "noise_seed" || fail "list render"
+
+# A reproduce list's [[render]] entry renders the run under the list's --out folder (it read
+# results/runs/reproduce whatever --out said until 2026-12-05).
+cat >"$scratch/list.toml" <<TOML
+experiments = [{ file = "$scratch/swim.toml", name = "listed_swim" }]
+[[render]]
+run = "listed_swim"
+frames = "0:4"
+settings = { rings = 12, segments = 16, tentacles = 3, tentacle_rings = 4, tentacle_segments = 4 }
+TOML
+"$bin" reproduce --list "$scratch/list.toml" --out "$scratch/root" >/dev/null 2>"$scratch/list.stderr" ||
+  fail "reproduce with a [[render]] entry: $(tail -3 "$scratch/list.stderr")"
+[ -f "$scratch/root/listed_swim/render_point_000000/jellyfish.glb" ] ||
+  fail "the [[render]] entry did not render under --out: $(ls -R "$scratch/root" | head -20)"
+[ "$(ls "$scratch/root/listed_swim/render_point_000000/obj" | wc -l)" = 4 ] || fail "frames = 0:4: expected 4 OBJ frames"
 echo "render cli: ok"
