@@ -33,8 +33,7 @@ def regenerate(run, root, module, row_command=None):
     draw = (f"/usr/bin/python3 analysis/figures/{module}.py {shlex.quote(folder)}" if module
             else f"/usr/bin/python3 analysis/draw_runs.py {shlex.quote(folder)}")
     # A figure another tool draws (the 3-D renders: `creaturelab render --figures`) has no module.
-    if module and not os.path.exists(os.path.join(os.path.dirname(os.path.abspath(__file__)), "figures",
-                                                  module + ".py")):
+    if module and not catalog.has_module(module):
         draw = None
     if row_command:
         command = row_command.replace("RUN", shlex.quote(folder))

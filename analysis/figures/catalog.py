@@ -8,6 +8,7 @@ not name still appears in the report (under "Other runs") with its checks and ev
 kind's plotter drew, so a new kind needs no edit here to be reported; a row only adds the paper's
 words and figure number.
 """
+import os
 from collections import namedtuple
 
 Paper = namedtuple("Paper", "key title seed")
@@ -158,6 +159,14 @@ def figures_of_run(run_name):
     return [f for f in FIGURES if f.run == run_name]
 
 
+def has_module(module):
+    """Whether analysis/figures/<module>.py exists. A row without one is drawn by its command alone
+    (the 3-D renders: `creaturelab render --figures`, reproduce.toml's [[render]] entry)."""
+    return os.path.exists(os.path.join(os.path.dirname(os.path.abspath(__file__)), module + ".py"))
+
+
 def module_of_run(run_name):
-    """The figure modules that draw a run folder named run_name."""
-    return [f.module for f in figures_of_run(run_name)]
+    """The figure modules that draw a run folder named run_name: every row's module, except those of
+    rows drawn by their command (no module file, a command). A row with neither keeps its name, so
+    that draw_runs.py reports the missing module instead of skipping it."""
+    return [f.module for f in figures_of_run(run_name) if has_module(f.module) or f.command is None]
