@@ -138,8 +138,9 @@ struct SampleView {
   __m256d sample4_shifted(__m256d fx, __m256d fy, __m256d* lo, __m256d* hi) const {
     // Truncation of the non-negative fx, fy in place (one rounding instead of a conversion to
     // integers and back): the same whole numbers as sample2_shifted()'s.
-    const __m256d i0 = _mm256_min_pd(_mm256_round_pd(fx, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC), _mm256_set1_pd(i_max));
-    const __m256d j0 = _mm256_min_pd(_mm256_round_pd(fy, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC), _mm256_set1_pd(j_max));
+    constexpr int kTruncate = _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC;
+    const __m256d i0 = _mm256_min_pd(_mm256_round_pd(fx, kTruncate), _mm256_set1_pd(i_max));
+    const __m256d j0 = _mm256_min_pd(_mm256_round_pd(fy, kTruncate), _mm256_set1_pd(j_max));
     const __m256d tx = _mm256_sub_pd(fx, i0);
     const __m256d ty = _mm256_sub_pd(fy, j0);
     const __m128i offset =

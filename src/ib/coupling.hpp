@@ -28,9 +28,10 @@
 // Where in the step the force is evaluated (implicit_theta = θ): at X^n + θ dt U*, i.e.
 //   (I − θ dt M K) U* = I u^n + M F,      F_impl = F + θ dt K U*.
 // θ = 1 (CouplingParams' default; the jellyfish kind's is ½ since 2026-12-05) is the backward-Euler
-// end of the step above: first order, and it damps the bell's elastic recoil by O(dt). θ = ½ takes the force at the middle of the markers' motion (the
-// trapezoidal rule of the linearised force), which does not damp. For a linear body with the true
-// fluid response the θ-method is unconditionally stable for θ ≥ ½ and only conditionally below (cf.
+// end of the step above: first order, and it damps the bell's elastic recoil by O(dt). θ = ½ takes
+// the force at the middle of the markers' motion (the trapezoidal rule of the linearised force),
+// which does not damp. For a linear body with the true fluid response the θ-method is
+// unconditionally stable for θ ≥ ½ and only conditionally below (cf.
 // Newren, Fogelson, Guy & Kirby 2007, J. Comput. Phys. 222, on backward-Euler and Crank–Nicolson
 // immersed-boundary steps); M here only approximates that response, so this is a guide, not a
 // proof: the membrane test runs θ = ½ at 0.01 s, the jellyfish at 0.00125-0.0025 s on 1 mm, and on

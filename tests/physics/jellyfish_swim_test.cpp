@@ -296,8 +296,8 @@ TEST(JellyfishSwim, HalfStepForceIsStableOnThePaperGridOverAWholeWindow) {
     Summary r;
     ASSERT_NO_THROW(r = run(s, steps)) << hz << " Hz";
     for (const auto& p : s.markers_m()) ASSERT_TRUE(std::isfinite(p.x) && std::isfinite(p.y)) << hz << " Hz";
-    std::printf("[ measured ] theta 0.5, 100^2, dt 0.01, %.1f Hz, %ld steps: min ratio %.4f, peak marker speed %.4g m/s, "
-                "distance %.2f mm\n",
+    std::printf("[ measured ] theta 0.5, 100^2, dt 0.01, %.1f Hz, %ld steps: min ratio %.4f, "
+                "peak marker speed %.4g m/s, distance %.2f mm\n",
                 hz, steps, r.min_ratio, r.max_marker_speed_m_per_s, 1e3 * r.distance_m);
     EXPECT_LT(r.min_ratio, 0.7) << hz << " Hz";
     EXPECT_LT(r.max_marker_speed_m_per_s, 1.0) << hz << " Hz";
