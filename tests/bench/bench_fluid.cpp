@@ -118,6 +118,16 @@
 //   full step, 2 threads elapsed    MacCormack 37.3 / 32.0 -> 36.7 / 30.6, semi-Lagrangian 29.3 / 23.3 -> 28.9 / 21.9,
 //                                   upwind2_rk2 21.5 / 18.5 -> 20.5 / 19.0
 // (-8 to -12% on the sampling passes, -3% on a MacCormack step). MacCormack stays far from 20 on this host.
+// 2026-12-05 06:00 UTC, idle machine, medians of 3, two interleaved runs of the build before (448083c) and
+// after AVX-512F in the fluid library (CREATURELAB_AVX512, CMakeLists.txt: the sampler eight lanes wide with
+// the four-lane arithmetic per lane, the compiler's element-wise loops eight wide; datasets bitwise the
+// same), 256², ns per cell, before -> after:
+//   MacCormack step           1 thread 59.2 / 50.0 -> 40.7 / 40.2, 2 threads (elapsed) 30.7 / 34.3 -> 27.1 / 26.6
+//   semi-Lagrangian step      1 thread 35.2 / 35.3 -> 29.9 / 30.4, 2 threads (elapsed) 22.9 / 23.0 -> 21.5 / 21.6
+//   upwind2_rk2 step          1 thread 29.4 / 29.4 -> 27.6 / 28.7, 2 threads (elapsed) 19.1 / 19.0 -> 18.5 / 18.6
+//   MacCormack advection      25.3 / 25.3 -> 19.7 / 19.1;  pressure (fast direct) 12.3 / 12.3 -> 10.2 / 10.1
+// The build of issue 13's baseline (f3030b5) ran this hour's MacCormack step at 101.5-102.1 (1 thread)
+// where the issue measured 57-79: this host is 1.3-1.8 times slower than that one.
 //
 // The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
 // fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is

@@ -10,12 +10,10 @@ creaturelab_test(fluid_unit_tests unit
     ${CMAKE_CURRENT_LIST_DIR}/fluid_inflow_test.cpp
   LIBS cl_fluid)
 
-# The sampler's two- and four-lane interpolations against its scalar path, bit for bit: built with the
-# fluid library's instruction set (src/fluid/CMakeLists.txt), so that the four-lane half is the code
+# The sampler's two-, four- and eight-lane interpolations against its scalar path, bit for bit: built with the
+# fluid library's instruction set (src/fluid/CMakeLists.txt), so that the four- and eight-lane halves are the code
 # advection runs.
 creaturelab_test(fluid_sampler_test unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/fluid_sampler_test.cpp
   LIBS cl_fluid)
-if(CREATURELAB_FLUID_AVX2)
-  target_compile_options(fluid_sampler_test PRIVATE -mavx2)
-endif()
+target_compile_options(fluid_sampler_test PRIVATE ${CREATURELAB_FLUID_SIMD_FLAGS})

@@ -1,11 +1,12 @@
-// The sampler's lanes (fluid/staggered_sampler2.hpp): its two- and four-lane interpolations promise
+// The sampler's lanes (fluid/staggered_sampler2.hpp): its two-, four- and eight-lane interpolations promise
 // the scalar sample()'s arithmetic in every lane, so that advection's results do not depend on how
 // faces are grouped (row tails, thread pieces; DESIGN.md's determinism). The threads test compares
 // whole runs; this one compares single samples bit for bit at positions that reach every branch:
 // inside the domain, whole numbers and halves, its edges and corners, beyond it, ±∞, NaN and −0,
-// four neighbouring stencils in a row (the contiguous loads) and scattered ones (the gather), with
-// and without the limiter's bounds, on both components. The four-lane half is compiled with the
-// fluid library's instruction set (tests/unit/fluid.cmake: -mavx2 where CREATURELAB_FLUID_AVX2).
+// four or eight neighbouring stencils in a row (the contiguous loads) and scattered ones (the gather),
+// with and without the limiter's bounds, on both components. The wide lanes are compiled with the
+// fluid library's instruction set (tests/unit/fluid.cmake: CREATURELAB_FLUID_SIMD_FLAGS, -mavx2 and,
+// where the machine runs it, -mavx512f).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -41,60 +42,73 @@ struct Position {
   double x, y;
 };
 
-// Groups of four positions (cell units) that reach every branch of the samplers.
-std::vector<std::array<Position, 4>> groups() {
+constexpr int kGroup = 8;  // the widest sampler's lanes
+using Group = std::array<Position, kGroup>;
+
+// Groups of eight positions (cell units) that reach every branch of the samplers.
+std::vector<Group> groups() {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<std::array<Position, 4>> out;
+  std::vector<Group> out;
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> fraction(0.0, 1.0);
   std::uniform_real_distribution<double> wide_x(-2.0, kNx + 2.0), wide_y(-2.0, kNy + 2.0);
-  // Four neighbouring stencils in a row, as a row of faces traced a fraction of a cell: contiguous.
+  // Eight neighbouring stencils in a row, as a row of faces traced a fraction of a cell: contiguous
+  // (those that run past the domain's edge are clamped, and four of them are still in a row).
   for (int j = 0; j <= kNy; ++j) {
     for (int i = -1; i <= kNx; ++i) {
       const double fx = fraction(rng), y = j + fraction(rng);
-      out.push_back({{{i + fx, y}, {i + 1 + fx, y}, {i + 2 + fx, y}, {i + 3 + fx, y}}});
+      Group g;
+      for (int k = 0; k < kGroup; ++k) g[k] = {i + k + fx, y};
+      out.push_back(g);
     }
   }
   // Scattered positions, inside and beyond the domain: the gather.
   for (int k = 0; k < 400; ++k) {
-    std::array<Position, 4> g;
+    Group g;
     for (Position& p : g) p = {wide_x(rng), wide_y(rng)};
     out.push_back(g);
   }
   // Whole numbers and halves (stencil edges, where truncation decides the stencil).
   for (int j = 0; j <= 2 * kNy; ++j) {
     for (int i = 0; i <= 2 * kNx; i += 4) {
-      std::array<Position, 4> g;
-      for (int k = 0; k < 4; ++k) g[k] = {0.5 * (i + k), 0.5 * j};
+      Group g;
+      for (int k = 0; k < kGroup; ++k) g[k] = {0.5 * (i + k), 0.5 * j};
       out.push_back(g);
     }
   }
   // The domain's edges and corners, just inside and beyond, infinities, NaN and negative zero.
   const double x_max = kNx, y_max = kNy;
   const double below = std::nextafter(x_max, 0.0), beyond = std::nextafter(x_max, 2 * x_max);
-  out.push_back({{{0.0, 0.0}, {x_max, 0.0}, {0.0, y_max}, {x_max, y_max}}});
-  out.push_back({{{below, std::nextafter(y_max, 0.0)}, {beyond, std::nextafter(y_max, 2 * y_max)}, {-0.0, -0.0},
-                  {-1e-300, 1e-300}}});
-  out.push_back({{{nan, 1.5}, {2.5, nan}, {nan, nan}, {inf, -inf}}});
-  out.push_back({{{-inf, inf}, {1e300, -1e300}, {-0.0, 3.25}, {4.75, -0.0}}});
+  const Group edges{{{0.0, 0.0}, {x_max, 0.0}, {0.0, y_max}, {x_max, y_max}, {below, std::nextafter(y_max, 0.0)},
+                     {beyond, std::nextafter(y_max, 2 * y_max)}, {-0.0, -0.0}, {-1e-300, 1e-300}}};
+  const Group specials{{{nan, 1.5}, {2.5, nan}, {nan, nan}, {inf, -inf}, {-inf, inf}, {1e300, -1e300}, {-0.0, 3.25},
+                        {4.75, -0.0}}};
+  out.push_back(edges);
+  out.push_back(specials);
+  // The same values in other lanes (the upper halves of the wide samplers).
+  for (const Group* g : {&edges, &specials}) {
+    Group rotated;
+    for (int k = 0; k < kGroup; ++k) rotated[k] = (*g)[(k + kGroup / 2) % kGroup];
+    out.push_back(rotated);
+  }
   return out;
 }
 
 struct Scalar {
-  std::array<double, 4> value, bounded, lo, hi;
+  std::array<double, kGroup> value, bounded, lo, hi;
 };
 
-Scalar scalar_samples(const SampleView& view, const std::array<Position, 4>& g) {
+Scalar scalar_samples(const SampleView& view, const Group& g) {
   Scalar s;
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < kGroup; ++k) {
     s.value[k] = view.sample(g[k].x, g[k].y);
     s.bounded[k] = view.sample(g[k].x, g[k].y, s.lo[k], s.hi[k]);
   }
   return s;
 }
 
-void expect_lanes(const char* what, const std::array<Position, 4>& g, const double* expected, const double* got,
+void expect_lanes(const char* what, const Group& g, const double* expected, const double* got,
                   int lanes, int first) {
   for (int k = 0; k < lanes; ++k) {
     EXPECT_TRUE(same_bits(expected[first + k], got[k]))
@@ -105,13 +119,13 @@ void expect_lanes(const char* what, const std::array<Position, 4>& g, const doub
 
 template <FaceAxis kAxis>
 void compare_lanes(const SampleView& view) {
-  int four_lane_groups = 0;
+  int four_lane_groups = 0, eight_lane_groups = 0;
   for (const auto& g : groups()) {
     const Scalar s = scalar_samples(view, g);
     // The unbounded and the bounded scalar paths are written apart (SSE2 pairs and plain doubles).
-    expect_lanes("bounded scalar", g, s.value.data(), s.bounded.data(), 4, 0);
+    expect_lanes("bounded scalar", g, s.value.data(), s.bounded.data(), kGroup, 0);
 #if defined(__SSE2__)
-    for (int first : {0, 2}) {
+    for (int first = 0; first < kGroup; first += 2) {
       const __m128d X = _mm_set_pd(g[first + 1].x, g[first].x);
       const __m128d Y = _mm_set_pd(g[first + 1].y, g[first].y);
       std::array<double, 2> value{}, lo{}, hi{};
@@ -127,24 +141,47 @@ void compare_lanes(const SampleView& view) {
     }
 #endif
 #if defined(__AVX2__)
-    const __m256d X = _mm256_set_pd(g[3].x, g[2].x, g[1].x, g[0].x);
-    const __m256d Y = _mm256_set_pd(g[3].y, g[2].y, g[1].y, g[0].y);
-    std::array<double, 4> value{}, lo{}, hi{};
-    _mm256_storeu_pd(value.data(), view.sample4_on<kAxis>(X, Y));
-    expect_lanes("four lanes", g, s.value.data(), value.data(), 4, 0);
-    __m256d lo4, hi4;
-    _mm256_storeu_pd(value.data(), view.sample4_on<kAxis>(X, Y, &lo4, &hi4));
-    _mm256_storeu_pd(lo.data(), lo4);
-    _mm256_storeu_pd(hi.data(), hi4);
-    expect_lanes("four lanes, bounded", g, s.value.data(), value.data(), 4, 0);
-    expect_lanes("four lanes' lower bound", g, s.lo.data(), lo.data(), 4, 0);
-    expect_lanes("four lanes' upper bound", g, s.hi.data(), hi.data(), 4, 0);
-    ++four_lane_groups;
+    for (int first : {0, 4}) {
+      const __m256d X = _mm256_set_pd(g[first + 3].x, g[first + 2].x, g[first + 1].x, g[first].x);
+      const __m256d Y = _mm256_set_pd(g[first + 3].y, g[first + 2].y, g[first + 1].y, g[first].y);
+      std::array<double, 4> value{}, lo{}, hi{};
+      _mm256_storeu_pd(value.data(), view.sample4_on<kAxis>(X, Y));
+      expect_lanes("four lanes", g, s.value.data(), value.data(), 4, first);
+      __m256d lo4, hi4;
+      _mm256_storeu_pd(value.data(), view.sample4_on<kAxis>(X, Y, &lo4, &hi4));
+      _mm256_storeu_pd(lo.data(), lo4);
+      _mm256_storeu_pd(hi.data(), hi4);
+      expect_lanes("four lanes, bounded", g, s.value.data(), value.data(), 4, first);
+      expect_lanes("four lanes' lower bound", g, s.lo.data(), lo.data(), 4, first);
+      expect_lanes("four lanes' upper bound", g, s.hi.data(), hi.data(), 4, first);
+      ++four_lane_groups;
+    }
+#endif
+#if defined(__AVX512F__)
+    {
+      std::array<double, kGroup> xs{}, ys{}, value{}, lo{}, hi{};
+      for (int k = 0; k < kGroup; ++k) xs[k] = g[k].x, ys[k] = g[k].y;
+      const __m512d X = _mm512_loadu_pd(xs.data());
+      const __m512d Y = _mm512_loadu_pd(ys.data());
+      _mm512_storeu_pd(value.data(), view.sample8_on<kAxis>(X, Y));
+      expect_lanes("eight lanes", g, s.value.data(), value.data(), kGroup, 0);
+      __m512d lo8, hi8;
+      _mm512_storeu_pd(value.data(), view.sample8_on<kAxis>(X, Y, &lo8, &hi8));
+      _mm512_storeu_pd(lo.data(), lo8);
+      _mm512_storeu_pd(hi.data(), hi8);
+      expect_lanes("eight lanes, bounded", g, s.value.data(), value.data(), kGroup, 0);
+      expect_lanes("eight lanes' lower bound", g, s.lo.data(), lo.data(), kGroup, 0);
+      expect_lanes("eight lanes' upper bound", g, s.hi.data(), hi.data(), kGroup, 0);
+      ++eight_lane_groups;
+    }
 #endif
     if (::testing::Test::HasFailure()) return;  // one group's report is enough
   }
 #if defined(__AVX2__)
-  EXPECT_GT(four_lane_groups, 500);
+  EXPECT_GT(four_lane_groups, 1000);
+#endif
+#if defined(__AVX512F__)
+  EXPECT_GT(eight_lane_groups, 500);
 #endif
 }
 
@@ -152,20 +189,22 @@ TEST(FluidSampler, LanesGiveTheScalarBitsOnUFaces) { compare_lanes<FaceAxis::x>(
 
 TEST(FluidSampler, LanesGiveTheScalarBitsOnVFaces) { compare_lanes<FaceAxis::y>(component(FaceAxis::y, 2).view()); }
 
-// The test reaches both of the four-lane sampler's load paths only if some groups are contiguous
-// and some are not: a guard against groups() drifting into one case.
+// The test reaches both load paths of the four- and the eight-lane sampler only if some groups are
+// contiguous and some are not: a guard against groups() drifting into one case.
 TEST(FluidSampler, GroupsReachTheContiguousAndTheGatheredLoads) {
   const SampleView view = component(FaceAxis::x, 3).view();
-  int contiguous = 0, scattered = 0;
-  for (const auto& g : groups()) {
-    double tx = 0.0, ty = 0.0;
-    const double* first = view.locate(g[0].x, g[0].y, tx, ty);
-    bool in_a_row = true;
-    for (int k = 1; k < 4; ++k) in_a_row = in_a_row && view.locate(g[k].x, g[k].y, tx, ty) == first + k;
-    (in_a_row ? contiguous : scattered) += 1;
+  for (int lanes : {4, 8}) {
+    int contiguous = 0, scattered = 0;
+    for (const auto& g : groups()) {
+      double tx = 0.0, ty = 0.0;
+      const double* first = view.locate(g[0].x, g[0].y, tx, ty);
+      bool in_a_row = true;
+      for (int k = 1; k < lanes; ++k) in_a_row = in_a_row && view.locate(g[k].x, g[k].y, tx, ty) == first + k;
+      (in_a_row ? contiguous : scattered) += 1;
+    }
+    EXPECT_GT(contiguous, 50) << lanes << " lanes";
+    EXPECT_GT(scattered, 50) << lanes << " lanes";
   }
-  EXPECT_GT(contiguous, 50);
-  EXPECT_GT(scattered, 50);
 }
 
 }  // namespace
