@@ -21,16 +21,24 @@ FaceBlock face_block(const MacGrid2& grid, FaceRange unknown) {
   return {0, grid.nx, unknown.begin, unknown.end};
 }
 
-// Rows of the u block and then of the v block as one index range, cut into one piece per
-// thread: u_rows(rows, part) is called for the u rows and v_rows for the v rows of each piece.
+// The rows of the u block and those of the v block, each cut into the pool's pieces: piece p calls
+// u_rows(rows, p) on its share of the u rows and v_rows(rows, p) on its share of the v rows. The
+// cut is the one for_pieces() makes of each block alone (viscosity, forces), so that a thread
+// owning piece p finds those rows in its cache in the next stage (worker_pool.hpp).
 template <class UBody, class VBody>
 void for_row_pieces(WorkerPool* workers, const FaceBlock& ub, const FaceBlock& vb, UBody&& u_rows, VBody&& v_rows) {
-  const int nu = ub.j_end - ub.j_begin;
-  const int nv = vb.j_end - vb.j_begin;
-  for_pieces(workers, 0, nu + nv, [&](int lo, int hi, int part) {
-    if (lo < nu) u_rows(ub.j_begin + lo, ub.j_begin + std::min(hi, nu), part);
-    if (hi > nu) v_rows(vb.j_begin + std::max(lo, nu) - nu, vb.j_begin + hi - nu, part);
-  });
+  const int parts = piece_count(workers);
+  auto piece_rows = [&](int part) {
+    const auto [u0, u1] = WorkerPool::piece(ub.j_begin, ub.j_end, part, parts);
+    const auto [v0, v1] = WorkerPool::piece(vb.j_begin, vb.j_end, part, parts);
+    if (u0 < u1) u_rows(u0, u1, part);
+    if (v0 < v1) v_rows(v0, v1, part);
+  };
+  if (parts == 1) {
+    piece_rows(0);
+    return;
+  }
+  workers->run(piece_rows);
 }
 
 }  // namespace creaturelab::fluid

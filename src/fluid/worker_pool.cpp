@@ -25,7 +25,7 @@ constexpr auto kSpin = std::chrono::microseconds(50);
 WorkerPool::WorkerPool(int threads)
     : threads_(std::clamp(threads, 1, kMaxThreads)), parts_(threads_ == 1 ? 1 : threads_ * kPartsPerThread) {
   workers_.reserve(static_cast<std::size_t>(threads_ - 1));
-  for (int worker = 1; worker < threads_; ++worker) workers_.emplace_back([this] { work(); });
+  for (int worker = 1; worker < threads_; ++worker) workers_.emplace_back([this, worker] { work(worker); });
 }
 
 WorkerPool::~WorkerPool() {
@@ -38,23 +38,24 @@ WorkerPool::~WorkerPool() {
   for (std::thread& t : workers_) t.join();
 }
 
-// Parts are claimed from a counter, so whoever is free runs the next one: the calling thread
-// runs part 0 and then any part no worker has taken yet. On a machine whose cores are busy with
-// other work a worker may wait long for a core; the caller does not wait for it to start. Which
-// thread runs a part never changes what the part computes.
+// Each thread claims its own parts first, then the others' (worker_pool.hpp, kPartsPerThread).
+// On a machine whose cores are busy with other work a worker may wait long for a core; the
+// caller does not wait for it to start but takes its parts. Which thread runs a part never
+// changes what the part computes.
 void WorkerPool::dispatch(void (*function)(void*, int), void* task) {
   function_ = function;
   task_ = task;
   done_.store(0, std::memory_order_relaxed);
-  next_part_.store(1, std::memory_order_release);  // publishes function_ and task_ to claimers
+  // Release: a worker still in the previous task's run_parts that claims one of these parts
+  // sees function_, task_ and done_ as set above.
+  for (int t = 0; t < threads_; ++t) next_[t].value.store(t * kPartsPerThread, std::memory_order_release);
   {
     std::lock_guard<std::mutex> lock(mutex_);  // no lost wake-up: sleepers test under the lock
     generation_.fetch_add(1, std::memory_order_release);
   }
   wake_.notify_all();
-  function(task, 0);
-  run_parts();
-  for (int spins = 0; done_.load(std::memory_order_acquire) != parts_ - 1; ++spins) {
+  run_parts(0);
+  for (int spins = 0; done_.load(std::memory_order_acquire) != parts_; ++spins) {
     if (spins < 4096) {
       cpu_relax();
     } else {
@@ -63,16 +64,21 @@ void WorkerPool::dispatch(void (*function)(void*, int), void* task) {
   }
 }
 
-void WorkerPool::run_parts() {
-  for (;;) {
-    const int part = next_part_.fetch_add(1, std::memory_order_acq_rel);
-    if (part >= parts_) return;
-    function_(task_, part);
-    done_.fetch_add(1, std::memory_order_release);
+void WorkerPool::run_parts(int thread) {
+  for (int k = 0; k < threads_; ++k) {
+    const int owner = (thread + k) % threads_;
+    const int end = (owner + 1) * kPartsPerThread;
+    for (;;) {
+      if (next_[owner].value.load(std::memory_order_relaxed) >= end) break;
+      const int part = next_[owner].value.fetch_add(1, std::memory_order_acq_rel);
+      if (part >= end) break;
+      function_(task_, part);
+      done_.fetch_add(1, std::memory_order_release);
+    }
   }
 }
 
-void WorkerPool::work() {
+void WorkerPool::work(int thread) {
   std::uint64_t seen = 0;
   for (;;) {
     std::uint64_t now = generation_.load(std::memory_order_acquire);
@@ -89,7 +95,7 @@ void WorkerPool::work() {
     }
     seen = now;
     if (stop_.load(std::memory_order_relaxed)) return;  // ordered by the generation's acquire
-    run_parts();
+    run_parts(thread);
   }
 }
 

@@ -25,9 +25,11 @@
 
 namespace creaturelab::fluid {
 
-/// A loop is cut into kPartsPerThread pieces per thread, claimed by whichever thread is free:
-/// on a machine whose cores are shared with other work a thread that loses its core holds up
-/// only a small piece, which the others do not wait for to start.
+/// A loop is cut into kPartsPerThread pieces per thread. Thread t owns the contiguous parts
+/// t k .. t k + k − 1 (k = kPartsPerThread) and runs them first, so that in every loop of a step
+/// the same rows go to the same core and stay in its cache; a thread done with its own takes
+/// those the others have not started, so that on a machine whose cores are shared with other
+/// work a thread that loses its core holds up only a small piece.
 inline constexpr int kPartsPerThread = 4;
 /// Most pieces of a loop: per-piece partial results of reductions live in fixed arrays of this
 /// size, so that no step allocates.
@@ -48,8 +50,8 @@ class WorkerPool {
   int parts() const { return parts_; }
 
   /// Calls task(part) once for each part = 0 .. parts() − 1 and returns when all have
-  /// finished: part 0 on the calling thread, the others on whichever thread claims them first
-  /// (the caller too, when the workers are slow to start). Tasks must not throw. Not reentrant.
+  /// finished: each on its owner (the calling thread is thread 0), or on whichever thread claims
+  /// it first when its owner is slow to start. Tasks must not throw. Not reentrant.
   template <class Task>
   void run(Task&& task) {
     if (threads_ == 1) {
@@ -68,8 +70,8 @@ class WorkerPool {
 
  private:
   void dispatch(void (*function)(void*, int), void* task);
-  void run_parts();
-  void work();
+  void run_parts(int thread);
+  void work(int thread);
 
   int threads_ = 1;
   int parts_ = 1;
@@ -77,8 +79,13 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::atomic<std::uint64_t> generation_{0};
-  std::atomic<int> next_part_{1};  // the next part to claim; ≥ parts_ when all are taken
-  std::atomic<int> done_{0};       // parts 1.. finished in this task
+  // next_[t]: the next unclaimed one of thread t's parts [t k, (t + 1) k), k = kPartsPerThread;
+  // each counter on its own cache line.
+  struct alignas(64) Counter {
+    std::atomic<int> value{0};
+  };
+  Counter next_[kMaxThreads];
+  std::atomic<int> done_{0};       // parts finished in this task
   std::atomic<bool> stop_{false};
   void (*function_)(void*, int) = nullptr;
   void* task_ = nullptr;
@@ -115,11 +122,12 @@ void for_thread_pieces(WorkerPool* pool, int begin, int end, int quantum, Body&&
   const int pieces = pool->threads();
   const int units = (end - begin + quantum - 1) / quantum;
   pool->run([&](int part) {
-    if (part >= pieces) return;
-    const auto [u0, u1] = WorkerPool::piece(0, units, part, pieces);
+    if (part % kPartsPerThread != 0) return;  // one piece per thread: the first of its parts
+    const int piece = part / kPartsPerThread;
+    const auto [u0, u1] = WorkerPool::piece(0, units, piece, pieces);
     const int lo = begin + u0 * quantum;
     const int hi = std::min(end, begin + u1 * quantum);
-    if (lo < hi) body(lo, hi, part);
+    if (lo < hi) body(lo, hi, piece);
   });
 }
 
