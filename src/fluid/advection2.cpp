@@ -230,8 +230,7 @@ void SemiLagrangianAdvection2::advect_velocity(const MacGrid2& grid, const Walls
                                                Array2& v_out) {
   u_out.resize(grid.nx + 1, grid.ny);
   v_out.resize(grid.nx, grid.ny + 1);
-  u_.assign(FaceAxis::x, grid.u_m_per_s, walls);
-  v_.assign(FaceAxis::y, grid.v_m_per_s, walls);
+  assign_velocity(workers_, grid, walls, u_, v_);
   const double c = dt_s / grid.dx_m;
   const FaceBlock ub = face_block<FaceAxis::x>(grid, unknown_u_columns(grid, walls));
   const FaceBlock vb = face_block<FaceAxis::y>(grid, unknown_v_rows(grid, walls));
@@ -260,8 +259,7 @@ void MacCormackAdvection2::advect_velocity(const MacGrid2& grid, const Walls& wa
   v_out.resize(nx, ny + 1);
   for (Array2* a : {&u_lo_, &u_hi_}) a->resize(nx + 1, ny);
   for (Array2* a : {&v_lo_, &v_hi_}) a->resize(nx, ny + 1);
-  u_.assign(FaceAxis::x, grid.u_m_per_s, walls);
-  v_.assign(FaceAxis::y, grid.v_m_per_s, walls);
+  assign_velocity(workers_, grid, walls, u_, v_);
   u_hat_.prepare(FaceAxis::x, nx, ny);
   v_hat_.prepare(FaceAxis::y, nx, ny);
   const double c = dt_s / grid.dx_m;

@@ -41,4 +41,19 @@ void for_row_pieces(WorkerPool* workers, const FaceBlock& ub, const FaceBlock& v
   workers->run(piece_rows);
 }
 
+// u.assign() and v.assign() of the grid's velocity, the copies shared among threads by
+// for_row_pieces (the rows each thread then reads first).
+inline void assign_velocity(WorkerPool* workers, const MacGrid2& grid, const Walls& walls, StaggeredComponent2& u,
+                            StaggeredComponent2& v) {
+  u.prepare(FaceAxis::x, grid.nx, grid.ny);
+  v.prepare(FaceAxis::y, grid.nx, grid.ny);
+  const FaceBlock u_rows{0, grid.nx + 1, 0, grid.ny};
+  const FaceBlock v_rows{0, grid.nx, 0, grid.ny + 1};
+  for_row_pieces(
+      workers, u_rows, v_rows, [&](int j0, int j1, int) { u.copy_rows(grid.u_m_per_s, j0, j1); },
+      [&](int j0, int j1, int) { v.copy_rows(grid.v_m_per_s, j0, j1); });
+  u.fill_ghosts(walls);
+  v.fill_ghosts(walls);
+}
+
 }  // namespace creaturelab::fluid

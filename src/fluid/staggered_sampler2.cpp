@@ -58,8 +58,12 @@ void StaggeredComponent2::assign(FaceAxis axis, const Array2& values, const Wall
   const int nx = axis == FaceAxis::x ? values.nx() - 1 : values.nx();
   const int ny = axis == FaceAxis::x ? values.ny() : values.ny() - 1;
   prepare(axis, nx, ny);
-  for (int j = 0; j < values.ny(); ++j) std::copy(values.row(j), values.row(j) + values.nx(), interior_row(j));
+  copy_rows(values, 0, values.ny());
   fill_ghosts(walls);
+}
+
+void StaggeredComponent2::copy_rows(const Array2& values, int j0, int j1) {
+  for (int j = j0; j < j1; ++j) std::copy(values.row(j), values.row(j) + values.nx(), interior_row(j));
 }
 
 }  // namespace creaturelab::fluid

@@ -267,6 +267,10 @@ class StaggeredComponent2 {
   /// Copies `values` ((nx+1) × ny for FaceAxis::x, nx × (ny+1) for FaceAxis::y) and fills the
   /// ghost layer from the walls. Reuses its storage between calls.
   void assign(FaceAxis axis, const Array2& values, const Walls& walls);
+  /// assign() in three parts, so that threads can share the copy: prepare() for the values'
+  /// grid, copy_rows() of every row j in [0, values.ny()), then fill_ghosts().
+  void copy_rows(const Array2& values, int j0, int j1);
+  void fill_ghosts(const Walls& walls);
 
   /// For writing a component straight into the padded storage (no copy): shapes it for a grid of
   /// nx × ny cells and returns it. Element (i, j) of the component is interior_row(j)[i]. Write
@@ -287,7 +291,6 @@ class StaggeredComponent2 {
   const SampleView& view() const { return view_; }
 
  private:
-  void fill_ghosts(const Walls& walls);
   FaceAxis axis_ = FaceAxis::x;
   Array2 padded_;
   SampleView view_;
