@@ -86,7 +86,8 @@ class FastPressureSolver2 final : public PressureSolver2 {
   void forward_transform(const Array2& source, double scale, int l0, int l1, FftPanel& panel);
   void inverse_transform(Array2& target, int l0, int l1, FftPanel& panel);
   void fft(bool inverse, FftPanel& panel);
-  bool result_in_second_buffers() const { return radices_.size() % 2 == 1; }
+  bool result_in_second_buffers() const { return fft_passes(radices_) % 2 == 1; }
+  static int fft_passes(const std::vector<int>& radices);
   void solve_modes(int k0, int k1);
 
   bool ready_ = false;
