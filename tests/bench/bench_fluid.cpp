@@ -128,6 +128,24 @@
 //   MacCormack advection      25.3 / 25.3 -> 19.7 / 19.1;  pressure (fast direct) 12.3 / 12.3 -> 10.2 / 10.1
 // The build of issue 13's baseline (f3030b5) ran this hour's MacCormack step at 101.5-102.1 (1 thread)
 // where the issue measured 57-79: this host is 1.3-1.8 times slower than that one.
+// 2026-12-05 06:35-06:48 UTC, idle machine, medians of 3, three interleaved runs of 448083c and of the
+// build after the rest of that morning's changes (each thread runs its own parts first, worker_pool.hpp;
+// the advection's padded copies shared among threads; two radix-2 FFT stages per pass; the odd radices
+// eight lanes wide; all datasets bitwise the same), 256², ns per cell, before -> after:
+//   MacCormack step        1 thread 50.7 / 51.2 / 51.1 -> 38.8 / 40.0 / 39.5
+//                          2 threads (elapsed) 37.0 / 31.2 / 33.2 -> 21.8 / 21.4 / 21.8
+//   semi-Lagrangian step   1 thread 35.8 / 35.8 / 39.2 -> 28.0 / 29.7 / 28.5
+//                          2 threads 24.5 / 24.4 / 28.5 -> 15.6 / 20.3 / 15.8
+//   upwind2_rk2 step       1 thread 29.7 / 29.3 / 30.2 -> 25.7 / 25.8 / 25.7
+//                          2 threads 20.6 / 19.2 / 26.8 -> 14.4 / 17.9 / 14.5
+//   stages, 1 thread       MacCormack advection 25.8 / 25.4 / 27.0 -> 19.4 / 24.2 / 18.9, pressure 12.4 / 12.0 /
+//                          12.0 -> 8.7 / 8.9 / 8.8, viscosity 6.5 / 6.3 / 7.1 -> 6.4 / 6.8 / 6.3
+// At 06:47, interleaved with f3030b5 (issue 13's baseline build): MacCormack 104.6-105.9 there against
+// 38.1-39.5 (1 thread) and 41.7-44.3 CPU / about 21-22 elapsed (2 threads) here; semi-Lagrangian 70.9-72.9
+// against 27.5-28.5 and 30.0-30.8 CPU (about 15 elapsed). The issue measured the baseline at 57-79 and 36-50:
+// scaled by those ratios the MacCormack step is 11-17 ns per cell on two threads (20.6-29.6 on one) and
+// semi-Lagrangian 7-11 (14-20). On this host the goal (20) is met on two threads by semi-Lagrangian and
+// upwind2_rk2, not by MacCormack (21-22).
 //
 // The fast direct viscosity option (FluidParams::viscosity_solver = fast_direct,
 // fluid/fast_diffusion2.hpp; BM_Viscosity_FastDirect, BM_Viscosity_Viscous[_FastDirect]) is

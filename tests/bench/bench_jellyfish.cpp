@@ -345,6 +345,16 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
 // the same, 228 datasets): default 5857 / 6022 -> 5734 / 5727 ms per simulated second (-2 to -5%). At that
 // hour's speed the 11.43 s point takes about 65 s of CPU, and the whole default point at 0.7 Hz, run alone with
 // the faster build at 02:43, took 65.3 s: the 60 s goal holds on this host's faster hours only.
+// 2026-12-05 06:19-06:33 UTC, idle machine, medians of 3, two interleaved runs each, 448083c -> AVX-512F in
+// the fluid library (CMakeLists.txt, CREATURELAB_AVX512; with it the worker pool's own-parts-first order,
+// the advection's shared copies and two radix-2 FFT stages a pass) -> the odd FFT radices eight lanes wide
+// (all bitwise the same): default 5795 / 5885 -> 5643 / 5298 -> 5006-5226 ms per simulated second; the
+// paper's grid 16.5 / 17.6 -> 18.0 / 18.1 -> 19.5-19.8 simulated s per CPU s. The whole 11.43 s default point
+// at 0.7 Hz, alone on one core at 06:48, took 59.3 s of CPU (its datasets bitwise those of 02:43's 65.3 s run);
+// twenty-seven default points (0.6-1.12 Hz, --jobs 2, 06:49-07:03) 13.7 min of wall time, 53.5-62 s a point.
+// At 06:47, interleaved with f3030b5 (issue 13's baseline build): the paper's grid 79.4-79.9 ms per simulated
+// s there (12.5-12.6 simulated s per CPU s) against 50.5-50.6 here (19.8), 1.58 times faster; on the 13.0-13.6
+// the issue measured that is 20.5-21.5.
 void BM_SimulatedSecondDefault(benchmark::State& state) {
   const int width_mm = static_cast<int>(state.range(0));
   const int height_mm = static_cast<int>(state.range(1));
