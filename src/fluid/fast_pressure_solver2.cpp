@@ -36,6 +36,11 @@ std::vector<int> fft_radices(int n) {
 }
 bool fft_applies(int n) { return n == 2 || !fft_radices(n).empty(); }
 
+// Whether stages `stage` and `stage` + 1 are both radix 2, and so run as one pass (radix2_twice).
+bool two_radix2_at(const std::vector<int>& radices, std::size_t stage) {
+  return radices[stage] == 2 && stage + 1 < radices.size() && radices[stage + 1] == 2;
+}
+
 // What the end of a lane changes in the diagonal 2 + λ + σ: −1 (Neumann), +1 (zero half a
 // cell beyond), 0 (zero one cell beyond).
 double end_offset(OperatorEnd end) {
@@ -314,12 +319,10 @@ void FastPressureSolver2::setup(const KroneckerOperator2& op, int nx, int ny, bo
   }
 }
 
-// Passes over a panel: one per stage, but one for each two radix-2 stages in a row (radix2_twice).
+// Passes over a panel: one per stage, but one for each two radix-2 stages in a row.
 int FastPressureSolver2::fft_passes(const std::vector<int>& radices) {
   int passes = 0;
-  for (std::size_t stage = 0; stage < radices.size(); ++passes) {
-    stage += radices[stage] == 2 && stage + 1 < radices.size() && radices[stage + 1] == 2 ? 2 : 1;
-  }
+  for (std::size_t stage = 0; stage < radices.size(); ++passes) stage += two_radix2_at(radices, stage) ? 2 : 1;
   return passes;
 }
 
@@ -343,72 +346,60 @@ void FastPressureSolver2::fft(bool inverse, FftPanel& panel) {
   double* yr = panel.re2.data();
   double* yi = panel.im2.data();
   for (std::size_t stage = 0; stage < radices_.size();) {
-    const int r = radices_[stage];
-    if (r == 2 && stage + 1 < radices_.size() && radices_[stage + 1] == 2) {
-      // Two radix-2 stages in one pass (radix2_twice): lengths L and L/2, strides s and 2s.
-      const int quarter = length / 4;
-      const long block = stride * m;
-      const int scale1 = h / length, scale2 = 2 * scale1;
-      for (int p = 0; p < quarter; ++p) {
-        const int ia = (p * scale1) % h, ib = ((p + quarter) * scale1) % h, i2 = (p * scale2) % h;
-        const long in = p * block, out = 4L * p * block, q = quarter * block;
+    const bool fused = two_radix2_at(radices_, stage);
+    const int r = fused ? 4 : radices_[stage];  // the pass divides the length by r
+    const int mm = length / r;
+    const long block = stride * m;  // one contiguous vector per (p, t)
+    const int twiddle_scale = h / length;
+    if (fused) {
+      // Two radix-2 stages (radix2_twice): lengths L and L/2, strides s and 2s; mm = L/4.
+      for (int p = 0; p < mm; ++p) {
+        const int ia = (p * twiddle_scale) % h, ib = ((p + mm) * twiddle_scale) % h, i2 = (2 * p * twiddle_scale) % h;
+        const long in = p * block, out = 4L * p * block, q = mm * block;
         radix2_twice(block, xr + in, xi + in, xr + in + q, xi + in + q, xr + in + 2 * q, xi + in + 2 * q,
                      xr + in + 3 * q, xi + in + 3 * q, yr + out, yi + out, yr + out + block, yi + out + block,
                      yr + out + 2 * block, yi + out + 2 * block, yr + out + 3 * block, yi + out + 3 * block,
                      fft_cos_[ia], sgn * fft_sin_[ia], fft_cos_[ib], sgn * fft_sin_[ib], fft_cos_[i2],
                      sgn * fft_sin_[i2]);
       }
-      const double* next_r = yr;
-      const double* next_i = yi;
-      yr = const_cast<double*>(xr);
-      yi = const_cast<double*>(xi);
-      xr = next_r;
-      xi = next_i;
-      length = quarter;
-      stride *= 4;
-      stage += 2;
-      continue;
-    }
-    ++stage;
-    const int mm = length / r;
-    const long block = stride * m;  // one contiguous vector per (p, t)
-    const int twiddle_scale = h / length;
-    double dft_cos[7][7], dft_sin[7][7];  // e^{sgn 2πi ut/r} of the odd radices
-    if (r % 2 == 1) {
-      for (int u = 0; u < r; ++u) {
+    } else {
+      double dft_cos[7][7], dft_sin[7][7];  // e^{sgn 2πi ut/r} of the odd radices
+      if (r % 2 == 1) {
+        for (int u = 0; u < r; ++u) {
+          for (int t = 0; t < r; ++t) {
+            const double angle = 2.0 * std::numbers::pi * ((u * t) % r) / r;
+            dft_cos[u][t] = std::cos(angle);
+            dft_sin[u][t] = sgn * std::sin(angle);
+          }
+        }
+      }
+      for (int p = 0; p < mm; ++p) {
+        const double* ar[7];
+        const double* ai[7];
+        double* br[7];
+        double* bi[7];
+        double wc[7], ws[7];
         for (int t = 0; t < r; ++t) {
-          const double angle = 2.0 * std::numbers::pi * ((u * t) % r) / r;
-          dft_cos[u][t] = std::cos(angle);
-          dft_sin[u][t] = sgn * std::sin(angle);
+          ar[t] = xr + (p + static_cast<long>(t) * mm) * block;
+          ai[t] = xi + (p + static_cast<long>(t) * mm) * block;
+          br[t] = yr + (static_cast<long>(r) * p + t) * block;
+          bi[t] = yi + (static_cast<long>(r) * p + t) * block;
+          const int index = (p * t * twiddle_scale) % h;
+          wc[t] = fft_cos_[index];
+          ws[t] = sgn * fft_sin_[index];
+        }
+        if (r == 2) {
+          radix2(block, ar[0], ai[0], ar[1], ai[1], br[0], bi[0], br[1], bi[1], wc[1], ws[1]);
+        } else if (r == 3) {
+          odd_radix<3>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
+        } else if (r == 5) {
+          odd_radix<5>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
+        } else {
+          odd_radix<7>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
         }
       }
     }
-    for (int p = 0; p < mm; ++p) {
-      const double* ar[7];
-      const double* ai[7];
-      double* br[7];
-      double* bi[7];
-      double wc[7], ws[7];
-      for (int t = 0; t < r; ++t) {
-        ar[t] = xr + (p + static_cast<long>(t) * mm) * block;
-        ai[t] = xi + (p + static_cast<long>(t) * mm) * block;
-        br[t] = yr + (static_cast<long>(r) * p + t) * block;
-        bi[t] = yi + (static_cast<long>(r) * p + t) * block;
-        const int index = (p * t * twiddle_scale) % h;
-        wc[t] = fft_cos_[index];
-        ws[t] = sgn * fft_sin_[index];
-      }
-      if (r == 2) {
-        radix2(block, ar[0], ai[0], ar[1], ai[1], br[0], bi[0], br[1], bi[1], wc[1], ws[1]);
-      } else if (r == 3) {
-        odd_radix<3>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
-      } else if (r == 5) {
-        odd_radix<5>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
-      } else {
-        odd_radix<7>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
-      }
-    }
-    // The output of this stage is the input of the next.
+    // The output of this pass is the input of the next.
     const double* next_r = yr;
     const double* next_i = yi;
     yr = const_cast<double*>(xr);
@@ -417,6 +408,7 @@ void FastPressureSolver2::fft(bool inverse, FftPanel& panel) {
     xi = next_i;
     length = mm;
     stride *= r;
+    stage += fused ? 2 : 1;
   }
 }
 
