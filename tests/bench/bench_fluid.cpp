@@ -141,8 +141,9 @@
 //   stages, 1 thread       MacCormack advection 25.8 / 25.4 / 27.0 -> 19.4 / 24.2 / 18.9, pressure 12.4 / 12.0 /
 //                          12.0 -> 8.7 / 8.9 / 8.8, viscosity 6.5 / 6.3 / 7.1 -> 6.4 / 6.8 / 6.3
 // At 06:47, interleaved with f3030b5 (issue 13's baseline build): MacCormack 104.6-105.9 there against
-// 38.1-39.5 (1 thread) and 41.7-44.3 CPU / about 21-22 elapsed (2 threads) here; semi-Lagrangian 70.9-72.9
-// against 27.5-28.5 and 30.0-30.8 CPU (about 15 elapsed). The issue measured the baseline at 57-79 and 36-50:
+// 38.1-39.5 (1 thread) and 41.7-44.3 of CPU (2 threads; their elapsed time was not recorded in this run: half
+// the CPU is 20.8-22.2, and 21.4-21.8 elapsed was measured at 06:35) here; semi-Lagrangian 70.9-72.9 against
+// 27.5-28.5 and 30.0-30.8 of CPU (half: 15.0-15.4). The issue measured the baseline at 57-79 and 36-50:
 // scaled by those ratios the MacCormack step is 11-17 ns per cell on two threads (20.6-29.6 on one) and
 // semi-Lagrangian 7-11 (14-20). On this host the goal (20) is met on two threads by semi-Lagrangian and
 // upwind2_rk2, not by MacCormack (21-22).
