@@ -178,7 +178,7 @@ def write_html(root, papers, others, extra):
              f"Every figure is drawn from the run folders' HDF5 files alone; each ends with the command that "
              f"remakes it (from the repository root).</p>"]
     for paper, sections in papers:
-        parts.append(f"<h2>{html.escape(paper.title)}</h2><p><small>../shared/seeds/{html.escape(paper.seed)}</small></p>")
+        parts.append(f"<h2>{html.escape(paper.title)}</h2><p><small>{html.escape(paper.reference)}</small></p>")
         parts += [html_section(s, root) for s in sections]
     if others:
         parts.append("<h2>Other runs</h2><p>Runs without a catalogued paper figure: their checks and every "
@@ -234,7 +234,7 @@ def write_md(root, papers, others, extra):
              f"checks: {n['ok']} ok, {n['FAILED']} FAILED, {n['KNOWN']} KNOWN. Every figure is drawn from the run "
              f"folders' HDF5 files alone; each ends with the command that remakes it.", ""]
     for paper, sections in papers:
-        lines += [f"## {paper.title}", "", f"../shared/seeds/{paper.seed}", ""]
+        lines += [f"## {paper.title}", "", paper.reference, ""]
         for s in sections:
             lines += md_section(s, root)
     if others:

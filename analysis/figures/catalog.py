@@ -1,6 +1,6 @@
 """Which paper figure each reproduced experiment draws, and what the paper claims there.
 
-One row per figure: the paper (seed file), its figure number, the claim in one line, the run
+One row per figure: the paper (by full reference), its figure number, the claim in one line, the run
 folder it is drawn from (the experiment file's stem under results/runs/reproduce), the figure
 module (analysis/figures/<module>.py), and which of the run's checks belong to it (substrings of
 their names; None = all of the run's checks not claimed by an earlier row). A run this table does
@@ -11,7 +11,7 @@ words and figure number.
 import os
 from collections import namedtuple
 
-Paper = namedtuple("Paper", "key title seed")
+Paper = namedtuple("Paper", "key title reference")
 Figure = namedtuple("Figure", "paper figure claim run module checks command", defaults=[None])
 # command: how to remake the run when it is not an experiment run (the fit); None = from index.h5.
 
@@ -19,16 +19,23 @@ Figure = namedtuple("Figure", "paper figure claim run module checks command", de
 _RENDER = ("build/creaturelab run experiments/jellyfish/render_swim.toml --out RUN --force && "
            "build/creaturelab render RUN --frames 36::3 --figures --force")
 
+MEHLA = ("A. Mehla, Modeling and Animation of Orb Webs, MSc thesis, University of Saskatchewan, 2005")
+RUDOLF_MOULD = ("D. Rudolf and D. Mould, An Interactive Fluid Model of Jellyfish for Animation, VISIGRAPP 2009, "
+                "CCIS 68, pp. 59-72, Springer 2010")
+LENTINE = ("M. Lentine, J. T. Gretarsson, C. Schroeder, A. Robinson-Mosher and R. Fedkiw, Creature Control in a "
+           "Fluid Environment, IEEE Transactions on Visualization and Computer Graphics 16(4), 2010")
+TU = "X. Tu, Artificial Animals for Computer Animation: Biomechanics, Locomotion, Perception, and Behavior, " \
+     "PhD thesis, University of Toronto, 1996"
+
 PAPERS = [
-    Paper("mehla", "Mehla 2005, Physically based orb webs (MSc thesis)", "orb-webs-mehla-2005.txt"),
-    Paper("rm", "Rudolf & Mould 2009, An interactive fluid model of jellyfish for animation",
-          "jellyfish-rudolf-mould-2009.txt"),
-    Paper("fluid", "Fluid solver (Rudolf & Mould 2009 §3.2, after Stam 1999)", "jellyfish-rudolf-mould-2009.txt"),
-    Paper("fits", "Fits (Rudolf & Mould 2009 §3.3: the Hermite contraction curve)", "jellyfish-rudolf-mould-2009.txt"),
+    Paper("mehla", "Mehla 2005, Modeling and Animation of Orb Webs", MEHLA),
+    Paper("rm", "Rudolf & Mould 2009, An Interactive Fluid Model of Jellyfish for Animation", RUDOLF_MOULD),
+    Paper("fluid", "Fluid solver (Rudolf & Mould 2009 §3.2, after Stam 1999)", RUDOLF_MOULD),
+    Paper("fits", "Fits (Rudolf & Mould 2009 §3.3: the Hermite contraction curve)", RUDOLF_MOULD),
 ]
 
 FIGURES = [
-    # --- Mehla 2005 (seeds/orb-webs-mehla-2005.txt)
+    # --- Mehla 2005
     Figure("mehla", "Figs. 5.1-5.2",
            "A strand laid at rest length sags, laid 75-250% over rest it stays taut, Provot's limit caps the "
            "stretch; strands settle in seconds (§5.1).",
@@ -59,71 +66,15 @@ FIGURES = [
            "attachments (6.13) or strong outlines (6.14), an image (6.16) or random gaps (6.18); the web still "
            "settles.",
            "charlotte", "mehla_fig6_11", None),
-    # --- Rudolf & Mould 2009 (seeds/jellyfish-rudolf-mould-2009.txt)
+    # --- Rudolf & Mould 2009
     Figure("rm", "Fig. 4",
            "The spring network of a bell slice and its staggered contraction curves; staggered expansion travels "
-           "about 68% farther per stroke than unison, and unison still swims (§3.3).",
+           "1.68 times as far per cycle as unison, and unison still swims (§3.3).",
            "stagger", "rm_fig4", None),
-    Figure("rm", "Fig. 4, QUICK",
-           "Fig. 4 on the 2026-11-29 default setting, QUICK: 2 mm cells at twice the step. Against 1 mm (stagger, make "
-           "reproduce-full) its distance per cycle is 4.9% (staggered) and 9.8% (unison) lower and its "
-           "staggered / unison ratio 0.886 against 0.840; both below the paper's 1.68.",
-           "stagger_quick", "rm_fig4", None),
-    Figure("rm", "Fig. 4 (setting of 2026-12-03)",
-           "Fig. 4 on the kind's default setting of 2026-12-03 at its speed peak (0.65 Hz), in the 0.25 m by 0.3 m box (the default "
-           "box until the evening of 2026-12-03, pinned): staggered / unison distance per cycle "
-           "0.848 on 1 mm at 0.00125 s, 0.846 at its default 0.000625 s, 0.836 on 0.5 mm, 0.834 there with upwind2_rk2 "
-           "(the grid, step and "
-           "scheme checks pass), not the paper's 1.68; unison swims forward (stagger_default, make reproduce-full).",
-           "stagger_default", "rm_fig4", None),
-    Figure("rm", "Fig. 4 (default setting since 2026-12-05)",
-           "Fig. 4 on the kind's default setting (the force at the step's middle, 1 mm at 0.00125 s, the 0.25 m by "
-           "0.36 m box) at 0.65 Hz: staggered / unison distance per cycle 0.844, 0.837 at half the step, 0.839 on "
-           "0.5 mm, 0.836 there with upwind2_rk2 (the grid, step and scheme checks pass), not the paper's 1.68; "
-           "unison swims forward (stagger_theta, make reproduce-full).",
-           "stagger_theta", "rm_fig4", None),
     Figure("rm", "Fig. 5",
            "Distance travelled against contraction frequency has a large maximum at 0.7 Hz, the resonant gait "
            "(§3.3).",
-           "frequency_sweep", "rm_fig5", None),
-    Figure("rm", "Fig. 5 (converged setting)",
-           "The same claim on the pulse-driven bell at nu = 5e-5 m^2/s, 1 mm cells, where the grid agrees to 1% and "
-           "the scheme to 5% at 0.6-0.7 Hz (5.7% at 0.8 Hz) and the step is 1-9% from its limit (convergence, "
-           "convergence_box_step_viscous; make reproduce-full).",
-           "frequency_sweep_viscous", "rm_fig5", None),
-    Figure("rm", "Fig. 5 (default setting)",
-           "The same claim on the kind's default setting since 2026-12-05: 1 mm cells at 0.00125 s, the elastic force "
-           "taken at the step's middle (implicit_theta 0.5), whose grid (0.5 mm: +2.5, +1.3, -3.0% at 0.6-0.8 Hz), "
-           "step (+0.5 to +1.4%), scheme (upwind2_rk2: -0.4 to -0.7%) and box (0.6%) checks pass "
-           "(convergence_theta). Every mean speed within 0.22% of the earlier setting's: the peak at 0.65 Hz (1.130 "
-           "f_n; 1.5% above 0.7 Hz, 4.0% on 0.5 mm), the stroke's at 0.55 Hz (0.956 f_n).",
-           "frequency_sweep_theta", "rm_fig5", None),
-    Figure("rm", "Fig. 5 (setting of 2026-12-03)",
-           "The same claim on the kind's default setting of 2026-12-03 to 12-05: 1 mm cells, the force added after the "
-           "advection at 0.000625 s, in a 0.25 m by 0.36 m box 0.2-0.5% below a 0.4 m by 0.6 m one, whose grid "
-           "(0.5 mm: +2.4, +1.3, -3.1% at 0.6-0.8 Hz), step (+0.5 to +1.2%), scheme (upwind2_rk2: -0.4 to -0.6%) "
-           "and box (1%) checks pass (convergence_default). The mean speed peaks at 0.65 Hz (1.13 f_n; 1.5% above "
-           "0.7 Hz, 4.0% on 0.5 mm) and the stroke at 0.55 Hz (0.955 f_n), as on the earlier converged setting "
-           "(make reproduce-full).",
-           "frequency_sweep_default", "rm_fig5", None),
-    Figure("rm", "Fig. 5 (converged setting), QUICK",
-           "Fig. 5 on that setting, QUICK: 2 mm cells at twice the step. Against 1 mm at 0.000625 s "
-           "(frequency_peak_viscous, make reproduce-full) its distance per cycle is +13.6% at 0.5 Hz, +1.0% at "
-           "0.55, -5.0% to -9.8% at 0.6-0.8 Hz, its stroke 2.3-6.7% lower, its f_n 0.09% higher, and both place "
-           "the peaks at the same frequencies (mean speed 0.65 Hz, stroke 0.55 Hz).",
-           "frequency_sweep_viscous_quick", "rm_fig5", None),
-    Figure("rm", "Fig. 5 peaks against f_n (converged setting)",
-           "The distance in a given time peaks within 20% of the bell's natural frequency and the stroke "
-           "amplitude within 10% (Hoover & Miller 2015; issue 13 §3), 0.05 Hz apart on 1 mm, 1 mm at twice the "
-           "step, 2 mm at twice the step and 1 mm with upwind2_rk2: the mean speed peaks at 0.65 Hz (1.13 f_n) and "
-           "the stroke at 0.55 Hz (0.955 f_n) in both schemes; at twice the step on 1 mm the mean speed's flat "
-           "top tips to 0.7 Hz (1.215 f_n, 0.4% above 0.65 Hz).",
-           "frequency_peak_viscous", "rm_fig5", None),
-    Figure("rm", "§3.3 (size)",
-           "The resonant frequency depends on the diameter of the umbrella: at 2, 4 and 8 cm the distance in a "
-           "given time peaks within 20% of each size's natural frequency (issue 13 §3; Hoover & Miller 2015), on "
-           "the 2026-11-29 default setting and at twice the cell and step (make reproduce-full).",
-           "size_scaling", "rm_size_scaling", None),
+           "frequency", "rm_fig5", None),
     Figure("rm", "Fig. 6", "Trace particles show the fluid flow around the jellyfish through a contraction cycle.",
            "morphology", "rm_fig6", []),
     Figure("rm", "Fig. 11",
@@ -148,9 +99,9 @@ FIGURES = [
            "taylor_green", "fluid_taylor_green", None),
     Figure("fits", "§3.3 (spline fit)",
            "A Hermite curve with four knots over one period fits the staggered bell's diameter ratio at 0.65 Hz "
-           "(the cycles after the warm-up of stagger_quick's staggered point; make reproduce-full fits stagger's).",
+           "(the cycles after the warm-up of stagger's staggered point).",
            "fit_spline", "fit_spline", None,
-           "rm -rf RUN && build/creaturelab fit spline results/runs/reproduce/stagger_quick --point 0 --knots 4 "
+           "rm -rf RUN && build/creaturelab fit spline results/runs/reproduce/stagger --point 0 --knots 4 "
            "--from 1.5384615384615385 --out RUN"),
 ]
 
