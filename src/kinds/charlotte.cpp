@@ -169,7 +169,8 @@ CharlotteKind::CharlotteKind() {
 }
 
 std::string CharlotteKind::doc() const {
-  return "text or an image inscribed into a settled orb web (Mehla 2005 ch. 6, ../shared/seeds/orb-webs-mehla-2005.txt)";
+  return "text or an image inscribed into a settled orb web (A. Mehla, Modeling and Animation of Orb Webs, MSc "
+         "thesis 2005, ch. 6)";
 }
 
 std::string CharlotteKind::validate(const Params& params) const {

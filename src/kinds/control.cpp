@@ -40,8 +40,8 @@ ControlKind::ControlKind() {
            "per controlled joint: effort (Eq. 1, N m s) | drag (|Eq. 3|, N) | drag_along (Eq. 4 along drag_direction, N)"),
       text("senses", "min", "", "per controlled joint: min | max"),
       text("weights", "", "",
-           "rows 'w11,w12,..; w21,..': joint i descends sum_j w_ij F_j (§5); the weights carry the unit "
-           "conversion; one row and column per controlled joint (a ball joint counts once); empty = each joint its own"),
+           "rows 'w11,w12,..; w21,..': joint i descends sum_j w_ij F_j (§5), weights carrying unit conversion; one "
+           "row per controlled joint; empty = each its own"),
       text("initial_deg", "", "",
            "initial poses 'hinge=degrees, ball=x y z, ...' (ball: rotation vector in degrees; default: the model's "
            "reference)"),
@@ -66,8 +66,8 @@ ControlKind::ControlKind() {
       boolean("one_sided", false, "forward differences (§2.1: biased, off in the paper)"),
       integer("search_every_frames", 1, 1, 100000, "re-determine the direction every k frames (§2.1)"),
       boolean("steady_state", false,
-              "§3.3: freeze the shape before evaluating objectives: a rooted creature stops, a free one keeps "
-              "the rigid velocity with its momentum (relative joint velocities zeroed); else §3.2, dynamic"),
+              "§3.3: freeze the shape before evaluating objectives (joint velocities zeroed, a free creature keeps its "
+              "rigid velocity); else §3.2, dynamic"),
       boolean("rigidify_outboard", true, "§5: hold the bodies outboard of a perturbed joint rigid with it"),
       integer("threads", 1, 1, 16, "threads for the per-DOF evaluations (§5, Fig. 10); results do not depend on it"),
       integer("surface_slices", 12, 3, 256, "segments around round geoms in the wind's surface triangles"),

@@ -4,7 +4,7 @@
 namespace creaturelab::kinds {
 
 // A creature driven by the gradient-descent controller of Lentine et al. 2010 under gravity and
-// simple wind (seeds/creature-control-lentine-2010.txt §2-3, §5, §7; issue 15): an MJCF model,
+// simple wind (Lentine et al. 2010 §2-3, §5, §7; issue 15): an MJCF model,
 // controlled joints with their objectives, kinematic joints held.
 class ControlKind : public SchemaKind {
  public:

@@ -90,8 +90,7 @@ ControlFluidKind::ControlFluidKind() {
            "hinges that follow kinematic_pattern exactly whatever the load (the fluid's too), comma-separated"),
       text("objectives", "drag_along", "",
            "per controlled joint: drag (|F|, N) | drag_along (Eq. 10: F . w, N), F the fluid's force on the bodies "
-           "the joint moves, from the coupling | effort (Eq. 1: |torque| x frame_s, N m s, the actuator torque "
-           "that holds the joint under the fluid's reaction)"),
+           "it moves | effort (Eq. 1: |torque| x frame_s, N m s)"),
       text("senses", "min", "", "per controlled joint: min | max"),
       text("weights", "", "", "rows 'w11,w12,..; w21,..': joint i descends sum_j w_ij F_j (§5)"),
       text("initial_deg", "", "", "initial angles 'joint=degrees, ...' (default: the model's reference)"),
@@ -106,15 +105,14 @@ ControlFluidKind::ControlFluidKind() {
       real("strength_rad_per_s", 1.0, "rad/s", 0, 1e4, "largest joint angle change per second (§2.1)"),
       real("delta_rad", 0.02, "rad", 1e-9, 1,
            "central-difference perturbation (§2.1, §4.3: 'non-negligible changes in the configuration' against the "
-           "fluid's noise; 0.02 rad moves a 1 m block's tip by 0.6 cells of 128^2 in 4 m)"),
+           "fluid's noise)"),
       boolean("one_sided", false, "forward differences (§2.1)"),
       integer("search_every_frames", 1, 1, 100000, "re-determine the direction every k frames (§2.1)"),
       boolean("rigidify_outboard", true, "§5: hold the bodies outboard of a perturbed joint rigid with it"),
       integer("threads", 1, 1, 16, "threads for the per-DOF evaluations (§5, Fig. 10); results do not depend on it"),
       choice("perturbation", "moved", {"moved", "placed"},
-             "how a derivative evaluation reaches its pose: moved over one frame of coupled steps (§4.3, the "
-             "markers carrying the pseudo-velocity) | placed at once, relative joint velocities zero (§3.3's "
-             "steady-state calculation on the fluid's state)"),
+             "how a derivative evaluation reaches its pose: moved over one frame of coupled steps (§4.3) | placed at "
+             "once, joint velocities zero (§3.3's steady state)"),
       choice("objective_bodies", "moved", {"moved", "creature"},
              "the bodies whose fluid force a joint's drag objective takes: moved (those the joint moves) | creature "
              "(every body but the world; §7.1: 'maximize drag (F_d) on the body')"),
@@ -149,8 +147,8 @@ ControlFluidKind::ControlFluidKind() {
       integer("source_rows", 0, 0, 1000, "height of the held source band, cells (0: none, with wall_bottom = inflow)"),
       // The coupling (src/coupling).
       choice("forcing", "projected", {"projected", "sweeps"},
-             "projected: forces solved so the projected flow meets the bodies (leak 0.5%); sweeps: direct forcing "
-             "before the projection (leaks ~20%)"),
+             "projected: forces solved so that the projected flow meets the bodies; sweeps: direct forcing before "
+             "the projection, which leaks"),
       choice("kernel", "peskin4", {"bilinear", "peskin4"}, "IB kernel of the markers (Peskin 2002 §6)"),
       real("marker_spacing_cells", 0.5, "cells", 1e-3, 1e3, "outline marker spacing; at most 1 cell (leak)"),
       real("forcing_tolerance", 1e-3, "", 1e-12, 1, "projected forcing: CG tolerance, fraction of the largest speed"),
@@ -166,8 +164,8 @@ ControlFluidKind::ControlFluidKind() {
       integer("field_every_frames", 0, 0, 1000000, "vorticity field and markers every k frames (0: never)"),
       // The driven flyer (§7.1, flyer.toml).
       text("stroke_sense", "", "",
-           "§7.1: 'controlled = [+|-]inboard, ...': the controlled joint has its given sense while the inboard "
-           "joint's pattern angle increases (+) or decreases (-), the other sense on the opposite stroke"),
+           "§7.1: 'controlled = [+|-]inboard, ...': the joint has its given sense while the inboard joint's pattern "
+           "angle rises (+) or falls (-)"),
       real("flap_period_s", 0, "s", 0, 1e4,
            "period of the flap, a whole number of frames; 0: mean_up_force_n over the last average_frames"),
       integer("force_cycles", 2, 1, 100000, "mean_up_force_n: whole flap cycles at the end averaged"),

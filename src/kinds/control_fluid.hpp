@@ -4,7 +4,7 @@
 namespace creaturelab::kinds {
 
 // A planar creature driven by the controller of Lentine et al. 2010 in the project's 2-D fluid,
-// two-way coupled (seeds/creature-control-lentine-2010.txt §4, §6, §7; issue 16): kind `control`'s
+// two-way coupled (Lentine et al. 2010 §4, §6, §7; issue 16): kind `control`'s
 // controller with the fluid force (Eq. 10) instead of the simple wind.
 class ControlFluidKind : public SchemaKind {
  public:

@@ -72,9 +72,8 @@ std::vector<std::string> splitList(const std::string& s, char sep) {
 void addMotionPatternSpecs(std::vector<ParamSpec>& params) {
   const std::vector<ParamSpec> patterns = {
       text("kinematic_pattern", "", "",
-           "'joint = pattern; ...' for kinematic hinges, pattern hold | sine(mean_deg, amplitude_deg, frequency_hz, "
-           "phase_deg) | table(t_s angle_deg, t_s angle_deg, ...) (piecewise linear, held past its ends); joints not "
-           "named hold their initial angle (§2.2; the paper's legs follow motion capture)"),
+           "'joint = pattern; ...' (§2.2): hold | sine(mean_deg, amplitude_deg, frequency_hz, phase_deg) | "
+           "table(t_s angle_deg, ...) (linear, held past its ends); others hold"),
       text("pd_driven", "", "",
            "hinges PD-driven to pd_pattern (§2.2: pre-specified PD targets; §7.1: the flyer's inner wing joints), "
            "comma-separated"),

@@ -3,7 +3,7 @@
 // 16) read and measure the same way: the text parameters parsed into controller parameters (joint
 // lists, objectives, weights, initial poses, the motion patterns of kinematic and PD-driven joints,
 // Lentine et al. 2010 §2.2), the model, and the converged frame of Fig. 2
-// (seeds/creature-control-lentine-2010.txt). Every parse error throws std::invalid_argument naming
+// (M. Lentine et al., "Creature Control in a Fluid Environment"). Every parse error throws std::invalid_argument naming
 // the key.
 #include <string>
 #include <utility>

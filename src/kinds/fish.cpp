@@ -13,7 +13,7 @@
 namespace creaturelab::kinds {
 namespace {
 
-const char* kSpec = "../shared/specs/artificial-fish.md";
+const char* kSpec = "X. Tu, Artificial Animals for Computer Animation, PhD thesis 1996; docs/fish-spec.md";
 
 struct FishSetup {
   fish::SkinParams skin;
@@ -185,9 +185,11 @@ FishKind::FishKind() {
       real("stiffness_muscle_n_per_m", 28.0, "N/m", 1e-9, 1e9, "muscle units (spec §1 [reimpl])"),
       real("damping_ns_per_m", 0.1, "N*s/m", 0, 1e9, "Voigt damping gamma of every unit (spec §1 [reimpl])"),
       real("contracted_fraction", 0.7, "", 1e-6, 1 - 1e-6,
-           "fully contracted length / rest length of a muscle (ours: the thesis value is not in text; 0.7 keeps the tail from folding at alpha = 1)"),
+           "fully contracted length / rest length of a muscle (ours: the thesis value is not in text; 0.7 keeps the "
+           "tail from folding at alpha = 1)"),
       real("water_mu", 100.0, "", 0, 1e9,
-           "water force coefficient mu (linear: N*s/m^3; quadratic: N*s^2/m^4). Ours: the caudal face (0.092 m^2) moving as one gives a tail-fin tip (0.165 kg) mu A dt / (4 m) = 0.77 at 0.055 s, under the explicit drag limit 2; 0 = in air"),
+           "water force coefficient mu (linear: N*s/m^3; quadratic: N*s^2/m^4); ours, chosen so the tail-fin tip's "
+           "mu A dt / (4 m) stays under the explicit limit 2; 0 = in air"),
       choice("water_law", "linear", {"linear", "quadratic"},
              "f = min(0, -mu A (n.v)) n (linear) or min(0, -mu A |v| (n.v)) n (quadratic, [reimpl]); spec §2"),
       real("current_x_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, x (still water by default)"),
@@ -195,22 +197,27 @@ FishKind::FishKind() {
       real("current_z_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, z"),
       real("dt_s", 0.055, "s", 1e-9, 100, "time step ([reimpl] 0.055 s, spec §2)"),
       choice("scheme", "semi_implicit", {"semi_implicit", "explicit_euler", "symplectic_euler", "tangent_implicit"},
-             "time integrator (spec §2: semi-implicit Euler; the explicit ones and tangent_implicit, a linearly implicit step in the units' full tangent, not the spec's, for the stability comparison)"),
+             "time integrator (spec §2: semi-implicit Euler); the explicit ones and tangent_implicit (full tangent, "
+             "not the spec's) for the stability comparison"),
       real("blowup_strain", 2.0, "", 1e-3, 1e3,
            "a unit longer than (1 + this) or shorter than 1/(1 + this) times its undeformed length counts as a blow-up"),
-      real("swim_amplitude", 0.7, "", 0, 1, "swim-MC amplitude alpha in (0, 1]: the fraction of full contraction reached (spec §3)"),
+      real("swim_amplitude", 0.7, "", 0, 1,
+           "swim-MC amplitude alpha in (0, 1]: the fraction of full contraction reached (spec §3)"),
       real("swim_rate", 0.004, "", 0, 1,
-           "swim-MC rate r in (0, r_max]: rest-length change per reference step as a fraction of the rest length (spec §3)"),
+           "swim-MC rate r in (0, r_max]: rest-length change per reference step as a fraction of the rest length "
+           "(spec §3)"),
       real("swim_desired_speed", 0.0, "", 0, 1,
-           "if > 0: desired speed as a fraction of the top one; alpha = r / r_max = sqrt(it) (ours), overriding swim_amplitude/rate"),
+           "if > 0: desired speed as a fraction of the top one; alpha = r / r_max = sqrt(it) (ours), overriding "
+           "swim_amplitude/rate"),
       real("posterior_lag_rad", M_PI / 2, "rad", -100, 100, "phase lag of the posterior swim segment (spec §3 [choose]: pi/2)"),
       real("turn_amplitude", 0.7, "", 0, 1, "turn-MC amplitude alpha in (0, 1]"),
       real("turn_rate", 0.016, "", 0, 1, "turn-MC rate r in (0, r_max] of the contraction"),
       choice("muscle_stroke", "contract", {"contract", "antagonistic"},
-             "swim-MC stroke: contract (each muscle between its rest length and alpha of the way to the contracted one; "
-             "ours) | antagonistic ([reimpl] FishData.cs: between l0 -+ alpha (l0 - lc), the partner opposite: twice the bend)"),
+             "swim-MC stroke: contract (rest length to alpha of the way to the contracted one; ours) | antagonistic "
+             "([reimpl]: l0 -+ alpha (l0 - lc), the partner opposite)"),
       boolean("mirror", false, "swap left and right in every controller (the mirror image of the run; symmetry checks)"),
-      real("turn_relax_fraction", 0.25, "", 0, 1, "turn-MC: relaxation rate / contraction rate (ours: a quick bend, a slow return)"),
+      real("turn_relax_fraction", 0.25, "", 0, 1,
+           "turn-MC: relaxation rate / contraction rate (ours: a quick bend, a slow return)"),
       real("r_max", 0.075, "", 1e-9, 1, "the largest rate ([reimpl] 0.075)"),
       real("reference_step_s", 0.055, "s", 1e-9, 100, "the step the rates are defined per (the [reimpl] step)"),
       real("warmup_s", 10.0, "s", 0, 1e6, "speed is measured from this time to the end (the gait settles first)"),

@@ -3,7 +3,7 @@
 
 namespace creaturelab::kinds {
 
-// Tu's artificial fish (X. Tu 1996; ../shared/specs/artificial-fish.md, seeds/artificial-fish-nurbs-tu-1996.txt):
+// Tu's artificial fish (X. Tu, Artificial Animals for Computer Animation, 1996; docs/fish-spec.md):
 // a 23-node spring-mass body in water, stepped semi-implicitly, driven by swim and turn motor
 // controllers through a schedule, optionally skinned with NURBS surfaces and exported.
 class FishKind : public SchemaKind {

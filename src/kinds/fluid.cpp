@@ -120,12 +120,12 @@ FluidKind::FluidKind() {
   const std::vector<ParamSpec> rest = {
       choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack", "upwind2_rk2"},
              "semi_lagrangian (Stam 1999, linear interpolation), maccormack (limited, second order) or upwind2_rk2 "
-             "(Eulerian flux form, Fromm upwind + Heun, second order, explicit: CFL <= 0.5)"),
+             "(Fromm upwind + Heun, second order, CFL <= 0.5)"),
       choice("pressure_solver", "fast_direct", {"fast_direct", "pcg"},
              "exact projection: transform + tridiagonal (uniform box) or MIC(0)-PCG to 1e-10"),
       choice("viscosity_solver", "iterative", {"iterative", "fast_direct"},
              "implicit viscosity: iterative sweeps (fast for water-like nu dt / dx^2) or the fast direct solve "
-             "(exact; at 256^2 23 ns per cell against 5.8 for water, 24 against 51 at 100x water's viscosity)"),
+             "(exact; faster for very viscous fluids)"),
       realOrAuto("dt_s", "s", 1e-9, 10, "fixed step, or \"auto\": CFL-adaptive with cfl_safety_factor and max_step_s"),
       real("cfl_safety_factor", 0.5, "", 1e-6, 10, "fraction of the CFL limit dx / max|u| (paper used 0.001 with the bell)"),
       real("max_step_s", 0.01, "s", 1e-9, 10, "largest adaptive step (paper §4: instability near 0.01 s)"),
@@ -166,12 +166,9 @@ std::string FluidKind::validate(const Params& p) const {
   return "";
 }
 
-// Memory, measured (peak resident set of `creaturelab run`, one point, rest initial state):
-// 512^2 cells with 2 / 12 stored frames: 105 / 187 MB; 1024^2: 347 / 692 MB. That is about
-// 270 B per cell for the solver (its arrays, the pressure solver, the HDF5 write) plus 4 fields
-// x 8 B = 32 B per cell and stored frame; the estimate takes 280 + 40 per frame and 32 MiB for
-// the process, 10-25% above the measurements (2048^2 with 11 frames: 2.41 GB measured, 3.05 GB
-// estimated).
+// Memory: about 280 B per cell for the solver (its arrays, the pressure solver, the HDF5 write), 4 fields
+// x 8 B = 32 B per cell and stored frame (40 taken), and 32 MiB for the process; an upper bound on the
+// peak resident set of `creaturelab run`.
 CostEstimate FluidKind::estimateCost(const Params& p) const {
   try {
     ParamReader r(p);

@@ -1,8 +1,8 @@
 #pragma once
-// What the driven flyer (Lentine et al. 2010 §7.1, Figs. 11-13; seeds/creature-control-lentine-
-// 2010.txt; experiments/control/flyer.toml) adds to the control_fluid kind: the stroke each
-// controlled joint's sense follows, read from a parameter, and the mean of a per-frame series over
-// whole flap cycles (a mean over a part of a cycle would weigh up- and down-stroke unequally).
+// What the driven flyer (Lentine et al. 2010 §7.1, Figs. 11-13; experiments/control/flyer.toml) adds to
+// the control_fluid kind: the stroke each controlled joint's sense follows, read from a parameter, and
+// the mean of a per-frame series over whole flap cycles (a mean over a part of a cycle would weigh up-
+// and down-stroke unequally).
 #include <string>
 #include <vector>
 

@@ -7,8 +7,8 @@ namespace creaturelab::kinds {
 
 ParamSpec viscositySchemeSpec() {
   return choice("viscosity_scheme", "backward_euler", {"backward_euler", "crank_nicolson"},
-                "time integration of the viscous term: backward Euler (Stam 1999 §2.2, first order in dt) or "
-                "Crank-Nicolson (second order in dt for that stage alone; the coupled step stays first order)");
+                "viscous term in time: backward Euler (Stam 1999 §2.2, first order) or Crank-Nicolson (second order "
+                "for that stage alone)");
 }
 
 std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& d) {
@@ -20,8 +20,8 @@ std::vector<ParamSpec> fluidBoxSpecs(const FluidBoxDefaults& d) {
       choice("advection", d.advection, {"semi_lagrangian", "maccormack", "upwind2_rk2"}, d.advection_doc),
       viscositySchemeSpec(),
       integer("fluid_threads", 1, 1, 16,
-              "threads inside each fluid step; results are bitwise the same for any count (fluid/worker_pool.hpp). "
-              "Helps only on idle cores: on a loaded machine two were slower than one"),
+              "threads inside each fluid step; results are bitwise the same for any count (fluid/worker_pool.hpp); "
+              "helps only on idle cores"),
   };
 }
 
@@ -33,13 +33,12 @@ std::vector<ParamSpec> couplingSpecs(const CouplingDefaults& d) {
       choice("implicit_mobility", "stencil", {"stencil", "local_mass"}, d.mobility_doc),
       real("implicit_mass_factor", 1.0, "", 1e-6, 100, "local_mass only: added mass per marker in rho dx^2"),
       real("implicit_theta", d.implicit_theta, "", 0.5, 1.0,
-           "semi-implicit only: the linearised elastic force taken at X^n + theta dt U* (ib/coupling.hpp); 1 backward "
-           "Euler, first order, damps the recoil; 0.5 the step's middle, which does not" +
+           "semi-implicit only: elastic force at X^n + theta dt U* (ib/coupling.hpp); 1 = backward Euler, which damps "
+           "the recoil; 0.5 = the step's middle" +
                (d.implicit_theta_doc.empty() ? std::string() : ". " + d.implicit_theta_doc)),
       real("implicit_reuse_tolerance", 1e-8, "", 0, 1e-4,
-           "bodies of 300 markers or more (the banded semi-implicit solve): residual accepted when refining on an "
-           "earlier step's LU factors, relative to the right-hand side; the system is factored anew when six "
-           "sweeps do not reach it (ib/reused_banded_solve.hpp). 0 factors every step"),
+           "banded solve (>= 300 markers): relative residual accepted when refining on earlier LU factors, else "
+           "refactored (ib/reused_banded_solve.hpp); 0 = every step"),
   };
 }
 

@@ -31,33 +31,19 @@ std::vector<Knot> knots(const ParamReader& r) {
   return out;
 }
 
-// Calibrated parameters of the active-tension bell (issue 13). B = 1e-4 N m was chosen on 200² with
-// Peskin's grid kernel to put the pluck's f_n at the paper's resonant 0.7 Hz (§3.3, Fig. 5: 0.73 Hz
-// there). On the converged default setting (below) the same B rings at f_n = 0.575 Hz
-// (frequency_peak_viscous.toml, 1 mm pluck), and was kept. T_max = 14 N/m² with the 0.3 s pulse was
-// chosen at ν = 1.304e-5 on 1 mm to close the bell to Fig. 3's 0.56 of its diameter at 0.6 Hz
-// (convergence_pulse.toml's probes); in the default, more viscous fluid the bell closes only to 0.67
-// of its diameter at 0.6 Hz and 0.72 at 0.7 Hz (frequency_peak_viscous.toml), not Fig. 3's 0.56, and
-// was not recalibrated: every converged measurement was made with 14.
+// Calibrated parameters of the active-tension bell: B was chosen to put the pluck's natural frequency f_n near the
+// paper's resonant 0.7 Hz (Rudolf & Mould 2009 §3.3, Fig. 5), T_max to close the bell toward Fig. 3's 0.56 of
+// its diameter.
 constexpr double kCalibratedBendingRigidity = 1.0e-4;
 constexpr double kCalibratedTension = 14.0;
 
-// The default setting is that of convergence_default.toml (issue 13 §1, §4: the grid, step, scheme and
-// box checks pass at 0.6-0.8 Hz): ν = 5e-5 m²/s, the 0.3 s activation pulse, Peskin's kernel at the
-// bell's 4 mm, 256 segments, 1 mm cells, the force added after the advection at 0.000625 s, in a 0.25 m
-// by 0.36 m box with the aperture 0.18 m above its floor (convergence_box_default.toml). In the
-// afternoon of 2026-12-03 the box was 0.3 m tall, 1.3% short of a 0.4 m by 0.6 m box at 0.6 Hz
-// (convergence_short_box.toml); before that the step was 0.00125 s, first in a square
-// 0.3 m box with the aperture at 0.09 m, whose floor pushed the bell 2.9% farther at 0.6 Hz, then in the
-// 0.3 m tall box, where it missed the 0.6 Hz grid check (+5.8%). From 2026-11-29 to 2026-12-03 it was the same body
-// and fluid with the force before the advection at 0.000625 s in a box 1.5 times as tall
-// (convergence.toml's setting; the two meet in their 1 mm step limits within 0.1-1.4%); until 2026-11-29
-// ν = 1.304e-5, the Hermite curve at T_max 5, the hat kernel, segments following the grid, 2 mm cells in
-// a 0.4 m box at 0.00125 s. The files measured on an earlier setting pin it in their [params].
+// The defaults are the converged setting of the jellyfish convergence experiments (grid, step, scheme and box
+// refined together): a viscous fluid, the activation pulse, Peskin's kernel at the bell's 4 mm, 256 segments,
+// 1 mm cells, the force after the advection, a 0.25 m by 0.36 m box.
 
 // bell_segments = 0 follows the grid: the fewest even segments whose drawn length is at most
-// marker_spacing_cells cells (issue 13: markers about half a cell apart, so that the boundary does
-// not leak as the grid is refined; the membrane experiment measures leaks of 23-49% at 2-4 cells).
+// marker_spacing_cells cells (markers about half a cell apart, so that the boundary does not leak as the grid
+// is refined; Peskin 2002).
 int bellSegments(const ParamReader& r) {
   const long given = r.integer("bell_segments");
   if (given > 0) return int(given);
@@ -231,25 +217,22 @@ JellyfishKind::JellyfishKind() {
       // --- activation (§3.3, Fig. 4)
       real("contraction_hz", act.contraction_hz, "Hz", 1e-3, 100, "contraction frequency (Fig. 12: 0.7 Hz)"),
       choice("expansion", "staggered", {"staggered", "unison"},
-             "hermite shape: staggered: aperture springs expand more slowly than apex springs (§3.3, Fig. 4 right); "
-             "unison: all alike. The pulse's counterpart is pulse_stagger"),
+             "hermite shape: staggered, aperture springs expand more slowly than apex springs (§3.3, Fig. 4 right), "
+             "or unison; the pulse's is pulse_stagger"),
       real("stagger", act.stagger, "", 0, 0.99,
-           "apex springs expand 1/(1 - stagger) times faster than the aperture's (not given in the paper; see "
-           "jellyfish/contraction_curve.hpp)"),
+           "apex springs expand 1/(1 - stagger) times faster than the aperture's; not given in the paper "
+           "(jellyfish/contraction_curve.hpp)"),
       integer("contraction_knots", std::int64_t(act.knots.size()), 1, kMaxKnots,
               "Hermite knots of the rest-length curve used (knot0_* .. knot{N-1}_*); the paper gives none"),
       real("synaptic_delay_s", act.synaptic_delay_s, "s", 0, 10,
            "Spencer's synaptic delay per muscle pair from the aperture (§3.1); 0 = off"),
       choice("activation_shape", "pulse", {"hermite", "pulse"},
-             "pulse (default): sin^2 over pulse_duration_s at each cycle's start, then the elastic bell recoils "
-             "freely (Hoover, Porras & Miller 2019); hermite: the §3.3 curve (activation 1 at its lowest knot), whose "
-             "tension held through the cycle made the distance a small difference of surge and slide that did not "
-             "converge in the grid (convergence_peskin4.toml)"),
+             "pulse: sin^2 over pulse_duration_s each cycle, then free recoil (Hoover, Porras & Miller 2019); "
+             "hermite: the §3.3 curve, whose held tension does not converge in the grid"),
       real("pulse_duration_s", act.pulse_duration_s, "s", 1e-4, 100, "pulse shape: length of the contraction pulse"),
       real("pulse_stagger", act.pulse_stagger, "", 0, 0.99,
-           "pulse shape: staggered expansion (§3.3, Fig. 4 right): the apex muscle's release, the pulse's falling half, "
-           "runs 1/(1 - pulse_stagger) times faster than the aperture's, so the apex relaxes first; 0 = every muscle "
-           "alike (unison; expansion and stagger shape the Hermite curve only). stagger.toml compares 0.5 with 0"),
+           "pulse shape: the apex muscle's release runs 1/(1 - pulse_stagger) times faster than the aperture's "
+           "(§3.3, Fig. 4 right); 0 = unison"),
       integer("active_cycles", 0, 0, 100000,
               "cycles with activation, 0 = all; 1 with a short pulse is a pluck (natural_frequency.toml)"),
   };
@@ -267,40 +250,29 @@ JellyfishKind::JellyfishKind() {
       real("bell_height_m", bell.height_m, "m", 1e-4, 10, "Fig. 12: 28 mm"),
       real("bell_thickness_m", bell.thickness_m, "m", 1e-5, 1, "Fig. 12: 4 mm; the markers are the subumbrella"),
       integer("bell_segments", 256, 0, 2048,
-              "springs along the subumbrella (even, >= 8; apex in the middle); 0 = follow the grid: the fewest "
-              "with markers at most marker_spacing_cells apart. The body is defined by continuum properties, so "
-              "refining it refines the same bell (issue 13). 256 by default: markers 0.25 cells apart on 1 mm and "
-              "0.5 on 0.5 mm, so the grid study refines the fluid around one discretised body. On 1 mm 128 / 256 "
-              "/ 512 segments give 1.642 / 1.595 / 1.574 mm per cycle at 0.7 Hz (512 within 1.6% of 256 at "
-              "0.6-0.8 Hz) and stroke amplitudes 0.313 / 0.301 / 0.295 (512 1.2-2.5% below 256, still falling; "
-              "convergence_segments.toml)"),
+              "springs along the subumbrella (even, >= 8); 0 = follow the grid (marker_spacing_cells); 256 keeps one "
+              "body, markers <= 0.5 cells apart, in the grid study"),
       real("marker_spacing_cells", 0.5, "", 0.05, 4,
-           "bell_segments = 0: largest marker spacing in cells (immersed boundaries want <= 1; 0.5 is Peskin 2002's "
-           "rule and keeps the membrane's leak small, membrane.toml)"),
+           "bell_segments = 0: largest marker spacing in cells; 0.5 is Peskin 2002's rule and keeps the membrane's "
+           "leak small"),
       real("bell_modulus_pa", bell.bell_modulus_pa, "Pa", 1e-6, 1e12, "bell mesoglea, λ = 1186 Pa (Fig. 12); k = E t / L"),
       real("bending_rigidity_n_m", kCalibratedBendingRigidity, "N m", 0, 1e6,
-           "bending rigidity B per metre of depth; a joint's angular spring is B / L. Calibrated: 1e-4 puts the 4 cm "
-           "bell's natural frequency in the 0.6-0.8 Hz of the paper's resonant gait (§3.3, Fig. 5; 0.63 Hz on 200², "
-           "frequency_sweep.toml). "
-           "Fig. 12's 1.186 N·m/rad has no depth or segment length: read per metre of depth on the 32-segment chain it "
-           "is 2.352e-3 (f_n 2.9 Hz); the plate value E t^3/12 of the paper's mesoglea is 6.3e-6"),
+           "bending rigidity B per metre of depth (a joint's angular spring is B / L); calibrated so that f_n sits "
+           "near the paper's resonant 0.7 Hz (§3.3, Fig. 5)"),
       real("stiffness_scale", 1.0, "", 1e-3, 1e3,
            "multiplies bell_modulus_pa and bending_rigidity_n_m together (natural_frequency.toml sweeps it)"),
       choice("muscle_model", "active_tension", {"rest_length", "active_tension"},
-             "active_tension: a tension T_max a(t) that the elastic bell re-expands against, so the stroke can resonate "
-             "(issue 13); rest_length: muscle springs whose rest length follows the curve (the paper, §3.3; it "
-             "prescribes the stroke)"),
+             "active_tension: a tension T_max a(t) that the elastic bell re-expands against, so the stroke can "
+             "resonate; rest_length: the paper's rest-length curve (§3.3)"),
       real("muscle_band_fraction", bell.muscle_band_fraction, "", 0.01, 0.99,
            "fraction of the half-arc from the aperture that the muscle band covers (Fig. 4's model: 14 of 16)"),
       real("muscle_modulus_pa", bell.muscle_modulus_pa, "Pa", 1e-6, 1e12, "circumferential muscle, 400 kPa (§3.2)"),
       real("muscle_section_per_arc", bell.muscle_section_per_arc, "", 1e-9, 10,
-           "rest_length: muscle cross-section per metre of depth per metre of band arc (not given; a 0.1 mm layer "
-           "every two 1.98 mm segments, see jellyfish_params.hpp)"),
+           "rest_length: muscle cross-section per metre of depth per metre of band arc; not given "
+           "(jellyfish_params.hpp)"),
       real("muscle_tension_n_per_m2", kCalibratedTension, "N/m^2", 0, 1e9,
-           "active_tension: peak tension per metre of depth per metre of band arc. Not given by the paper; calibrated: 14 "
-           "with the 0.3 s pulse closes the 4 cm bell to Fig. 3's 0.56 of its diameter at 0.6 Hz and ν = 1.304e-5 "
-           "(convergence_pulse.toml); at the default ν = 5e-5 it closes to 0.67 / 0.72 at 0.6 / 0.7 Hz. With the Hermite "
-           "curve 5 did (0.53-0.59 at 0.6-0.7 Hz)"),
+           "active_tension: peak tension per metre of depth per metre of band arc; not given, calibrated to close the "
+           "bell toward Fig. 3's 0.56 of its diameter"),
       boolean("tentacles", bell.tentacles, "passive tentacle chains at the aperture (§3.2)"),
       real("tentacle_length_m", bell.tentacle_length_m, "m", 1e-5, 10, "not given; half a diameter"),
       real("tentacle_area_factor", bell.tentacle_area_factor, "", 1e-9, 10, "Fig. 12: 1/100 of the bell's section"),
@@ -308,116 +280,53 @@ JellyfishKind::JellyfishKind() {
   // --- fluid (§3.2, Fig. 12)
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
       .domain_m = 0.25,
-      .domain_doc = "width of the free-slip box (its height is box_aspect times it): 6.25 diameters. The default "
-                    "0.25 m by 0.36 m box, the aperture 0.18 m above the floor, is 0.53 / 0.17 / 0.22% below a 0.4 m "
-                    "by 0.6 m one (10 diameters, the paper's width, §3.2) in the 1 mm distance per cycle at 0.6 / 0.7 / "
-                    "0.8 Hz and the default step, at 3/8 of its cells (convergence_default.toml); the width (0.25 to "
-                    "0.4 m) moves it by at most 0.3% (convergence_box_force_after.toml). The depth below the bell "
-                    "matters most: with the aperture 0.09 m above the floor (the square 0.3 m box of 2026-12-03) "
-                    "the bell swims 2.9 / 0.7 / 1.2% farther",
-      .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m; also 50). 250 by default, 1 mm cells: at "
-                   "0.6-0.8 Hz the 0.5 mm grid (dt halved alongside, at the default 0.000625 s) moves the distance "
-                   "per cycle by +2.4 / +1.3 / -3.1%, the stroke by +1.3 / +1.3 / +3.1%, 2 mm is 11-15% off "
-                   "(convergence_default.toml); at twice the step +5.8 / +2.0 / -1.7%, beyond the 5% check at "
-                   "0.6 Hz (in the 0.3 m tall box, convergence_box_force_after.toml)",
+      .domain_doc = "width of the free-slip box (its height is box_aspect times it): 6.25 bell diameters, "
+                    "chosen close to the paper's 10-diameter box (§3.2) in distance per cycle",
+      .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m); 250 gives 1 mm cells, the converged grid of "
+                   "the convergence study",
       .cells = 250,
       .density_doc = "paper: '1' without units, read as g/cm^3",
       .kinematic_viscosity_m2_per_s = 5e-5,
-      .viscosity_doc = "38 times water, Re about 16 for the 4 cm bell (2D IB jellyfish studies run Re 10-300). The "
-                       "paper's 1.304e-3 has no units; read as Pa s (water at 10 C) it gives 1.304e-6 m^2/s, Re about 600, "
-                       "whose boundary layers (1.4 mm at 0.7 Hz) no affordable grid resolves. 1.304e-5 (Re 60, the "
-                       "default until 2026-11-29) does not converge either: 0.5 mm cells move the 1 mm distance per "
-                       "cycle by 10-13% with the Hermite drive (convergence_fine.toml) and up to 33% with the pulse "
-                       "(convergence_pulse.toml), whose free recoil is damped in a Stokes layer (1.7 mm at 0.7 Hz) under "
-                       "two 1 mm cells. At 5e-5 the layer is 3.4 mm: 0.5 and 1 mm agree to 1% (convergence.toml) and "
-                       "upwind2_rk2 to 2.6-4.4% of MacCormack on 0.5 mm at 0.6-0.7 Hz, 5.7% at 0.8 Hz, where the two "
-                       "schemes' step errors add (at a converged step on 1 mm: 3.5% and 2.9% at 0.7 and 0.8 Hz, "
-                       "convergence_step_scheme.toml; on 0.5 mm at half the step 3.8% at 0.8 Hz, "
-                       "convergence_fine_step.toml). See dt_s and bell_segments for what is left. 1.304e-6 is one override away",
-      .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space; the default since "
-                       "the first-order scheme moved distances 2-5x, issue 13), the paper's semi-Lagrangian (Stam 1999), or "
-                       "upwind2_rk2 (Fromm upwind fluxes + Heun, second order, CFL <= 0.5; the scheme change of "
-                       "convergence.toml)",
+      .viscosity_doc = "38 times water (Re ~16, within 2-D IB jellyfish studies' 10-300) so 1 mm cells resolve "
+                       "the Stokes layer; the paper's 1.304e-3, read as Pa s, gives 1.304e-6",
+      .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space), the paper's "
+                       "semi-Lagrangian (Stam 1999), or upwind2_rk2 (Fromm upwind + Heun, CFL <= 0.5)",
       .advection = "maccormack",
   });
   // --- coupling (§3.2; Peskin 2002)
   const std::vector<ParamSpec> coupling_specs = couplingSpecs({
       .kernel = "peskin4",
-      .kernel_doc = "spreading/interpolation: Peskin's 4-point function (default), or the paper's bilinear hat "
-                    "(§3.2), stretched to kernel_radius_m; with the hat the coupled bell did not converge in its "
-                    "segment count (+11% from 128 to 256 on 2 mm, convergence_fine.toml), with Peskin's it does "
-                    "(convergence_peskin4.toml)",
+      .kernel_doc = "spreading/interpolation: Peskin's 4-point function, or the paper's bilinear hat (§3.2), "
+                    "stretched to kernel_radius_m; the hat's bell does not converge in its segments",
       .mobility_doc = "fluid response assumed by the semi-implicit force: through the markers' stencils "
                       "(ib/coupling.hpp), or each marker alone",
       .kernel_radius_m = 0.004,
-      .kernel_radius_doc = "radius of the kernel's support: the bell's thickness (Fig. 12: 4 mm), so the regularised "
-                           "boundary is as thick as the umbrella on every grid and a grid study refines one body (with "
-                           "the grid's own kernel, 2-4 cells, the distance moved 2-5x per halving, issue 13). A whole "
-                           "multiple of the kernel's reach in cells (1 bilinear, 2 peskin4): Peskin's is stretched 1, 2, "
-                           "4 times on 2, 1, 0.5 mm cells; a grid too coarse for it keeps its own kernel; 0 = the "
-                           "grid's own kernel. Metric kernel_cells",
+      .kernel_radius_doc = "kernel support radius: the bell's 4 mm thickness (Fig. 12), so a grid study refines "
+                           "one body; a whole multiple of the kernel's reach in cells; 0 = the grid's kernel",
       .implicit_theta = 0.5,
-      .implicit_theta_doc =
-          "Default 0.5 since 2026-12-05 (1 before; files measured then pin it): the backward-Euler force is the "
-          "leading step error of the coupled bell (on 1 mm at 0.6 Hz halving 0.00125 s moves the distance per cycle "
-          "+3.7% at 1, +1.4% at 0.5), so at 0.5 the step doubles (dt_s) and a converged point costs half "
-          "(BM_SimulatedSecondDefault: 5.5 against 10.7 CPU s per simulated s on 1 mm). Stable at 0.01 s on the "
-          "paper's 100² grid: all 27 points of frequency_sweep_paper_grid.toml ran with implicit_theta = 0.5 "
-          "(a probe of 2026-12-04; tests/physics/jellyfish_swim_test.cpp holds 0.2, 0.7 and 1.5 Hz of it)",
+      .implicit_theta_doc = "0.5 doubles the step at the same accuracy",
   });
   const std::vector<ParamSpec> rest = {
       real("viscosity_tolerance", 1e-8, "", 1e-14, 1e-2,
-           "relative residual of the implicit viscous solve (fluid/diffusion2.hpp). 1e-8 since 2026-12-05 (the "
-           "fluid's 1e-10 before; files measured then pin it): on the default setting the solve's Chebyshev sweeps "
-           "fall from 10 to 8 a step, a point's CPU by about 5% (56.2 against 59.3 s), and the distance per cycle "
-           "of a whole 0.7 Hz point moves by 2e-8 relative (1e-7: 4.4e-7; the 44 points of the four default-setting "
-           "files at most 9.1e-7), against the step's 0.5-1.4% and the grid's 1.3-3.0%"),
+           "relative residual of the implicit viscous solve (fluid/diffusion2.hpp); far below the step's and the "
+           "grid's errors"),
       real("dt_s", 0.00125, "s", 1e-7, 0.1,
-           "coupled step, first order in time (ib/coupling.hpp). 0.00125 s since 2026-12-05, with implicit_theta = "
-           "0.5; on 1 mm in the default box it gives 1.6822 / 1.4922 / 1.1025 mm per cycle at "
-           "0.6 / 0.7 / 0.8 Hz, half of it +1.4 / +0.5 / +0.7%, 2.2 / 0.9 / 1.3% below the Richardson limits, and "
-           "every check of the grid study passes with each of its steps doubled (convergence_theta.toml: the grid "
-           "halves it with the cell, dt ∝ dx, 0.0025 / 0.00125 / 0.000625 s on 2 / 1 / 0.5 mm). At implicit_theta = "
-           "1 (the setting before 2026-12-05, at 0.000625 s) 0.00125 / 0.000625 / 0.0003125 s give 1.6251 / 1.6858 / "
-           "1.7067, 1.4781 / 1.4924 / 1.4994 and 1.0882 / 1.1037 / 1.1104 mm per cycle (observed order 1.5, 1.0, "
-           "1.2): 0.000625 s lies 1.9 / 0.9 / 1.0% below the limits, 0.00125 s 5.4 / 1.9 / 2.4% "
-           "(convergence_default.toml). With the force before the advection (force_stage; the default until "
-           "2026-12-03) 0.000625 / 0.0003125 / 0.00015625 s gave 1.5945 / 1.5504 / 1.5334 at 0.7 Hz, 4.7% above its "
-           "limit at 0.000625 s (convergence_step_scheme.toml). The paper's 0.01 s is stable with the semi-implicit "
-           "step"),
+           "coupled step, first order in time (ib/coupling.hpp); with implicit_theta = 0.5 within about 2% of the "
+           "step limit; the paper's 0.01 s is stable"),
       choice("force_stage", "after_advection", {"before_advection", "after_advection"},
-             "where the bell's force enters the fluid step: after the advection (the default since 2026-12-03: the "
-             "force a source of the momentum equation, Peskin 2002 §6), or before it (Stam 1999 §2.2, the paper's "
-             "order), when MacCormack then carries the force's velocity increment before the projection removes its "
-             "gradient part. Both are first order in dt; on 1 mm at 0.7 Hz, 0.0025 / 0.00125 / "
-             "0.000625 s give 1.438 / 1.492 / 1.506 mm per cycle with the force after (observed order 1.9, limit "
-             "1.512) and 1.799 / 1.665 / 1.595 with it before (order 1, limit 1.523; probes of 2026-12-03 and "
-             "convergence_step_scheme.toml in the tall box); in the default box at 0.000625 s and below the force after "
-             "shows order 1.0-1.5 at 0.6-0.8 Hz (dt_s; in the 0.3 m tall box 0.83-1.3)"),
+             "where the bell's force enters the fluid step: after the advection (a source of the momentum equation, "
+             "Peskin 2002 §6), or before it (Stam 1999 §2.2, the paper's order)"),
       real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
       real("start_y_fraction", 0.5, "", 0.05, 0.95,
-           "aperture's starting height in the box (the bell swims up, its wake goes down): 0.18 m above the floor "
-           "in the default box. At 0.09 m (0.3 in the square 0.3 m box of "
-           "2026-12-03, 0.2 in the tall one before it) the floor pushes the bell 2.9% farther at 0.6 Hz; at 0.18 m "
-           "with 0.27 m above (a 0.45 m tall box) it is within 0.1% of a 0.4 m by 0.6 m box "
-           "(convergence_box_force_after.toml, at 0.00125 s). 0.6 in the 0.3 m tall box, the default until the "
-           "evening of 2026-12-03"),
+           "aperture's starting height as a fraction of the box's (the bell swims up, its wake goes down): 0.18 m "
+           "above the floor"),
       real("box_aspect", 1.44, "", 0.25, 8,
-           "box height / width (domain_m is the width); cells * box_aspect must be whole (with the default 1.44: "
-           "cells a multiple of 25). The default box is 0.36 m tall, 0.18 m of water above the aperture, where "
-           "the bell swims 9-11 mm in its window at 0.6-0.8 Hz: at the default step it lies -0.53 / -0.17 / "
-           "-0.22% from a 0.4 m by 0.6 m box in distance per cycle at 0.6 / 0.7 / 0.8 Hz, where the 0.3 m tall "
-           "box (1.2, the default until the evening of 2026-12-03, 0.12 m above the aperture) lay -1.3 / -0.3 / "
-           "-0.5%, beyond the 1% bound at 0.6 Hz (convergence_short_box.toml); 0.195 and 0.22 m above change "
-           "it by 0.04% more (convergence_box_default.toml). A fast swimmer needs a taller box to swim its "
-           "whole window without meeting the top wall"),
+           "box height / width; cells x box_aspect must be whole (1.44: cells a multiple of 25); tall enough that "
+           "floor and top barely move the swim"),
       // --- measurement
       real("warmup_cycles", 1.0, "", 0, 1000, "cycles before the measured window"),
       real("duration_s", 10.0, "s", 1e-6, 1e6,
-           "measured window, the same for every frequency. When contraction_hz x duration_s is not whole the "
-           "window ends part way through a cycle and distance_m carries that part's surge or slide (at 0.65 Hz, "
-           "6.5 cycles in 10 s, the pulse-driven bell's was 14.33 mm against 10.84 and 11.65 at 0.6 and 0.7 Hz, "
-           "twice frequency_sweep_viscous's step): compare frequencies by cycle_speed_m_per_s, which counts "
+           "measured window, the same for every frequency; compare frequencies by cycle_speed_m_per_s, which counts "
            "whole cycles only"),
       real("frame_rate_hz", 25.0, "Hz", 1e-3, 1e4, "series and marker frames"),
       boolean("store_fields", false, "store vorticity fields (frames × ny × nx) with an XDMF sidecar"),
@@ -467,7 +376,7 @@ JellyfishKind::JellyfishKind() {
        "to the fluid); converged in dt"},
       {"muscle_work_direct_j", "J/m",
        "the same from -sum T dr (tension x rest-length shortening): adds the semi-implicit step's damping of the "
-       "stiff muscle, which falls in proportion to dt (0.51, 0.25, 0.13 J/m at dt 0.01, 0.005, 0.0025 s at 0.7 Hz)"},
+       "stiff muscle, which falls in proportion to dt"},
       {"cost_of_transport", "J/(kg m)",
        "muscle_work_j / (bell mass per metre x distance over those whole cycles); NaN if that distance <= 0"},
       {"cycles", "", "contraction cycles in the measured window"},
@@ -557,10 +466,9 @@ double cycleSpread(const std::vector<double>& d, double per_cycle) {
 }
 
 // The least-squares line through the cycles' distances against the cycle's index, from the first
-// cycle of the window to the last, relative to the window's distance per cycle. On 1 mm the cycles
-// trend through the 10 s window rather than scatter (the viscous time D² / ν of the 4 cm bell is
-// 32 s at the default ν): 0.6 Hz rises 1.38 -> 1.99 mm, 0.8 Hz falls 1.52 -> 1.04 mm, and
-// cycleSpread then measures that trend, not a noise.
+// cycle of the window to the last, relative to the window's distance per cycle. A window shorter than
+// the viscous time D² / ν (32 s for the 4 cm bell at the default ν) shows a trend rather than a
+// scatter, which cycleSpread alone would read as noise.
 double cycleGrowth(const std::vector<double>& d, double per_cycle) {
   if (d.size() < 2) return std::numeric_limits<double>::quiet_NaN();
   const double n = double(d.size()), mid = 0.5 * (n - 1);

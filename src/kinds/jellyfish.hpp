@@ -4,7 +4,7 @@
 namespace creaturelab::kinds {
 
 // A 2-D jellyfish bell swimming in sea water, coupled by the immersed boundary method
-// (Rudolf & Mould 2009, seeds/jellyfish-rudolf-mould-2009.txt §3.1–3.3, Figs. 4, 5, 11, 12).
+// (Rudolf & Mould 2009 §3.1–3.3, Figs. 4, 5, 11, 12).
 class JellyfishKind : public SchemaKind {
  public:
   JellyfishKind();

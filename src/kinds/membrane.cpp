@@ -104,11 +104,10 @@ MembraneKind::MembraneKind() {
       .kernel_doc = "spreading/interpolation: the jellyfish paper's bilinear 4-face stencil or Peskin's 4-point kernel",
       .mobility_doc = "fluid response assumed by the semi-implicit force: through the markers' stencils, or each "
                       "marker alone (ib/coupling.hpp)",
-      .kernel_radius_doc = "radius of the kernel's support; 0 = the grid's own (1 cell bilinear, 2 peskin4); otherwise "
-                           "a whole multiple of that, the kernel stretched to a fixed width (ib/kernel.hpp); a grid too "
-                           "coarse for the radius keeps its own kernel",
+      .kernel_radius_doc = "radius of the kernel's support; 0 = the grid's own (1 cell bilinear, 2 peskin4), else a "
+                           "whole multiple of that (ib/kernel.hpp)",
       .implicit_theta = 1.0,
-      .implicit_theta_doc = "Default 1; the membrane test measures 0.5 against it (ib_membrane_test.cpp)",
+      .implicit_theta_doc = "The membrane test compares 0.5 with it",
   });
   // --- fluid: a viscous liquid in a free-slip box (the test is of the method, not of sea water)
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
@@ -117,7 +116,7 @@ MembraneKind::MembraneKind() {
       .cells_doc = "fluid cells per side (the jellyfish paper's grids: 50 and 100)",
       .density_doc = "fluid density",
       .kinematic_viscosity_m2_per_s = 1e-2,
-      .viscosity_doc = "nu; default 1e-2 (10 000 x water) damps the relaxation within a few seconds, see membrane.toml",
+      .viscosity_doc = "nu; 1e-2 (10 000 x water) damps the relaxation within a few seconds",
       .advection_doc = "velocity advection: semi-Lagrangian (Stam 1999, the jellyfish paper's), MacCormack or upwind2_rk2",
   });
   const std::vector<ParamSpec> rest = {
@@ -125,7 +124,7 @@ MembraneKind::MembraneKind() {
       real("semi_axis_x_m", 0.25, "m", 1e-6, 100, "initial ellipse's semi-axis along x (centred in the box)"),
       real("semi_axis_y_m", 0.15, "m", 1e-6, 100, "initial ellipse's semi-axis along y"),
       integer("markers", 256, 3, 100000,
-              "markers, equally spaced on the ellipse; keep them < dx/2 apart (gaps of 1-2 cells leak, membrane.toml)"),
+              "markers, equally spaced on the ellipse; keep them < dx/2 apart (gaps of 1-2 cells leak)"),
       real("stiffness_n_per_m", 2000.0, "N/m^2", 1e-12, 1e12,
            "zero-rest-length spring constant, N/m per metre of depth; tension = k x segment length"),
       // --- stepping and output

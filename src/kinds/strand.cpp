@@ -11,7 +11,7 @@
 namespace creaturelab::kinds {
 namespace {
 
-const char* kThesis = "../shared/seeds/orb-webs-mehla-2005.txt";
+const char* kThesis = "A. Mehla, Modeling and Animation of Orb Webs, MSc thesis 2005,";
 
 // The strand's geometry, derived once from the parameters (see the span_m / n_springs docs).
 struct Layout {

@@ -1,6 +1,6 @@
 #pragma once
 // The swimmer's part of the control_fluid kind (Lentine et al. 2010 §7.2, Fig. 7,
-// seeds/creature-control-lentine-2010.txt; issue 16): the mouth and its phases (coupling/mouth.hpp),
+// "Creature Control in a Fluid Environment"; issue 16): the mouth and its phases (coupling/mouth.hpp),
 // the controlled joints' sense per phase, and the rise of the creature per cycle.
 #include <string>
 #include <vector>

@@ -197,7 +197,8 @@ WebKind::WebKind() {
 }
 
 std::string WebKind::doc() const {
-  return "an orb web built strand by strand and settled (Mehla 2005 §5.2-5.3, ../shared/seeds/orb-webs-mehla-2005.txt)";
+  return "an orb web built strand by strand and settled (A. Mehla, Modeling and Animation of Orb Webs, MSc thesis "
+         "2005, §5.2-5.3)";
 }
 
 std::string WebKind::validate(const Params& p) const {

@@ -1,5 +1,5 @@
 #pragma once
-// The thesis's wind (seeds/orb-webs-mehla-2005.txt §5.3.9, Fig. 5.45 "windgen"), in SI.
+// The thesis's wind (Mehla 2005 §5.3.9, Fig. 5.45 "windgen"), in SI.
 //   WIND = MASS * GRAVITY * 10; every 50 calls a new random factor in [-3, 3];
 //   wind = (r WIND sin(degree), r WIND sin(degree), -WIND sin(degree)); degree += 1 per call;
 //   each mass gets exp(distance to the hub / alpha) * wind, alpha = web radius * 50.
