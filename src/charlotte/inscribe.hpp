@@ -1,6 +1,6 @@
 #pragma once
 // Inscribing a target (text or a bi-level image) into a settled orb web by removing spiral segments,
-// thesis seeds/orb-webs-mehla-2005.txt ch. 6 (Figs. 6.1-6.4, 6.9-6.18). Deterministic, no I/O.
+// Mehla 2005 ch. 6 (Figs. 6.1-6.4, 6.9-6.18). Deterministic, no I/O.
 //
 // The stages, each a function of its own (canvas.hpp, morphology.hpp, score.hpp, emphasis below):
 //   1. segments    the web's spiral segments, mass on a spoke to mass on the next spoke   (Fig. 6.2)

@@ -1,5 +1,5 @@
 #pragma once
-// Grey-level images of the Charlotte's-web procedure (thesis seeds/orb-webs-mehla-2005.txt ch. 6):
+// Grey-level images of the Charlotte's-web procedure (Mehla 2005 ch. 6):
 // the target image (Fig. 6.1), the source image captured from the web (Fig. 6.2), and their
 // dilations (Figs. 6.7-6.8). Values are "ink": 0 = empty background, 1 = a strand or the dark part of
 // the target, so dilation (a max filter) grows the strands and the letters as in Fig. 6.8.

@@ -1,5 +1,5 @@
 #pragma once
-// The creature controller of Lentine et al. 2010 (seeds/creature-control-lentine-2010.txt §2,
+// The creature controller of Lentine et al. 2010 (§2,
 // Fig. 1): every frame,
 //   (b) for each controlled joint i (independently, in parallel, §5):
 //       (d) move joint i by +delta and by -delta over one frame with the target servo, the bodies

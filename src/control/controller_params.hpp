@@ -1,6 +1,6 @@
 #pragma once
 // Parameters of the creature controller (Lentine et al. 2010 §2-3, §5;
-// seeds/creature-control-lentine-2010.txt). Plain data with defaults; validate() against the
+// "Creature Control in a Fluid Environment"). Plain data with defaults; validate() against the
 // model says what is wrong in words a user understands.
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// The objectives of Lentine et al. 2010 (seeds/creature-control-lentine-2010.txt) evaluated at a
+// The objectives of Lentine et al. 2010 evaluated at a
 // state: effort F_e (§2.3, Eq. 1), drag F_d (§3.2, Eq. 3) and directional drag (Eq. 4) per
 // controlled joint, then each joint's weighted average (§5).
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
-// The prescribed joints of a controller (Lentine et al. 2010 §2.2, §5;
-// seeds/creature-control-lentine-2010.txt), shared by the wind and the fluid controllers: the
+// The prescribed joints of a controller (Lentine et al. 2010 §2.2, §5), shared by the wind and the
+// fluid controllers: the
 // controlled joints first, in order, then the kinematic ones (each a slot in Prescribed: scalar
 // for hinges and slides, a quaternion for ball joints), the PD drives, the controlled DOFs (a ball
 // joint has three, about its body's axes), and per controlled joint the passive joints outboard of

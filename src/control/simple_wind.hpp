@@ -1,5 +1,5 @@
 #pragma once
-// Simple wind forces, Lentine et al. 2010 §3.1 Eq. 2 (seeds/creature-control-lentine-2010.txt):
+// Simple wind forces, Lentine et al. 2010 §3.1 Eq. 2:
 // for each surface triangle i with area A, inward unit normal n and relative wind velocity
 // u_rel = u(centre) - v_triangle(centre),
 //     F_di = sign(u_rel . n) A rho (u_rel . n)^2 n,

@@ -1,6 +1,6 @@
 #pragma once
-// A controlled joint's sense that follows the flap (Lentine et al. 2010 §7.1,
-// seeds/creature-control-lentine-2010.txt: "As the kinematically controlled inner wing joints push
+// A controlled joint's sense that follows the flap (Lentine et al. 2010 §7.1: "As the kinematically
+// controlled inner wing joints push
 // down, the outer joints governed by the controller maximize drag (F_d) on the body, and when the
 // inner kinematic wing joints are moving upwards the controller works to minimize drag"). The
 // stroke is read from the prescribed pattern of an inboard joint (PD-driven or kinematic): its

@@ -1,6 +1,6 @@
 #pragma once
 // The servo that moves prescribed joints to their targets "irrespective of all external forces"
-// (Lentine et al. 2010 §2.2, seeds/creature-control-lentine-2010.txt; the paper uses the
+// (Lentine et al. 2010 §2.2; the paper uses the
 // post-stabilisation projections of Weinstein et al. 2008). Here: over each MuJoCo step the
 // prescribed angles must land exactly on their targets while every other degree of freedom
 // moves under the full dynamics (gravity, wind, contacts, the reaction of the prescribed

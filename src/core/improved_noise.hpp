@@ -1,7 +1,7 @@
 #pragma once
 // Perlin's improved noise (K. Perlin, "Improving Noise", SIGGRAPH 2002; his Java reference
 // implementation, cs.nyu.edu/~perlin/noise/), the Q_P of Rudolf & Mould 2009 Eq. 2
-// (seeds/jellyfish-rudolf-mould-2009.txt §3.5): a C² scalar field over 3-D space, zero at every
+// (Rudolf & Mould 2009 §3.5): a C² scalar field over 3-D space, zero at every
 // integer lattice point, with values in about [-1, 1].
 //
 // Written here rather than taken from Debian's libnoise because the jellyfish needs two things

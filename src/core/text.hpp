@@ -25,7 +25,7 @@ std::string didYouMean(const std::string& word, const std::vector<std::string>& 
 // "3", "nan", "inf", "-inf".
 std::string formatNumber(double value);
 
-// Current UTC time as ISO 8601 with seconds: "2024-05-01T12:34:56Z".
+// Current UTC time as ISO 8601 with seconds: "YYYY-MM-DDThh:mm:ssZ".
 std::string isoTimeUtcNow();
 
 }  // namespace creaturelab::core

@@ -1,6 +1,6 @@
 #pragma once
 // Fluid boundaries of the creature experiments (issue 16; Lentine et al. 2010 §4.3 Fig. 8, §7.1;
-// seeds/creature-control-lentine-2010.txt). The paper says neither how its stream was made nor how
+// "Creature Control in a Fluid Environment"). The paper says neither how its stream was made nor how
 // its source was. Two ways here:
 //  - an inflow wall (fluid::WallType::inflow, boundary2.hpp): the left wall or the floor is a
 //    wall through which fluid enters at the stream or source speed, kept by the projection, so the
@@ -9,10 +9,8 @@
 //    `source_rows` rows (floor included) are set to the speed, and the stream band's tangential
 //    faces to zero, before and after each stage, with the wall open. The projection then moves the
 //    band again (p = 0 on the open wall), so the stream it drives falls short of the speed by an
-//    amount that shrinks with the step and the band's depth: with the flyer's still wings in a
-//    0.5 m/s floor source (128², 1/120 to 1/480 s) the upward force grew 31% (3 rows), 11% (12) and
-//    7% (30) (flyer_convergence.toml). Kept for block_flow's stream (Fig. 8), whose force settles
-//    (360, 348, 353 N at 1, 2, 4 coupled steps a frame), and for comparison.
+//    amount that shrinks with the step and the band's depth (flyer_convergence.toml). Kept for
+//    block_flow's stream (Fig. 8), whose force settles in the step, and for comparison.
 // With the right wall or the top open, the fluid leaves there.
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The swimmer's mouth (Lentine et al. 2010 §7.2, seeds/creature-control-lentine-2010.txt: "enforcing
+// The swimmer's mouth (Lentine et al. 2010 §7.2: "enforcing
 // a non-zero flux across the 'mouth' (located on the bottom) of the creature"; issue 16).
 //
 // The paper's solids are closed: it enforces the flux as a boundary condition of its coupled

@@ -1,6 +1,6 @@
 #pragma once
-// Boundary markers on the outlines of a planar MuJoCo creature (issue 16; Lentine et al. 2010 §4.2,
-// seeds/creature-control-lentine-2010.txt): the fluid of the project is 2-D in the vertical x-z
+// Boundary markers on the outlines of a planar MuJoCo creature (issue 16; Lentine et al. 2010 §4.2): the
+// fluid of the project is 2-D in the vertical x-z
 // plane of the creature, so each geom is cut by that plane and its outline is sampled by markers
 // no farther apart than `spacing_m`. The markers are fixed in their geom's frame and move with it.
 // Outlines (geom frame, the cut y = 0): box the rectangle |x| <= sx, |z| <= sz; sphere a circle;

@@ -1,6 +1,6 @@
 #pragma once
 // The dynamic fish of Tu (1996): 23 point masses joined by 91 Voigt units, 12 of them muscles, and
-// the 24 faces that meet the water. Topology from ../shared/specs/artificial-fish.md §1 (thesis
+// the 24 faces that meet the water. Topology from docs/fish-spec.md §1 (thesis
 // ch. 4, counts; the node / unit numbering of the public reimplementation); the node coordinates
 // are ours (FishGeometry below). The masses, units and rest lengths are stored in a
 // springs::Network<3> (src/springs), the project's spring-mass data, so that its validate() and

@@ -1,6 +1,6 @@
 #pragma once
 // The NURBS skin of the fish, bound to the faces of the dynamic model
-// (../shared/seeds/artificial-fish-nurbs-tu-1996.txt; spec §4; Tu 1996 ch. 7):
+// (X. Tu, Artificial Animals for Computer Animation, 1996, ch. 7; docs/fish-spec.md §4):
 //   set-up, on the undeformed model: each face is the bilinear patch P(s, t) of its four corners,
 //   split 4 x 4 into 25 "patch-nodes"; a local frame per face (u = the normal, v = a face edge,
 //   w = u x v); for each control point its offset from its patch-node, in that frame;

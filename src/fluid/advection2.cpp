@@ -15,10 +15,9 @@ namespace {
 // x_foot = x − c u(x_mid), with c = dt/dx (c < 0 traces forward: MacCormack's reverse step).
 // Written to xs, ys (indexed by i). Two short passes over the row instead of one long
 // dependent chain per face, so that the processor overlaps the independent faces (about 1.5×
-// faster than one fused loop). Fusing again four lanes wide was measured and not kept (2026-12-05,
-// 256², interleaved): the midpoint formed inside the sampling loop no faster, and the foot's sample
-// (forward, backward and semi-Lagrangian) taken there too 15-20% slower (MacCormack 25.5-26.7 ->
-// 30.2-30.4 ns per cell); split further (u and v at the midpoint sampled in two passes) 3-7% slower.
+// faster than one fused loop). Rejected: fusing the passes again four lanes wide (the midpoint inside
+// the sampling loop no faster, the foot's sample there too slower), and splitting further (u and v
+// at the midpoint sampled in two passes, slower).
 template <FaceAxis kAxis>
 void trace_row(const SampleView& U, const SampleView& V, double c, int j, int i_begin, int i_end,
                double* __restrict__ xs, double* __restrict__ ys) {

@@ -92,8 +92,7 @@ double sweep_rows(int ib, int ie, int jb, int je, const Array2& count, double al
     if (s != nullptr && n != nullptr) {
 #if defined(__AVX2__)
       // Four faces at a time, the same operations per face as the loops below. (Eight at a time under
-      // AVX-512F was measured and not kept, 2026-12-05: no faster, 6.4-6.6 -> 6.7-6.8 ns per cell at
-      // 256², 50.6-51.9 -> 50.6-55.6 ms per simulated s on the paper's 100² swim.)
+      // AVX-512F was rejected: no faster.)
       const __m256d alpha4 = _mm256_set1_pd(alpha), four4 = _mm256_set1_pd(4.0);
       for (; i + 4 <= hi; i += 4) {
         const __m256d ci = _mm256_loadu_pd(c + i);
@@ -297,9 +296,8 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
 
   // Warm start for small α: Richardson sweeps x ← x + (b − A x) contract every error mode
   // by |1 − λ(A)| ≤ α max_row Σ|A_ij − δ_ij| ≤ 10 α, i.e. by ≥ 10× per sweep when 10 α ≤
-  // 0.1, at the cost of one pass each (a CG iteration costs three). (The limit was 0.05 until
-  // issue 13: water at 256² and dt = 0.01 s has 10 α = 0.053 and took three CG iterations, about
-  // eleven passes, where four sweeps reach the tolerance.) Water on the paper's grid
+  // 0.1, at the cost of one pass each (a CG iteration costs three). The limit 0.1 keeps water at
+  // 256² and dt = 0.01 s (10 α = 0.053) on sweeps. Water on the paper's grid
   // has α ~ 1e-3: two to four sweeps reach the tolerance and CG is not needed.
   int sweeps = 0;
   if (10.0 * alpha <= kSweepContraction) {
@@ -337,11 +335,10 @@ LinearSolveReport ImplicitDiffusion2::chebyshev(Array2& x, double alpha, double 
   // ω_k = 2ρ_k/δ, γ_k = ρ_k ρ_{k−1}. The error contracts by (√κ − 1)/(√κ + 1) per sweep,
   // κ = 1 + α g, CG's worst-case rate, but a sweep is one pass over three arrays where a CG
   // iteration is three passes and two reductions. x_{k+1} overwrites x_{k−1} face by face.
-  // Not kept: two or three sweeps fused into one pass over the rows (a row wavefront, bitwise the
-  // same, with a spare array for the iterate the solve may stop at; branch visc-fuse, 9c07ce9). It
-  // was no faster: the sweeps are bound by their arithmetic more than by memory (a 10-sweep solve
-  // costs 7.0 ns per face at 150², arrays in L2, 8.0 at 300²), while the spare array takes the pass
-  // beyond L2 and a pass computes one sweep past the accepted iterate half the time.
+  // Rejected: two or three sweeps fused into one pass over the rows (a row wavefront, bitwise the
+  // same, with a spare array for the iterate the solve may stop at). It was no faster: the sweeps
+  // are bound by their arithmetic more than by memory, while the spare array takes the pass beyond
+  // L2 and a pass computes one sweep past the accepted iterate half the time.
   const DiffusionBlock2& block = w.block;
   const int parts = piece_count(workers_);
   const double delta = 0.5 * alpha * block.max_row_sum;
@@ -389,8 +386,8 @@ LinearSolveReport ImplicitDiffusion2::conjugate_gradients(Array2& x, double alph
   // Conjugate gradients for A x = b from the current x. Unpreconditioned: the diagonal 1 + α d
   // varies only at the walls (d = 2..6), so Jacobi scaling buys nothing; cond(A) ≤ 1 + 8α.
   // The inner products are sums of per-row partial sums in row order (so that threads can share
-  // the rows); until this branch they ran over the whole array in one pattern, which rounds
-  // differently (tests/unit/fluid_stages_test.cpp compares the two to the tolerance).
+  // the rows); one pattern over the whole array would round differently
+  // (tests/unit/fluid_stages_test.cpp compares the two to the tolerance).
   double* __restrict__ xv = x.data();
   double* __restrict__ r = w.r.data();
   double* __restrict__ p = w.p.data();

@@ -21,9 +21,8 @@ constexpr int kLanesPerCacheLine = static_cast<int>(kCacheLineBytes / sizeof(dou
 
 // Radices of the FFT of length h = n/2 used by the DCT of length n, or empty when n is odd or
 // h has a prime factor above 7 (the dense transform is used then). (A radix-4 butterfly was
-// tried: with SSE2's sixteen registers it spilled and ran 15 % slower than two radix-2 stages.
-// Two radix-2 stages fused into one pass, radix2_twice, keep the radix-2 arithmetic and with
-// AVX-512's 32 registers save 7-10% of the 256² projection, 2026-12-05.)
+// rejected: with SSE2's sixteen registers it spills. Two radix-2 stages fused into one pass,
+// radix2_twice, keep the radix-2 arithmetic and use AVX-512's 32 registers.)
 std::vector<int> fft_radices(int n) {
   if (n < 2 || n % 2 != 0) return {};
   int h = n / 2;

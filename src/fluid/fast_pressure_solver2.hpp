@@ -76,10 +76,9 @@ class FastPressureSolver2 final : public PressureSolver2 {
   void setup(const KroneckerOperator2& op, int nx, int ny, bool prefer_dense);
   // The pieces of a solve; [l0, l1) a range of lanes, [k0, k1) of modes (threads share them).
   // One FFT scratch per thread: its piece of the lanes in arrays of the piece's own width, so
-  // that the FFT's stages of two threads never write into the same rows. With shared rows cut
-  // at a cache line, each thread's half of the 256² forward transform took 240-300 µs, as long
-  // as all lanes on one thread, against 113 µs in arrays of its own (measured 2026-11-25 on
-  // idle cores; the halves of a row are neighbours in memory, which the cores then trade).
+  // that the FFT's stages of two threads never write into the same rows. (Shared rows cut at a
+  // cache line were rejected: two threads were then no faster than one, since the halves of a row
+  // are neighbours in memory, which the cores then trade.)
   struct FftPanel {
     Array2 re, im, re2, im2;
   };

@@ -1,5 +1,5 @@
 #pragma once
-// Parameters of the 2-D incompressible fluid solver (Rudolf & Mould 2009, seeds/jellyfish-rudolf-mould-2009.txt,
+// Parameters of the 2-D incompressible fluid solver (Rudolf & Mould 2009,
 // §3.2, Eq. 1: ∂u/∂t = ν ∇²u − u·∇u − ∇p/ρ + F,   ∇·u = 0).
 // Plain struct with in-class defaults; validate() says in words what is wrong.
 
@@ -117,12 +117,8 @@ struct FluidParams {
   int pressure_max_iterations = 5000;
 
   // --- implicit viscosity (backward Euler, Stam 1999 §2.2)
-  /// iterative is the default (all converged results were computed with it; until 2026-12-02
-  /// with CG where Chebyshev now runs, the same solution to the tolerance: the jellyfish's point
-  /// files differ from a rerun by about 4e-9 relative, not bitwise, while the controlled flyer,
-  /// which amplifies any change at the solvers' tolerances, reruns to another sample of its
-  /// force, experiments/control/flyer_steady.toml); fast_direct is faster only for large
-  /// ν dt / dx² (fast_diffusion2.hpp).
+  /// iterative is the default (the converged results were computed with it); fast_direct is
+  /// faster only for large ν dt / dx² (fast_diffusion2.hpp).
   ViscositySolverType viscosity_solver = ViscositySolverType::iterative;
   ViscosityScheme viscosity_scheme = ViscosityScheme::backward_euler;
   double viscosity_tolerance = 1e-10;  ///< ‖b − A u‖∞ ≤ tol · ‖b‖∞

@@ -1,6 +1,6 @@
 #pragma once
 // The 2-D incompressible fluid solver: Stam's stable fluids (Stam 1999) on a MAC grid
-// (Griebel et al. 1998), for Eq. 1 of Rudolf & Mould 2009 (seeds/jellyfish-rudolf-mould-2009.txt), §3.2:
+// (Griebel et al. 1998), for Eq. 1 of Rudolf & Mould 2009, §3.2:
 //   ∂u/∂t = ν ∇²u − u·∇u − ∇p/ρ + F,   ∇·u = 0.
 //
 // One step is the operator split of Stam 1999 §2.2, as a fixed list of named stages (Jet's

@@ -3,8 +3,8 @@
 // 4th ed., §4.3.5; the storage and the pivoting of LAPACK's dgbtf2/dgbtrs).
 //
 // Why: the semi-implicit coupling solves (I − dt M K) U = r every step (ib/coupling.hpp), n = 2 x
-// markers unknowns. For the jellyfish with a 256-segment bell (419 markers) the dense LU took
-// about 70% of a 2 mm step. Ordered so that markers near each other in space are near each other
+// markers unknowns; for a 256-segment bell (419 markers) the dense LU would dominate the step.
+// Ordered so that markers near each other in space are near each other
 // in the unknowns (ElasticBody::solveOrder), the system is banded: an entry couples two markers
 // only through their shared faces (M, within the kernel's support) or a spring (K).
 //
@@ -13,11 +13,9 @@
 // the same matrix gives the same factors bit for bit (no threads, a fixed order of operations).
 //
 // Reach: set_reach() takes, from the code that assembled the matrix, the rows of each column that
-// it may have made nonzero, for multiply() and for the next reset() to zero only those. A step's
-// band of 3.8 MB held nonzeros in 256 of each column's 568 storage rows on average (1 mm jellyfish,
-// kl = ku = 189): the other rows were zeroed again every step, and multiply() ran over the 379 rows
-// of the band. (Scanning the band for the reach instead cost about as much as it saved: 1.5% of a
-// step in perf.)
+// it may have made nonzero, for multiply() and for the next reset() to zero only those: a bell's
+// band is mostly zero rows, which would otherwise be zeroed and multiplied every step. (Scanning the
+// band for the reach instead was rejected: it cost about as much as it saved.)
 #include <cstddef>
 #include <vector>
 

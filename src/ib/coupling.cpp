@@ -157,11 +157,9 @@ const std::vector<double>& ImmersedBoundary2::applyGram(const Eigen::VectorXd& v
 
 // The banded system on an earlier step's factors (ReusedBandedSolve) with M applied, not formed:
 // the right-hand side U_free + M F and each refinement sweep's product need only M's product, so
-// G and I − θ dt M K are formed only on the steps that factor anew (0.9% of the 1 mm jellyfish's).
+// G and I − θ dt M K are formed only on the steps that factor anew (rare on the 1 mm jellyfish).
 // The answer is the same system's to the refinement's tolerance; only the rounding of M's products
-// differs from the formed matrix's (a whole default point's distance moved 2.5e-11 relative at 0.7
-// Hz, 7.9e-10 at 0.6 Hz). Forming G, forming I − dt M K and multiplying by it were 6.5%, 5.3% and
-// 5.1% of a 1 mm jellyfish step (perf, 2026-12-04).
+// differs from the formed matrix's.
 Eigen::VectorXd ImmersedBoundary2::solveWithoutAssembly(const Eigen::SparseMatrix<double>& stiffness,
                                                         const Eigen::VectorXd& free, const Eigen::VectorXd& force,
                                                         double scale, double t1_s, double theta_dt_s) {

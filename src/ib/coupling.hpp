@@ -1,6 +1,6 @@
 #pragma once
 // Immersed-boundary coupling of an elastic body and the 2-D fluid (Peskin 2002, Acta Numerica 11,
-// §4 and §6; Rudolf & Mould 2009, seeds/jellyfish-rudolf-mould-2009.txt §3.2): the body's markers
+// §4 and §6; Rudolf & Mould 2009 §3.2): the body's markers
 // are massless and move with the fluid velocity interpolated at them; their elastic forces are
 // spread onto the grid as the force term F of Eq. 1.
 //
@@ -27,21 +27,17 @@
 // consistent whatever M is.
 // Where in the step the force is evaluated (implicit_theta = θ): at X^n + θ dt U*, i.e.
 //   (I − θ dt M K) U* = I u^n + M F,      F_impl = F + θ dt K U*.
-// θ = 1 (CouplingParams' default; the jellyfish kind's is ½ since 2026-12-05) is the backward-Euler
+// θ = 1 (CouplingParams' default; the jellyfish kind's is ½) is the backward-Euler
 // end of the step above: first order, and it damps the bell's elastic recoil by O(dt). θ = ½ takes
 // the force at the middle of the markers' motion (the trapezoidal rule of the linearised force),
 // which does not damp. For a linear body with the true fluid response the θ-method is
 // unconditionally stable for θ ≥ ½ and only conditionally below (cf.
 // Newren, Fogelson, Guy & Kirby 2007, J. Comput. Phys. 222, on backward-Euler and Crank–Nicolson
 // immersed-boundary steps); M here only approximates that response, so this is a guide, not a
-// proof: the membrane test runs θ = ½ at 0.01 s, the jellyfish at 0.00125-0.0025 s on 1 mm, and on
-// the paper's 100² grid at 0.01 s (frequency_sweep_paper_grid.toml, 27 points, 2026-12-04) the
-// bell's chain stayed as smooth as at θ = 1 (largest second difference per segment 0.30-0.34
-// against 0.30-0.32 at 0.7 and 1.2 Hz; tests/physics/jellyfish_swim_test.cpp runs 0.2, 0.7 and 1.5 Hz of
-// it over the whole window). θ < ½ is not offered. Any θ ≥ 0 keeps I − θ dt M K's
-// eigenvalues ≥ 1 (below). Measured on the jellyfish's default setting at 0.6 Hz (1 mm cells, issue
-// 13 §4): halving the step from 0.00125 s moved the distance per cycle by +3.7% at θ = 1 and by
-// +1.4% at θ = ½ (experiments/jellyfish/convergence_theta.toml).
+// proof: the membrane test runs θ = ½ at 0.01 s, and tests/physics/jellyfish_swim_test.cpp runs the
+// bell at θ = ½ on the paper's 100² grid at 0.01 s. θ < ½ is not offered. Any θ ≥ 0 keeps
+// I − θ dt M K's eigenvalues ≥ 1 (below). On the jellyfish the backward-Euler force is the leading
+// step error, which θ = ½ reduces (experiments/jellyfish/convergence_theta.toml).
 //
 // Two mobilities (ImplicitMobility):
 //  - stencil (default): M = dt/ρ · I S, the force spread and read back through the markers' own
@@ -118,7 +114,7 @@ struct CouplingParams {
   // (ib/reused_banded_solve.hpp), with M applied rather than formed (Transfer::apply_gram); tolerance
   // 0 factors the formed system every step (the plain banded LU, bit for bit). Not the dense solve:
   // on the paper's 100² grid at 0.01 s the system changes so much per step that the refinement
-  // failed at 95% of the steps (tried 2026-12-04: 22.5 -> 21.2 simulated s per CPU s).
+  // nearly always fails (tried, slower).
   FactorReuse factor_reuse;
 };
 
@@ -182,8 +178,8 @@ class ImmersedBoundary2 {
 /// Bodies with a solveOrder() and at least this many markers solve the semi-implicit system banded;
 /// smaller ones keep the dense LU, so that the grid-following bells up to 128 segments (under 300
 /// markers with their tentacles) and their baselines stay bit for bit what they were. At 256
-/// segments (419 markers) the banded solve made a simulated second 3x faster on 200² (22.7 -> 7.5 s,
-/// tests/bench/bench_jellyfish.cpp, BM_SimulatedSecondPeskin256).
+/// segments (419 markers) the banded solve is much faster (tests/bench/bench_jellyfish.cpp,
+/// BM_SimulatedSecondPeskin256).
 inline constexpr int kBandedFromMarkers = 300;
 
 }  // namespace creaturelab::ib

@@ -9,7 +9,7 @@
 //
 // Two kernels:
 //  - bilinear: phi(r) = max(0, 1 − |r|). The "four closest grid cells with bilinear
-//    interpolation" of Rudolf & Mould 2009 (seeds/jellyfish-rudolf-mould-2009.txt, §3.2),
+//    interpolation" of Rudolf & Mould 2009 (§3.2),
 //    chosen there over Peskin's kernel because a wider kernel makes a coarse (50² or 100²)
 //    grid look artificially viscous.
 //  - peskin4: Peskin's 4-point function (Peskin 2002, §6: the one built from his postulates

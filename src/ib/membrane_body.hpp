@@ -1,8 +1,7 @@
 #pragma once
 // A closed elastic membrane: the classic test of the immersed boundary method (Peskin 2002, Acta
 // Numerica 11, the jellyfish paper's ref. [19]; an ellipse relaxing to a circle as in Tu & Peskin
-// 1992, SIAM J. Sci. Stat. Comput. 13). It tests the coupling of coupling.hpp (Rudolf & Mould 2009,
-// seeds/jellyfish-rudolf-mould-2009.txt §3.2).
+// 1992, SIAM J. Sci. Stat. Comput. 13). It tests the coupling of coupling.hpp (Rudolf & Mould 2009 §3.2).
 // N markers start on an ellipse and are joined in a ring by Hookean springs of ZERO rest length:
 //
 //   E = ½ k Σ_k |X_{k+1} − X_k|²,      F_k = −∂E/∂X_k = k (X_{k+1} − 2 X_k + X_{k−1}),

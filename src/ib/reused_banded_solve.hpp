@@ -2,8 +2,8 @@
 // Solves the semi-implicit coupling's banded systems, one per step, on an earlier step's LU factors.
 //
 // Why: the system I − dt M K (ib/coupling.hpp) changes little from one step to the next (markers move
-// a few hundredths of a cell, the muscle tension a fraction of a percent), but factoring it anew
-// every step was 27% of a 1 mm jellyfish step (perf, issue 13 §4). Iterative refinement on the
+// a few hundredths of a cell, the muscle tension a fraction of a percent), while factoring it anew
+// every step is a large share of a 1 mm jellyfish step. Iterative refinement on the
 // factors P of a nearby matrix (Golub & Van Loan, Matrix Computations, 4th ed., §3.5.3; here a
 // preconditioned Richardson iteration, x ← x + P⁻¹ (b − A x)) converges by the factor ‖I − P⁻¹ A‖
 // per sweep, small while P is recent. The system is factored anew when max_sweeps sweeps do not
@@ -11,13 +11,8 @@
 // fresh factors, as without reuse. So the answer is this step's system's to the tolerance, not an
 // older one's; and U* only sets the implicit correction of the force (the markers move with the
 // fluid whatever U* is, ib/coupling.hpp), so its error of 1e-8 relative is far below the step's.
-// Measured on the 256-segment bell at ν = 5e-5 m²/s, 2 mm, dt 0.00125 s, 400 steps: the system
-// changes about 1% per step (a sweep contracts the residual 30-100 times on one-step-old factors),
-// so with four sweeps 1e-12 needed a new factorisation at 87% of the steps and 1e-10 at 72%, and
-// gained nothing; 1e-8 with six sweeps at 17% (1.7% on 1 mm, where the kernel spans twice the cells
-// and a step moves the markers half as far across it), the bell's height after the 400 steps equal
-// to 12 digits. A whole 11 s point (2 mm, 0.7 Hz): distance 10.1062241675 mm either way (1.1e-11
-// relative), the stroke to 9e-12, the centroid's series within 1.9e-12 m.
+// Tighter tolerances (1e-10, 1e-12) refactor on most steps and gain nothing; 1e-8 with six sweeps
+// refactors rarely and leaves the swim unchanged to about 11 digits.
 // Deterministic: whether to factor depends on the residuals alone, which the same inputs reproduce
 // bit for bit. tolerance = 0 factors every step (the plain banded LU, bit for bit).
 #include <functional>

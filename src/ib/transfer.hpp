@@ -1,7 +1,7 @@
 #pragma once
 // Immersed-boundary transfer between Lagrangian markers and the fluid's MAC grid
-// (Peskin 2002, "The immersed boundary method", Acta Numerica 11; Rudolf & Mould 2009,
-// seeds/jellyfish-rudolf-mould-2009.txt, §3.2):
+// (Peskin 2002, "The immersed boundary method", Acta Numerica 11; Rudolf & Mould 2009
+// §3.2):
 //
 //   spread:       f(x_face) += Σ_k F_k delta_h(x_face − X_k)          (force density, N/m³)
 //   interpolate:  U_k        = Σ_faces u(x_face) delta_h(x_face − X_k) dx²   (m/s)
@@ -94,7 +94,7 @@ class Transfer {
   /// same weights. Equal to gram(1.0, G) · x up to rounding (the same products, summed face by face
   /// instead of marker pair by marker pair). `patch` is scratch, kept between calls to reuse its
   /// storage. Why: the semi-implicit coupling's refinement sweeps need M x every step but G itself
-  /// only when they refactor (ib/coupling.cpp); forming G was 6.5% of a 1 mm jellyfish step.
+  /// only when they refactor (ib/coupling.cpp), and forming G is costly.
   void apply_gram(std::span<const double> x, std::span<double> out, std::vector<double>& patch) const;
 
   /// The kernel of the last locate() (bilinear before the first).

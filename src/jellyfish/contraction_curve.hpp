@@ -1,5 +1,5 @@
 #pragma once
-// The muscle activation curve of Rudolf & Mould 2009 (seeds/jellyfish-rudolf-mould-2009.txt),
+// The muscle activation curve of Rudolf & Mould 2009,
 // §3.3 and Fig. 4: each circumferential-muscle spring's rest length is its relaxed length times a
 // periodic curve "based on Hermite splines", normalised between 1 (relaxed) and 0.56 (the bell
 // contracts to 56% of its diameter, Fig. 3).

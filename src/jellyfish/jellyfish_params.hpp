@@ -1,5 +1,5 @@
 #pragma once
-// Parameters of the swimming jellyfish of Rudolf & Mould 2009 (seeds/jellyfish-rudolf-mould-2009.txt):
+// Parameters of the swimming jellyfish of Rudolf & Mould 2009:
 // the bell model of §3.2 and Fig. 4, the muscle activation of §3.3, the values of Fig. 12.
 // Every field is SI. Where the paper gives no value or no unit the choice and its reason are
 // written beside the field; every one is a parameter of the `jellyfish` kind.
@@ -112,8 +112,7 @@ struct ActivationParams {
   // pulse only: staggered expansion (§3.3, Fig. 4 right) for the pulse. Its contraction, the rising
   // half, is the same for every muscle; the release replays at speed 1 / (1 - pulse_stagger (1 - a)),
   // a = 0 at the apex and 1 at the aperture, so the apex relaxes first and the bell re-expands from
-  // the apex down, as the Hermite curve's `stagger` does. 0 releases every muscle alike (unison),
-  // the setting every pulse experiment before stagger.toml was measured with.
+  // the apex down, as the Hermite curve's `stagger` does. 0 releases every muscle alike (unison).
   double pulse_stagger = 0.0;
   // Cycles with activation; 0 = every cycle. 1 with a short pulse is a pluck: one contraction,
   // then the bell rings down freely (natural_frequency.toml).

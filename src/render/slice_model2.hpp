@@ -1,5 +1,5 @@
 #pragma once
-// The 2-D render model of the jellyfish slice (Rudolf & Mould 2009, seeds/jellyfish-rudolf-mould-2009.txt
+// The 2-D render model of the jellyfish slice (Rudolf & Mould 2009
 // §3.4): the simulation's point masses are the subumbrellar surface; "we can generate the exumbrellar
 // side by computing surface normals at each point-mass, and then projecting backward through the
 // thickness of the umbrella", then "generate an arbitrary resolution model for rendering by

@@ -51,7 +51,7 @@ class RigidData {
 
   // Stage: positions and velocities of bodies and geoms from qpos, qvel (no dynamics).
   void kinematics();
-  // Lentine et al. 2010 §3.3 (seeds/creature-control-lentine-2010.txt): the creature's shape
+  // Lentine et al. 2010 §3.3: the creature's shape
   // frozen, i.e. every relative joint velocity set to zero, "treating the entire creature ... as a
   // unified rigid body ... in a way that conserves both linear and angular momentum". A tree
   // rooted to the world (no free joint) comes to rest; a tree with a free root keeps the rigid

@@ -2,7 +2,7 @@
 // Linearised backward Euler after Baraff & Witkin, "Large steps in cloth simulation", SIGGRAPH
 // 1998, Eq. 15-16: one Newton step of v1 = v0 + h M^-1 f(x0 + h v1, v1) per time step,
 //   (M - h df/dv - h^2 df/dx) dv = h (f0 + h df/dx v0),   v1 = v0 + dv,   x1 = x0 + h v1.
-// The thesis (seeds/orb-webs-mehla-2005.txt §4.2, §5.1) calls implicit integration "non-trivial
+// The thesis (Mehla 2005 §4.2, §5.1) calls implicit integration "non-trivial
 // and not recommended"; it is here because it is the way to the taut strands the thesis could
 // not reach with explicit steps.
 // The matrix is assembled sparse over the free coordinates only (pinned rows and columns

@@ -1,5 +1,5 @@
 #pragma once
-// Time integrators for the spring-mass System (thesis §4.1-4.2, seeds/orb-webs-mehla-2005.txt).
+// Time integrators for the spring-mass System (thesis §4.1-4.2, Mehla 2005).
 // Each integrator owns its scratch buffers (no allocation per step once sized) and sees the
 // model only through System (§4.2.1: the solver is independent of the model).
 #include <memory>

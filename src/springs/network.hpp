@@ -1,6 +1,6 @@
 #pragma once
 // Particles and springs stored as arrays (struct of arrays), the model of thesis ch. 4
-// (seeds/orb-webs-mehla-2005.txt §4.2, Figs. 4.5-4.6): one entry per particle or spring, so the
+// (Mehla 2005 §4.2, Figs. 4.5-4.6): one entry per particle or spring, so the
 // force loop of System is a tight pass over contiguous arrays instead of chasing pointers.
 // Positions and velocities are not stored here: they live in State, which integrators own.
 #include <cstdint>

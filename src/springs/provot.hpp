@@ -1,5 +1,5 @@
 #pragma once
-// Strain limiting after Provot 1995, as used in thesis §5.1 (seeds/orb-webs-mehla-2005.txt,
+// Strain limiting after Provot 1995, as used in thesis §5.1 (Mehla 2005,
 // Fig. 5.2): after integration, every spring longer than (1 + max_strain) * rest is shortened to
 // that length by moving its free ends towards each other along the spring (both halves if both
 // are free, all of it on the free end otherwise). Velocities are left as they are.

@@ -1,7 +1,7 @@
 #pragma once
 // Stable explicit time steps for a spring network: an upper bound on its highest natural
 // frequency times the stability interval of each integrator on the damped oscillator.
-// The thesis calls this the Courant condition (seeds/orb-webs-mehla-2005.txt §4.2: "dt must be
+// The thesis calls this the Courant condition (Mehla 2005 §4.2: "dt must be
 // inversely proportional to the square root of the spring stiffness").
 #include "springs/integrator.hpp"
 #include "springs/network.hpp"

@@ -67,14 +67,14 @@ template <int D> inline double springVector(int e, const double* x, const int* s
 }
 
 #if defined(__SSE2__)
-// 2D springs without damping (the planar web, simulate.cpp): a particle's (x, y) is one 128-bit lane
-// pair, so a spring's l, l*l, coef*l and the two force updates are one packed instruction each, and
-// springs go in blocks of four with two packed square roots and divisions. Every lane does the scalar
-// loop's operation on the same operands (l2 = lx^2 + ly^2 is the scalar (0 + lx^2) + ly^2, as 0 + q = q
-// exactly for q >= 0) and the forces are added in spring order, so the result is bit for bit that of the
-// plain loop. On the default web it takes 37% less time than the plain loop in 2D (blocks of two: 31%
-// less). Tried without gain: keeping the last-touched particle's force in a register (chains of
-// springs share a particle, but the store-to-load forwarding was not the bottleneck).
+// 2D springs without damping (the planar web, simulate.cpp): a particle's (x, y) is one 128-bit lane pair,
+// so a spring's l, l*l, coef*l and the two force updates are one packed instruction each, and springs go in
+// blocks of four with two packed square roots and divisions. Every lane does the scalar loop's operation on
+// the same operands (l2 = lx^2 + ly^2 is the scalar (0 + lx^2) + ly^2, as 0 + q = q exactly for q >= 0) and
+// the forces are added in spring order, so the result is bit for bit that of the plain loop, and faster
+// than it (and than blocks of two) on the default web. Tried without gain: keeping the last-touched
+// particle's force in a register (chains of springs share a particle, but the store-to-load forwarding was
+// not the bottleneck).
 void planarSpringsSse2(int ns, const double* x, double* f, const int* sa, const int* sb, const double* rest,
                        const double* k) {
   const __m128d one = _mm_set1_pd(1.0);
@@ -117,8 +117,8 @@ void planarSpringsSse2(int ns, const double* x, double* f, const int* sa, const 
 #endif
 
 // The general loop: about 40 instructions per spring (3D). In blocks of four springs, geometry first,
-// then 1/sqrt(|l|^2) as packed SSE2 square roots and divisions, then the forces in spring order: ~10%
-// faster than one spring at a time on the default web, and bit for bit the same (_mm_sqrt_pd and
+// then 1/sqrt(|l|^2) as packed SSE2 square roots and divisions, then the forces in spring order: faster
+// than one spring at a time on the default web, and bit for bit the same (_mm_sqrt_pd and
 // _mm_div_pd are correctly rounded like their scalar forms; the accumulation order is unchanged).
 // Measured and rejected (tests/bench/bench_web.cpp, BM_WebAccelerations): blocks of eight (slower);
 // AVX (needs -mavx, and was no faster: the loop is bound by its loads and stores, not by the divider);

@@ -1,5 +1,5 @@
 #pragma once
-// The model the integrators see. Thesis §4.2.1 (seeds/orb-webs-mehla-2005.txt): "the system or
+// The model the integrators see. Thesis §4.2.1 (Mehla 2005): "the system or
 // the model on which the solver operates is independent of the solver" — integrators only call
 // forces()/accelerations() and, for implicit Euler, the Jacobian triplets below.
 #include <algorithm>

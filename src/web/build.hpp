@@ -1,5 +1,5 @@
 #pragma once
-// Orb-web construction, thesis seeds/orb-webs-mehla-2005.txt §5.2 (pseudo-code Figs. 5.5, 5.10,
+// Orb-web construction, Mehla 2005 §5.2 (pseudo-code Figs. 5.5, 5.10,
 // 5.15, 5.16). Deterministic: the same parameters give the same web, bit for bit; the only random
 // choices (hub attachment of secondary spokes, spiral jitter) come from core::rng keyed by params.seed.
 #include "springs/system.hpp"

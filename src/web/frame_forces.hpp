@@ -1,6 +1,6 @@
 #pragma once
 // Stage 4 of the web: the inward radial force on the inner frame (thesis
-// seeds/orb-webs-mehla-2005.txt §5.2, Fig. 5.8; Fig. 5.10 step 8: "apply inward radial force on inner
+// Mehla 2005 §5.2, Fig. 5.8; Fig. 5.10 step 8: "apply inward radial force on inner
 // frame segments"), which bows the straight frame sides inward like a real frame (Figs. 3.2, 3.4).
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The frame's plane geometry before any mass is laid (thesis seeds/orb-webs-mehla-2005.txt §5.2,
+// The frame's plane geometry before any mass is laid (Mehla 2005 §5.2,
 // Fig. 5.5 steps 1-5): the centre and the inner-frame corners, and the checks that the attachment
 // points make a usable frame.
 #include <string>

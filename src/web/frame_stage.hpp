@@ -1,5 +1,5 @@
 #pragma once
-// Stage 1 of the web: outer and inner frame (thesis seeds/orb-webs-mehla-2005.txt §5.2, Fig. 5.5).
+// Stage 1 of the web: outer and inner frame (Mehla 2005 §5.2, Fig. 5.5).
 #include <vector>
 
 #include "web/web_builder.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 3 of the web: the spiral (thesis seeds/orb-webs-mehla-2005.txt §5.2, Figs. 5.13-5.16).
+// Stage 3 of the web: the spiral (Mehla 2005 §5.2, Figs. 5.13-5.16).
 #include <vector>
 
 #include "web/spoke_stage.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Stage 2 of the web: primary spokes, hub, secondary spokes (thesis seeds/orb-webs-mehla-2005.txt
+// Stage 2 of the web: primary spokes, hub, secondary spokes (Mehla 2005
 // §5.2, Fig. 5.10 steps 1-7 and 9-12, Figs. 5.9, 5.11, 5.12).
 #include <vector>
 

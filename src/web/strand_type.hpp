@@ -1,5 +1,5 @@
 #pragma once
-// The six kinds of strand of the orb web (thesis seeds/orb-webs-mehla-2005.txt §5.2, Figs. 5.5-5.16),
+// The six kinds of strand of the orb web (Mehla 2005 §5.2, Figs. 5.5-5.16),
 // recorded per spring so sweeps and figures can treat them apart.
 #include <array>
 #include <cstdint>

@@ -7,18 +7,17 @@
 
 namespace creaturelab::web {
 
-// Choices where the thesis (seeds/orb-webs-mehla-2005.txt) gives no value, or gives one that cannot
+// Choices where the thesis (Mehla 2005) gives no value, or gives one that cannot
 // work in SI. Figures quoted are for the default web (6,096 particles, 43 radii; tests/physics/web_*).
 // The load path: each radius is laid at tension k (placement - rest) = 0.01 x 4 mm = 4e-5 N and pulls
 // its frame mass inward; 43 radii on 3.1 m of frame are a line load q ~ 5.5e-4 N/m. The web's weight
 // (6e-4 N) and that pull end on the seven outer-frame strands.
 //
 // frame_k_n_per_m = 0.05 N/m (thesis 0.001 N/m, Fig. 5.5 step 10 and §5.3.3). A frame at tension T under
-//   the line load q bends with radius T / q. The thesis's frame, laid at 0.001 x 5 mm = 5e-6 N, would
-//   bend with a radius of ~1 cm: the radii drag it to the hub. Measured with the thesis's 0.001 N/m for
-//   both frames: the web settles 1.3 m below where it was laid, outer-frame springs at 76 times their
-//   rest length, a third of all springs slack, and Newton's static solve has not converged after 50
-//   steps. 0.05 N/m gives T = 2.5e-4 N, a bend radius of ~0.5 m: the inward bow of Figs. 5.8 and 3.2.
+//   the line load q bends with radius T / q. The thesis's frame, laid at 0.001 x 5 mm = 5e-6 N, would bend
+//   with a radius of ~1 cm: the radii drag it to the hub, and the web collapses (many springs slack,
+//   Newton's static solve does not converge). 0.05 N/m gives T = 2.5e-4 N, a bend radius of ~0.5 m: the
+//   inward bow of Figs. 5.8 and 3.2.
 //
 // outer_frame_k_n_per_m = 0.08 N/m (thesis 0.001 N/m, with "short stiff strands" in §5.2). Laid at
 //   5 mm over 2 mm rest (Fig. 5.5) it starts at 2.4e-4 N, of the order of the frame tension it holds
@@ -28,7 +27,7 @@ namespace creaturelab::web {
 //
 // inner_frame_inward_force_n_per_m = 5e-5 N/m. Fig. 5.8 only shows the result, a frame bowed further
 //   inward; a tenth of the radii's own line load q gives a visible but gentle extra bow (it lowers the
-//   settled hub by 0.7%: static hub sag 66.49 mm with it, 66.03 mm without). It is constant, so it is
+//   settled hub by under 1%). It is constant, so it is
 //   given to springs::System::setConstantForce and the static solve includes it.
 //
 // spiral: placement 21 mm, rest 12 mm, k = 2.5e-4 N/m. The thesis never says whether a spiral strand

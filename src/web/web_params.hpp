@@ -1,5 +1,5 @@
 #pragma once
-// Parameters of the orb-web construction (thesis seeds/orb-webs-mehla-2005.txt §5.2, pseudo-code
+// Parameters of the orb-web construction (Mehla 2005 §5.2, pseudo-code
 // Figs. 5.5, 5.10, 5.15, 5.16; values of §5.2.1 and the tables of §5.3).
 //
 // Units. The pseudo-code gives lengths in 'units' (Fig. 5.5: "each mass is laid at a distance of 20
@@ -42,11 +42,9 @@ enum class PrimarySpokeEnd {
 // The fraction of the explicit stability limit that a web's automatic substep uses
 // (springs::SimulationOptions::auto_safety; the engine's default is 0.5). The limit divides the
 // integrator's stability interval (RK4: omega h <= 2 sqrt(2) = 2.83) by a Gershgorin UPPER bound on
-// omega_max, so the full limit is still a stable step. Default web: the bound is 5,734 rad/s, the true
-// omega_max (Lanczos on M^-1 K) 5,597 rad/s as laid and 5,603 rad/s settled (the short stiff outer frame,
-// sqrt(4 k / m)); the step 0.02 s / 41 = 0.488 ms gives omega h = 2.73, where RK4 damps the top mode
-// (|R| = 0.79 per step). Half the limit doubles the cost of a settle and moves its settling time by
-// 0.03% (9.1913 s against 9.1882 s).
+// omega_max, so the full limit is still a stable step. On the default web the bound lies within a few
+// percent of the true omega_max (the short stiff outer frame, sqrt(4 k / m)), where RK4 damps the top
+// mode; half the limit doubles the cost of a settle and barely moves its settling time.
 inline constexpr double kAutoStepSafety = 1.0;
 
 struct WebParams {
