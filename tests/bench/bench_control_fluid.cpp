@@ -7,34 +7,6 @@
 // fluid), the frame itself and its measures; the flow is developed for 0.5 s first.
 // Reported as frames per CPU second of the process and per elapsed second. BM_FlyerFrame: the
 // driven flyer (flyer_quick.toml's setting), per-frame time reported, no goal set.
-//
-// Measured 2026-12-02, 03:22-03:45 UTC, idle machine (load below 1.4 before), elapsed ms per frame,
-// minimum-maximum of 3 repetitions (BM_ChainFluidFrame: two runs of 3), joints / evaluation threads
-// / fluid threads:
-//   block, 1 controlled joint, 1 core: 18.1 (55 frames/s; goal >= 10); with block_flow's 30-step
-//     validation mode 129 (7.8 frames/s)
-//   chain 1/1/1 26.0-31.5   1/1/2 18.7-24.0   1/2/2 16.1-20.9
-//         2/1/1 52.8-58.3   2/2/1 29.4-38.2   2/2/2 27.4-39.1
-//         3/1/1 70.5-74.1   4/1/1 90.1-99.1   4/2/1 49.7-53.5   4/2/2 48.0-56.4
-//   So the paper's comparison (Fig. 10: one DOF per processor), 2 joints on 2 cores against 1
-//   joint on one: medians 28.3 and 30.7 (2/2/2) against 26.4 and 28.4 (1/1/1), +7-8% (within the goal's
-//   20%; 2/2/1, the frame's fluid on one thread: +16-25%). Against 1 joint using both cores (its
-//   two evaluations on two threads and the fluid threaded, 1/2/2) 2 joints take 1.5 times as long:
-//   two evaluations per thread instead of one. Two single-thread processes side by side slow each
-//   other by 3-25% on this machine (two 1/1/1 runs at once: 26.6-33.3 ms).
-//   flyer (2 joints, 128^2) 218 on 1 thread, 130 on 2; swimmer 51.0 (128^2, 19.6 frames/s) and 130
-//   (192^2, 7.7 frames/s; goal >= 1).
-// Measured 2026-12-03, 20:45-20:47 UTC, idle machine, one run of 20 frames each, elapsed ms per frame
-// with the projected forcing's preconditioner mass -> gram (forcing_preconditioner; the most CG
-// iterations in any step of the run in brackets):
-//   block, 1 joint, 1 core          21.5 (50) -> 10.1 (26)   with 30 settle steps 142 -> 90.6
-//   flyer 128^2, 1 / 2 threads      249 / 141 (50) -> 183 / 93.0 (22)
-//   flyer 256^2, 1 thread           1191 (50) -> 596 (26)
-//   swimmer 128^2 / 192^2           63.7 / 171 -> 47.3 / 100
-//   The gram factor costs a sparse LDL^T per coupled step (with the Gram assembly and the AMD
-//   ordering about 15% of a held 256^2 flyer step in perf), so it pays more the finer the grid:
-//   the held 256^2 flyer (24 frames, 224 coupled steps) made 4066 fluid projections with mass and
-//   828 with gram (perf probes): 18.2 and 3.7 a coupled step, the step's own projection included.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -139,11 +111,10 @@ BENCHMARK(BM_ChainFluidFrame)
     ->Args({4, 1, 1})->Args({4, 2, 1})->Args({4, 2, 2})
     ->Unit(benchmark::kMillisecond)->Iterations(10);
 
-// The driven flyer (§7.1, Figs. 11-13; models/flyer.xml) as flyer.toml ran it until 2026-12-04 (now
-// flyer_quick.toml's grid and step, the moved reading): 128^2 air (nu 0.005 m^2/s) in a 4 m box with
-// the inflow floor (0.5 m/s) and an open top, inner wing joints PD-driven (30 deg, 0.5 Hz), the two
-// outer joints controlled (drag, sense following the stroke) in validation mode (8 settle steps,
-// force over 4) and 4 coupled steps a frame. The paper: 3.2 s per
+// The driven flyer (§7.1, Figs. 11-13; models/flyer.xml) in flyer_quick.toml's setting: 128^2 air
+// (nu 0.005 m^2/s) in a 4 m box with the inflow floor (0.5 m/s) and an open top, inner wing joints
+// PD-driven (30 deg, 0.5 Hz), the two outer joints controlled (drag, sense following the stroke) in
+// validation mode (8 settle steps, force over 4) and 4 coupled steps a frame. The paper: 3.2 s per
 // frame for the flyer without flesh (§7, its timing table). range(0) evaluation threads, range(1)
 // cells per side, range(2) the forcing's preconditioner (0 mass, 1 gram).
 void BM_FlyerFrame(benchmark::State& state) {

@@ -8,13 +8,6 @@
 // normals twice), at rings x segments with 16 tentacles of 24 x 8. BM_LiveSwim: the 100² swim
 // stepped to each frame at 30 frames/s (3-4 coupled steps of 0.01 s) and rendered at 64 x 128:
 // frames per CPU second, simulation and rendering together. Both report CPU time of the process.
-//
-// Measured 2026-11-25, Release, on the shared 2-core machine busy with other work (CPU time, so the
-// load lengthens elapsed time, not the figures, beyond cache contention): at load average 5,
-// 1.25 ms per frame at 64 x 128 (19 234 vertices, 38 400 triangles), 0.46 ms at 32 x 64, and the
-// live 100² swim at 169 frames per CPU second (render 1.40 ms + simulation 4.52 ms per frame); at
-// load 15, 1.41 ms, 0.51 ms and 152 frames/s (1.47 + 5.11 ms). Both goals are met: <= 2 ms per
-// frame, >= 30 frames per second.
 #include <benchmark/benchmark.h>
 #include <time.h>
 

@@ -1,4 +1,5 @@
-// The default orb web (thesis seeds/orb-webs-mehla-2005.txt §5.2; ~6,100 particles, ~9,500 springs).
+// The default orb web (A. Mehla, Modeling and Animation of Orb Webs, MSc thesis, University of Saskatchewan
+// 2005, §5.2; ~6,100 particles, ~9,500 springs).
 // Goals (issue 3; Release, one core):
 //   BM_BuildDefaultWeb              build the web                                  <= 50 ms
 //   BM_Settle10sRK4Auto             10 simulated seconds, RK4 at its auto substep   <= 3 s
