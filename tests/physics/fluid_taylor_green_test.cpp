@@ -103,7 +103,7 @@ std::vector<TaylorGreenRun> convergence_study(AdvectionScheme scheme) {
     if (k > 0) {
       EXPECT_LT(runs[k].relative_l2_error, runs[k - 1].relative_l2_error);
       // Stam's splitting (advect without pressure, then project) is first order in time and
-      // dt ∝ dx here, so both schemes converge at first order (measured 0.94–0.98).
+      // dt ∝ dx here, so both schemes converge at first order.
       EXPECT_GE(order, 0.85) << to_string(scheme) << " at " << runs[k].cells << " cells";
       // The numerical viscosity halves with each refinement.
       const double excess = runs[k].effective_viscosity - kViscosity;
@@ -121,7 +121,7 @@ TEST(TaylorGreen, BothSchemesConvergeAndMacCormackIsMoreAccurate) {
     EXPECT_LT(mc[k].relative_l2_error, 0.5 * sl[k].relative_l2_error) << sl[k].cells << " cells";
     EXPECT_LT(mc[k].effective_viscosity, sl[k].effective_viscosity) << sl[k].cells << " cells";
   }
-  // Measured at 128 cells: semi-Lagrangian ν_eff ≈ 1.50 ν, MacCormack ≈ 1.15 ν.
+  // At 128 cells the semi-Lagrangian scheme's numerical viscosity is about half of ν, MacCormack's less.
   EXPECT_LT(sl.back().effective_viscosity, 1.7 * kViscosity);
   EXPECT_LT(mc.back().effective_viscosity, 1.25 * kViscosity);
 }
@@ -140,10 +140,8 @@ TEST(TaylorGreen, MacCormackErrorIsTemporal) {
 
 // The Eulerian flux-form scheme (upwind2_rk2) on the whole step at the same CFL (0.5, its
 // stability bound): first order like the others (the splitting), and at 64 cells and CFL 0.1
-// its error compared with the semi-Lagrangian schemes' at small steps. Measured: 4.8e-2, 2.5e-2,
-// 1.3e-2 at 32–128 cells (order 0.94, 0.96; ν_eff/ν 1.56, 1.29, 1.15); at CFL 0.1 errors
-// semi-Lagrangian 4.1e-2, MacCormack 2.4e-3, upwind2_rk2 5.2e-3 (ν_eff/ν 2.04, 1.06, 1.06):
-// on this smooth, well-resolved field MacCormack stays ahead.
+// its error compared with the semi-Lagrangian schemes' at small steps: on this smooth,
+// well-resolved field MacCormack stays ahead.
 TEST(TaylorGreen, Upwind2Rk2ConvergesAndBeatsSemiLagrangianAtSmallSteps) {
   const std::vector<TaylorGreenRun> up = convergence_study(AdvectionScheme::upwind2_rk2);
   const TaylorGreenRun up_small = run_taylor_green(AdvectionScheme::upwind2_rk2, 64, 0.1);

@@ -21,18 +21,17 @@ const Swim& swim() {
   static const Swim s = [] {
     const kinds::JellyfishKind kind;
     // The Hermite curve holds full activation over part of the cycle, so a 25 Hz frame sees it (the
-    // default pulse peaks between frames, 0.989 at 0.16 s); twice the step it was written on keeps it cheap.
+    // default pulse peaks between frames); twice the step it was written on keeps it cheap.
     kinds::Params p = kinds::withDefaults(kind, {{"cells", std::int64_t(100)},
                                                  {"duration_s", 1.0 / 0.7},
                                                  {"frame_rate_hz", 25.0},
                                                  {"activation_shape", kinds::Value(std::string("hermite"))},
                                                  {"dt_s", 0.00125},
-                                                 // the defaults until 2026-12-03, which this test was written on
+                                                 // the setting this test was written on, pinned
                                                  {"force_stage", kinds::Value(std::string("before_advection"))},
                                                  {"box_aspect", 1.5},
                                                  {"start_y_fraction", 0.2},
-                                                 // and until 2026-12-05 (the force at the step's end, the
-                                                 // viscous solve to 1e-10)
+                                                 // the force at the step's end, the viscous solve to 1e-10
                                                  {"implicit_theta", 1.0},
                                                  {"viscosity_tolerance", 1e-10}});
     Swim out;

@@ -1,4 +1,4 @@
-// The default orb web (thesis seeds/orb-webs-mehla-2005.txt §5.2) as a physical system: it settles
+// The default orb web (Mehla 2005 §5.2) as a physical system: it settles
 // under gravity, drag and the frame's inward force without diverging, in the thesis's 5-10 s (§5.1),
 // and Newton's static equilibrium (springs/equilibrium.hpp, with the same constant inward force) is the
 // shape it settles to.
@@ -74,9 +74,8 @@ TEST(WebSettle, DefaultWebSettlesUnderRK4ToItsStaticEquilibrium) {
   // The settled web IS the static equilibrium. Drag is mass-proportional (the same c on every 10 ug
   // particle), so every mode of the linearised web decays as exp(-c t / 2m) = exp(-t / 2 s), and the
   // distance from equilibrium falls as ||x(0) - x*|| exp(-c T / 2m): over all 18,000 coordinates
-  // 5.5 m * exp(-10) = 2.5e-4 m at T = 20 s (measured 1.7e-4 m: 0.66 of it, and 0.72 at 30 s, 0.76 at
-  // 40 s, as the slowest modes take over). The hub sag must then agree to 1e-4 (measured 7e-6): leaving
-  // the inward frame force out of the statics moves it by 0.7% (66.03 against 66.49 mm), 70 times more.
+  // 5.5 m * exp(-10) = 2.5e-4 m at T = 20 s. The hub sag must then agree to 1e-4, far less than
+  // leaving the inward frame force out of the statics moves it (under 1%, tens of times more).
   const double c_over_2m = model.network.drag_ns_per_m / (2 * model.network.mass_kg[0]);
   const double bound_m = (model.state.x_m - eq.x_m).norm() * std::exp(-c_over_2m * opt.end_time_s);
   const double distance_m = (s.x_m - eq.x_m).norm();

@@ -1,4 +1,4 @@
-// The image stages of the Charlotte's-web procedure (thesis seeds/orb-webs-mehla-2005.txt ch. 6):
+// The image stages of the Charlotte's-web procedure (Mehla 2005 ch. 6):
 // text targets (pango), the Netpbm reader and its errors, dilation by a square (Figs. 6.7-6.8), the
 // capture, the five-pixel band of a segment and its score (Fig. 6.9) (cairo), and the renders' PNG.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The inscription (thesis seeds/orb-webs-mehla-2005.txt ch. 6) on a small web (a 0.37 m frame, about
+// The inscription (Mehla 2005 ch. 6) on a small web (a 0.37 m frame, about
 // 700 particles): segments, a one-bar target, thresholds, removal, emphasis and random gaps.
 #include <gtest/gtest.h>
 

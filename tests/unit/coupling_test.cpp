@@ -169,12 +169,11 @@ double plateLeak(Forcing mode, double spacing_cells, int forcing_iterations, int
 
 // Held plate (2 cells thick on 64^2) across a stream, after 120 steps at CFL 0.25 (the stream has
 // passed the plate's height 1.5 times): the flux through its middle 0.4 m against the stream's.
-// Measured (2026-11-25): projected forcing -0.79% (64^2; 128^2 after 240 steps: +0.46%; marker
-// spacing 1 cell: -0.48% / +0.38%). What is left is the CG tolerance (1e-3 of the largest speed)
+// Projected forcing leaks under 1%: what is left is the CG tolerance (1e-3 of the largest speed)
 // and the kernel's width (the plate is thinner than the 4-cell stencil, so the faces on its
 // mid-plane are averages of both sides): bound 2%. Direct forcing before the projection (one
-// sweep, Uhlmann's) lets 23% through: the projection moves the markers' velocity again, which the
-// second expectation shows (the measure can tell a leaking coupling).
+// sweep, Uhlmann's) lets a large share through: the projection moves the markers' velocity again,
+// which the second expectation shows (the measure can tell a leaking coupling).
 TEST_F(CouplingTest, HeldPlateBarelyLeaks) {
   const double leak = plateLeak(Forcing::projected, 0.5, 3, 2, 64, 120);
   const double leak_one_sweep = plateLeak(Forcing::sweeps, 0.5, 1, 1, 64, 120);

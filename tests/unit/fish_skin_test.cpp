@@ -1,4 +1,4 @@
-// The NURBS skin (seeds/artificial-fish-nurbs-tu-1996.txt; spec §4): the evaluator against the exact
+// The NURBS skin (X. Tu 1996, ch. 7; docs/fish-spec.md §4): the evaluator against the exact
 // rational circle, control points carried by a rigid motion, a closed skin where the halves meet,
 // no fold-over over a swim.
 #include <gtest/gtest.h>
@@ -123,7 +123,7 @@ TEST(FishSkin, ClosedAndOutwardOverASwim) {
     EXPECT_EQ(fold.creases, 0) << "frame " << f << " t = " << rec.time_s[f];
     worst = std::min(worst, fold.worst_neighbour_cosine);
   }
-  EXPECT_GT(worst, 0.5);  // measured 0.90: no crease sharper than about 25 degrees
+  EXPECT_GT(worst, 0.5);  // no crease sharper than 60 degrees (cos 60° = 0.5)
   ASSERT_EQ(mesh.positions.size(), mesh.normals.size());
   EXPECT_EQ(mesh.body_triangles, 2 * 2 * 31 * 63);
 }

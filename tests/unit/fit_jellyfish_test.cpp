@@ -9,8 +9,6 @@
 // f's minimum (the end of the bell's contraction) lags c's (0.3) by 0 to 0.06 of a cycle; f's
 // range is 0.7 to 1.3 times c's (0.44); and the curves, each rescaled to [0, 1], differ by at
 // most 0.25 anywhere. One run on the paper's 100² grid: a warm-up cycle and 3 cycles at 0.7 Hz.
-// (Measured: correlation 0.970, lag 0.025, range ratio 0.93, rescaled difference 0.18; with
-// the jellyfish of a few hours earlier 0.993, 0.03, 1.03, 0.075.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -33,9 +31,9 @@ const kinds::Result& shortRun() {
     // Fig. 12's angular stiffness read per joint of the 32-segment chain. The diameter then follows
     // the driving curve, which is what the fits below recover (the kind's default active-tension
     // bell, soft and driven by a tension, does not follow it).
-    // On the kind's defaults until 2026-11-29 (the Hermite curve, hat kernel, 2 mm cells in the 0.4 m box)
-    // and until 2026-12-03 (the force before the advection in a box 1.5 times as tall), and until
-    // 2026-12-05 (the force at the step's end, the viscous solve to 1e-10).
+    // The setting below is pinned, not the kind's defaults: the Hermite curve, hat kernel, 2 mm cells in
+    // the 0.4 m box, the force before the advection in a box 1.5 times as tall, the force at the step's
+    // end, the viscous solve to 1e-10.
     kinds::Params p = kinds::withDefaults(kind, {{"muscle_model", kinds::Value(std::string("rest_length"))},
                                                  {"bending_rigidity_n_m", kinds::Value(2.352e-3)},
                                                  {"activation_shape", kinds::Value(std::string("hermite"))},

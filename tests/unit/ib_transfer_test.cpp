@@ -488,10 +488,9 @@ TEST(TransferSmoothness, SecondDifferenceAlongAChainGrowsAsOneOverSpacingOnlyFor
         peak = std::max(peak, std::abs(velocity[k + 1].*c - 2 * velocity[k].*c + velocity[k - 1].*c) / (h * h));
     return peak;
   };
-  // Measured: hat 3.1e4, 1.1e5, 3.7e5 /(m s) at dx/8, dx/32, dx/128 (stretched twice: 2.6e4, 9.6e4,
-  // 3.2e5); Peskin's 7.0e3, 8.5e3, 8.9e3, 9.1e3 at dx/8 .. dx/512. (The field's own second
-  // derivative is at most (2π / 8 dx)² ≈ 617: neither kernel reproduces it at the grid scale, but
-  // only the hat's grows without bound.)
+  // The hat's peak grows more than tenfold from dx/8 to dx/128 (stretched or not); Peskin's levels off.
+  // (The field's own second derivative is at most (2π / 8 dx)² ≈ 617: neither kernel reproduces it
+  // at the grid scale, but only the hat's grows without bound.)
   for (int scale : {1, 2}) {
     const double coarse = peak_second_difference(Kernel::bilinear, scale, 8);
     const double mid = peak_second_difference(Kernel::bilinear, scale, 32);

@@ -1,7 +1,7 @@
 // The active-tension muscle, the pulse activation and the pluck measurement (issue 13 §2), and the
 // continuum definition of the bell (issue 13 §1): refining the chain refines one body, so its
 // static shape under a given muscle load and its in-vacuum breathing frequency converge as the
-// segments double. Rudolf & Mould 2009 (seeds/jellyfish-rudolf-mould-2009.txt) §3.2-3.3.
+// segments double. Rudolf & Mould 2009 §3.2-3.3.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

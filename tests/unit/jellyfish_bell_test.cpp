@@ -1,5 +1,5 @@
 // The spring network of the jellyfish slice (jellyfish/bell_model.hpp; Rudolf & Mould 2009,
-// seeds/jellyfish-rudolf-mould-2009.txt, §3.2, Fig. 4 and the table of Fig. 12): geometry,
+// §3.2, Fig. 4 and the table of Fig. 12): geometry,
 // symmetry, spring constants k = E t / L, tentacles at 1/100 of the bell's section, the muscle
 // springs across the bell, and a rest shape in equilibrium.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // The jellyfish as the immersed boundary sees it (jellyfish/jellyfish_body.hpp; Rudolf & Mould 2009,
-// seeds/jellyfish-rudolf-mould-2009.txt, §3.1-3.3): forces of bell, tentacles and the tension-only
+// §3.1-3.3): forces of bell, tentacles and the tension-only
 // circumferential muscle, their energy and stiffness, checked as properties of the discrete
 // operators (equilibrium at rest, momentum and angular momentum, gradient of the energy, finite
 // differences of the force) and the muscle timing (Spencer's synaptic delay, §3.1).

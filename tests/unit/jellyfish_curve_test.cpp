@@ -1,4 +1,4 @@
-// The muscle activation curve of Rudolf & Mould 2009 (seeds/jellyfish-rudolf-mould-2009.txt) §3.3
+// The muscle activation curve of Rudolf & Mould 2009 §3.3
 // and Fig. 4 (jellyfish/contraction_curve.hpp), and the parameter checks of jellyfish_params.hpp.
 //
 // hermiteCurve: interpolation of knot values and tangents, C1 continuity (also across the wrap at

@@ -1,4 +1,4 @@
-// Properties of the built web (thesis seeds/orb-webs-mehla-2005.txt §5.2): determinism, strand types,
+// Properties of the built web (Mehla 2005 §5.2): determinism, strand types,
 // pinning, spring lengths, counts, the hub's free zone, spokes and the frame's inward force.
 #include <gtest/gtest.h>
 

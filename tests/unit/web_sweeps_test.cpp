@@ -1,4 +1,4 @@
-// What the construction parameters do to the web (thesis seeds/orb-webs-mehla-2005.txt §5.3): bigger
+// What the construction parameters do to the web (Mehla 2005 §5.3): bigger
 // frames and more attachment points give more particles (§5.3.1-5.3.2, Figs. 5.17-5.18), wider frame
 // spacing fewer spokes (§5.3.5, Fig. 5.33 table), wider spoke spacing fewer spiral segments (§5.3.4,
 // Fig. 5.28 table).
