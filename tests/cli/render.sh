@@ -100,8 +100,8 @@ rc=0
 [ -z "$(ls "$scratch/out_exists")" ] || fail "wrote into an existing folder"
 "$bin" list render | grep -q "noise_seed" || fail "list render"
 
-# A reproduce list's [[render]] entry renders the run under the list's --out folder (it read
-# results/runs/reproduce whatever --out said until 2026-12-05).
+# A reproduce list's [[render]] entry renders the run under the list's --out folder, not under
+# results/runs/reproduce whatever --out says.
 cat >"$scratch/list.toml" <<TOML
 experiments = [{ file = "$scratch/swim.toml", name = "listed_swim" }]
 [[render]]
