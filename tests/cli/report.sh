@@ -101,8 +101,8 @@ grep -q 'unknown key "sett"' "$scratch/bad.stderr" || fail "bad list: $(cat "$sc
 [[ ! -e $scratch/bad_root ]] || fail "bad list: something was written"
 
 # Every figure module draw_runs.py runs exists; the 3-D renders' rows (drawn by `creaturelab render
-# --figures`, no module) are not run as modules (draw_runs.py failed on them, so make reproduce
-# exited 4, until 2026-12-05).
+# --figures`, no module) are not run as modules (draw_runs.py would fail on them and
+# make reproduce exit 4).
 $py - <<'PY' || fail "the catalog names figure modules draw_runs.py cannot run"
 import sys
 sys.path.insert(0, "analysis")
