@@ -68,8 +68,13 @@ int Commands::guard(const std::function<int()>& verb) const {
   } catch (const std::runtime_error& e) {
     if (primary()) std::fprintf(stderr, "error: %s\n", e.what());
   } catch (const std::bad_alloc&) {
-    // Before the points run (expanding a huge sweep): a message, not an abort.
-    if (primary()) std::fprintf(stderr, "error: out of memory before any point ran (a sweep or grid too large?)\n");
+    // Before the points run (expanding a huge sweep) or reading a damaged file's sizes: a message, not an abort.
+    if (primary()) std::fprintf(stderr, "error: out of memory (a sweep or grid too large, or a damaged file?)\n");
+  } catch (const std::exception& e) {
+    // Anything else a damaged file can raise (JSON of the wrong shape, an index out of range).
+    if (primary()) std::fprintf(stderr, "error: %s\n", e.what());
+  } catch (...) {
+    if (primary()) std::fprintf(stderr, "error: unknown exception\n");
   }
   return 2;
 }

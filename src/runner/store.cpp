@@ -1,10 +1,12 @@
 #include "runner/store.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "core/sha256.hpp"
 #include "io/hdf5.hpp"
@@ -303,43 +305,102 @@ static void writeIndexContents(const io::Group& root, const Experiment& e, const
       io::createExternalLink(links, fs::path(pointFileName(row.index)).stem().string(), pointFileName(row.index), "/");
 }
 
+namespace {
+
+// index.h5 is read as untrusted input: HDF5 keeps attributes without a checksum, so the JSON they
+// hold and the lengths of the /sweep columns are checked before a row is built.
+struct IndexReader {
+  std::string path;
+
+  [[noreturn]] void bad(const std::string& what) const {
+    throw std::runtime_error(path + ": damaged index (" + what + "); run the experiment again with --resume");
+  }
+
+  nlohmann::json json(const io::Group& group, const std::string& group_name, const std::string& attr) const {
+    const std::string text = io::getAttrString(group, attr);
+    try {
+      return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {
+      bad(group_name + " attribute " + attr + " is not JSON: " + e.what());
+    }
+  }
+
+  std::vector<std::string> names(const io::Group& group, const std::string& group_name,
+                                 const std::string& attr) const {
+    const nlohmann::json j = json(group, group_name, attr);
+    std::vector<std::string> out;
+    if (!j.is_array()) bad(group_name + " attribute " + attr + " is not a list of names");
+    for (const auto& item : j) {
+      if (!item.is_string() || item.get<std::string>().empty()) bad(group_name + " attribute " + attr + " holds a non-name");
+      out.push_back(item.get<std::string>());
+    }
+    return out;
+  }
+
+  template <class T>
+  const T& sized(const T& values, std::size_t rows, const std::string& dataset) const {
+    if (values.size() != rows)
+      bad(dataset + " has " + std::to_string(values.size()) + " rows, /sweep/point_index " + std::to_string(rows));
+    return values;
+  }
+};
+
+}  // namespace
+
 StoredRun readIndex(const std::string& dir) {
   const std::string path = dir + "/index.h5";
   if (fs::exists(dir) && !fs::is_directory(dir))
     throw std::runtime_error(dir + ": is a file; expected a run folder (the --out of `creaturelab run`)");
   if (!fs::exists(path))
     throw std::runtime_error(path + ": no index (not a run folder, or the run has not finished: use --resume)");
+  const IndexReader in{path};
   const io::File file = io::File::openReadOnly(path);
   const io::Group root = file.root();
   StoredRun out;
   out.experiment_path = io::getAttrString(root, "experiment");
   out.experiment_text = io::getAttrString(root, "experiment_toml");
-  out.overrides = nlohmann::json::parse(io::getAttrString(root, "overrides_json")).get<std::vector<std::string>>();
+  out.overrides = in.names(root, "/", "overrides_json");
   const io::Group sweep = root.openGroup("sweep");
-  out.table.columns = nlohmann::json::parse(io::getAttrString(sweep, "columns_json")).get<std::vector<std::string>>();
-  out.table.metrics = nlohmann::json::parse(io::getAttrString(sweep, "metrics_json")).get<std::vector<std::string>>();
-  const auto types = nlohmann::json::parse(io::getAttrString(sweep, "column_types_json"));
+  out.table.columns = in.names(sweep, "/sweep", "columns_json");
+  out.table.metrics = in.names(sweep, "/sweep", "metrics_json");
+  const nlohmann::json types = in.json(sweep, "/sweep", "column_types_json");
+  if (!types.is_object()) in.bad("/sweep attribute column_types_json is not an object");
   const auto index = io::readVectorInt64(sweep, "point_index");
-  const auto label = io::readVectorString(sweep, "label");
-  const auto status = io::readVectorString(sweep, "status");
-  const auto message = io::readVectorString(sweep, "message");
+  const std::size_t rows = index.size();
+  const auto label = in.sized(io::readVectorString(sweep, "label"), rows, "/sweep/label");
+  const auto status = in.sized(io::readVectorString(sweep, "status"), rows, "/sweep/status");
+  const auto message = in.sized(io::readVectorString(sweep, "message"), rows, "/sweep/message");
   std::map<std::string, std::vector<double>> metric_values;
-  for (const auto& m : out.table.metrics) metric_values[m] = io::readVectorDouble(sweep, m);
+  for (const auto& m : out.table.metrics)
+    metric_values[m] = in.sized(io::readVectorDouble(sweep, m), rows, "/sweep/" + m);
   std::map<std::string, std::vector<kinds::Value>> column_values;
-  for (const auto& c : out.table.columns) column_values[c] = readColumn(sweep, c, types.at(c));
-  for (size_t r = 0; r < index.size(); ++r) {
+  for (const auto& c : out.table.columns) {
+    const auto type = types.find(c);
+    static const std::vector<std::string> known{"int64", "double", "bool", "string"};
+    if (type == types.end() || !type->is_string() ||
+        std::find(known.begin(), known.end(), type->get<std::string>()) == known.end())
+      in.bad("/sweep attribute column_types_json gives column " + c + " no known type");
+    column_values[c] = in.sized(readColumn(sweep, c, type->get<std::string>()), rows, "/sweep/" + c);
+  }
+  for (size_t r = 0; r < rows; ++r) {
+    if (index[r] < 0 || index[r] > std::numeric_limits<int>::max())
+      in.bad("/sweep/point_index holds " + std::to_string(index[r]));
     Row row{int(index[r]), label[r], status[r], message[r], {}, {}, {}, {}};
-    for (const auto& c : out.table.columns) row.columns[c] = column_values[c].at(r);
+    for (const auto& c : out.table.columns) row.columns[c] = column_values[c][r];
     for (const auto& m : out.table.metrics) row.metrics[m] = metric_values[m][r];
     out.table.rows.push_back(std::move(row));
   }
   if (root.isGroup("integrity")) {
     const io::Group integrity = root.openGroup("integrity");
     const auto ids = io::readVectorInt64(integrity, "point_index");
-    const auto config = io::readVectorString(integrity, "config_sha256");
-    const auto content = io::readVectorString(integrity, "content_sha256");
-    for (size_t i = 0; i < ids.size() && i < config.size() && i < content.size(); ++i)
+    const auto config = in.sized(io::readVectorString(integrity, "config_sha256"), ids.size(), "/integrity/config_sha256");
+    const auto content =
+        in.sized(io::readVectorString(integrity, "content_sha256"), ids.size(), "/integrity/content_sha256");
+    for (size_t i = 0; i < ids.size(); ++i) {
+      if (ids[i] < 0 || ids[i] > std::numeric_limits<int>::max())
+        in.bad("/integrity/point_index holds " + std::to_string(ids[i]));
       out.seals[int(ids[i])] = {config[i], content[i]};
+    }
   }
   return out;
 }

@@ -34,3 +34,5 @@ creaturelab_cli_test(disk_full SKIP_RETURN_CODE 77)
 creaturelab_cli_test(mpi SKIP_RETURN_CODE 77 RESOURCE_LOCK mpi)
 # User errors under MPI end every rank once (no rank left waiting in a barrier).
 creaturelab_cli_test(mpi_errors SKIP_RETURN_CODE 77 RESOURCE_LOCK mpi)
+creaturelab_cli_test(base_file)      # base = "<path>": missing base and cycle exit 2 with the chain; check without the base
+creaturelab_cli_test(damaged_index)  # a damaged index.h5 (bad JSON, wrong types, columns of different lengths): exit 2
