@@ -178,6 +178,75 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   return c;
 }
 
+// The context naming the file a node came from: a base file's keys are reported in that file.
+// Nodes an override made carry no source and belong to `ctx`'s file.
+Context contextOf(const toml::node& node, const Context& ctx) {
+  const auto& file = node.source().path;
+  return file && !file->empty() ? Context{*file} : ctx;
+}
+
+toml::table parseToml(const std::string& text, const std::string& path, const std::string& prefix) {
+  try {
+    return toml::parse(text, path);
+  } catch (const toml::parse_error& err) {
+    throw ExperimentError(prefix + path + ":" + std::to_string(err.source().begin.line) + ":" +
+                          std::to_string(err.source().begin.column) + ": malformed TOML: " +
+                          std::string(err.description()));
+  }
+}
+
+// Tables merge key by key, recursively; any other value of `over` (a scalar, a list, the [[case]]
+// and [[check]] lists as a whole) replaces the base's. Nodes are moved, so they keep their source.
+void mergeInto(toml::table& base, toml::table&& over) {
+  for (auto&& [k, v] : over) {
+    toml::table* into = base[k].as_table();
+    if (into && v.is_table()) mergeInto(*into, std::move(*v.as_table()));
+    else base.insert_or_assign(k, std::move(v));
+  }
+}
+
+// The files read so far, first the one given: "a.toml -> b.toml" in errors, canonical paths for cycles.
+struct BaseChain {
+  std::vector<std::string> shown;
+  std::vector<std::filesystem::path> canonical;
+  std::string text() const {
+    std::string t;
+    for (const auto& s : shown) t += (t.empty() ? "" : " -> ") + s;
+    return t;
+  }
+};
+
+std::filesystem::path canonicalOf(const std::string& path) {
+  std::error_code ec;
+  auto p = std::filesystem::weakly_canonical(path, ec);
+  return ec ? std::filesystem::absolute(path).lexically_normal() : p;
+}
+
+// `root` (read from chain.shown.back()) merged over its base chain, without `base` keys.
+toml::table withBases(toml::table root, BaseChain& chain) {
+  const toml::node* b = root.get("base");
+  if (!b) return root;
+  const std::string& path = chain.shown.back();
+  if (!b->is_string() || b->as_string()->get().empty())
+    throw ExperimentError(kinds::tomlErrorText(
+        chain.text(), "base", "expected the path of another experiment file, relative to this one, e.g. base = "
+                              "\"../../experiments/jellyfish/fig5_frequency.toml\"", b));
+  const std::string shown =
+      (std::filesystem::path(path).parent_path() / b->as_string()->get()).lexically_normal().string();
+  const std::filesystem::path canonical = canonicalOf(shown);
+  const bool cycle = std::find(chain.canonical.begin(), chain.canonical.end(), canonical) != chain.canonical.end();
+  chain.shown.push_back(shown);
+  chain.canonical.push_back(canonical);
+  if (cycle) throw ExperimentError(chain.text() + ": base cycle");
+  std::string text;
+  if (!kinds::readWholeFile(shown, "experiment", text).empty())
+    throw ExperimentError(chain.text() + ": base file not found");
+  toml::table merged = withBases(parseToml(text, shown, chain.text() + ": "), chain);
+  root.erase("base");
+  mergeInto(merged, std::move(root));
+  return merged;
+}
+
 nlohmann::json resolvedJson(const Experiment& e) {
   nlohmann::json j;
   j["kind"] = e.kind;
@@ -206,22 +275,27 @@ Experiment loadExperiment(const std::string& path, const std::vector<std::string
 Experiment loadExperimentText(const std::string& text, const std::string& path,
                               const std::vector<std::string>& overrides, const kinds::Registry& registry) {
   const Context ctx{path};
-  toml::table root;
-  try {
-    root = toml::parse(text, path);
-  } catch (const toml::parse_error& err) {
-    throw ExperimentError(path + ":" + std::to_string(err.source().begin.line) + ":" +
-                          std::to_string(err.source().begin.column) + ": malformed TOML: " +
-                          std::string(err.description()));
+  toml::table root = parseToml(text, path, "");
+  // A file with a base keeps the merged document: a run folder re-checks itself without the base.
+  std::string source_text = text;
+  if (root.contains("base")) {
+    BaseChain chain{{path}, {canonicalOf(path)}};
+    root = withBases(std::move(root), chain);
+    std::ostringstream merged;
+    merged << toml::toml_formatter{root} << "\n";
+    source_text = merged.str();
   }
   for (const auto& o : overrides) applyOverride(root, o);
+  if (root.contains("base")) ctx.fail("base", "cannot be set by an override: name the base in the file");
 
   static const std::vector<std::string> top = {"kind", "title", "description", "params", "sweep", "case", "check", "output"};
-  kinds::checkKeys(root, top, ctx, "");
+  for (auto&& [k, v] : root)
+    if (std::string problem = kinds::unknownKeyText(std::string(k.str()), top); !problem.empty())
+      contextOf(v, ctx).fail("", problem, &v);
 
   Experiment e;
   e.path = path;
-  e.source_text = text;
+  e.source_text = source_text;
   e.overrides = overrides;
   e.stem = std::filesystem::path(path).stem().string();
   auto kind_name = root["kind"].value<std::string>();
@@ -229,47 +303,53 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
   e.kind = *kind_name;
   const kinds::Kind* kind = registry.find(e.kind);
   if (!kind)
-    ctx.fail("kind", "unknown kind '" + e.kind + "'" + core::didYouMean(e.kind, registry.names()), root.get("kind"));
+    contextOf(*root.get("kind"), ctx)
+        .fail("kind", "unknown kind '" + e.kind + "'" + core::didYouMean(e.kind, registry.names()), root.get("kind"));
   e.title = root["title"].value_or(e.stem);
 
   if (const toml::node* p = root.get("params")) {
     auto* t = p->as_table();
-    if (!t) ctx.fail("params", "expected a table [params]", p);
+    if (!t) contextOf(*p, ctx).fail("params", "expected a table [params]", p);
     for (auto&& [k, v] : *t) {
       const std::string name(k.str()), key = "params." + name;
-      e.params[name] = kinds::paramValue(specFor(*kind, name, ctx, key, &v), v, ctx, key);
+      const Context at = contextOf(v, ctx);
+      e.params[name] = kinds::paramValue(specFor(*kind, name, at, key, &v), v, at, key);
     }
   }
 
   if (const toml::node* s = root.get("sweep")) {
     auto* t = s->as_table();
-    if (!t) ctx.fail("sweep", "expected a table [sweep]", s);
+    if (!t) contextOf(*s, ctx).fail("sweep", "expected a table [sweep]", s);
     for (auto&& [k, v] : *t) {
       const std::string name(k.str()), key = "sweep." + name;
-      const ParamSpec& spec = specFor(*kind, name, ctx, key, &v);
+      const Context at = contextOf(v, ctx);
+      const ParamSpec& spec = specFor(*kind, name, at, key, &v);
       SweepAxis axis{name, {}};
       if (auto str = v.as_string(); str && std::count(str->get().begin(), str->get().end(), ':') == 2) {
-        axis.values = expandRange(str->get(), spec, ctx, key, &v);
+        axis.values = expandRange(str->get(), spec, at, key, &v);
       } else if (auto arr = v.as_array()) {
         for (auto&& item : *arr) {
           auto value = kinds::scalarValue(item);
-          if (!value) ctx.fail(key, "list items must be numbers, strings or booleans", &item);
-          axis.values.push_back(kinds::coerce(spec, *value, ctx, key, &item));
+          if (!value) at.fail(key, "list items must be numbers, strings or booleans", &item);
+          axis.values.push_back(kinds::coerce(spec, *value, at, key, &item));
         }
       } else {
-        ctx.fail(key, "expected a list [a, b, ...] or a range \"start:stop:step\"", &v);
+        at.fail(key, "expected a list [a, b, ...] or a range \"start:stop:step\"", &v);
       }
-      if (axis.values.empty()) ctx.fail(key, "empty sweep axis", &v);
+      if (axis.values.empty()) at.fail(key, "empty sweep axis", &v);
       e.axes.push_back(std::move(axis));
     }
   }
 
+  // An empty list (case = [], check = []) is none: it clears a base's list.
   if (const toml::node* c = root.get("case")) {
     auto* arr = c->as_array();
-    if (!arr || !arr->is_array_of_tables()) ctx.fail("case", "expected [[case]] tables", c);
+    if (!arr || (!arr->empty() && !arr->is_array_of_tables()))
+      contextOf(*c, ctx).fail("case", "expected [[case]] tables", c);
     int n = 0;
     for (auto&& item : *arr) {
       Case cs;
+      const Context at = contextOf(item, ctx);
       const std::string key = "case[" + std::to_string(n++) + "]";
       for (auto&& [k, v] : *item.as_table()) {
         const std::string name(k.str());
@@ -278,33 +358,36 @@ Experiment loadExperimentText(const std::string& text, const std::string& path,
           continue;
         }
         for (const auto& a : e.axes)
-          if (a.name == name) ctx.fail(key + "." + name, "is also a [sweep] axis; set it in one place", &v);
+          if (a.name == name) at.fail(key + "." + name, "is also a [sweep] axis; set it in one place", &v);
         const std::string item_key = key + "." + name;
-        cs.values[name] = kinds::paramValue(specFor(*kind, name, ctx, item_key, &v), v, ctx, item_key);
+        cs.values[name] = kinds::paramValue(specFor(*kind, name, at, item_key, &v), v, at, item_key);
         cs.keys.push_back(name);
       }
       if (cs.label.empty()) cs.label = "case " + std::to_string(n - 1);
       // A label names one case: checks select by it and the index lists it per row.
       for (size_t other = 0; other < e.cases.size(); ++other)
         if (e.cases[other].label == cs.label)
-          ctx.fail(key + ".label", "\"" + cs.label + "\" is already the label of case[" + std::to_string(other) +
-                                       "]; each [[case]] needs its own label", item.as_table()->get("label"));
+          at.fail(key + ".label", "\"" + cs.label + "\" is already the label of case[" + std::to_string(other) +
+                                      "]; each [[case]] needs its own label", item.as_table()->get("label"));
       e.cases.push_back(std::move(cs));
     }
   }
 
   if (const toml::node* c = root.get("check")) {
     auto* arr = c->as_array();
-    if (!arr || !arr->is_array_of_tables()) ctx.fail("check", "expected [[check]] tables", c);
+    if (!arr || (!arr->empty() && !arr->is_array_of_tables()))
+      contextOf(*c, ctx).fail("check", "expected [[check]] tables", c);
     int n = 0;
-    for (auto&& item : *arr) e.checks.push_back(parseCheck(*item.as_table(), n++, *kind, ctx));
+    for (auto&& item : *arr) e.checks.push_back(parseCheck(*item.as_table(), n++, *kind, contextOf(item, ctx)));
   }
 
   if (const toml::node* o = root.get("output")) {
     auto* t = o->as_table();
-    if (!t) ctx.fail("output", "expected a table [output]", o);
+    if (!t) contextOf(*o, ctx).fail("output", "expected a table [output]", o);
     static const std::vector<std::string> known = {"dir", "lagrangian"};
-    kinds::checkKeys(*t, known, ctx, "output");
+    for (auto&& [k, v] : *t)
+      if (std::string problem = kinds::unknownKeyText(std::string(k.str()), known); !problem.empty())
+        contextOf(v, ctx).fail("output", problem, &v);
     e.output.dir = (*t)["dir"].value_or(std::string());
     e.output.lagrangian = (*t)["lagrangian"].value_or(true);
   }

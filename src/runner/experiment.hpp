@@ -1,5 +1,14 @@
 #pragma once
 // An experiment file (DESIGN.md "Experiment files"), parsed and checked against its kind's schema.
+//
+// `base = "<path>"` (relative to the naming file's folder) starts the file from another experiment
+// file; bases chain. The merge: tables ([params], [sweep], [output], nested tables) merge key by
+// key, recursively; every other value of the file replaces the base's: scalars (kind, title,
+// description), sweep lists, and the [[case]] and [[check]] lists as a whole. A file without its
+// own list inherits the base's; an empty list (case = [], check = []) clears it. Overrides apply
+// after the merge. A missing base, a base that is not a string and a cycle are ExperimentErrors
+// naming the chain ("a.toml -> b.toml: base file not found"); a bad key read from a base names
+// the base file. See docs/experiments.md.
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -61,7 +70,7 @@ struct OutputOptions {
 
 struct Experiment {
   std::string path;   // as given
-  std::string stem;   // file name without .toml
+  std::string stem;   // file name without .toml (the file's own, not its base's)
   std::string kind;
   std::string title;
   Params params;      // [params] overrides only
@@ -70,7 +79,9 @@ struct Experiment {
   std::vector<CheckSpec> checks;
   OutputOptions output;
   std::string resolved_json;  // the experiment after overrides, as JSON (provenance)
-  std::string source_text;    // the file as read, so a run folder can re-check itself
+  // The file as read, so a run folder can re-check itself; with a base, the merged document
+  // (without `base`), so the run folder never needs the base file.
+  std::string source_text;
   std::vector<std::string> overrides;
 };
 

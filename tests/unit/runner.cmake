@@ -3,6 +3,7 @@
 creaturelab_test(runner_test unit
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/runner_experiment.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/runner_experiment_base.cpp
     ${CMAKE_CURRENT_LIST_DIR}/runner_checks.cpp
     ${CMAKE_CURRENT_LIST_DIR}/runner_compare.cpp
     ${CMAKE_CURRENT_LIST_DIR}/runner_store.cpp
