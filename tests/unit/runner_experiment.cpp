@@ -633,10 +633,9 @@ TEST(RunnerExperimentError, OscillatorStepLongerThanTheRun) {
 }
 
 TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
-  // Every experiment file in the repository (and the reproduce list's entries) is valid.
+  // Every claim and study file in the repository (and the reproduce list's entries) is valid.
   // experiments/fit/ holds controller-fit specifications (`creaturelab fit controller`), another
   // format, read by src/fit and tested there (fit_controller_test.cpp, ShippedFitFilesLoad).
-  const std::filesystem::path root = std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / "experiments";
   // Paths inside experiment files (charlotte.toml's image_file) are relative to the repository
   // root, where the README runs them from.
   const std::filesystem::path here = std::filesystem::current_path();
@@ -646,7 +645,13 @@ TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
     ~Restore() { std::filesystem::current_path(dir); }
   } restore{here};
   int n = 0;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+  std::vector<std::filesystem::path> files;
+  for (const char* top : {"experiments", "studies"})
+    for (const auto& entry :
+         std::filesystem::recursive_directory_iterator(std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / top))
+      files.push_back(entry.path());
+  for (const std::filesystem::path& path : files) {
+    const auto entry = std::filesystem::directory_entry(path);
     if (entry.path().extension() != ".toml") continue;
     if (entry.path().parent_path().filename() == "fit") continue;
     if (entry.path().filename().string().rfind("reproduce", 0) == 0) {
@@ -677,15 +682,15 @@ TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
       ADD_FAILURE() << err.what();
     }
   }
-  EXPECT_GE(n, 3);
+  EXPECT_GE(n, 40);  // every claim and study: a broken walk of the folders fails here
 }
 
 TEST(RunnerExperiment, JellyfishDefaultsAreTheSettingItsConvergenceStudyMeasures) {
-  // The kind's defaults are documented as convergence_theta.toml's "1 mm" case (src/kinds/jellyfish.cpp;
-  // convergence_default.toml's until 2026-12-05); a default that drifts from it (a dropped or changed
-  // default) would leave the study measuring another setting than the one `creaturelab run` gives.
+  // The convergence study's "1 mm" case is the kind's default setting; a default that drifts from it
+  // (a dropped or changed default, or a case that pins another value) would leave the study measuring
+  // another setting than the one `creaturelab run` gives.
   const std::filesystem::path file =
-      std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / "experiments/jellyfish/convergence_theta.toml";
+      std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / "studies/jellyfish/convergence.toml";
   const std::vector<Point> study = points(runner::loadExperiment(file.string(), {}, registry()));
   int compared = 0;
   for (const Point& p : study) {
