@@ -2,7 +2,7 @@
 // Tuning controller parameters (stagger, knot values, frequency, ...) of a kind for an objective
 // computed from its metrics (issue 6). Each objective evaluation is one deterministic run of the
 // kind (kinds::Kind::run); derivatives are central differences, one parameter at a time, as in
-// Lentine et al. 2010 (seeds/creature-control-lentine-2010.txt §2.1: "make a change in one
+// Lentine et al. 2010 (Creature Control in a Fluid Environment, §2.1: "make a change in one
 // direction, evaluate the objective function, then make the same change in the opposite
 // direction ... the difference ... divided by twice the magnitude of the change"), and, as the
 // paper notes, "inherently parallelizable": the 2n + 1 runs of one gradient run on `jobs` threads.

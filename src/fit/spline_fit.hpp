@@ -1,6 +1,6 @@
 #pragma once
 // Fitting the jellyfish's periodic cubic Hermite contraction curve (Rudolf & Mould 2009,
-// seeds/jellyfish-rudolf-mould-2009.txt §3.3; jellyfish/contraction_curve.hpp) to a measured
+// An Interactive Fluid Model of Jellyfish for Animation, §3.3; jellyfish/contraction_curve.hpp) to a measured
 // profile: knot values and tangents at fixed knot phases, by bounded (robust) nonlinear least
 // squares with Ceres.
 //
