@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -290,6 +291,40 @@ TEST_F(ExperimentBase, AFileWithoutBaseKeepsItsTextAsRead) {
   const Experiment s = load("study.toml");
   EXPECT_EQ(s.resolved_json, e.resolved_json);
   EXPECT_EQ(s.checks.size(), 2u);
+}
+
+}  // namespace
+
+namespace {
+
+// Every shipped study's stored text (the merged document) loads to the same experiment: what
+// `creaturelab check RUN` reads back from a study's run folder.
+TEST(ExperimentBaseShipped, EveryStudysMergedTextLoadsToTheSameExperiment) {
+  const fs::path root = fs::path(CREATURELAB_TEST_SOURCE_DIR);
+  int merged = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(root / "studies")) {
+    if (entry.path().extension() != ".toml") continue;
+    const std::string path = entry.path().string();
+    try {
+      const Experiment e = runner::loadExperiment(path, {}, registry());
+      const Experiment back = runner::loadExperimentText(e.source_text, e.path, {}, registry());
+      EXPECT_EQ(back.resolved_json, e.resolved_json) << path;
+      ASSERT_EQ(back.checks.size(), e.checks.size()) << path;
+      for (size_t i = 0; i < e.checks.size(); ++i) {
+        EXPECT_EQ(back.checks[i].name, e.checks[i].name) << path;
+        EXPECT_EQ(back.checks[i].where, e.checks[i].where) << path;
+        EXPECT_EQ(back.checks[i].expect_lo, e.checks[i].expect_lo) << path;
+        EXPECT_EQ(back.checks[i].expect_hi, e.checks[i].expect_hi) << path;
+        EXPECT_EQ(back.checks[i].known_deviation, e.checks[i].known_deviation) << path;
+      }
+      std::stringstream raw;
+      raw << std::ifstream(path).rdbuf();
+      if (raw.str() != e.source_text) ++merged;  // a file with a base stores its merged document
+    } catch (const ExperimentError& err) {
+      ADD_FAILURE() << err.what();
+    }
+  }
+  EXPECT_GE(merged, 1);
 }
 
 }  // namespace
