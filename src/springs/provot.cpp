@@ -12,39 +12,71 @@ std::string ProvotOptions::validate() const {
     msg << "provot max_strain is " << max_strain << "; it must be zero or positive";
   } else if (passes < 1) {
     msg << "provot passes is " << passes << "; at least one pass is needed";
+  } else if (!(tolerance >= 0 && tolerance <= 1e-3)) {
+    msg << "provot tolerance is " << tolerance << "; it must lie in [0, 1e-3]";
   }
   return msg.str();
 }
 
-template <int D> int applyProvot(const Network<D>& network, const ProvotOptions& options, State<D>& s) {
-  if (!options.enabled) return 0;
-  int corrections = 0;
-  for (int pass = 0; pass < options.passes; ++pass) {
-    int this_pass = 0;
-    for (int e = 0; e < network.springCount(); ++e) {
-      const int a = network.spring_a[e], b = network.spring_b[e];
-      const bool free_a = !network.pinned[a], free_b = !network.pinned[b];
-      if (!free_a && !free_b) continue;
-      const Vec<D> l = s.x_m.col(a) - s.x_m.col(b);
-      const double len = l.norm();
-      const double max_len = (1.0 + options.max_strain) * network.rest_length_m[e];
-      if (!(len > max_len)) continue;
-      // Keep the direction (Provot: the direction of motion is taken as right), cut the excess.
-      const Vec<D> shift = (len - max_len) / len * l;
-      if (free_a && free_b) {
-        s.x_m.col(a) -= 0.5 * shift;
-        s.x_m.col(b) += 0.5 * shift;
-      } else if (free_a) {
-        s.x_m.col(a) -= shift;
-      } else {
-        s.x_m.col(b) += shift;
-      }
-      ++this_pass;
+namespace {
+
+// One sweep in spring index order. Returns the number of springs shortened; worst_strain gets the
+// largest strain seen before any correction of that spring in this sweep.
+template <int D>
+long sweep(const Network<D>& network, double max_strain, double tolerance, State<D>& s, double& worst_strain) {
+  long corrected = 0;
+  worst_strain = 0;
+  for (int e = 0; e < network.springCount(); ++e) {
+    const int a = network.spring_a[e], b = network.spring_b[e];
+    const bool free_a = !network.pinned[a], free_b = !network.pinned[b];
+    const Vec<D> l = s.x_m.col(a) - s.x_m.col(b);
+    const double len = l.norm();
+    const double rest = network.rest_length_m[e];
+    const double max_len = (1.0 + max_strain) * rest;
+    const double strain = (len - rest) / rest;
+    worst_strain = e == 0 ? strain : std::max(worst_strain, strain);
+    if (!(len > max_len * (1.0 + tolerance)) || (!free_a && !free_b)) continue;
+    // Keep the direction (Provot: the direction of motion is taken as right), cut the excess.
+    const Vec<D> shift = (len - max_len) / len * l;
+    if (free_a && free_b) {
+      s.x_m.col(a) -= 0.5 * shift;
+      s.x_m.col(b) += 0.5 * shift;
+    } else if (free_a) {
+      s.x_m.col(a) -= shift;
+    } else {
+      s.x_m.col(b) += shift;
     }
-    corrections += this_pass;
-    if (this_pass == 0) break;
+    ++corrected;
   }
-  return corrections;
+  return corrected;
+}
+
+}  // namespace
+
+template <int D>
+ProvotResult applyProvot(const Network<D>& network, const ProvotOptions& options, State<D>& s,
+                         const Points<D>* step_start_x_m, double dt_s) {
+  ProvotResult r;
+  if (!options.enabled) return r;
+  const bool set_velocity = step_start_x_m != nullptr && dt_s > 0;
+  const Points<D> before = set_velocity ? s.x_m : Points<D>();
+  r.converged = false;
+  double worst = 0;
+  while (r.passes < options.passes) {
+    const long corrected = sweep(network, options.max_strain, options.tolerance, s, worst);
+    ++r.passes;
+    r.corrections += corrected;
+    if (corrected == 0) {  // this sweep measured every spring within the limit and moved nothing
+      r.converged = true;
+      break;
+    }
+  }
+  r.max_strain = r.converged ? worst : maxStrain(network, s);
+  if (set_velocity && r.corrections > 0) {
+    for (int p = 0; p < network.particleCount(); ++p)
+      if (s.x_m.col(p) != before.col(p)) s.v_m_per_s.col(p) = (s.x_m.col(p) - step_start_x_m->col(p)) / dt_s;
+  }
+  return r;
 }
 
 template <int D> double maxStrain(const Network<D>& network, const State<D>& s) {
@@ -57,8 +89,8 @@ template <int D> double maxStrain(const Network<D>& network, const State<D>& s) 
   return worst;
 }
 
-template int applyProvot<2>(const Network<2>&, const ProvotOptions&, State<2>&);
-template int applyProvot<3>(const Network<3>&, const ProvotOptions&, State<3>&);
+template ProvotResult applyProvot<2>(const Network<2>&, const ProvotOptions&, State<2>&, const Points<2>*, double);
+template ProvotResult applyProvot<3>(const Network<3>&, const ProvotOptions&, State<3>&, const Points<3>*, double);
 template double maxStrain<2>(const Network<2>&, const State<2>&);
 template double maxStrain<3>(const Network<3>&, const State<3>&);
 

@@ -1,10 +1,15 @@
 #pragma once
-// Strain limiting after Provot 1995, as used in thesis §5.1 (Mehla 2005,
-// Fig. 5.2): after integration, every spring longer than (1 + max_strain) * rest is shortened to
-// that length by moving its free ends towards each other along the spring (both halves if both
-// are free, all of it on the free end otherwise). Velocities are left as they are.
-// The thesis notes the result depends on the order and need not converge: sweeps run in spring
-// index order, `passes` times (deterministic), and stop early once a sweep corrects nothing.
+// Strain limiting after Provot 1995, as used in A. Mehla, Modeling and Animation of Orb Webs, MSc
+// thesis 2005, §5.1 (Fig. 5.2): after integration, every spring longer than (1 + max_strain) * rest is
+// shortened to that length by moving its free ends towards each other along the spring (both halves if
+// both are free, all of it on the free end otherwise). Sweeps run in spring index order (deterministic)
+// and repeat until no spring is longer than (1 + max_strain) * rest * (1 + tolerance), at most `passes`
+// times: the thesis notes one sweep can over-extend another spring and the result need not converge, so a
+// step that ends with a spring still too long is reported (ProvotResult::converged), not hidden.
+// Given the positions at the start of the step and the step dt_s, every particle the sweeps moved gets
+// the velocity of its whole step, v = (x - x_start) / dt_s (as in position-based dynamics): Provot 1995
+// moves positions only, and with an integrator that carries velocities the kept velocity stretches the
+// spring again on the next step, so the strand never settles.
 #include <string>
 
 #include "springs/network.hpp"
@@ -13,13 +18,24 @@ namespace creaturelab::springs {
 
 struct ProvotOptions {
   bool enabled = false;
-  double max_strain = 0.1;  // allowed (|l| - r) / r, dimensionless, >= 0
-  int passes = 10;          // sweeps over all springs, >= 1
+  double max_strain = 0.1;   // allowed (|l| - r) / r, dimensionless, >= 0
+  int passes = 10;           // most sweeps over all springs per call, >= 1
+  double tolerance = 1e-12;  // converged when every |l| <= (1 + max_strain) r (1 + tolerance); in [0, 1e-3]
   std::string validate() const;
 };
 
-// Returns the number of corrections made (0 when disabled).
-template <int D> int applyProvot(const Network<D>& network, const ProvotOptions& options, State<D>& s);
+struct ProvotResult {
+  int passes = 0;          // sweeps made (the last one corrected nothing when converged)
+  long corrections = 0;    // springs shortened, over all sweeps
+  bool converged = true;   // every spring within the limit (with tolerance) after the last sweep
+  double max_strain = 0;   // largest (|l| - r) / r after the last sweep's corrections
+};
+
+// Disabled: does nothing and returns ProvotResult{} (max_strain 0 then means "not measured").
+// step_start_x_m (the positions before the step, or nullptr) and dt_s > 0 set the moved particles' velocities.
+template <int D>
+ProvotResult applyProvot(const Network<D>& network, const ProvotOptions& options, State<D>& s,
+                         const Points<D>* step_start_x_m = nullptr, double dt_s = 0);
 
 // max over springs of (|l| - r) / r; 0 for a network without springs.
 template <int D> double maxStrain(const Network<D>& network, const State<D>& s);

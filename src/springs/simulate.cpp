@@ -130,11 +130,18 @@ void runFrames(const System<D>& system, State<D>& s, const SimulationOptions& op
   if (on_frame) on_frame(0, 0.0, s);
 
   auto integrator = makeIntegrator<D>(options.integrator);
+  Points<D> step_start_x_m;  // positions before the step, for Provot's velocities
   for (long frame = 1; frame <= frames; ++frame) {
     for (int sub = 0; sub < summary.substeps_per_frame; ++sub) {
       const long step = summary.steps;
+      if (options.provot.enabled) step_start_x_m = s.x_m;
       integrator->step(system, s, StepContext{static_cast<double>(step) * dt, dt});
-      applyProvot(net, options.provot, s);
+      if (options.provot.enabled) {  // strain limiting, velocities with the positions (provot.hpp)
+        const ProvotResult limited = applyProvot(net, options.provot, s, &step_start_x_m, dt);
+        summary.provot_peak_strain = std::max(summary.provot_peak_strain, limited.max_strain);
+        summary.provot_unconverged_steps += !limited.converged;
+        summary.provot_passes += limited.passes;
+      }
       ++summary.steps;
       const double t_after = static_cast<double>(summary.steps) * dt;
       ke = kineticEnergyFast(net, s);

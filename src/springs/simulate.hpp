@@ -34,6 +34,10 @@ struct SimulationSummary {
   std::optional<double> settling_time_s;         // over every substep, see settling.hpp
   double settling_fraction = 0;
   long steps = 0;
+  // Provot's strain limiting (options.provot), over every step; all 0 when it is off.
+  double provot_peak_strain = 0;       // largest strain left after any step's limiting
+  long provot_unconverged_steps = 0;   // steps whose sweeps hit the pass cap with a spring still too long
+  long provot_passes = 0;              // sweeps over all steps
 };
 
 // Thrown when the state becomes non-finite or kinetic energy runs away. what() names the step,
