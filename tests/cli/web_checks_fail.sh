@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# Every check that decides an orb-web paper claim (A. Mehla, Modeling and Animation of Orb Webs, MSc thesis
+# 2005) fails when the mechanism the claim rests on is broken: the claim file is run with one mechanism
+# off (Provot's strain limit, the wind, the drag, ...) through overrides or a study on it, and the check
+# must then be FAIL in the table with exit code 1. Runs are shortened only where the check still resolves.
+# usage: web_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
+
+# status NAME CHECK: the status column (ok, FAIL, KNOWN) of CHECK in run NAME's table.
+status() {
+  awk -v c="$2" 'index($0, c) == 1 { rest = substr($0, length(c) + 1); sub(/^ +/, "", rest); split(rest, f, " "); print f[1]; exit }' \
+    "$scratch/$1.out"
+}
+
+# broken NAME FILE CHECK OVERRIDES...: `run FILE OVERRIDES` exits 1 and prints CHECK as FAIL.
+broken() {
+  local name=$1 file=$2 check=$3 rc=0
+  shift 3
+  "$bin" run "$file" --out "$scratch/run_$name" --jobs 2 "$@" >"$scratch/$name.out" 2>"$scratch/$name.err" || rc=$?
+  [[ $rc == 1 ]] || { cat "$scratch/$name.out" "$scratch/$name.err" >&2; fail "$name: exit code $rc, expected 1"; }
+  [[ $(status "$name" "$check") == FAIL ]] || { cat "$scratch/$name.out" >&2; fail "$name: '$check' is not FAIL"; }
+  echo "ok   $name: '$check' fails"
+}
+
+# study NAME BASE: a study file in the scratch folder on the claim file BASE (its body from stdin).
+study() {
+  { echo "base = \"$src/$2\""; cat; } >"$scratch/$1.toml"
+}
+
+# Fig. 5.2: with Provot off, the "constrained" strand is the free one: it sags as much and stretches 12%.
+study no_provot experiments/web/strand_layouts.toml <<'TOML'
+[[case]]
+label = "rest layout (Fig. 5.1)"
+layout = "rest"
+overextension = 0.0
+
+[[case]]
+label = "rest layout + Provot 2% (Fig. 5.2)"
+layout = "rest"
+overextension = 0.0
+provot = false
+provot_max_strain = 0.02
+TOML
+broken no_provot_sag "$scratch/no_provot.toml" "Provot's strand sags as a chain 2% over rest (Fig. 5.2)"
+[[ $(status no_provot_sag "Provot's strain limit holds within 0.5% strain after every step") == FAIL ]] || fail "no_provot: the strain-limit check did not fail"
+[[ $(status no_provot_sag "Provot's strand settles, faster than the free one (0.5-5 s)") == FAIL ]] ||
+  fail "no_provot: the Provot settling check did not fail"
+
+# Figs. 5.1 and §5.1: without drag nothing settles; stopped after 1.5 s the release has not died out
+# (drag damps it as exp(-t / 2 s)); laid at rest whatever the over-extension says, the sag cannot fall.
+broken strand_no_drag experiments/web/strand_layouts.toml "thesis parameters settle within 5-10 s (§5.1)" \
+  params.drag_ns_per_m=0.0
+broken strand_short experiments/web/strand_layouts.toml "dynamic settle agrees with the static Newton solve" \
+  params.end_time_s=1.5
+study strand_all_rest experiments/web/strand_layouts.toml <<'TOML'
+[params]
+end_time_s = 1.0
+[[case]]
+label = "rest layout (Fig. 5.1)"
+layout = "rest"
+overextension = 0.0
+[[case]]
+label = "over-extended 75%"
+layout = "rest"
+overextension = 0.75
+[[case]]
+label = "rest layout + Provot 2% (Fig. 5.2)"
+layout = "rest"
+overextension = 0.0
+provot = true
+TOML
+broken strand_all_rest "$scratch/strand_all_rest.toml" "sag decreases with over-extension"
+
+# Default web (Figs. 5.7-5.14): no drag, no settling and no agreement with the statics after 6 s; a
+# secondary spoke from every frame mass gives more particles than the thesis's 5,000-7,000.
+broken web_no_drag experiments/web/default.toml "settles within 5-10 s (thesis §5.1)" \
+  params.drag_ns_per_m=0.0 params.end_time_s=6.0
+[[ $(status web_no_drag "dynamic hub sag within 0.5% of the static equilibrium") == FAIL ]] ||
+  fail "web_no_drag: the statics check did not fail"
+broken web_dense experiments/web/default.toml "particle count within the thesis text's 5,000-7,000 (ch. 3)" \
+  params.secondary_spoke_stride=1 params.end_time_s=0.0
+# The silk check is a known deviation on the default web (KNOWN) and passes on a web 0.6 times the size.
+silk="silk length within the thesis's 20-60 m (ch. 3)"
+[[ $(status web_dense "$silk") == KNOWN ]] || fail "web_dense: the silk check is not KNOWN"
+rc=0
+"$bin" run experiments/web/default.toml --out "$scratch/run_web_small" --jobs 1 params.frame_scale=0.6 \
+  params.end_time_s=0.0 >"$scratch/web_small.out" 2>&1 || rc=$?
+[[ $(status web_small "$silk") == ok ]] || { cat "$scratch/web_small.out" >&2; fail "web_small: the silk check is not ok"; }
+echo "ok   web_small: '$silk' passes at 0.6 of the size"
+
+# Wind (Figs. 5.45-5.47): with the wind off the hub stays put and the sway cannot follow WIND.
+study no_wind experiments/web/wind.toml <<'TOML'
+[params]
+end_time_s = 4.0
+[[case]]
+label = "calibrated wind"
+wind_scale = 0.0
+[[case]]
+label = "twice the wind"
+wind_scale = 0.0
+TOML
+broken no_wind "$scratch/no_wind.toml" "the hub sways 50-60 mm rms under the calibrated wind"
+[[ $(status no_wind "the sway doubles with WIND") == FAIL ]] || fail "no_wind: the linearity check did not fail"
+
+# Figs. 5.17-5.38: every variant's settling rests on the air drag (exp(-t / 2 s)); without it nothing
+# settles, and a shape's hub still swings about its static sag after 3 s.
+broken sizes_no_drag experiments/web/sizes.toml "every size settles within 5-10 s" \
+  params.drag_ns_per_m=0.0 params.end_time_s=3.0
+broken shapes_no_drag experiments/web/shapes.toml "every shape settles within 5-10 s" \
+  params.drag_ns_per_m=0.0 params.end_time_s=3.0
+[[ $(status shapes_no_drag "every shape's dynamic hub sag matches its statics within 2%") == FAIL ]] ||
+  fail "shapes_no_drag: the statics check did not fail"
+for claim in spiral_spacing spoke_spacing combined; do
+  broken ${claim}_no_drag experiments/web/$claim.toml "every variant settles within 5-10 s" \
+    params.drag_ns_per_m=0.0 params.end_time_s=3.0
+done
+
+# Fig. 5.33: a secondary spoke leaves every stride-th inner-frame mass, so spreading the masses spreads the
+# spokes; with the stride cut as the placement grows (about 120 mm of frame per spoke) the count holds.
+study spokes_same_spacing experiments/web/spoke_spacing.toml <<'TOML'
+[params]
+end_time_s = 0.0
+[[case]]
+label = "Fig. 5.29 (preset)"
+frame_rest_length_m = 0.015
+frame_placement_m = 0.020
+secondary_spoke_stride = 6
+[[case]]
+label = "Fig. 5.30"
+frame_rest_length_m = 0.025
+frame_placement_m = 0.030
+secondary_spoke_stride = 4
+[[case]]
+label = "Fig. 5.31"
+frame_rest_length_m = 0.035
+frame_placement_m = 0.040
+secondary_spoke_stride = 3
+[[case]]
+label = "Fig. 5.32"
+frame_rest_length_m = 0.050
+frame_placement_m = 0.057
+secondary_spoke_stride = 2
+TOML
+broken spokes_same_spacing "$scratch/spokes_same_spacing.toml" "spokes fall as the frame masses spread"
