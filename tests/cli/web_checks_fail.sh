@@ -142,3 +142,56 @@ frame_placement_m = 0.057
 secondary_spoke_stride = 2
 TOML
 broken spokes_same_spacing "$scratch/spokes_same_spacing.toml" "spokes fall as the frame masses spread"
+
+# Figs. 6.10-6.18: with nothing scoring above the threshold nothing is cut and the letters hold as much
+# spiral as the web around them; without the cross-hatch the letters are empty, not denser.
+study charlotte_no_cut experiments/web/charlotte.toml <<'TOML'
+[params]
+resettle = "static"
+renders = false
+[[case]]
+label = "plain"
+threshold = 10
+[[case]]
+label = "cross_hatch"
+emphasis = "none"
+TOML
+broken charlotte_no_cut "$scratch/charlotte_no_cut.toml" "plain PIG: the letters hold much less spiral than the web around them"
+[[ $(status charlotte_no_cut "cross-hatch: the letters hold more silk than the web around them (Fig. 6.12)") == FAIL ]] ||
+  fail "charlotte_no_cut: the cross-hatch check did not fail"
+# A 61-pixel dilation spills the cut far off the letters; a 2 s resettle cannot show a 5-10 s settle.
+study charlotte_spill experiments/web/charlotte.toml <<'TOML'
+[params]
+renders = false
+resettle_time_s = 2.0
+dilation_px = 61
+[[case]]
+label = "plain"
+[[case]]
+label = "cross_hatch"
+emphasis = "cross_hatch"
+TOML
+broken charlotte_spill "$scratch/charlotte_spill.toml" \
+  "segments are removed where the target is: at least 90% of them have their middle on it"
+[[ $(status charlotte_spill "the web settles again in 5-10 s, as the thesis's webs do (§5.1)") == FAIL ]] ||
+  fail "charlotte_spill: the settling check did not fail"
+
+# Figs. 5.19-5.23: with no spring constant cut, no family elongates and none more than another (the
+# static equilibria are compared: end_time_s = 0).
+study no_cut experiments/web/spring_constants.toml <<'TOML'
+[params]
+end_time_s = 0.0
+[[case]]
+label = "original (Fig. 5.19)"
+[[case]]
+label = "outer frame k / 10 (Fig. 5.20)"
+[[case]]
+label = "inner frame k / 10 (Fig. 5.21)"
+[[case]]
+label = "radial k / 10 (Fig. 5.22)"
+TOML
+broken no_cut "$scratch/no_cut.toml" "cutting the outer-frame k elongates the outer frame"
+for check in "cutting the inner-frame k elongates the inner frame" "cutting the radial k elongates the radials" \
+  "outer frame elongates relatively more than the inner frame" "inner frame elongates relatively more than the radials"; do
+  [[ $(status no_cut "$check") == FAIL ]] || fail "no_cut: '$check' did not fail"
+done
