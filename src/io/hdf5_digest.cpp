@@ -1,6 +1,7 @@
 #include "io/hdf5_digest.hpp"
 
 #include "core/sha256.hpp"
+#include "io/file_seal.hpp"
 #include "io/hdf5_detail.hpp"
 #include "io/hdf5_error.hpp"
 
@@ -319,6 +320,7 @@ private:
 }  // namespace
 
 std::string contentDigest(const std::filesystem::path& path, const std::vector<std::string>& attr_names_to_skip) {
+  requireIntactSeal(path);  // before libhdf5 reads a byte of it
   auto lock = lockHdf5();
   const hid_t file_id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file_id < 0) detail::fail("open (read-only) for a digest", "", path.string());
