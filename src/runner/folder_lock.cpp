@@ -26,7 +26,7 @@ FolderLock FolderLock::acquire(const std::string& dir, Mode mode) {
   const std::string path = dir + "/" + kFileName;
   FolderLock lock;
   lock.dir_ = dir;
-  lock.fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  lock.fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);  // never through a link
   if (lock.fd_ < 0) throw ExperimentError(path + ": cannot open the run folder's lock: " + std::strerror(errno));
   const short type = mode == Mode::Exclusive ? F_WRLCK : F_RDLCK;
   for (int attempt = 0; attempt < 3; ++attempt) {

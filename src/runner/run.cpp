@@ -1,5 +1,7 @@
 #include "runner/run.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,6 +11,7 @@
 #include <csignal>
 #include <functional>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -20,6 +23,7 @@
 #include "runner/interrupt.hpp"
 #include "runner/progress.hpp"
 #include "runner/store.hpp"
+#include "runner/sweep_size.hpp"
 
 namespace creaturelab::runner {
 namespace fs = std::filesystem;
@@ -43,13 +47,26 @@ std::string outputDir(const RunOptions& o, const Experiment& e) {
   return "results/runs/" + e.stem;
 }
 
+// The point index of a run file's name (point_NNNNNN...), -1 for index.h5 and other names.
+int pointIndexOf(const std::string& name) {
+  if (name.rfind("point_", 0) != 0 || name.size() < 12) return -1;
+  int index = 0;
+  for (size_t i = 6; i < 12; ++i) {
+    if (name[i] < '0' || name[i] > '9') return -1;
+    index = index * 10 + (name[i] - '0');
+  }
+  return index;
+}
+
+// A file the runner writes, by its exact name: index.h5, point_NNNNNN.h5, its .xdmf sidecar, its
+// artifacts point_NNNNNN_<name> (renders), and the .tmp of each. --force removes these and only these.
 bool isRunFile(const fs::path& p) {
   const std::string name = p.filename().string();
-  // point_NNNNNN.h5, its .tmp, its .xdmf sidecar and its artifacts point_NNNNNN_<name> (renders).
-  const bool point = name.rfind("point_", 0) == 0;
-  const bool artifact = point && name.size() > 13 && name[12] == '_';
-  return name == "index.h5" || name == "index.h5.tmp" || artifact ||
-         (point && (p.extension() == ".h5" || p.extension() == ".tmp" || p.extension() == ".xdmf"));
+  if (name == "index.h5" || name == "index.h5.tmp") return true;
+  if (pointIndexOf(name) < 0) return false;
+  const std::string rest = name.substr(12);
+  return rest == ".h5" || rest == ".h5.tmp" || rest == ".xdmf" || rest == ".xdmf.tmp" ||
+         (rest.size() > 1 && rest[0] == '_');
 }
 
 // Before any work, on every rank (read-only): the folder must be creatable and writable.
@@ -69,20 +86,10 @@ void checkEarlierRun(const std::string& dir, const RunOptions& o) {
                           " already holds a run: pass --resume to finish it, --force to replace it, or --out DIR");
 }
 
-// The point index of a run file's name (point_NNNNNN...), -1 for index.h5 and other names.
-int pointIndexOf(const std::string& name) {
-  if (name.rfind("point_", 0) != 0 || name.size() < 12) return -1;
-  int index = 0;
-  for (size_t i = 6; i < 12; ++i) {
-    if (name[i] < '0' || name[i] > '9') return -1;
-    index = index * 10 + (name[i] - '0');
-  }
-  return index;
-}
-
 // Removes the temporary files (*.tmp) this process may own: those of points in its share, and
 // index.h5.tmp when it holds the folder alone. A crash or a kill leaves them; nothing reads them.
-// Truncated first: a file HDF5 still holds open (a write that failed) frees its space only then.
+// Truncated first: a file HDF5 still holds open (a write that failed) frees its space only then;
+// only a regular file with no other name is truncated, never a link's target (then unlinked).
 int removeTemporaries(const std::string& dir, const std::function<bool(int)>& mine, bool whole_folder) {
   if (!fs::is_directory(dir)) return 0;
   int removed = 0;
@@ -91,9 +98,13 @@ int removeTemporaries(const std::string& dir, const std::function<bool(int)>& mi
     if (entry.path().extension() != ".tmp" || !isRunFile(entry.path())) continue;
     const int index = pointIndexOf(name);
     if (index < 0 ? !whole_folder : !mine(index)) continue;
-    std::error_code ec;
-    fs::resize_file(entry.path(), 0, ec);
-    if (fs::remove(entry.path(), ec)) ++removed;
+    if (const int fd = ::open(entry.path().c_str(), O_WRONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC); fd >= 0) {
+      struct stat st {};
+      if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink == 1)
+        (void)!::ftruncate(fd, 0);  // best effort: the unlink below is what matters
+      ::close(fd);
+    }
+    if (::unlink(entry.path().c_str()) == 0) ++removed;
   }
   return removed;
 }
@@ -160,12 +171,13 @@ RunReport runShare(const ShareContext& c, RunReport report);
 RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, const Cluster& cluster) {
   const Experiment e = loadExperiment(o.experiment_path, o.overrides, registry);
   const kinds::Kind& kind = *registry.find(e.kind);
+  sweepPointCount(e);  // before expanding: a count beyond the limit, never wrapped
   const std::vector<Point> points = expandPoints(e, kind);
   checkSelections(e, points);
   {
     // The points this process computes at once: --jobs (default the cores), at most its share.
     const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-    const size_t shares = size_t(o.slice_count * cluster.size());
+    const size_t shares = size_t(o.slice_count) * size_t(cluster.size());
     const int share = int((points.size() + shares - 1) / shares);
     const CostLimits limits{o.allow_long, std::max(1, std::min(o.jobs > 0 ? o.jobs : cores, share)), memoryBudget()};
     checkCost(e, kind, points, limits);
@@ -242,9 +254,20 @@ void writeIndexFromFiles(const ShareContext& c, RunReport& report, const Provena
 RunReport runShare(const ShareContext& c, RunReport report) {
   const RunOptions& o = c.o;
   // This process's share: a --points slice and/or an MPI rank.
-  const int share_count = o.slice_count * c.cluster.size();
-  const int share_index = o.slice_index * c.cluster.size() + c.cluster.rank();
+  const long long share_count = (long long)o.slice_count * c.cluster.size();
+  const long long share_index = (long long)o.slice_index * c.cluster.size() + c.cluster.rank();
   const auto mine = [&](int index) { return index % share_count == share_index; };
+  // The seals of the point files in the index of an earlier run into this folder: a file reused by
+  // --resume must still hold the content recorded there. A damaged index is rewritten, not read.
+  std::map<int, PointSeal> recorded;
+  if (o.resume && fs::exists(report.out_dir + "/index.h5")) {
+    try {
+      recorded = readIndex(report.out_dir).seals;
+    } catch (const std::exception& err) {
+      std::fprintf(stderr, "resume: %s/index.h5 is not read (%s); it is written again\n", report.out_dir.c_str(),
+                   err.what());
+    }
+  }
   std::vector<const Point*> todo;
   for (const auto& p : c.points) {
     const std::string path = report.out_dir + "/" + pointFileName(p.index);
@@ -262,13 +285,16 @@ RunReport runShare(const ShareContext& c, RunReport report) {
     if (fs::exists(path)) {
       if (!o.resume && !o.force && o.slice_count == 1)
         throw ExperimentError(path + " exists: pass --resume or --force");
-      const std::string sha = readPointConfigSha(path);
-      if (sha == pointConfigSha(c.e.kind, p)) {
+      const auto seal = recorded.find(p.index);
+      const std::string damage = pointFileDamage(path, c.e.kind, p, seal == recorded.end() ? nullptr : &seal->second);
+      if (damage.empty()) {
         ++report.skipped;
         continue;
       }
-      if (!sha.empty())
-        throw ExperimentError(path + " was made by a different configuration; use --force or another --out");
+      // Removed now, so an index written before its recomputation (an interrupt) does not list it.
+      std::fprintf(stderr, "resume: %s is damaged, recomputing it: %s\n", path.c_str(), damage.c_str());
+      std::error_code ec;
+      fs::remove(path, ec);
     }
     todo.push_back(&p);
   }
@@ -380,6 +406,7 @@ std::string describeExperiment(const std::string& path, const std::vector<std::s
                                const kinds::Registry& registry) {
   const Experiment e = loadExperiment(path, overrides, registry);
   const kinds::Kind& kind = *registry.find(e.kind);
+  sweepPointCount(e);
   const auto points = expandPoints(e, kind);
   checkSelections(e, points);
   const auto columns = sweepColumns(e);

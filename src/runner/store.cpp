@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "core/sha256.hpp"
+#include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "io/xdmf.hpp"
 #include "runner/value_json.hpp"
@@ -50,13 +51,8 @@ void writeArtifacts(const std::string& dir, int index, const kinds::Result& r) {
   for (const auto& [name, bytes] : r.artifacts) {
     if (name.empty() || name.find('/') != std::string::npos || name.find("..") != std::string::npos)
       throw std::runtime_error("artifact name '" + name + "' is not a plain file name");
-    const std::string final_path = dir + "/" + stem + "_" + name, tmp_path = final_path + ".tmp";
-    {
-      std::ofstream out(tmp_path, std::ios::binary | std::ios::trunc);
-      out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-      if (!out.flush()) throw std::runtime_error(tmp_path + ": cannot write");
-    }
-    fs::rename(tmp_path, final_path);
+    io::writeFileAtomically(dir + "/" + stem + "_" + name,
+                            std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   }
 }
 
@@ -64,8 +60,7 @@ void writeXdmfSidecar(const std::string& dir, int index, const kinds::FieldFrame
   if (f.frames() == 0 || f.fields.empty()) return;
   io::XdmfGrid g{pointFileName(index), f.time_s, f.nx, f.ny, f.dx_m, f.dy_m, f.origin_x_m, f.origin_y_m, {}};
   for (const auto& [name, field] : f.fields) g.fields.push_back(name);
-  std::ofstream out(dir + "/" + fs::path(pointFileName(index)).stem().string() + ".xdmf");
-  out << io::xdmfText(g);
+  io::writeFileAtomically(dir + "/" + fs::path(pointFileName(index)).stem().string() + ".xdmf", io::xdmfText(g));
 }
 
 void writeResult(const io::Group& root, const kinds::Result& r, bool lagrangian) {
@@ -213,6 +208,28 @@ std::string readPointConfigSha(const std::string& path) {
   }
 }
 
+std::string pointFileDamage(const std::string& path, const std::string& kind, const Point& point,
+                            const PointSeal* recorded) {
+  std::string config;
+  try {
+    const io::File file = io::File::openReadOnly(path);
+    config = io::getAttrString(file.root(), "config_sha256");
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  if (config != pointConfigSha(kind, point))
+    throw ExperimentError(path + " was made by a different configuration; use --force or another --out");
+  std::string content;
+  try {
+    content = io::contentDigest(path, provenanceAttributeNames());
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  if (recorded && recorded->config_sha256 == config && recorded->content_sha256 != content)
+    return "its content differs from what index.h5 recorded (changed after the run)";
+  return "";
+}
+
 Row readPointRow(const std::string& dir, const Point& point, const std::vector<std::string>& columns,
                  const kinds::Kind& kind) {
   Row row;
@@ -222,19 +239,23 @@ Row readPointRow(const std::string& dir, const Point& point, const std::vector<s
   for (const auto& m : kind.metrics()) row.metrics[m.name] = std::nan("");
   const std::string path = dir + "/" + pointFileName(point.index);
   if (!fs::exists(path)) return row;
-  const io::File file = io::File::openReadOnly(path);
-  const io::Group root = file.root();
-  row.config_sha256 = io::getAttrString(root, "config_sha256");
-  if (row.config_sha256 != pointConfigSha(kind.name(), point))
-    throw ExperimentError(path + " was made by a different configuration than this run (another run into the same "
-                          "folder?): not listed; use --force or another --out");
-  row.content_sha256 = io::contentDigest(path, provenanceAttributeNames());
-  row.status = io::getAttrString(root, "status");
-  row.message = io::getAttrString(root, "message");
-  if (root.isGroup("metrics")) {
-    const io::Group metrics = root.openGroup("metrics");
-    for (auto& [name, value] : row.metrics)
-      if (metrics.isDataset(name)) value = io::readScalarDouble(metrics, name);
+  try {
+    const io::File file = io::File::openReadOnly(path);
+    const io::Group root = file.root();
+    row.config_sha256 = io::getAttrString(root, "config_sha256");
+    if (row.config_sha256 != pointConfigSha(kind.name(), point))
+      throw ExperimentError(path + " was made by a different configuration than this run (another run into the same "
+                            "folder?): not listed; use --force or another --out");
+    row.content_sha256 = io::contentDigest(path, provenanceAttributeNames());
+    row.status = io::getAttrString(root, "status");
+    row.message = io::getAttrString(root, "message");
+    if (root.isGroup("metrics")) {
+      const io::Group metrics = root.openGroup("metrics");
+      for (auto& [name, value] : row.metrics)
+        if (metrics.isDataset(name)) value = io::readScalarDouble(metrics, name);
+    }
+  } catch (const io::Hdf5Error& e) {
+    throw ExperimentError(path + ": damaged point file (" + e.what() + "); run again with --resume to recompute it");
   }
   return row;
 }

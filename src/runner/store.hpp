@@ -38,18 +38,24 @@ void writePointFile(const std::string& dir, const Experiment& experiment, const 
                     const PointOutcome& outcome, Provenance provenance);
 // "" when the file is missing or unreadable.
 std::string readPointConfigSha(const std::string& path);
+// What index.h5 recorded of one point file (/integrity).
+struct PointSeal {
+  std::string config_sha256, content_sha256;
+};
+
+// Why `--resume` may not reuse the point file at `path` ("" when it may): its seal is broken, it
+// cannot be read whole, or its content differs from what index.h5 recorded (`recorded`, may be
+// null). Throws ExperimentError when it was made by another configuration (never recomputed over).
+std::string pointFileDamage(const std::string& path, const std::string& kind, const Point& point,
+                            const PointSeal* recorded);
 // The table row of a point file; status "missing" when there is none. Throws ExperimentError when
-// the file was made by another configuration (another run into the same folder): never mixed.
+// the file was made by another configuration (another run into the same folder): never mixed, or
+// when it cannot be read whole (damaged after this run checked it).
 Row readPointRow(const std::string& dir, const Point& point, const std::vector<std::string>& columns,
                  const kinds::Kind& kind);
 
 void writeIndex(const std::string& dir, const Experiment& experiment, const kinds::Kind& kind, const Table& table,
                 const std::vector<CheckOutcome>& checks, Provenance provenance);
-
-// What index.h5 recorded of one point file (/integrity).
-struct PointSeal {
-  std::string config_sha256, content_sha256;
-};
 
 struct StoredRun {
   std::string experiment_path, experiment_text;

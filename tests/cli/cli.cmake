@@ -36,4 +36,6 @@ creaturelab_cli_test(mpi SKIP_RETURN_CODE 77 RESOURCE_LOCK mpi)
 creaturelab_cli_test(mpi_errors SKIP_RETURN_CODE 77 RESOURCE_LOCK mpi)
 creaturelab_cli_test(base_file)      # base = "<path>": missing base and cycle exit 2 with the chain; check without the base
 creaturelab_cli_test(damaged_index)  # a damaged index.h5 (bad JSON, wrong types, columns of different lengths): exit 2
+creaturelab_cli_test(damaged_points) # a corrupt global heap in a point file: check/digest exit 2, --resume recomputes
+creaturelab_cli_test(resume_damaged) # --resume recomputes a changed or unreadable point file instead of sealing it
 creaturelab_cli_test(web_checks_fail) # each web claim check FAILs with its mechanism broken (Provot, wind, drag, spacing)

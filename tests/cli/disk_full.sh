@@ -41,10 +41,10 @@ PY
 ! grep -qE "HDF5-DIAG|minor:" "$scratch/run.stderr" || fail "HDF5's error stack was printed: $(grep -m3 -E 'HDF5-DIAG|minor:' "$scratch/run.stderr")"
 echo "ok   disk full: exit 3, $n point files kept and listed: $(grep '^error:' "$scratch/run.stderr")"
 
-# The disk fills while index.h5 is written (every point fits, 152 KiB): exit 3 and a message, the
+# The disk fills while index.h5 is written (every point fits, 176 KiB): exit 3 and a message, the
 # points stay; once there is space again, --resume writes the index.
 umount "$small"
-mount -t tmpfs -o size=152k tmpfs "$small"
+mount -t tmpfs -o size=176k tmpfs "$small"
 rc=0
 "$bin" run tests/cli/strand_sweep.toml --out "$run" --jobs 1 >/dev/null 2>"$scratch/index.stderr" || rc=$?
 [[ $rc == 3 ]] || fail "index on a full disk: exit code $rc, expected 3: $(tail -3 "$scratch/index.stderr")"
