@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "cli/render_commands.hpp"
+#include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "kinds/param_toml.hpp"
 #include "kinds/render_params.hpp"
@@ -29,14 +30,40 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A count of the command line as a number 0..limit; false for anything else (signs, spaces,
+// trailing characters, values that do not fit).
+bool parseCount(const std::string& text, long long limit, long long& out) {
+  if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos) return false;
+  out = std::stoll(text);
+  return out <= limit;
+}
+
 void parseSlice(const std::string& text, runner::RunOptions& o) {
   if (text.empty()) return;
-  int i = 0, n = 0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%d/%d%c", &i, &n, &tail) != 2 || n < 1 || i < 0 || i >= n)
-    throw UsageError("--points " + text + ": expected i/N with 0 <= i < N, e.g. --points 0/4");
-  o.slice_index = i;
-  o.slice_count = n;
+  constexpr long long kMaxShares = 1000000;  // a sweep has at most a million points
+  const auto slash = text.find('/');
+  long long i = 0, n = 0;
+  if (slash == std::string::npos || !parseCount(text.substr(0, slash), kMaxShares, i) ||
+      !parseCount(text.substr(slash + 1), kMaxShares, n) || n < 1 || i >= n)
+    throw UsageError("--points " + text + ": expected i/N with 0 <= i < N <= " + std::to_string(kMaxShares) +
+                     ", e.g. --points 0/4");
+  o.slice_index = int(i);
+  o.slice_count = int(n);
+}
+
+// An override is one line "dotted.key=value": a value of several lines was cut at its first.
+void checkOverrides(const std::vector<std::string>& overrides) {
+  for (const auto& o : overrides)
+    if (o.find_first_of("\n\r") != std::string::npos)
+      throw UsageError("override '" + o.substr(0, o.find_first_of("\n\r")) +
+                       "...': an override is one line (dotted.key=value); pass each as its own argument");
+}
+
+// A name from a file that becomes a folder under --out: one plain path component.
+void checkPlainName(const std::string& name, const std::string& where) {
+  if (name.empty() || name == "." || name == ".." || name.find_first_of("/\\") != std::string::npos ||
+      name.find('\0') != std::string::npos)
+    throw UsageError(where + ": name \"" + name + "\" is not a plain folder name (no '/', not '.' or '..')");
 }
 
 runner::Baseline loadBaseline(const std::string& path, double rtol, double atol, bool verify) {
@@ -89,6 +116,7 @@ void Commands::printReport(const runner::RunReport& r) const {
 int Commands::run(const RunArgs& args) const {
   runner::RunOptions o = args.options;
   parseSlice(args.slice, o);
+  checkOverrides(o.overrides);
   const runner::RunReport report = runner::runExperiment(o, registry_, cluster_);
   if (!report.write_error.empty()) std::fprintf(stderr, "error: %s\n", report.write_error.c_str());
   if (o.dry_run) {
@@ -132,6 +160,7 @@ int Commands::list(const std::string& kind_name) const {
 }
 
 int Commands::show(const std::string& file, const std::vector<std::string>& overrides) const {
+  checkOverrides(overrides);
   std::printf("%s", runner::describeExperiment(file, overrides, registry_).c_str());
   return 0;
 }
@@ -165,9 +194,7 @@ int Commands::baseline(const BaselineArgs& args) const {
     std::fputs(text.c_str(), stdout);
   } else {
     if (fs::is_directory(args.output)) throw UsageError(args.output + ": is a folder; expected a file to write");
-    std::ofstream out(args.output);
-    out << text;
-    if (!out) throw UsageError(args.output + ": cannot write");
+    io::writeFileAtomically(args.output, text);  // the old baseline stays whole if this fails
   }
   return 0;
 }
@@ -190,10 +217,13 @@ int Commands::digest(const std::string& run_dir) const {
 
 // The list's [[render]] entries, after its experiments: `creaturelab render RUN --figures ...` on
 // recorded swims (run = the run folder under the list's output root; frames, settings, figures).
-int Commands::reproduceRenders(const toml::table& list, const std::string& file, const std::string& out_root) const {
+namespace {
+
+// The list's [[render]] entries, checked before any experiment runs: known keys, and a run that
+// names one folder under the list's output root.
+void checkRenderEntries(const toml::table& list, const std::string& file) {
   const auto* renders = list["render"].as_array();
-  if (!renders) return 0;
-  int code = 0;
+  if (!renders) return;
   for (auto&& entry : *renders) {
     const auto* t = entry.as_table();
     if (!t || !(*t)["run"].is_string()) throw UsageError(file + ": each [[render]] needs run = \"<experiment stem>\"");
@@ -201,6 +231,19 @@ int Commands::reproduceRenders(const toml::table& list, const std::string& file,
       if (std::string problem = kinds::unknownKeyText(std::string(key.str()), {"run", "frames", "figures", "settings"});
           !problem.empty())
         throw UsageError(file + ": [[render]]: " + problem);
+    checkPlainName((*t)["run"].value_or(std::string()), file + ": [[render]] run");
+  }
+}
+
+}  // namespace
+
+int Commands::reproduceRenders(const toml::table& list, const std::string& file, const std::string& out_root) const {
+  const auto* renders = list["render"].as_array();
+  if (!renders) return 0;
+  checkRenderEntries(list, file);
+  int code = 0;
+  for (auto&& entry : *renders) {
+    const auto* t = entry.as_table();
     runner::RenderRunOptions o;
     o.source = out_root + "/" + (*t)["run"].value_or(std::string());
     o.frames = (*t)["frames"].value_or(std::string());
@@ -250,7 +293,11 @@ int Commands::reproduce(const ReproduceArgs& args) const {
           throw UsageError(args.list + ": unknown key \"" + std::string(key.str()) +
                            "\" in an experiments entry; expected file, set, name, minutes");
       o.experiment_path = (*t)["file"].value_or(std::string());
-      name = (*t)["name"].value_or(std::string());
+      if (t->contains("name")) {
+        if (!(*t)["name"].is_string()) throw UsageError(args.list + ": " + o.experiment_path + ": name is a string");
+        name = (*t)["name"].value_or(std::string());
+        checkPlainName(name, args.list + ": " + o.experiment_path);
+      }
       if (const auto* set = (*t)["set"].as_array())
         for (auto&& v : *set) {
           if (!v.is_string()) throw UsageError(args.list + ": " + o.experiment_path + ": set holds strings \"key=value\"");
@@ -261,11 +308,15 @@ int Commands::reproduce(const ReproduceArgs& args) const {
     }
     if (o.experiment_path.empty())
       throw UsageError(args.list + ": an experiments entry names no file (a path, or {file = \"...\"})");
-    o.out_dir = args.out_root + "/" + (name.empty() ? fs::path(o.experiment_path).stem().string() : name);
+    if (name.empty()) name = fs::path(o.experiment_path).stem().string();
+    checkPlainName(name, args.list + ": " + o.experiment_path);
+    checkOverrides(o.overrides);
+    o.out_dir = args.out_root + "/" + name;
     o.force = true;
     o.jobs = args.jobs;
     planned.push_back(std::move(o));
   }
+  checkRenderEntries(list, args.list);
   // A list may say how long it takes (minutes = measured wall time of each entry): say so first.
   double minutes = 0;
   for (auto&& f : *files)

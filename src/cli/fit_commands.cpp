@@ -61,9 +61,29 @@ std::string checkWithKind(const std::vector<std::pair<std::string, kinds::Value>
   return kind->validate(kinds::withDefaults(*kind, given));
 }
 
+// The numeric options of `fit spline`, checked before anything is read or written.
+void checkSplineOptions(const FitSplineArgs& a) {
+  const auto finite = [](const char* option, double v) {
+    if (!std::isfinite(v)) throw fit::FitError(std::string(option) + " " + formatNumber(v) + ": expected a finite number");
+  };
+  if (a.knots && *a.knots < 1) throw fit::FitError("--knots " + std::to_string(*a.knots) + ": expected at least 1");
+  if (a.period_s && !(std::isfinite(*a.period_s) && *a.period_s > 0))
+    throw fit::FitError("--period " + formatNumber(*a.period_s) + ": expected a positive number of seconds");
+  if (!(std::isfinite(a.loss_scale) && a.loss_scale > 0))
+    throw fit::FitError("--loss-scale " + formatNumber(a.loss_scale) + ": expected a positive number");
+  finite("--lower", a.lower);
+  finite("--upper", a.upper);
+  finite("--phase-origin", a.phase_origin_s);
+  if (std::isnan(a.from_s)) throw fit::FitError("--from nan: expected a time in s");
+}
+
 }  // namespace
 
 int fitSpline(const FitSplineArgs& a) {
+  checkSplineOptions(a);
+  const std::string out = a.out.empty() ? "results/runs/fit/" + fs::path(a.data).stem().string() + "_spline" : a.out;
+  if (fs::exists(fs::symlink_status(out)) && !a.force)
+    throw fit::FitError(out + " exists: pass --force to replace the fit there, or another --out");
   // --- read
   fit::Profile profile;
   std::string source = a.data, period_source;
@@ -92,11 +112,11 @@ int fitSpline(const FitSplineArgs& a) {
   fit::SplineFitOptions o;
   if (!a.phases.empty()) {
     o.knot_phases = parseList(a.phases, "--phases");
-    if (a.knots > 0 && a.knots != int(o.knot_phases.size()))
-      throw fit::FitError("--knots " + std::to_string(a.knots) + " but --phases lists " +
+    if (a.knots && *a.knots != int(o.knot_phases.size()))
+      throw fit::FitError("--knots " + std::to_string(*a.knots) + " but --phases lists " +
                           std::to_string(o.knot_phases.size()) + " phases");
   } else {
-    o.knot_phases = fit::evenPhases(a.knots > 0 ? a.knots : 4);
+    o.knot_phases = fit::evenPhases(a.knots.value_or(4));
   }
   if (!fit::parseLoss(a.loss, o.loss)) throw fit::FitError("--loss " + a.loss + ": expected none | huber | cauchy");
   o.loss_scale = a.loss_scale;
@@ -104,8 +124,8 @@ int fitSpline(const FitSplineArgs& a) {
   o.upper_value = a.upper;
   o.phase_origin_s = a.phase_origin_s;
   if (!a.start_values.empty()) o.start_values = parseList(a.start_values, "--start-values");
-  if (a.period_s > 0) {
-    o.period_s = a.period_s;
+  if (a.period_s) {
+    o.period_s = *a.period_s;
     period_source = "--period";
   } else if (hz && *hz > 0) {
     o.period_s = 1.0 / *hz;
@@ -119,7 +139,6 @@ int fitSpline(const FitSplineArgs& a) {
 
   // --- fit (checks everything first) and write
   const fit::SplineFitResult r = fit::fitSpline(profile, o);
-  const std::string out = a.out.empty() ? "results/runs/fit/" + fs::path(a.data).stem().string() + "_spline" : a.out;
   fit::SplineFitContext ctx{source, period_source, {}};
   for (const auto& [k, v] : runner::collectProvenance()) ctx.attributes[k] = v;
   ctx.attributes["finished"] = core::isoTimeUtcNow();

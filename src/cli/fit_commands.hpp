@@ -1,6 +1,7 @@
 #pragma once
 // `creaturelab fit spline DATA` and `creaturelab fit controller FILE` (issue 6). Each returns the
 // exit code; user errors are thrown as std::runtime_error (Commands::guard prints them, exit 2).
+#include <optional>
 #include <string>
 
 #include "kinds/kind.hpp"
@@ -10,9 +11,9 @@ namespace creaturelab::cli {
 struct FitSplineArgs {
   std::string data;          // CSV, point file (.h5) or run folder
   std::string out;           // "" = results/runs/fit/<data stem>_spline
-  int knots = 0;             // evenly spaced knots (0 = 4, or as many as --phases)
+  std::optional<int> knots;  // evenly spaced knots (unset: 4, or as many as --phases)
   std::string phases;        // "0,0.3": knot phases
-  double period_s = 0;       // 0 = the point's contraction_hz attribute, else detected
+  std::optional<double> period_s;  // unset: the point's contraction_hz attribute, else detected
   double phase_origin_s = 0;
   double from_s = -1e300;    // drop samples before this time
   double lower = 0.56, upper = 1.0;
@@ -23,6 +24,7 @@ struct FitSplineArgs {
   std::string time_dataset = "timeseries/time_s";
   std::string weight_dataset;
   int point = 0;
+  bool force = false;  // replace an existing output folder
 };
 
 struct FitControllerArgs {

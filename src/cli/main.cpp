@@ -109,6 +109,7 @@ int main(int argc, char** argv) {
   fit_spline->add_option("--time-dataset", fsa.time_dataset, "HDF5 time dataset")->capture_default_str();
   fit_spline->add_option("--weight-dataset", fsa.weight_dataset, "HDF5 weight dataset (default: all 1)");
   fit_spline->add_option("--point", fsa.point, "point index when DATA is a run folder")->capture_default_str();
+  fit_spline->add_flag("--force", fsa.force, "replace an existing output folder");
   auto* fit_controller = fit->add_subcommand("controller", "tune parameters of a kind (experiments/fit/*.toml)");
   fit_controller->add_option("file", fca.file, "controller-fit TOML file")->required();
   fit_controller->add_option("-o,--out", fca.out, "output folder (default: results/runs/fit/<file stem>)");

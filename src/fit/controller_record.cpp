@@ -9,6 +9,7 @@
 #include "core/text.hpp"
 #include "fit/fit_error.hpp"
 #include "fit/params_fragment.hpp"
+#include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "jellyfish/contraction_curve.hpp"
 #include "jellyfish/jellyfish_params.hpp"
@@ -161,9 +162,11 @@ void writeControllerResult(const std::string& dir, const ControllerSpec& spec, c
       writeCurve(fitted, spec.paramsAt(result.x_fitted));
     }
   });
-  std::ofstream out(fs::path(dir) / "params.toml");
-  out << controllerParamsFragment(spec, result.x_fitted);
-  if (!out) throw FitError((fs::path(dir) / "params.toml").string() + ": cannot write");
+  try {
+    io::writeFileAtomically(fs::path(dir) / "params.toml", controllerParamsFragment(spec, result.x_fitted));
+  } catch (const std::runtime_error& e) {
+    throw FitError(e.what());
+  }
 }
 
 std::vector<Evaluation> readControllerEvaluations(const std::string& dir, const ControllerSpec& spec) {

@@ -8,6 +8,7 @@
 #include "core/text.hpp"
 #include "fit/fit_error.hpp"
 #include "fit/params_fragment.hpp"
+#include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "jellyfish/contraction_curve.hpp"
 
@@ -101,9 +102,11 @@ void writeSplineFit(const std::string& dir, const Profile& profile, const Spline
   }
   fs::rename(tmp_path, final_path);
 
-  std::ofstream out(fs::path(dir) / "params.toml");
-  out << splineParamsFragment(r, c);
-  if (!out) throw FitError((fs::path(dir) / "params.toml").string() + ": cannot write");
+  try {
+    io::writeFileAtomically(fs::path(dir) / "params.toml", splineParamsFragment(r, c));
+  } catch (const std::runtime_error& e) {
+    throw FitError(e.what());
+  }
 }
 
 }  // namespace creaturelab::fit

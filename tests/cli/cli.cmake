@@ -38,4 +38,9 @@ creaturelab_cli_test(base_file)      # base = "<path>": missing base and cycle e
 creaturelab_cli_test(damaged_index)  # a damaged index.h5 (bad JSON, wrong types, columns of different lengths): exit 2
 creaturelab_cli_test(damaged_points) # a corrupt global heap in a point file: check/digest exit 2, --resume recomputes
 creaturelab_cli_test(resume_damaged) # --resume recomputes a changed or unreadable point file instead of sealing it
+creaturelab_cli_test(limits)         # sweeps over a million points, --points beyond an int, multi-line overrides: exit 2
+creaturelab_cli_test(containment)    # names cannot leave --out; links never written through; --force keeps others' files
+creaturelab_cli_test(fit_output)     # fit spline: NaN and non-positive options exit 2; an existing output needs --force
+# baseline -o on a full 200 KiB tmpfs: exit 2, the old baseline whole. Skipped (77) without mount rights.
+creaturelab_cli_test(baseline_disk_full SKIP_RETURN_CODE 77)
 creaturelab_cli_test(web_checks_fail) # each web claim check FAILs with its mechanism broken (Provot, wind, drag, spacing)
