@@ -2,7 +2,7 @@
 """Draws the figures of every run folder under the given folders, from their HDF5 files alone:
 each run's kind (index.h5's attribute) picks its plotter scripts (SCRIPTS: one line per kind), and
 the run's folder name picks the paper-figure modules that draw from it (analysis/figures/catalog.py,
-e.g. frequency_sweep -> figures/rm_fig5.py). `make reproduce` calls it on results/runs/reproduce after
+e.g. frequency -> figures/rm_fig5.py). `make reproduce` calls it on results/runs/reproduce after
 the runs, then analysis/report.py writes report.html from what was drawn.
 
 usage: /usr/bin/python3 analysis/draw_runs.py FOLDER [FOLDER ...]

@@ -9,7 +9,7 @@
 //    `source_rows` rows (floor included) are set to the speed, and the stream band's tangential
 //    faces to zero, before and after each stage, with the wall open. The projection then moves the
 //    band again (p = 0 on the open wall), so the stream it drives falls short of the speed by an
-//    amount that shrinks with the step and the band's depth (flyer_convergence.toml). Kept for
+//    amount that shrinks with the step and the band's depth (studies/control/flyer_convergence.toml). Kept for
 //    block_flow's stream (Fig. 8), whose force settles in the step, and for comparison.
 // With the right wall or the top open, the fluid leaves there.
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // The undeformed fish's small vibrations in air: the eigenmodes of K v = w^2 M v, K the units'
 // tangent stiffness at rest (sum over units of c r^ r^T on the 3 x 3 blocks; damping and water left
-// out). Two numbers explain the fish's measured behaviour (experiments/fish/spec_audit.md):
+// out). Two numbers explain the fish's measured behaviour (docs/fish-spec-audit.md):
 // - the lowest lateral bending mode: a swim gait much faster than it is filtered by the body's
 //   inertia, so the spec's c = 28-38 N/m against 1.1-11 kg masses (a 0.15 Hz mode) caps the useful
 //   tail-beat frequency and hence the speed in body lengths per second;

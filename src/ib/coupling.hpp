@@ -37,7 +37,7 @@
 // proof: the membrane test runs θ = ½ at 0.01 s, and tests/physics/jellyfish_swim_test.cpp runs the
 // bell at θ = ½ on the paper's 100² grid at 0.01 s. θ < ½ is not offered. Any θ ≥ 0 keeps
 // I − θ dt M K's eigenvalues ≥ 1 (below). On the jellyfish the backward-Euler force is the leading
-// step error, which θ = ½ reduces (experiments/jellyfish/convergence_theta.toml).
+// step error, which θ = ½ reduces (studies/jellyfish/convergence.toml).
 //
 // Two mobilities (ImplicitMobility):
 //  - stencil (default): M = dt/ρ · I S, the force spread and read back through the markers' own

@@ -115,7 +115,7 @@ struct ActivationParams {
   // the apex down, as the Hermite curve's `stagger` does. 0 releases every muscle alike (unison).
   double pulse_stagger = 0.0;
   // Cycles with activation; 0 = every cycle. 1 with a short pulse is a pluck: one contraction,
-  // then the bell rings down freely (natural_frequency.toml).
+  // then the bell rings down freely (the pluck of experiments/jellyfish/frequency.toml).
   int active_cycles = 0;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// Natural frequency and damping ratio from a free decay (issue 13 §2, natural_frequency.toml):
+// Natural frequency and damping ratio from a free decay (the pluck of experiments/jellyfish/frequency.toml):
 // after a pluck the bell's diameter rings down about its rest value. With deviation d(t) from the
 // rest value, the damped frequency comes from the zero crossings of d (half a period apart), the
 // damping from the logarithmic decrement of successive extrema (one per half period):

@@ -234,7 +234,7 @@ JellyfishKind::JellyfishKind() {
            "pulse shape: the apex muscle's release runs 1/(1 - pulse_stagger) times faster than the aperture's "
            "(§3.3, Fig. 4 right); 0 = unison"),
       integer("active_cycles", 0, 0, 100000,
-              "cycles with activation, 0 = all; 1 with a short pulse is a pluck (natural_frequency.toml)"),
+              "cycles with activation, 0 = all; 1 with a short pulse is a pluck (frequency.toml)"),
   };
   for (int k = 0; k < kMaxKnots; ++k) {
     const Knot d = defaultKnot(k);
@@ -260,7 +260,7 @@ JellyfishKind::JellyfishKind() {
            "bending rigidity B per metre of depth (a joint's angular spring is B / L); calibrated so that f_n sits "
            "near the paper's resonant 0.7 Hz (§3.3, Fig. 5)"),
       real("stiffness_scale", 1.0, "", 1e-3, 1e3,
-           "multiplies bell_modulus_pa and bending_rigidity_n_m together (natural_frequency.toml sweeps it)"),
+           "multiplies bell_modulus_pa and bending_rigidity_n_m together"),
       choice("muscle_model", "active_tension", {"rest_length", "active_tension"},
              "active_tension: a tension T_max a(t) that the elastic bell re-expands against, so the stroke can "
              "resonate; rest_length: the paper's rest-length curve (§3.3)"),

@@ -1,13 +1,12 @@
 // Staggered against unison expansion (Rudolf & Mould 2009
 // §3.3, Fig. 4): "our jellyfish travels approximately 68% farther with each stroke than it did
-// when all springs expanded in unison." Run as experiments/jellyfish/stagger_hat.toml does: 0.7 Hz,
-// one warm-up cycle, then the centroid's axial displacement over 10 s, on 200² at dt 0.0025 s,
-// where that distance has converged in the step (convergence_hat.toml; on the paper's 100² it has
-// not). After its first strokes the bell stalls in its own wake, and staggered expansion holds its
+// when all springs expanded in unison." The Hermite-curve bell at 0.7 Hz, one warm-up cycle,
+// then the centroid's axial displacement over 10 s, on 200² at dt 0.0025 s, where that distance
+// has converged in the step (on the paper's 100² it has not). After its first strokes the bell stalls in its own wake, and staggered expansion holds its
 // ground where unison drifts back.
 // Asserted: staggered travels farther (the sign of the paper's claim); the sign of unison's
 // distance and the ratio are reported, not asserted (the paper's positive unison thrust is not
-// reproduced, stagger_hat.toml). About 17 s in Release on one core.
+// reproduced by this setting). About 17 s in Release on one core.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -272,8 +272,7 @@ TEST(JellyfishSwim, SemiImplicitStepIsStableWhereExplicitBlowsUp) {
 }
 
 // The kind's default force at the step's middle (implicit_theta = ½, kinds/jellyfish.cpp) on the
-// paper's model (the swimmer's own defaults, as frequency_sweep_paper_grid.toml:
-// rest-length muscles, semi-Lagrangian advection) at the paper's grid and step: θ = ½ damps the
+// paper's model (the swimmer's own defaults: rest-length muscles, semi-Lagrangian advection) at the paper's grid and step: θ = ½ damps the
 // marker springs' fast modes less than θ = 1 (ib/coupling.hpp), so its stability at 0.01 s on 100²
 // is checked over a whole measured window (one warm-up cycle and 10 s) at the sweep's ends and
 // middle, not only over two cycles. Asserted: no blow-up or crumpling, finite markers, slow markers

@@ -79,7 +79,7 @@ TEST(RunnerChecks, ArgmaxOnANumericAxis) {
 }
 
 // An argmax relative to another point's metric: a driven response's peak frequency against the
-// natural frequency a pluck measured (jellyfish natural_frequency.toml).
+// natural frequency a pluck measured (experiments/jellyfish/frequency.toml).
 TEST(RunnerChecks, ArgmaxRelativeToAnotherPointsMetric) {
   Table t{{"protocol", "contraction_hz"}, {"stroke_amplitude", "natural_hz"}, {}};
   const double nan = std::numeric_limits<double>::quiet_NaN();
