@@ -86,6 +86,7 @@ with h5py.File(d + "/crossing.h5", "a") as f:
     x[3, 0] += 0.06   # marker 3 pulled across the bell in frame 5
     m[5] = x
 PY
+reseal "$scratch/no_lagrangian.h5" "$scratch/crossing.h5"  # edited on purpose: render reads them, not the seal
 expect_bad no_lagrangian "no /lagrangian/markers_m" "$scratch/no_lagrangian.h5"
 expect_bad frames_outside "--frames 0:20: the run has 9 frames (0..8)" "$scratch/swim" --frames 0:20
 expect_bad crossing "frame 5" "$scratch/crossing.h5" "${small[@]}"
