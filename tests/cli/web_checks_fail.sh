@@ -195,3 +195,75 @@ for check in "cutting the inner-frame k elongates the inner frame" "cutting the 
   "outer frame elongates relatively more than the inner frame" "inner frame elongates relatively more than the radials"; do
   [[ $(status no_cut "$check") == FAIL ]] || fail "no_cut: '$check' did not fail"
 done
+
+# Fig. 5.17: the radii come from the inner-frame masses (a secondary spoke from every stride-th one); with
+# the primary spokes alone, set by the frame's corners, the count no longer follows the size.
+broken sizes_primary_only experiments/web/sizes.toml "radii decrease as the web shrinks" \
+  params.secondary_spoke_stride=1000 params.end_time_s=0.0
+# Fig. 5.38: as in Fig. 5.33, the stride cut as the frame masses spread keeps the spokes' spacing.
+study combined_same_spacing experiments/web/combined.toml <<'TOML'
+[params]
+end_time_s = 0.0
+[[case]]
+label = "Fig. 5.34 (preset)"
+spoke_rest_length_m = 0.003
+spoke_placement_m = 0.007
+frame_rest_length_m = 0.015
+frame_placement_m = 0.020
+secondary_spoke_stride = 6
+
+[[case]]
+label = "Fig. 5.35"
+spoke_rest_length_m = 0.003
+spoke_placement_m = 0.009
+frame_rest_length_m = 0.025
+frame_placement_m = 0.030
+secondary_spoke_stride = 4
+
+[[case]]
+label = "Fig. 5.36"
+spoke_rest_length_m = 0.005
+spoke_placement_m = 0.011
+frame_rest_length_m = 0.035
+frame_placement_m = 0.040
+secondary_spoke_stride = 3
+
+[[case]]
+label = "Fig. 5.37"
+spoke_rest_length_m = 0.007
+spoke_placement_m = 0.012
+frame_rest_length_m = 0.040
+frame_placement_m = 0.045
+secondary_spoke_stride = 3
+
+TOML
+broken combined_same_spacing "$scratch/combined_same_spacing.toml" "spokes fall row by row"
+
+# Figs. 5.24-5.28: the spiral stops spiral_free_masses masses short of the hub, so spreading the masses
+# widens the free zone; held at 42-45 mm (6, 5, 4, 3 masses) the coverage falls too little.
+study spiral_same_free_zone experiments/web/spiral_spacing.toml <<'TOML'
+[params]
+end_time_s = 0.0
+[[case]]
+label = "Fig. 5.24 (preset)"
+spoke_rest_length_m = 0.003
+spoke_placement_m = 0.007
+spiral_free_masses = 6
+[[case]]
+label = "Fig. 5.25"
+spoke_rest_length_m = 0.003
+spoke_placement_m = 0.009
+spiral_free_masses = 5
+[[case]]
+label = "Fig. 5.26"
+spoke_rest_length_m = 0.005
+spoke_placement_m = 0.011
+spiral_free_masses = 4
+[[case]]
+label = "Fig. 5.27"
+spoke_rest_length_m = 0.007
+spoke_placement_m = 0.015
+spiral_free_masses = 3
+TOML
+broken spiral_same_free_zone "$scratch/spiral_same_free_zone.toml" \
+  "the hub's free zone takes about 6% of the coverage at 15 mm placement"
