@@ -43,4 +43,6 @@ creaturelab_cli_test(containment)    # names cannot leave --out; links never wri
 creaturelab_cli_test(fit_output)     # fit spline: NaN and non-positive options exit 2; an existing output needs --force
 # baseline -o on a full 200 KiB tmpfs: exit 2, the old baseline whole. Skipped (77) without mount rights.
 creaturelab_cli_test(baseline_disk_full SKIP_RETURN_CODE 77)
+# Random damage to a small run's files (200 seeds): every tool exits 0-3 within 10 s, never a signal.
+creaturelab_cli_test(fuzz)
 creaturelab_cli_test(web_checks_fail) # each web claim check FAILs with its mechanism broken (Provot, wind, drag, spacing)
