@@ -98,11 +98,13 @@ int removeTemporaries(const std::string& dir, const std::function<bool(int)>& mi
     if (entry.path().extension() != ".tmp" || !isRunFile(entry.path())) continue;
     const int index = pointIndexOf(name);
     if (index < 0 ? !whole_folder : !mine(index)) continue;
-    if (const int fd = ::open(entry.path().c_str(), O_WRONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC); fd >= 0) {
-      struct stat st {};
-      if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink == 1)
-        (void)!::ftruncate(fd, 0);  // best effort: the unlink below is what matters
-      ::close(fd);
+    struct stat st {};
+    if (::lstat(entry.path().c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink == 1) {
+      if (const int fd = ::open(entry.path().c_str(), O_WRONLY | O_NOFOLLOW | O_CLOEXEC); fd >= 0) {
+        if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_nlink == 1)
+          (void)!::ftruncate(fd, 0);  // best effort: the unlink below is what matters
+        ::close(fd);
+      }
     }
     if (::unlink(entry.path().c_str()) == 0) ++removed;
   }

@@ -32,13 +32,14 @@ echo "ok   names from a reproduce list cannot leave --out"
 
 # §7: symbolic links planted as the runner's temporaries and sidecars are never written through.
 mkdir "$scratch/outside"
-for f in a b c d; do echo "keep $f" >"$scratch/outside/$f.txt"; done
+for f in a b c d e; do echo "keep $f" >"$scratch/outside/$f.txt"; done
 cp -r "$scratch/victim" "$scratch/planted"
 rm "$scratch/planted/point_000003.h5"
 ln -s "$scratch/outside/a.txt" "$scratch/planted/point_000003.h5.tmp"
 ln -s "$scratch/outside/b.txt" "$scratch/planted/index.h5.tmp"
+ln "$scratch/outside/e.txt" "$scratch/planted/point_000004.h5.tmp"  # a hard link: the same file, another name
 expect_code 0 planted "$bin" run "$exp" --out "$scratch/planted" --resume --jobs 1
-for f in a b; do
+for f in a b e; do
   [[ $(cat "$scratch/outside/$f.txt") == "keep $f" ]] || fail "--resume wrote through a planted link to $f.txt"
 done
 [[ -z $(find "$scratch/planted" -name '*.tmp') ]] || fail "planted links left: $(ls -l "$scratch/planted")"
