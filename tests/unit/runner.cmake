@@ -8,6 +8,7 @@ creaturelab_test(runner_test unit
     ${CMAKE_CURRENT_LIST_DIR}/runner_compare.cpp
     ${CMAKE_CURRENT_LIST_DIR}/runner_store.cpp
     ${CMAKE_CURRENT_LIST_DIR}/runner_lock.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/runner_sweep_size.cpp
   LIBS cl_runner
 )
 target_compile_definitions(runner_test PRIVATE CREATURELAB_TEST_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
