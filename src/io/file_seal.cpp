@@ -1,6 +1,7 @@
 #include "io/file_seal.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -75,8 +76,12 @@ void sealFile(const std::filesystem::path& path) {
 }
 
 SealCheck checkSeal(const std::filesystem::path& path) {
-  Descriptor file{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
+  // Non-blocking: a FIFO planted under a file's name would otherwise block here (and in libhdf5).
+  Descriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
   if (file.fd < 0) return {};
+  struct stat st {};
+  if (::fstat(file.fd, &st) != 0 || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode) || S_ISCHR(st.st_mode))
+    return {SealState::broken, "not a regular file"};
   std::array<char, kSealBlockBytes + 8> head{};
   const std::size_t got = readAt(file.fd, head.data(), head.size(), 0);
   const std::string_view bytes(head.data(), got);

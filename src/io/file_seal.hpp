@@ -27,7 +27,8 @@ struct SealCheck {
   std::string problem;  // for broken: what is wrong, in words
 };
 
-// Reads the whole file (a missing or unreadable file is SealState::none: opening it reports that).
+// Reads the whole file (a missing or unreadable file is SealState::none: opening it reports that;
+// a FIFO, socket or character device is broken: libhdf5 would block on it).
 SealCheck checkSeal(const std::filesystem::path& path);
 
 // Throws Hdf5Error "file "<path>": <problem>" when the seal is broken.

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -93,6 +94,13 @@ TEST_F(FileSealTest, AFileWithoutAUserBlockIsNotChecked) {
   }
   EXPECT_EQ(io::checkSeal(path).state, io::SealState::none);
   EXPECT_NO_THROW((void)io::File::openReadOnly(path));
+}
+
+TEST_F(FileSealTest, AFifoIsRefusedWithoutBlocking) {
+  const fs::path path = file("fifo.h5");
+  ASSERT_EQ(::mkfifo(path.c_str(), 0644), 0);
+  EXPECT_EQ(io::checkSeal(path).state, io::SealState::broken);
+  EXPECT_THROW((void)io::File::openReadOnly(path), io::Hdf5Error);
 }
 
 TEST_F(FileSealTest, ReadWriteKeepsTheSeal) {
