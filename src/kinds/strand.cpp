@@ -53,6 +53,9 @@ StrandKind::StrandKind() {
       integer("provot_passes", 10, 1, 1000000,
               "most Provot sweeps over the springs per step, repeated until no spring is over the limit (thesis: "
               "'run multiple times')"),
+      boolean("provot_exact", false,
+              "finish a step whose Provot sweeps leave a spring over the limit with an exact projection "
+              "(Goldenthal et al. 2007; not in the thesis)"),
       real("drag_ns_per_m", 1e-8, "N*s/m", 0, 1, "air friction (thesis §5.2.1: 0.00000001 Ns/m)"),
       real("gravity_m_per_s2", 9.81, "m/s^2", 0, 1000, "gravity, pulling along -y (thesis Eq. 4.6)"),
       choice("integrator", "rk4", {"euler", "symplectic_euler", "rk4", "implicit_euler"},
@@ -124,6 +127,7 @@ StrandSetup setupOf(const ParamReader& r) {
   opt.end_time_s = r.real("end_time_s");
   opt.settling_fraction = r.real("settling_fraction");
   opt.provot = {r.boolean("provot"), r.real("provot_max_strain"), int(r.integer("provot_passes"))};
+  opt.provot.exact_finish = r.boolean("provot_exact");
   return {std::move(net), std::move(state), opt};
 }
 

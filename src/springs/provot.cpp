@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 
 namespace creaturelab::springs {
 
@@ -51,6 +55,54 @@ long sweep(const Network<D>& network, double max_strain, double tolerance, State
   return corrected;
 }
 
+// The exact finish (provot.hpp). Returns true when no spring is over the limit (with tolerance).
+template <int D> bool projectExactly(const Network<D>& network, double max_strain, double tolerance, State<D>& s) {
+  constexpr int kNewtonSteps = 20;
+  std::vector<int> active;
+  std::vector<Vec<D>> u;
+  std::vector<double> c;
+  std::vector<std::vector<std::pair<int, double>>> at(network.particleCount());  // (active index, sign)
+  for (int step = 0;; ++step) {
+    active.clear();
+    u.clear();
+    c.clear();
+    bool over = false;
+    for (int e = 0; e < network.springCount(); ++e) {
+      const int a = network.spring_a[e], b = network.spring_b[e];
+      if (network.pinned[a] && network.pinned[b]) continue;
+      const Vec<D> l = s.x_m.col(a) - s.x_m.col(b);
+      const double len = l.norm(), max_len = (1.0 + max_strain) * network.rest_length_m[e];
+      over = over || len > max_len * (1.0 + tolerance);
+      if (len < max_len * (1.0 - 1e-6)) continue;
+      active.push_back(e);
+      u.push_back(l / len);
+      c.push_back(len - max_len);
+    }
+    if (!over) return true;
+    if (step == kNewtonSteps) return false;
+    for (auto& list : at) list.clear();
+    for (int i = 0; i < int(active.size()); ++i) {
+      const int a = network.spring_a[active[i]], b = network.spring_b[active[i]];
+      if (!network.pinned[a]) at[a].push_back({i, 1.0});
+      if (!network.pinned[b]) at[b].push_back({i, -1.0});
+    }
+    // (J W J^T)_ij = sum over free particles p shared by i and j of s_ip s_jp u_i . u_j.
+    std::vector<Eigen::Triplet<double>> entries;
+    for (const auto& list : at)
+      for (const auto& [i, si] : list)
+        for (const auto& [j, sj] : list) entries.emplace_back(i, j, si * sj * u[i].dot(u[j]));
+    const int m = int(active.size());
+    Eigen::SparseMatrix<double> A(m, m);
+    A.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+    if (ldlt.info() != Eigen::Success) return false;
+    const Eigen::VectorXd mu = ldlt.solve(-Eigen::Map<const Eigen::VectorXd>(c.data(), m));
+    if (ldlt.info() != Eigen::Success || !mu.allFinite()) return false;
+    for (int p = 0; p < network.particleCount(); ++p)
+      for (const auto& [i, si] : at[p]) s.x_m.col(p) += si * mu[i] * u[i];
+  }
+}
+
 }  // namespace
 
 template <int D>
@@ -71,7 +123,11 @@ ProvotResult applyProvot(const Network<D>& network, const ProvotOptions& options
       break;
     }
   }
-  r.max_strain = r.converged ? worst : maxStrain(network, s);
+  if (!r.converged && options.exact_finish) {
+    r.finished_exactly = true;
+    r.converged = projectExactly(network, options.max_strain, options.tolerance, s);
+  }
+  r.max_strain = r.converged && !r.finished_exactly ? worst : maxStrain(network, s);
   if (set_velocity && r.corrections > 0) {
     for (int p = 0; p < network.particleCount(); ++p)
       if (s.x_m.col(p) != before.col(p)) s.v_m_per_s.col(p) = (s.x_m.col(p) - step_start_x_m->col(p)) / dt_s;

@@ -75,6 +75,24 @@ TEST(SpringsProvot, SingleSpringIsCutToExactlyTheLimit) {
   EXPECT_NEAR((s.x_m.col(3) - sp::Vec<2>(10, 2.25)).norm(), 0.0, 1e-14);
 }
 
+// One sweep leaves the V chain over the limit; the exact finish (a Newton projection) brings every
+// spring to the limit within the tolerance, the anchors where they were.
+TEST(SpringsProvot, ExactFinishHoldsTheLimit) {
+  sp::State<2> s;
+  const auto n = sagged(s);
+  const sp::State<2> before = s;
+  sp::ProvotOptions opt{true, 0.1, 1};
+  opt.exact_finish = true;
+  const sp::ProvotResult r = sp::applyProvot(n, opt, s);
+  EXPECT_TRUE(r.finished_exactly);
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.max_strain, sp::maxStrain(n, s));
+  EXPECT_LE(r.max_strain, opt.max_strain + (1 + opt.max_strain) * opt.tolerance);
+  EXPECT_GT(r.max_strain, opt.max_strain - 1e-9);  // pulled taut, at the limit
+  EXPECT_EQ(s.x_m.col(0), before.x_m.col(0));
+  EXPECT_EQ(s.x_m.col(10), before.x_m.col(10));
+}
+
 // With the step's start positions and dt, a moved particle takes the velocity of its whole step
 // (x - x_start) / dt; a particle the sweeps leave alone keeps the integrator's velocity.
 TEST(SpringsProvot, MovedParticlesTakeTheVelocityOfTheirStep) {
