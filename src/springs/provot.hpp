@@ -30,15 +30,15 @@ struct ProvotOptions {
 struct ProvotResult {
   int passes = 0;          // sweeps made (the last one corrected nothing when converged)
   long corrections = 0;    // springs shortened, over all sweeps
-  bool converged = true;   // every spring within the limit (with tolerance) at the end
+  bool converged = true;          // every spring within the limit (with tolerance) at the end
   bool finished_exactly = false;  // the sweeps did not converge and the exact finish ran
-  double max_strain = 0;   // largest (|l| - r) / r after the last sweep's corrections
+  double max_strain = 0;   // largest (|l| - r) / r at the end
 };
 
 // The exact finish: Newton steps on |l_e| = (1 + max_strain) r_e for every spring at or over the limit
 // (within 1e-6 of it), each solving (J W J^T) mu = -c for the constraint values c, J the length gradients
 // and W the sweeps' weights (1 per free end, 0 pinned), then x += W J^T mu (the fast projection of
-// Goldenthal et al. 2007, "Efficient simulation of inextensible cloth", Eq. 9-11). Every active spring
+// Goldenthal et al. 2007, "Efficient simulation of inextensible cloth"). Every active spring
 // ends at the limit; springs the step pushed over it join the next step. At most 20 steps.
 // Disabled: does nothing and returns ProvotResult{} (max_strain 0 then means "not measured").
 // step_start_x_m (the positions before the step, or nullptr) and dt_s > 0 set the moved particles' velocities.
