@@ -46,3 +46,4 @@ creaturelab_cli_test(baseline_disk_full SKIP_RETURN_CODE 77)
 # Random damage to a small run's files (200 seeds): every tool exits 0-3 within 10 s, never a signal.
 creaturelab_cli_test(fuzz)
 creaturelab_cli_test(web_checks_fail) # each web claim check FAILs with its mechanism broken (Provot, wind, drag, spacing)
+creaturelab_cli_test(control_checks_fail) # each no-fluid controller claim check FAILs with its mechanism broken (wind, gravity, controller, ranges, contacts)

@@ -1,0 +1,190 @@
+#!/usr/bin/env bash
+# Every check that decides a no-fluid controller claim (Lentine et al. 2010, Figs. 2-6 and 9) fails when
+# the mechanism the claim rests on is broken: the claim file is run with the wind off (air of zero
+# density), gravity off, the controller off (zero strength), the joint ranges or the contacts removed,
+# through overrides or a study on it, and the check must then be FAIL in the table with exit code 1.
+# Runs are shortened (fewer frames, strengths, speeds, cases) only where the check still resolves.
+# usage: control_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
+
+# status NAME CHECK: the status column (ok, FAIL, KNOWN) of CHECK in run NAME's table.
+status() {
+  awk -v c="$2" 'index($0, c) == 1 { rest = substr($0, length(c) + 1); sub(/^ +/, "", rest); split(rest, f, " "); print f[1]; exit }' \
+    "$scratch/$1.out"
+}
+
+# broken NAME FILE CHECK OVERRIDES...: `run FILE OVERRIDES` exits 1 and prints CHECK as FAIL.
+broken() {
+  local name=$1 file=$2 check=$3 rc=0
+  shift 3
+  "$bin" run "$file" --out "$scratch/run_$name" --jobs 2 "$@" >"$scratch/$name.out" 2>"$scratch/$name.err" || rc=$?
+  [[ $rc == 1 ]] || { cat "$scratch/$name.out" "$scratch/$name.err" >&2; fail "$name: exit code $rc, expected 1"; }
+  [[ $(status "$name" "$check") == FAIL ]] || { cat "$scratch/$name.out" >&2; fail "$name: '$check' is not FAIL"; }
+  echo "ok   $name: '$check' fails"
+}
+
+# also NAME CHECK: CHECK is FAIL in run NAME too.
+also() {
+  [[ $(status "$1" "$2") == FAIL ]] || { cat "$scratch/$1.out" >&2; fail "$1: '$2' is not FAIL"; }
+  echo "ok   $1: '$2' fails"
+}
+
+# study NAME BASE: a study file in the scratch folder on the claim file BASE (its body from stdin).
+study() {
+  { echo "base = \"$src/$2\""; cat; } >"$scratch/$1.toml"
+}
+
+# Figs. 2, 3, 6: with no air the drag is zero everywhere, the block stays where it starts (30 degrees off
+# the flow) whatever it minimises, and every strength "converges" at once.
+broken block_no_wind experiments/control/block_wind.toml \
+  "minimising steady drag aligns the block with the flow (within 2 degrees, Fig. 6a)" \
+  params.density_kg_per_m3=0.0 'sweep.strength_rad_per_s=[0.5, 1.0]'
+also block_no_wind "maximising steady drag turns the block across the flow (within 2 degrees, Fig. 6b)"
+also block_no_wind "minimising: the converged frame falls as the strength grows (Fig. 2)"
+also block_no_wind "maximising: the converged frame falls as the strength grows (Fig. 2)"
+# Eq. 2's thickness term: the thin block in the thick block's place stops on the flow, not atan(t/L) off it
+# (the other cases, which the file's checks name, one frame long).
+study thin_for_thick experiments/control/block_wind.toml <<'TOML'
+[[case]]
+label = "min_drag"
+frames = 1
+average_frames = 1
+[[case]]
+label = "max_drag"
+frames = 1
+average_frames = 1
+[[case]]
+label = "min_drag_thick"
+model_file = "experiments/control/models/block.xml"
+objectives = "drag"
+senses = "min"
+steady_state = true
+TOML
+broken thin_for_thick "$scratch/thin_for_thick.toml" \
+  "a thick block (t/L = 0.1) stops where Eq. 2's drag is least, atan(t/L) = 5.7 degrees off the flow" \
+  'sweep.strength_rad_per_s=[1.0]'
+
+# Fig. 4: without gravity the wind alone turns the block flat along the flow (90 degrees, not 38);
+# without the wind it hangs in both cases: the leans' ratio is 1, not Eq. 2's 0.36.
+broken effort_no_gravity experiments/control/block_effort.toml \
+  "a 10 m/s wind leans the block 38 degrees from the vertical (Eq. 2 balance, within 1 degree)" \
+  params.gravity_m_per_s2=0.0
+broken effort_no_wind experiments/control/block_effort.toml \
+  "weaker wind, smaller lean (Fig. 4 b against a): Eq. 2's 13.9 / 38.4 = 0.36, each lean within one 0.95-degree step" \
+  params.density_kg_per_m3=0.0
+# Minimising drag instead of the effort (Eq. 1), the block turns edge-on to the wind, horizontal: off the
+# net force's line and fully loaded at every strength.
+broken effort_min_drag experiments/control/block_effort.toml \
+  "1 rad/s: the block's axis lies along the net external force at steady state (within 1 degree, §2.3)" \
+  params.objectives=drag
+also effort_min_drag "0.5 rad/s: the block's axis lies along the net external force at steady state (within 1 degree, §2.3)"
+also effort_min_drag "at 2 rad/s (a 1.9-degree step) the mean pose is within one step of the net force's line"
+also effort_min_drag "the sustained effort is near zero: mean torque below 2% of holding the block horizontal"
+
+# Figs. 4 and 6 in 3-D: no air, no drag to minimise or maximise; (c) without the controller the block
+# stays horizontal, across the net force and loaded.
+broken ball_no_wind experiments/control/block_ball.toml \
+  "(a) minimising steady drag reaches Eq. 2's least drag over all orientations, 2 rho u^2 / sqrt(sum A^-2) = 3.394 N" \
+  params.density_kg_per_m3=0.0
+also ball_no_wind "(b) maximising steady drag turns the broad face across the flow: 2 rho u^2 A = 240 N (within 2%)"
+study ball_no_control experiments/control/block_ball.toml <<'TOML'
+[[case]]
+label = "a_min_drag"
+frames = 1
+average_frames = 1
+[[case]]
+label = "b_max_drag"
+frames = 1
+average_frames = 1
+[[case]]
+label = "c_min_effort"
+gravity_m_per_s2 = 9.81
+steady_state = true
+initial_deg = "ball=0 0 0"
+strength_rad_per_s = 0.0
+TOML
+broken ball_no_control "$scratch/ball_no_control.toml" "(c) the block's line lies along the net external force in 3-D (within 2 degrees)"
+also ball_no_control "(c) the sustained effort is near zero: median torque below 5% of holding the block horizontal"
+
+# Fig. 9: without the controller the body stays bent 25 degrees forward, its centre of mass off the
+# back and the back loaded; without arm-leg contacts the arms never meet the legs.
+broken human_no_control experiments/control/human_gravity.toml \
+  "(a) the upper body's centre of mass ends above the lower back: offset below 2 cm (of 18 cm)" \
+  params.strength_rad_per_s=0.0 params.frames=150
+also human_no_control "(a) the back's effort is near its minimum: median torque below 5% of the upper body held horizontal"
+also human_no_control "(b) the right arm comes down: less than 0.8 of its raise in (a)"
+also human_no_control "(b) the left arm comes down from its 30-degree raise to rest by the thigh (within 10 degrees of hanging)"
+sed 's/conaffinity="2"/conaffinity="0"/' experiments/control/models/humanoid_upper.xml >"$scratch/no_contacts.xml"
+broken human_no_contacts experiments/control/human_gravity.toml "the arms meet the legs: contacts are on and used" \
+  "params.model_file=\"$scratch/no_contacts.xml\"" params.frames=60
+
+# Fig. 5: with no air nothing pushes the body: it does not lean into the wind and its lean cannot grow
+# with the wind speed (case (a) at two speeds; the other cases, which the file's checks name, one frame).
+study human_wind_a experiments/control/human_wind.toml <<'TOML'
+[params]
+frames = 100
+[[case]]
+label = "a_all_min_back"
+objectives = "effort, effort, effort"
+senses = "min, min, min"
+weights = "1,0,0; 1,0,0; 1,0,0"
+[[case]]
+label = "b_arms_average"
+objectives = "effort, effort, effort"
+senses = "min, min, min"
+frames = 1
+average_frames = 1
+[[case]]
+label = "c_arms_min_drag"
+objectives = "effort, effort, effort"
+senses = "min, min, min"
+frames = 1
+average_frames = 1
+[[case]]
+label = "d_ball_arms_min_drag"
+objectives = "effort, effort, effort"
+senses = "min, min, min"
+frames = 1
+average_frames = 1
+TOML
+broken human_no_wind "$scratch/human_wind_a.toml" "(a) the body leans into the wind (upstream, more than 5 degrees)" \
+  params.density_kg_per_m3=0.0 'sweep.wind_x_m_per_s=[10.0, 30.0]'
+also human_no_wind "(a) the lean into the wind grows with the wind, 5-30 m/s"
+# Without the joint ranges the back follows the zero-effort lean of a 30 m/s wind past its 25-degree
+# extension.
+sed 's/limited="true"/limited="false"/' experiments/control/models/humanoid_upper.xml >"$scratch/no_ranges.xml"
+broken human_no_ranges "$scratch/human_wind_a.toml" \
+  "(a) the back bends back no further than its 25-degree extension (anatomy; one 0.95-degree step of chatter) and never forward, 5-30 m/s" \
+  "params.model_file=\"$scratch/no_ranges.xml\"" 'sweep.wind_x_m_per_s=[10.0, 30.0]'
+# Fig. 5 (c): with no air there is no drag for the arms to minimise: they stay where they start (60 and 30
+# degrees forward) instead of trailing along the flow (case (c) alone at 10 m/s).
+study human_wind_c experiments/control/human_wind.toml <<'TOML'
+[params]
+frames = 100
+[[case]]
+label = "a_all_min_back"
+objectives = "effort, effort, effort"
+senses = "min, min, min"
+frames = 1
+average_frames = 1
+[[case]]
+label = "b_arms_average"
+objectives = "effort, effort, effort"
+senses = "min, min, min"
+frames = 1
+average_frames = 1
+[[case]]
+label = "c_arms_min_drag"
+objectives = "effort, drag, drag"
+senses = "min, min, min"
+[[case]]
+label = "d_ball_arms_min_drag"
+objectives = "effort, effort, effort"
+senses = "min, min, min"
+frames = 1
+average_frames = 1
+TOML
+broken human_arms_no_wind "$scratch/human_wind_c.toml" \
+  "(c) the right arm is held back along the flow (hand downstream, past its 60-degree start by more than one 0.95-degree step)" \
+  params.density_kg_per_m3=0.0 'sweep.wind_x_m_per_s=[10.0]'
+also human_arms_no_wind "(c) the left arm is held back along the flow (from its 30-degree start)"
