@@ -87,6 +87,8 @@ broken ball_no_wind experiments/control/block_ball.toml \
   "(a) minimising steady drag reaches Eq. 2's least drag over all orientations, 2 rho u^2 / sqrt(sum A^-2) = 3.394 N" \
   params.density_kg_per_m3=0.0
 also ball_no_wind "(b) maximising steady drag turns the broad face across the flow: 2 rho u^2 A = 240 N (within 2%)"
+also ball_no_wind "(a) ... edge-on with the diagonal into the flow: the block's line 45.0 degrees off the flow (within 2)"
+also ball_no_wind "(b) ... with the block's line across the flow (within 2 degrees)"
 study ball_no_control experiments/control/block_ball.toml <<'TOML'
 [[case]]
 label = "a_min_drag"
