@@ -5,8 +5,9 @@
 #
 # A target or source with its own instruction-set flags (-m..., e.g. the fluid library, the AVX2
 # files of ib, the sampler test) takes none: a header precompiled without those flags is unusable
-# there, and Eigen must not be compiled with them (CMakeLists.txt, AVX2). This is checked when
-# the directory is done, after its target_compile_options and source properties are set.
+# there, and Eigen must not be compiled with them (CMakeLists.txt, AVX2). Nor does a target
+# compiled with -pthread (charlotte, through pangocairo), whose _REENTRANT the compiler checks.
+# This is decided when the directory is done, after its options and source properties are set.
 option(CREATURELAB_PCH "Precompiled headers for the standard library, Eigen and GoogleTest" ON)
 
 set(CREATURELAB_PCH_HEADERS
@@ -25,11 +26,11 @@ if(CREATURELAB_PCH)
   target_precompile_headers(cl_pch_test PRIVATE ${CREATURELAB_PCH_HEADERS} <gtest/gtest.h>)
 endif()
 
-# True when a list of compile options holds an instruction-set flag (-m...).
+# True when compile options hold a flag the precompiled headers were not built with (-m..., -pthread).
 function(_creaturelab_has_isa_flags out)
   set(found FALSE)
   foreach(option IN LISTS ARGN)
-    if(option MATCHES "(^|[ ;>:])-m")
+    if(option MATCHES "(^|[ ;>:])(-m|-pthread)")
       set(found TRUE)
     endif()
   endforeach()
@@ -39,6 +40,13 @@ endfunction()
 function(_creaturelab_apply_pch target kind)
   get_target_property(options ${target} COMPILE_OPTIONS)
   get_target_property(flags ${target} COMPILE_FLAGS)
+  get_target_property(links ${target} LINK_LIBRARIES)
+  foreach(link IN LISTS links)
+    if(TARGET ${link})
+      get_target_property(link_options ${link} INTERFACE_COMPILE_OPTIONS)
+      list(APPEND options ${link_options})
+    endif()
+  endforeach()
   _creaturelab_has_isa_flags(isa "${options}" "${flags}")
   if(isa)
     return()
