@@ -17,7 +17,9 @@ set(CREATURELAB_PCH_HEADERS
 
 if(CREATURELAB_PCH)
   set(anchor "${CMAKE_CURRENT_BINARY_DIR}/creaturelab_pch_anchor.cpp")
-  file(WRITE "${anchor}" "// The precompiled headers' owner targets need one source.\n")
+  if(NOT EXISTS "${anchor}")   # written once: a new time stamp would rebuild the owners
+    file(WRITE "${anchor}" "// The precompiled headers' owner targets need one source.\n")
+  endif()
   add_library(cl_pch_lib STATIC EXCLUDE_FROM_ALL "${anchor}")
   target_link_libraries(cl_pch_lib PRIVATE Eigen3::Eigen)
   target_precompile_headers(cl_pch_lib PRIVATE ${CREATURELAB_PCH_HEADERS})
