@@ -3,8 +3,14 @@ BUILD      ?= build
 ASAN_BUILD ?= build-asan
 JOBS       ?= $(shell nproc)
 CMAKE_ARGS ?=
+# New build trees use Ninja (scripts/deps.sh installs it); an existing tree keeps its generator.
+generator = $(if $(wildcard $(1)/CMakeCache.txt),,-G Ninja)
+# The sanitizer tree at -O1 with line tables (-g1: file and line in reports): it compiles in about
+# half the time of RelWithDebInfo's -O2 -g.
+ASAN_FLAGS = -O1 -g1 -DNDEBUG
+REPRO_LOG  = $(BUILD)/reproduce-build.log
 
-.PHONY: all deps configure build test test-asan reproduce reproduce-full bench clean
+.PHONY: all deps configure build test test-asan test-quick reproduce-build reproduce reproduce-full bench clean
 
 all: build
 
@@ -12,8 +18,9 @@ deps:
 	@scripts/deps.sh
 
 configure: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS) >/dev/null
+	@cmake -S . -B $(BUILD) $(call generator,$(BUILD)) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS) >/dev/null
 
+# The libraries, the binary and the test programs (the benchmarks: make bench).
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
@@ -22,11 +29,26 @@ test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 	@$(MAKE) --no-print-directory test-asan
 
+# The sanitizer tree builds only the unit-test programs and the libraries they link.
 test-asan: deps
-	@cmake -S . -B $(ASAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCREATURELAB_SANITIZE=ON \
+	@cmake -S . -B $(ASAN_BUILD) $(call generator,$(ASAN_BUILD)) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$(ASAN_FLAGS)" -DCREATURELAB_SANITIZE=ON \
 	  -DCREATURELAB_BUILD_BENCH=OFF -DCREATURELAB_WITH_MPI=OFF $(CMAKE_ARGS) >/dev/null
-	@cmake --build $(ASAN_BUILD) -j $(JOBS)
+	@cmake --build $(ASAN_BUILD) -j $(JOBS) --target unit_tests
 	ASAN_OPTIONS=detect_leaks=0 ctest --test-dir $(ASAN_BUILD) -L unit --output-on-failure -j $(JOBS)
+
+# One module's unit tests in the Release tree, for the edit-compile-test loop: builds what they
+# need and runs them, e.g. make test-quick MODULE=fluid (the modules: tests/unit/*.cmake).
+test-quick: $(if $(wildcard $(BUILD)/CMakeCache.txt),,configure)
+	@[ -n "$(MODULE)" ] && [ -f tests/unit/$(MODULE).cmake ] || { echo "usage: make test-quick MODULE=<$$(cd tests/unit && ls *.cmake | sed 's/\.cmake$$//' | paste -sd'|')>" >&2; exit 2; }
+	@cmake --build $(BUILD) -j $(JOBS) --target quick_$(MODULE)
+
+# The binary alone, for the runs; the dependency check's and the compiler's output go to REPRO_LOG.
+reproduce-build:
+	@mkdir -p $(BUILD); echo "reproduce: building creaturelab (log: $(REPRO_LOG))"; \
+	  { scripts/deps.sh && cmake -S . -B $(BUILD) $(call generator,$(BUILD)) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS) \
+	    && cmake --build $(BUILD) -j $(JOBS) --target creaturelab; } >$(REPRO_LOG) 2>&1 \
+	  || { tail -n 40 $(REPRO_LOG) >&2; echo "reproduce: the build failed (whole log: $(REPRO_LOG))" >&2; exit 1; }
 
 # The runs; the contraction spline fitted to the reproduced bell; every figure drawn from the HDF5
 # alone (analysis/draw_runs.py); report.html + REPORT.md (analysis/report.py), whose paths are the
@@ -49,14 +71,15 @@ define reproduce_in
 	  exit $$status
 endef
 
-reproduce: build
+reproduce: reproduce-build
 	$(call reproduce_in,experiments/reproduce.toml,$(REPRO_OUT))
 
 # The resolved (long) versions; the list says how long it takes before it starts.
-reproduce-full: build
+reproduce-full: reproduce-build
 	$(call reproduce_in,experiments/reproduce_full.toml,results/runs/reproduce_full)
 
-bench: build
+bench: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target benches
 	@for b in $(BUILD)/tests/bench_*; do [ -x "$$b" ] && "$$b"; done
 
 clean:

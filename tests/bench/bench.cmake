@@ -1,8 +1,11 @@
-# Google Benchmark programs: speed targets live here, never in timed unit tests.
+# Google Benchmark programs: speed targets live here, never in timed unit tests. Built by the
+# `benches` target (make bench), not by the default build that make test runs.
+add_custom_target(benches)
 function(creaturelab_bench name)
   cmake_parse_arguments(B "" "" "SOURCES;LIBS" ${ARGN})
-  add_executable(${name} ${B_SOURCES})
+  add_executable(${name} EXCLUDE_FROM_ALL ${B_SOURCES})
   target_link_libraries(${name} PRIVATE ${B_LIBS} benchmark::benchmark_main)
+  add_dependencies(benches ${name})
 endfunction()
 include(bench/springs.cmake OPTIONAL)
 include(bench/fluid.cmake OPTIONAL)
