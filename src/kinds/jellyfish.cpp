@@ -31,9 +31,10 @@ std::vector<Knot> knots(const ParamReader& r) {
   return out;
 }
 
-// Calibrated parameters of the active-tension bell: B was chosen to put the pluck's natural frequency f_n near the
-// paper's resonant 0.7 Hz (Rudolf & Mould 2009 §3.3, Fig. 5), T_max to close the bell toward Fig. 3's 0.56 of
-// its diameter.
+// Constants of the active-tension bell the paper does not give: B was chosen on a 200² grid to put the pluck's
+// natural frequency f_n near the resonant 0.7 Hz (Rudolf & Mould 2009 §3.3, Fig. 5), T_max in a less viscous
+// fluid to close the bell to Fig. 3's 0.56 of its diameter; on the default setting the bell rings lower and
+// closes less (experiments/jellyfish/frequency.toml's pluck, morphology.toml's known deviation).
 constexpr double kCalibratedBendingRigidity = 1.0e-4;
 constexpr double kCalibratedTension = 14.0;
 
@@ -257,8 +258,8 @@ JellyfishKind::JellyfishKind() {
            "leak small"),
       real("bell_modulus_pa", bell.bell_modulus_pa, "Pa", 1e-6, 1e12, "bell mesoglea, λ = 1186 Pa (Fig. 12); k = E t / L"),
       real("bending_rigidity_n_m", kCalibratedBendingRigidity, "N m", 0, 1e6,
-           "bending rigidity B per metre of depth (a joint's angular spring is B / L); calibrated so that f_n sits "
-           "near the paper's resonant 0.7 Hz (§3.3, Fig. 5)"),
+           "bending rigidity B per metre of depth (a joint's angular spring is B / L); not given by the paper, "
+           "chosen on a 200² grid for a pluck ringing near §3.3's resonant 0.7 Hz"),
       real("stiffness_scale", 1.0, "", 1e-3, 1e3,
            "multiplies bell_modulus_pa and bending_rigidity_n_m together"),
       choice("muscle_model", "active_tension", {"rest_length", "active_tension"},
