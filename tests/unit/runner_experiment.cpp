@@ -645,12 +645,12 @@ TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
     ~Restore() { std::filesystem::current_path(dir); }
   } restore{here};
   int n = 0;
-  std::vector<std::filesystem::path> files;
+  std::vector<std::filesystem::path> shipped;
   for (const char* top : {"experiments", "studies"})
     for (const auto& entry :
          std::filesystem::recursive_directory_iterator(std::filesystem::path(CREATURELAB_TEST_SOURCE_DIR) / top))
-      files.push_back(entry.path());
-  for (const std::filesystem::path& path : files) {
+      shipped.push_back(entry.path());
+  for (const std::filesystem::path& path : shipped) {
     const auto entry = std::filesystem::directory_entry(path);
     if (entry.path().extension() != ".toml") continue;
     if (entry.path().parent_path().filename() == "fit") continue;
