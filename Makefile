@@ -55,16 +55,14 @@ reproduce-build:
 # last lines printed. The runs' exit code stands (4 when only drawing or the report failed).
 REPRO_OUT ?= results/runs/reproduce
 # The Hermite contraction curve (Rudolf & Mould §3.3) fitted to the staggered bell's diameter over
-# the cycles after its warm-up at 0.65 Hz: point 0 of stagger (make reproduce-full) or of
-# stagger_quick (make reproduce), the pulse released from the apex first (analysis/figures/catalog.py
-# repeats this command).
+# the cycles after its warm-up at 0.65 Hz: point 0 of the Fig. 4 claim's run (stagger), the pulse
+# released from the apex first (analysis/figures/catalog.py repeats this command).
 FIT_SPLINE = fit spline
 FIT_SPLINE_ARGS = --point 0 --knots 4 --from 1.5384615384615385
 define reproduce_in
 	@$(BUILD)/creaturelab reproduce --list $(1) --out $(2); status=$$?; \
-	  fit_run=$$(for r in stagger stagger_quick; do [ -f $(2)/$$r/index.h5 ] && echo $$r && break; done); \
-	  if [ -n "$$fit_run" ]; then rm -rf $(2)/fit_spline; \
-	    $(BUILD)/creaturelab $(FIT_SPLINE) $(2)/$$fit_run $(FIT_SPLINE_ARGS) --out $(2)/fit_spline >/dev/null \
+	  if [ -f $(2)/stagger/index.h5 ]; then rm -rf $(2)/fit_spline; \
+	    $(BUILD)/creaturelab $(FIT_SPLINE) $(2)/stagger $(FIT_SPLINE_ARGS) --out $(2)/fit_spline >/dev/null \
 	      || status=$$((status ? status : 4)); fi; \
 	  /usr/bin/python3 analysis/draw_runs.py $(2) >/dev/null || status=$$((status ? status : 4)); \
 	  /usr/bin/python3 analysis/report.py $(2) || status=$$((status ? status : 4)); \
