@@ -3,19 +3,9 @@
 # old baseline stays whole (it was left as a 0-byte file), with no temporary file behind. Needs
 # root (mount); exits 77 (ctest SKIP_RETURN_CODE) with the reason when it cannot make the filesystem.
 # usage: baseline_disk_full.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
 bin=$1 src=$2 scratch=$3
-cd "$src"
-fail() { echo "FAIL: $*" >&2; exit 1; }
-small=$scratch/small
-if mountpoint -q "$small" 2>/dev/null; then umount "$small"; fi
-rm -rf "$scratch"
-mkdir -p "$small"
-if ! mount -t tmpfs -o size=200k tmpfs "$small" 2>"$scratch/mount.stderr"; then
-  echo "skip: cannot mount a small tmpfs here ($(id -un): $(cat "$scratch/mount.stderr"))"
-  exit 77
-fi
-trap 'umount "$small" 2>/dev/null || true' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/small_tmpfs.sh"  # fail, small_tmpfs
+small_tmpfs 200k
 
 "$bin" run tests/cli/strand_sweep.toml --out "$scratch/run" --jobs 2 >/dev/null 2>&1 || fail "run failed"
 "$bin" baseline "$scratch/run" -o "$small/base.json" || fail "baseline failed"

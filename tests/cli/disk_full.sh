@@ -5,19 +5,9 @@
 # left, and the points written before it readable and listed in index.h5. Needs root (mount);
 # exits 77 (ctest SKIP_RETURN_CODE) with the reason when the machine cannot make the filesystem.
 # usage: disk_full.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
-set -euo pipefail
 bin=$1 src=$2 scratch=$3
-cd "$src"
-fail() { echo "FAIL: $*" >&2; exit 1; }
-small=$scratch/small
-if mountpoint -q "$small" 2>/dev/null; then umount "$small"; fi
-rm -rf "$scratch"
-mkdir -p "$small"
-if ! mount -t tmpfs -o size=300k tmpfs "$small" 2>"$scratch/mount.stderr"; then
-  echo "skip: cannot mount a small tmpfs here ($(id -un): $(cat "$scratch/mount.stderr"))"
-  exit 77
-fi
-trap 'umount "$small" 2>/dev/null || true' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/small_tmpfs.sh"  # fail, small_tmpfs
+small_tmpfs 300k
 
 # 6 points of ~52 KB each: the sixth does not fit.
 run=$small/run
