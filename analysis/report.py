@@ -1,31 +1,52 @@
 #!/usr/bin/python3
 """Writes report.html and REPORT.md for the runs under a folder (`make reproduce`:
-results/runs/reproduce): per paper, per figure, the paper's figure number and claim, what we
-measured (the checks' values), each check's status (ok / FAILED / KNOWN with the reason), the figure
-and the command that remakes it. Runs the catalog (analysis/figures/catalog.py) does not name are
-listed under "Other runs" with their checks and every PNG drawn for them, so new kinds are reported
-without an edit here. Everything is read from the run folders' HDF5 files and PNGs.
+results/runs/reproduce): provenance first (commit, build, date, machine, wall time), then per paper
+and per figure one verdict (reproduced, deviates, FAILED, inconclusive on the quick setting, not run
+in this list, figure only), the paper's claim, what we measured (each check's values with units),
+the run's setting (default, QUICK with its distance from the default, study), the figures and the
+command that remakes them. Runs the catalog (analysis/figures/catalog.py) does not name are listed
+under "Other runs" with their checks and every PNG drawn for them, so new kinds are reported without
+an edit here. Everything is read from the run folders' HDF5 files and PNGs, plus the default
+setting's values (docs/validation/values.json) a QUICK run is compared with.
 
-usage: /usr/bin/python3 analysis/report.py ROOT    (prints the two paths written)
+usage: /usr/bin/python3 analysis/report.py ROOT [--values values.json]   (prints the two paths written)
 """
-import html
+import argparse
+import glob
 import os
+import re
 import shlex
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import report_html  # noqa: E402
+import report_md  # noqa: E402
+import report_provenance as P  # noqa: E402
+import report_timing  # noqa: E402
+import report_units as U  # noqa: E402
 from figures import catalog, runs  # noqa: E402
 
-STATUS_CLASS = {"ok": "ok", "FAILED": "failed", "KNOWN": "known"}
+# The verdicts of a paper figure, in the order the headline counts them.
+VERDICTS = ["reproduced", "deviates", "FAILED", "inconclusive on the quick setting", "not run in this list",
+            "figure only"]
+STATUSES = ["ok", "KNOWN", "FAILED", "inconclusive"]
 
 
 class Section:
-    """One reported figure: its catalog row (or None for an uncatalogued run), the run, its checks
-    and its PNGs."""
+    """One reported figure (a catalog row) or uncatalogued run: its claim, run, checks (with units),
+    PNGs, remaking command and verdict."""
 
     def __init__(self, title, claim, run, checks, pngs, command, paper=None):
         self.title, self.claim, self.run, self.checks, self.pngs = title, claim, run, checks, pngs
         self.command, self.paper = command, paper
+        self.verdict, self.notes, self.figures_with, self.module = "", [], None, None
+        self.setting = P.setting(run) if run else ""
+        self.prov = P.provenance(run) if run else {}
+        self.anchor = slug((paper.key + "-" if paper else "run-") + title)
+
+
+def slug(s):
+    return re.sub(r"[^a-z0-9]+", "-", s.lower()).strip("-")
 
 
 def regenerate(run, root, module, row_command=None):
@@ -63,212 +84,192 @@ def claimed_checks(run, rows):
 
 def experiment_file(run_name):
     """experiments/*/<run_name>.toml when there is one (the run folder is named by its stem)."""
-    import glob
-
-    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    found = sorted(glob.glob(os.path.join(here, "experiments", "*", run_name + ".toml")))
-    return os.path.relpath(found[0], here) if found else None
+    found = sorted(glob.glob(os.path.join(P.REPO, "experiments", "*", run_name + ".toml")))
+    return os.path.relpath(found[0], P.REPO) if found else None
 
 
-def build(root):
+def finder(found):
+    """find(claim) -> the run folder of a catalog row's claim: the folder of that name, else a run of
+    the claim's QUICK version (P.claim_key)."""
+    by_key = {}
+    for run in found.values():
+        by_key.setdefault(P.claim_key(run), run)
+    return lambda key: found.get(key) or by_key.get(key)
+
+
+def annotate(section, key, values, lists):
+    """Each check's expected and measured texts with units; for a QUICK run its default's value and
+    the distance (values.json); then the section's verdict."""
+    units = section.run.units if section.run else {}
+    for c in section.checks:
+        c["default_note"] = ""
+        uncertainty = None
+        if section.setting == "QUICK":
+            d = P.default_of(values, key, c["name"])
+            if d is None:
+                c["default_note"] = "distance from default not measured"
+            else:
+                got, commit = d
+                dist = P.distance(str(c.get("got", "")), got)
+                exp_u, got_u = U.check_texts({**c, "got": got}, units)
+                full = P.where_run(key, lists)[0]
+                where = (full[0] if full else "default setting") + (f", commit {commit[:10]}" if commit else "")
+                if dist is None:
+                    c["default_note"] = f"default: {got_u} ({where}); distance not comparable"
+                else:
+                    unit = U.unit_of_number(c, units, dist[2])
+                    uncertainty = dist[0] or None
+                    c["default_note"] = (f"default: {got_u} ({where}), distance {U.quantity(dist[0], unit)} "
+                                         f"({U.number(100 * dist[1], 2)} %)")
+        c["expected_u"], c["got_u"] = U.check_texts(c, units, uncertainty)
+    verdict(section)
+
+
+def verdict(s):
+    """The section's verdict, by priority: not run, figure only, FAILED, inconclusive, deviates,
+    reproduced; its notes say why, for every check that did not simply pass."""
+    st = [c["status"] for c in s.checks]
+    if s.run is None:
+        s.verdict = "not run in this list"
+        return
+    if not st:
+        s.verdict = "figure only"
+        s.notes = ["no check decides this claim: the figure shows it"]
+        return
+    s.verdict = ("FAILED" if "FAILED" in st else "inconclusive on the quick setting" if "inconclusive" in st
+                 else "deviates" if "KNOWN" in st else "reproduced")
+    why = {"FAILED": "FAILED", "inconclusive": "inconclusive (the quick setting cannot resolve it)",
+           "KNOWN": "known deviation"}
+    s.notes = [f"{why[c['status']]}: {c['name']}: measured {c['got_u']}, the claim {c['expected_u']}" +
+               (f". Why: {c['known_deviation']}" if c["status"] == "KNOWN" and c["known_deviation"] else "")
+               for k in ("FAILED", "inconclusive", "KNOWN") for c in s.checks if c["status"] == k]
+
+
+def build(root, values):
     found = {os.path.basename(p): runs.Run(p) for p in runs.runs_under(root)}
+    find = finder(found)
+    lists = P.list_entries()
     # Each catalogued run's checks, split between the rows drawn from it.
-    checks_of = {}
-    for name in dict.fromkeys(f.run for f in catalog.FIGURES):
-        rows = catalog.figures_of_run(name)
-        per_row, rest = claimed_checks(found.get(name), rows)
+    checks_of, used_runs = {}, set()
+    for key in dict.fromkeys(f.run for f in catalog.FIGURES):
+        rows = catalog.figures_of_run(key)
+        per_row, rest = claimed_checks(find(key), rows)
         if rest:  # checks no row names: shown with the run's last row
             per_row[-1] = per_row[-1] + rest
-        checks_of.update({id(r): c for r, c in zip(rows, per_row)})
-    papers = []
-    used_pngs = set()
+        checks_of.update({id(r): [dict(c) for c in cs] for r, cs in zip(rows, per_row)})
+    papers, used_pngs = [], set()
     for paper in catalog.PAPERS:
         sections = []
         for row in (f for f in catalog.FIGURES if f.paper == paper.key):
-            run = found.get(row.run)
-            pngs = [p for p in (run.figures() if run else []) if os.path.basename(p).startswith(row.module)]
+            run = find(row.run)
+            if run is not None:
+                used_runs.add(run.name)
+            pngs = ([p for p in run.figures() if os.path.basename(p).startswith(row.module)]
+                    if run and row.module else [])
             used_pngs.update(pngs)
             if run is None and not row.command and experiment_file(row.run):
                 folder = shlex.quote(os.path.join(root, row.run))
-                command = (f"build/creaturelab run {experiment_file(row.run)} --out {folder} && "
-                           f"/usr/bin/python3 analysis/figures/{row.module}.py {folder}")
+                draw = (f"/usr/bin/python3 analysis/figures/{row.module}.py {folder}" if row.module
+                        else f"/usr/bin/python3 analysis/draw_runs.py {folder}")
+                command = f"build/creaturelab run {experiment_file(row.run)} --out {folder} && {draw}"
             else:
                 command = regenerate(run, root, row.module, row.command)
-            sections.append(Section(row.figure, row.claim, run, checks_of[id(row)], pngs, command, paper))
+            s = Section(row.figure, row.claim, run, checks_of[id(row)], pngs, command, paper)
+            s.module = row.module
+            annotate(s, row.run, values, lists)
+            if run is None:
+                s.notes = [P.not_run_text(row.run, lists, experiment_file(row.run))]
+            sections.append(s)
         papers.append((paper, sections))
-    catalogued = {f.run for f in catalog.FIGURES}
+    # Rows drawn by the kind's plotter (module None): the run's first such row shows its other PNGs.
+    first = {}
+    for _, sections in papers:
+        for s in sections:
+            if s.run is None or s.module is not None:
+                continue
+            if s.run.name in first:
+                s.figures_with = first[s.run.name]
+                continue
+            first[s.run.name] = s
+            s.pngs = [p for p in s.run.figures() if p not in used_pngs]
+            used_pngs.update(s.pngs)
     others = []
     for name, run in found.items():
-        if name in catalogued:
+        if name in used_runs:
             continue
         pngs = run.figures()
         used_pngs.update(pngs)
-        others.append(Section(name, run.title, run, run.checks, pngs, regenerate(run, root, None)))
+        s = Section(name, run.title, run, [dict(c) for c in run.checks], pngs, regenerate(run, root, None))
+        annotate(s, P.claim_key(run), values, lists)
+        others.append(s)
     # PNGs the kinds' plotters drew for catalogued runs beside the paper figures.
     extra = {}
     for name, run in found.items():
-        if name in catalogued:
+        if name in used_runs:
             rest = [p for p in run.figures() if p not in used_pngs]
             if rest:
                 extra[name] = rest
-    return papers, others, extra, found
+    tables = timing_tables(find, found)
+    return papers, others, extra, found, tables
+
+
+def cores_text(found):
+    provs = [P.provenance(r) for r in found.values()]
+    machines = sorted({f"{p['cpu_model']} ({p['cpu_cores']} cores)" for p in provs if p["cpu_cores"] != P.NOT_RECORDED})
+    return "our machine: " + ("; ".join(machines) if machines else "CPU and cores not recorded")
+
+
+def timing_tables(find, found):
+    """Lentine Figs. 10 and 14 when the folder holds any of their runs."""
+    if not any(find(k) for k in ("parallel_dofs", "parallel_dofs_fluid", "block_flow", "human_wind")):
+        return []
+    cores = cores_text(found)
+    return [report_timing.fig10(find("parallel_dofs"), find("parallel_dofs_fluid"), cores),
+            report_timing.fig14(find, cores)]
 
 
 def counts(papers, others):
-    n = {"ok": 0, "FAILED": 0, "KNOWN": 0}
+    """(verdicts over the paper figures, check statuses over every run shown)."""
+    v = {k: 0 for k in VERDICTS}
+    n = {k: 0 for k in STATUSES}
     for _, secs in papers:
         for s in secs:
-            for c in s.checks:
-                n[c["status"]] += 1
-    for s in others:
+            v[s.verdict] += 1
+    for s in [s for _, secs in papers for s in secs] + others:
         for c in s.checks:
             n[c["status"]] += 1
-    return n
+    return v, n
 
 
-def rel(path, root):
-    return os.path.relpath(path, root)
-
-
-# --- HTML -------------------------------------------------------------------------------------
-CSS = """body{font-family:sans-serif;max-width:1200px;margin:1em auto;padding:0 1em;color:#222}
-h1{font-size:1.5em}h2{font-size:1.25em;border-bottom:1px solid #ccc;margin-top:2em}h3{font-size:1.05em;margin-bottom:.2em}
-table{border-collapse:collapse;font-size:.85em;margin:.4em 0}td,th{border:1px solid #ddd;padding:2px 6px;text-align:left;vertical-align:top}
-.ok{color:#176f2c;font-weight:bold}.failed{color:#b00020;font-weight:bold}.known{color:#a05a00;font-weight:bold}
-.claim{font-style:italic}.cmd{font-family:monospace;font-size:.8em;background:#f4f4f4;padding:4px;word-break:break-all}
-img{max-width:100%;border:1px solid #eee;margin:4px 0}.thumbs img{width:300px}.missing{color:#b00020}"""
-
-
-def html_checks(checks):
-    if not checks:
-        return "<p>measured: figure only (no check decides this claim)</p>"
-    rows = []
-    for c in checks:
-        status = c["status"]
-        reason = f"<br><small>{html.escape(c['known_deviation'])}</small>" if status == "KNOWN" else ""
-        rows.append(f"<tr><td class=\"{STATUS_CLASS[status]}\">{status}</td><td>{html.escape(c['name'])}{reason}</td>"
-                    f"<td>{html.escape(c['expected'])}</td><td>{html.escape(c['got'])}</td></tr>")
-    return ("<table><tr><th>status</th><th>check</th><th>expected</th><th>measured</th></tr>" + "".join(rows) +
-            "</table>")
-
-
-def html_section(s, root, level="h3"):
-    out = [f"<{level}>{html.escape(s.title)}</{level}>", f"<p class=\"claim\">{html.escape(s.claim)}</p>"]
-    if s.run is None:
-        out.append("<p class=\"missing\">not reproduced: its run folder is missing under this root</p>")
-    else:
-        out.append(f"<p>run: <code>{html.escape(rel(s.run.folder, root))}</code> — {html.escape(s.run.title)}</p>")
-        out.append(html_checks(s.checks))
-        if not s.pngs:
-            out.append("<p class=\"missing\">no figure was drawn</p>")
-        for p in s.pngs:
-            r = html.escape(rel(p, root))
-            out.append(f"<a href=\"{r}\"><img src=\"{r}\" alt=\"{html.escape(os.path.basename(p))}\"></a>")
-    out.append(f"<p class=\"cmd\">{html.escape(s.command)}</p>")
-    return "\n".join(out)
-
-
-def write_html(root, papers, others, extra):
-    n = counts(papers, others)
-    parts = [f"<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>creaturelab reproduction report</title>"
-             f"<style>{CSS}</style></head><body>",
-             "<h1>creaturelab: reproduced paper figures</h1>",
-             f"<p>checks: <span class=\"ok\">{n['ok']} ok</span>, <span class=\"failed\">{n['FAILED']} FAILED</span>, "
-             f"<span class=\"known\">{n['KNOWN']} KNOWN</span> (a known deviation from the paper, with its reason). "
-             f"Every figure is drawn from the run folders' HDF5 files alone; each ends with the command that "
-             f"remakes it (from the repository root).</p>"]
-    for paper, sections in papers:
-        parts.append(f"<h2>{html.escape(paper.title)}</h2><p><small>{html.escape(paper.reference)}</small></p>")
-        parts += [html_section(s, root) for s in sections]
-    if others:
-        parts.append("<h2>Other runs</h2><p>Runs without a catalogued paper figure: their checks and every "
-                     "figure their kind drew.</p>")
-        parts += [html_section(s, root) for s in others]
-    if extra:
-        parts.append("<h2>More figures of the reproduced runs</h2><p>What each kind's plotter drew besides the "
-                     "paper figures (per point, per sweep).</p>")
-        for name, pngs in extra.items():
-            parts.append(f"<details><summary>{html.escape(name)}: {len(pngs)} figure(s)</summary><div class=\"thumbs\">")
-            for p in pngs:
-                r = html.escape(rel(p, root))
-                parts.append(f"<a href=\"{r}\"><img src=\"{r}\" loading=\"lazy\" "
-                             f"alt=\"{html.escape(os.path.basename(p))}\"></a>")
-            parts.append("</div></details>")
-    parts.append("</body></html>\n")
-    path = os.path.join(root, "report.html")
-    with open(path + ".tmp", "w") as fh:
-        fh.write("\n".join(parts))
-    os.replace(path + ".tmp", path)
-    return path
-
-
-# --- Markdown ---------------------------------------------------------------------------------
-def md_cell(s):
-    return str(s).replace("|", "\\|").replace("\n", " ")
-
-
-def md_section(s, root, level="###"):
-    out = [f"{level} {s.title}", "", f"*{s.claim}*", ""]
-    if s.run is None:
-        out += ["**not reproduced**: its run folder is missing under this root", ""]
-    else:
-        out += [f"run: `{rel(s.run.folder, root)}` — {s.run.title}", ""]
-        if s.checks:
-            out += ["| status | check | expected | measured |", "|---|---|---|---|"]
-            for c in s.checks:
-                reason = f" — {c['known_deviation']}" if c["status"] == "KNOWN" else ""
-                out.append(f"| {c['status']} | {md_cell(c['name'] + reason)} | {md_cell(c['expected'])} | "
-                           f"{md_cell(c['got'])} |")
-            out.append("")
-        else:
-            out += ["measured: figure only (no check decides this claim)", ""]
-        out += [f"![{os.path.basename(p)}]({rel(p, root)})" for p in s.pngs] or ["**no figure was drawn**"]
-        out.append("")
-    out += ["```", s.command, "```", ""]
-    return out
-
-
-def write_md(root, papers, others, extra):
-    n = counts(papers, others)
-    lines = ["# creaturelab: reproduced paper figures", "",
-             f"checks: {n['ok']} ok, {n['FAILED']} FAILED, {n['KNOWN']} KNOWN. Every figure is drawn from the run "
-             f"folders' HDF5 files alone; each ends with the command that remakes it.", ""]
-    for paper, sections in papers:
-        lines += [f"## {paper.title}", "", paper.reference, ""]
-        for s in sections:
-            lines += md_section(s, root)
-    if others:
-        lines += ["## Other runs", ""]
-        for s in others:
-            lines += md_section(s, root)
-    if extra:
-        lines += ["## More figures of the reproduced runs", ""]
-        for name, pngs in extra.items():
-            lines += [f"- {name}: " + ", ".join(f"[{os.path.basename(p)}]({rel(p, root)})" for p in pngs)]
-        lines.append("")
-    path = os.path.join(root, "REPORT.md")
-    with open(path + ".tmp", "w") as fh:
-        fh.write("\n".join(lines))
-    os.replace(path + ".tmp", path)
-    return path
+def headline(papers, others):
+    v, n = counts(papers, others)
+    figs = ", ".join(f"{v[k]} {k}" for k in VERDICTS)
+    checks = ", ".join(f"{n[k]} {k}" for k in STATUSES)
+    return f"{sum(v.values())} paper figures and claims: {figs}", f"checks over every run: {checks}"
 
 
 def main():
-    if len(sys.argv) != 2:
-        sys.exit(__doc__)
-    root = sys.argv[1]
-    if not os.path.isdir(root):
-        sys.exit(f"{root}: no such folder")
-    papers, others, extra, found = build(root)
-    h = write_html(root, papers, others, extra)
-    m = write_md(root, papers, others, extra)
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("root")
+    ap.add_argument("--values", default=None, help="the default setting's values (docs/validation/values.json)")
+    a = ap.parse_args()
+    if not os.path.isdir(a.root):
+        print(f"report.py: {a.root}: no such folder", file=sys.stderr)
+        return 2
+    values = P.load_values(a.values)
+    papers, others, extra, found, tables = build(a.root, values)
+    provs = [P.provenance(r) for r in found.values()]
+    model = dict(root=a.root, papers=papers, others=others, extra=extra, found=found, tables=tables,
+                 headline=headline(papers, others), provenance=P.summary(provs))
+    h = report_html.write(model)
+    m = report_md.write(model)
     for r in found.values():
         r.close()
-    n = counts(papers, others)
-    print(f"report: {n['ok']} ok, {n['FAILED']} FAILED, {n['KNOWN']} KNOWN checks over {len(found)} runs")
+    print(f"report: {model['headline'][0]}; {model['headline'][1]} ({len(found)} runs)")
     print(f"report: {h}")
     print(f"report: {m}")
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

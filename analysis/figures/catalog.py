@@ -1,9 +1,11 @@
 """Which paper figure each reproduced experiment draws, and what the paper claims there.
 
-One row per figure: the paper (by full reference), its figure number, the claim in one line, the run
-folder it is drawn from (the experiment file's stem under results/runs/reproduce), the figure
-module (analysis/figures/<module>.py), and which of the run's checks belong to it (substrings of
-their names; None = all of the run's checks not claimed by an earlier row). A run this table does
+One row per figure: the paper (by full reference), its figure number, the paper's claim in one line,
+the run it is drawn from (the claim file's stem: a run folder of that name under
+results/runs/reproduce, or one whose experiment is the stem's QUICK version, <stem>_quick.toml), the
+figure module (analysis/figures/<module>.py; None: the kind's plotter draws the run's figures), and
+which of the run's checks belong to it (substrings of their names; None = all of the run's checks
+not claimed by an earlier row). A run this table does
 not name still appears in the report (under "Other runs") with its checks and every PNG its
 kind's plotter drew, so a new kind needs no edit here to be reported; a row only adds the paper's
 words and figure number.
@@ -30,8 +32,8 @@ TU = "X. Tu, Artificial Animals for Computer Animation: Biomechanics, Locomotion
 PAPERS = [
     Paper("mehla", "Mehla 2005, Modeling and Animation of Orb Webs", MEHLA),
     Paper("rm", "Rudolf & Mould 2009, An Interactive Fluid Model of Jellyfish for Animation", RUDOLF_MOULD),
-    Paper("fluid", "Fluid solver (Rudolf & Mould 2009 §3.2, after Stam 1999)", RUDOLF_MOULD),
-    Paper("fits", "Fits (Rudolf & Mould 2009 §3.3: the Hermite contraction curve)", RUDOLF_MOULD),
+    Paper("lentine", "Lentine et al. 2010, Creature Control in a Fluid Environment", LENTINE),
+    Paper("tu", "Tu 1996, Artificial Animals for Computer Animation", TU),
 ]
 
 FIGURES = [
@@ -77,10 +79,6 @@ FIGURES = [
            "frequency", "rm_fig5", None),
     Figure("rm", "Fig. 6", "Trace particles show the fluid flow around the jellyfish through a contraction cycle.",
            "morphology", "rm_fig6", []),
-    Figure("rm", "Fig. 11",
-           "The morphology of a 4 cm bell through a cycle at 0.7 Hz; it contracts to about 56% of its diameter "
-           "(Fig. 3).",
-           "morphology", "rm_fig11", None),
     # The 3-D render model (§3.4-3.5), drawn by POV-Ray from a recorded swim (`creaturelab render`).
     Figure("rm", "Fig. 7",
            "Each pair of opposing points of the 2-D slice is revolved into a disc about its own axis; the discs "
@@ -93,16 +91,97 @@ FIGURES = [
     Figure("rm", "Fig. 10",
            "One contraction-expansion cycle of the rendered jellyfish (§3.5).",
            "render_swim", "fig10", None, _RENDER),
-    # --- the fluid solver and the fits
-    Figure("fluid", "§3.2 (Taylor-Green)",
+    Figure("rm", "Fig. 11",
+           "The morphology of a 4 cm bell through a cycle at 0.7 Hz; it contracts to about 56% of its diameter "
+           "(Fig. 3).",
+           "morphology", "rm_fig11", None),
+    # The fluid solver, the coupling and the fit of §3.2-3.3.
+    Figure("rm", "§3.2 (Taylor-Green)",
            "The solver converges to the analytic decaying Taylor-Green vortex as the grid is refined.",
            "taylor_green", "fluid_taylor_green", None),
-    Figure("fits", "§3.3 (spline fit)",
+    Figure("rm", "§3.2 (immersed boundary)",
+           "Peskin's immersed boundary method couples the spring-mass body to the grid fluid with a minimal "
+           "amount of leakage across the boundary: an elastic membrane keeps its area as it relaxes (§3.2).",
+           "membrane", None, None),
+    Figure("rm", "§3.3 (spline fit)",
            "A Hermite curve with four knots over one period fits the staggered bell's diameter ratio at 0.65 Hz "
            "(the cycles after the warm-up of stagger's staggered point).",
            "fit_spline", "fit_spline", None,
            "rm -rf RUN && build/creaturelab fit spline results/runs/reproduce/stagger --point 0 --knots 4 "
            "--from 1.5384615384615385 --out RUN"),
+    # --- Lentine et al. 2010 (module None: the kind's plotter draws the run's figures)
+    Figure("lentine", "Fig. 2",
+           "Creature strength sets how quickly the optimum is reached: the first frame at which a converged "
+           "solution is reached comes sooner for a stronger creature (§2).",
+           "block_wind", None, ["converged frame"]),
+    Figure("lentine", "Fig. 6",
+           "A block on one controlled joint in a wind minimising drag turns to minimise its exposed area (a), "
+           "maximising drag turns broadside to the flow (b) (§3.1, Eq. 2).",
+           "block_wind", None, ["aligns the block", "turns the block across", "thick block"]),
+    Figure("lentine", "Fig. 4",
+           "Minimising effort, the block reaches the global minimum-effort pose: at steady state the net external "
+           "force of gravity and wind lies along the block, so the joint's compression carries it; a weaker wind "
+           "leans it less (§2.3).",
+           "block_effort", None, None),
+    Figure("lentine", "Figs. 4, 6 (3-D)",
+           "The same optima on a ball joint in 3-D: least and most drag by the exposed area (Fig. 6), the net "
+           "force along the block at least effort (Fig. 4) (§2.3, §3.1).",
+           "block_ball", None, None),
+    Figure("lentine", "Fig. 5",
+           "A human with kinematic legs under gravity and wind minimising the back's effort leans into the wind "
+           "(a, b); with the arms minimising drag it leans into the wind while holding its arms back (c) (§7).",
+           "human_wind", None, None),
+    Figure("lentine", "Fig. 7",
+           "A swimmer with five controlled legs and a mouth that pumps water swims upward; the propulsion alone "
+           "is not enough to move it significantly (§7.2).",
+           "swimmer", None, None),
+    Figure("lentine", "Fig. 8",
+           "In a Navier-Stokes flow the block minimising drag turns near the flow and maximising drag across it, "
+           "not exactly horizontal or vertical: a stagnant pocket of fluid lowers the drag (§4.3).",
+           "block_flow", None, None),
+    Figure("lentine", "Fig. 9",
+           "With kinematic legs and gravity, minimising the lower back's effort puts the upper body's centre of "
+           "mass straight above the back joint (a); arms minimising their own effort hang down (b) (§7).",
+           "human_gravity", None, None),
+    Figure("lentine", "Fig. 10 (simple forces)",
+           "Each degree of freedom's derivative is computed independently, so n controlled joints on n processors "
+           "cost about as much wall time per frame as one (§5; the table below).",
+           "parallel_dofs", None, None),
+    Figure("lentine", "Fig. 10 (Navier-Stokes)",
+           "The same with the full Navier-Stokes fluid, as the paper's Fig. 10 was measured: 14-58 s per frame "
+           "serial, 14-15 s on four processors, for 1-4 joints (§5; the table below).",
+           "parallel_dofs_fluid", None, None),
+    Figure("lentine", "Figs. 11-13",
+           "The driven flyer's outer wing joints maximise drag on the down-stroke and minimise it on the "
+           "up-stroke, and the flyer's animation closely matches that of many flying creatures (§7.1).",
+           "flyer", None, None),
+    # --- Tu 1996 (chapters: the thesis's figures are not numbered in the text we cite)
+    Figure("tu", "ch. 4 (in air)",
+           "The fish's muscles are internal forces in equal and opposite pairs: without the water's reaction the "
+           "fish cannot move its centre of mass, and the full-amplitude fish fails in air (ch. 4).",
+           "air", None, None),
+    Figure("tu", "ch. 4 (stability)",
+           "The semi-implicit Euler step of the spring-mass fish is stable at 100-150 times the explicit-Euler "
+           "step (ch. 4).",
+           "stability", None, None),
+    Figure("tu", "ch. 5 (swim)",
+           "The swim motor controller's speed grows with its amplitude and its rate, and the fish swims "
+           "straight (ch. 5).",
+           "swim", None, None),
+    Figure("tu", "ch. 5 (swim rate)",
+           "Speed grows with the swim motor controller's rate over its whole range up to r_max (ch. 5).",
+           "swim_rate", None, None),
+    Figure("tu", "ch. 5 (turn)",
+           "The left and right turn motor controllers turn the swimming fish, more sharply for a stronger "
+           "contraction, mirror images of each other (ch. 5).",
+           "turn", None, None),
+    Figure("tu", "§5 (school)",
+           "Several artificial fish are animated together, each an independent biomechanical model (§5).",
+           "school", None, None),
+    Figure("tu", "ch. 7 (NURBS skin)",
+           "The NURBS display surfaces, bound to the dynamic model's faces by patch-nodes and local frames, "
+           "deform with the swimming fish, and texture distortions are very small (ch. 7).",
+           "skin", None, None),
 ]
 
 
@@ -111,13 +190,16 @@ def figures_of_run(run_name):
 
 
 def has_module(module):
-    """Whether analysis/figures/<module>.py exists. A row without one is drawn by its command alone
+    """Whether analysis/figures/<module>.py exists (never for module None). A row without one is drawn by its command alone
     (the 3-D renders: `creaturelab render --figures`, reproduce.toml's [[render]] entry)."""
-    return os.path.exists(os.path.join(os.path.dirname(os.path.abspath(__file__)), module + ".py"))
+    return module is not None and os.path.exists(os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                                module + ".py"))
 
 
 def module_of_run(run_name):
     """The figure modules that draw a run folder named run_name: every row's module, except those of
-    rows drawn by their command (no module file, a command). A row with neither keeps its name, so
-    that draw_runs.py reports the missing module instead of skipping it."""
-    return [f.module for f in figures_of_run(run_name) if has_module(f.module) or f.command is None]
+    rows drawn by their command (no module file, a command) and rows whose run's kind plotter draws
+    everything (module None). A row with a module name but no file keeps it, so that draw_runs.py
+    reports the missing module instead of skipping it."""
+    return [f.module for f in figures_of_run(run_name)
+            if f.module is not None and (has_module(f.module) or f.command is None)]

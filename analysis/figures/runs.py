@@ -152,7 +152,8 @@ class Run:
 
 def read_checks(idx):
     """The /checks table of an open index.h5 as a list of dicts: name, type, expected, got, passed,
-    known_deviation, status (ok | FAILED | KNOWN)."""
+    known_deviation, inconclusive (optional int8 column: 1 = the run cannot resolve the claim),
+    status (ok | FAILED | KNOWN | inconclusive: neither passed nor failed)."""
     if "checks" not in idx or "name" not in idx["checks"]:
         return []
     c = idx["checks"]
@@ -161,8 +162,10 @@ def read_checks(idx):
     for i in range(len(cols["name"])):
         row = {k: (text(v[i]) if v.dtype.kind in "OS" else v[i].item()) for k, v in cols.items()}
         row["passed"] = bool(row.get("passed", False))
+        row["inconclusive"] = bool(row.get("inconclusive", False))
         known = row.get("known_deviation", "")
-        row["status"] = "ok" if row["passed"] else ("KNOWN" if known else "FAILED")
+        row["status"] = ("inconclusive" if row["inconclusive"] else "ok" if row["passed"] else
+                         "KNOWN" if known else "FAILED")
         out.append(row)
     return out
 

@@ -7,9 +7,14 @@ ROOT/report.html is parsed with Python's html.parser. Every image it shows (<img
 it links (<a href>) must exist under ROOT and be a valid PNG: the signature, an IHDR of nonzero size
 first, each chunk's CRC-32, an IEND last. Every check of every run folder under ROOT (index.h5's
 /checks) must appear in a table row whose first cell is its status (ok, FAILED or KNOWN) and whose
-second cell starts with its name. REPORT.md must exist and name every check too. Exits 1 with one
-line per problem.
+second cell starts with its name. REPORT.md must exist and name every check too. The four papers
+each have a section (an <h2> naming Mehla 2005, Rudolf & Mould 2009, Lentine et al. 2010, Tu 1996);
+the headline's count of each verdict equals the summary table's rows with that verdict and the
+figure sections' headings; neither file names a path into ../shared or the seed papers; every QUICK
+run (an experiment file *_quick.toml, or `set` overrides) is labelled QUICK. Exits 1 with one line
+per problem.
 """
+import re
 import html.parser
 import os
 import struct
@@ -23,8 +28,8 @@ from figures import runs  # noqa: E402
 class Report(html.parser.HTMLParser):
     def __init__(self):
         super().__init__()
-        self.images, self.links, self.rows = [], [], []
-        self._row, self._cell = None, None
+        self.images, self.links, self.rows, self.h2, self.verdict_spans = [], [], [], [], []
+        self._row, self._cell, self._h, self._span = None, None, None, None
 
     def handle_starttag(self, tag, attrs):
         a = dict(attrs)
@@ -36,8 +41,19 @@ class Report(html.parser.HTMLParser):
             self._row = []
         if tag in ("td", "th") and self._row is not None:
             self._cell = []
+        if tag in ("h2", "h3"):
+            self._h = (tag, [])
+        if tag == "span" and self._h is not None and self._h[0] == "h3":
+            self._span = []
 
     def handle_endtag(self, tag):
+        if tag == "span" and self._span is not None:
+            self.verdict_spans.append("".join(self._span).strip())
+            self._span = None
+        if tag in ("h2", "h3") and self._h is not None:
+            if tag == "h2":
+                self.h2.append("".join(self._h[1]).strip())
+            self._h = None
         if tag in ("td", "th") and self._cell is not None:
             self._row.append("".join(self._cell).strip())
             self._cell = None
@@ -48,6 +64,10 @@ class Report(html.parser.HTMLParser):
     def handle_data(self, data):
         if self._cell is not None:
             self._cell.append(data)
+        if self._h is not None:
+            self._h[1].append(data)
+        if self._span is not None:
+            self._span.append(data)
 
 
 def png_problem(path):
@@ -79,13 +99,55 @@ def png_problem(path):
     return ""
 
 
+PAPERS = ("Mehla 2005", "Rudolf & Mould 2009", "Lentine et al. 2010", "Tu 1996")
+VERDICTS = ("reproduced", "deviates", "FAILED", "inconclusive on the quick setting", "not run in this list",
+            "figure only")
+
+
+def verdict_problems(report, text):
+    """The headline "N paper figures and claims: a reproduced, b deviates, ..." against the summary
+    table's verdict cells and the figure headings' verdicts."""
+    m = re.search(r"(\d+) paper figures and claims: ([^.<]*)", text)
+    if not m:
+        return ["no headline counting the figures' verdicts"]
+    said = {v: int(n) for n, v in re.findall(r"(\d+) ([A-Za-z ]+?)(?:,|$)", m.group(2))}
+    out = []
+    if set(said) != set(VERDICTS):
+        out.append(f"the headline counts {sorted(said)}, not every verdict {sorted(VERDICTS)}")
+    summary = [r[0] for r in report.rows if len(r) == 4 and r[1] in PAPERS]
+    headings = [v for v in report.verdict_spans if v in VERDICTS]
+    for v in VERDICTS:
+        if said.get(v, 0) != summary.count(v):
+            out.append(f"headline: {said.get(v, 0)} {v}, the summary table: {summary.count(v)}")
+    if sum(said.values()) != int(m.group(1)):
+        out.append(f"headline: {m.group(1)} figures, its verdicts sum to {sum(said.values())}")
+    if len(summary) != len(headings[:len(summary)]) or sorted(summary) != sorted(headings[:len(summary)]):
+        out.append(f"the summary table's verdicts {sorted(summary)} differ from the sections' "
+                   f"{sorted(headings[:len(summary)])}")
+    return out
+
+
+def is_quick(run):
+    stem = os.path.splitext(os.path.basename(run.experiment or ""))[0]
+    return stem.endswith("_quick") or bool(run.overrides)
+
+
 def main():
     root = sys.argv[1]
     problems = []
     report = Report()
     with open(os.path.join(root, "report.html"), encoding="utf-8") as fh:
-        report.feed(fh.read())
+        text = fh.read()
+    report.feed(text)
     md = open(os.path.join(root, "REPORT.md"), encoding="utf-8").read()
+    for paper in PAPERS:
+        if not any(h.startswith(paper) for h in report.h2):
+            problems.append(f"no section for {paper} (sections: {report.h2})")
+    problems += verdict_problems(report, text)
+    for name, body in (("report.html", text), ("REPORT.md", md)):
+        for bad in ("../shared", "shared/seeds", "seeds/"):
+            if bad in body:
+                problems.append(f"{name} names a path into the seed papers ({bad!r}): cite them by reference")
     if not report.images:
         problems.append("report.html shows no image")
     for src in sorted(set(report.images + report.links)):
@@ -95,6 +157,9 @@ def main():
     checks = 0
     for folder in runs.runs_under(root):
         with runs.Run(folder) as run:
+            label = f"<code>{run.name}</code>, setting <span class=\"setting\">QUICK</span>"
+            if is_quick(run) and label not in text:
+                problems.append(f"{run.name}: a QUICK run not labelled QUICK in report.html")
             for c in run.checks:
                 checks += 1
                 if not any(len(r) >= 2 and r[0] == c["status"] and r[1].startswith(c["name"]) for r in report.rows):

@@ -4,8 +4,11 @@
 # draws them; analysis/report.py writes report.html and REPORT.md and names them last.
 # tests/cli/check_report.py then parses report.html with html.parser: every image exists and is a
 # valid PNG, every check of every run is in a row with its status (ok, FAILED and KNOWN all occur
-# here). A run the catalog does not know (an oscillator with a made-up name) appears under "Other
-# runs" with the figures its kind's plotter drew. A bad list entry exits 2.
+# here), the four papers have sections, the headline's verdict counts equal the figures' verdicts, no
+# path into the seed papers, a QUICK run is labelled. A run the catalog does not know (an oscillator
+# with a made-up name, QUICK by its `set`) appears under "Other runs" with the figures its kind's
+# plotter drew; its distance from a default's values (values.json) is shown; an /checks/inconclusive
+# column makes its verdict "inconclusive on the quick setting". A bad list entry exits 2.
 # usage: report.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 py=/usr/bin/python3
@@ -72,14 +75,52 @@ $py analysis/report.py "$scratch/root" >"$scratch/report.stdout" || fail "report
 tail -n 2 "$scratch/report.stdout" | head -n 1 | grep -qF "report: $scratch/root/report.html" || fail "report.html not named"
 
 $py tests/cli/check_report.py "$scratch/root" || fail "report.html does not show every figure and check"
-grep -q "<h2>Other runs</h2>" "$scratch/root/report.html" || fail "no Other runs section"
+grep -q "<h2 id=\"other-runs\">Other runs</h2>" "$scratch/root/report.html" || fail "no Other runs section"
 grep -q "made_up_oscillator/figures/point_000000.png" "$scratch/root/report.html" ||
   fail "the uncatalogued run's figures are not in the report"
 grep -q "mehla_fig5_2.png" "$scratch/root/report.html" || fail "Fig. 5.2 is not in the report"
 grep -q 'class="known">KNOWN</td>' "$scratch/root/report.html" || fail "no KNOWN row"
 grep -q 'class="failed">FAILED</td>' "$scratch/root/report.html" || fail "no FAILED row"
 grep -q "rk4 is more accurate; kept to show KNOWN" "$scratch/root/report.html" || fail "the KNOWN reason is missing"
-grep -q "not reproduced" "$scratch/root/report.html" || fail "catalogued figures without runs are not marked"
+grep -q "not run in this list" "$scratch/root/report.html" || fail "catalogued figures without runs are not marked"
+grep -q "runs in make reproduce" "$scratch/root/report.html" || fail "a figure not run does not name the list that runs it"
+grep -q '<code>made_up_oscillator</code>, setting <span class="setting">QUICK</span>' "$scratch/root/report.html" ||
+  fail "the run with set overrides is not labelled QUICK"
+grep -q '<code>strand_layouts</code>, setting <span class="setting">default</span>' "$scratch/root/report.html" ||
+  fail "the claim run is not labelled default"
+grep -q "distance from default not measured" "$scratch/root/report.html" || fail "a QUICK run without default values says nothing"
+grep -q "mid_sag_m strictly decreasing in overextension</td><td>[0-9.]*, [0-9.]*, [0-9.]*, [0-9.]* mm</td>" \
+  "$scratch/root/report.html" || fail "Fig. 5.2's sags are not in mm"
+
+# The default's values (values.json): the QUICK run's distance from them, in its unit.
+$py - "$scratch/root/made_up_oscillator" "$scratch/values.json" <<'PY'
+import json, re, sys
+sys.path.insert(0, "analysis")
+from figures import runs
+with runs.Run(sys.argv[1]) as r:
+    checks = [{"name": c["name"], "got": re.sub(r"=([0-9.e+-]+)", lambda m: "=" + repr(float(m.group(1)) * 1.1), c["got"]),
+               "passed": c["passed"], "status": c["status"]} for c in r.checks]
+json.dump({"runs": {"made_up_oscillator": {"setting": "default", "commit": "abc1234", "checks": checks}}}, open(sys.argv[2], "w"))
+PY
+$py analysis/report.py "$scratch/root" --values "$scratch/values.json" >/dev/null || fail "report.py --values failed"
+grep -q "default: integrator=&quot;rk4&quot; (max_abs_error_m=[0-9.]* [nµm]*m) (default setting, commit abc1234), distance [0-9.]* [nµm]*m (9.1 %)" \
+  "$scratch/root/report.html" || fail "the QUICK run's distance from the default is not shown"
+
+# Every check of the QUICK run inconclusive but the first: the verdict says so, and the checker agrees.
+mkdir "$scratch/root2" && cp -r "$scratch/root/made_up_oscillator" "$scratch/root2/"
+$py - "$scratch/root2/made_up_oscillator/index.h5" <<'PY'
+import sys, h5py, numpy as np
+with h5py.File(sys.argv[1], "r+") as f:
+    f["checks"].create_dataset("inconclusive", data=np.array([0, 1, 1], dtype=np.int8))
+PY
+$py analysis/report.py "$scratch/root2" >/dev/null || fail "report.py failed on an inconclusive run"
+$py tests/cli/check_report.py "$scratch/root2" >/dev/null || fail "the inconclusive report does not check"
+grep -q '<h3 id="run-made-up-oscillator">made_up_oscillator: <span class="inconclusive">inconclusive on the quick setting</span>' \
+  "$scratch/root2/report.html" || fail "no inconclusive verdict"
+grep -q '<td class="inconclusive">inconclusive</td><td>symplectic Euler is the most accurate' "$scratch/root2/report.html" ||
+  fail "the inconclusive check's status"
+grep -q "0 reproduced, 0 deviates, 0 FAILED, 0 inconclusive on the quick setting, [0-9]* not run in this list" \
+  "$scratch/root2/report.html" || fail "a folder without paper runs: every figure not run"
 
 # The checker fails on a broken image and on a missing check.
 cp "$scratch/root/report.html" "$scratch/report.good"
@@ -91,6 +132,19 @@ $py analysis/figures/mehla_fig5_2.py "$scratch/root/strand_layouts" >/dev/null
 sed 's/rk4 is the most accurate/rk4 is accurate/' "$scratch/report.good" >"$scratch/root/report.html"
 ! $py tests/cli/check_report.py "$scratch/root" >"$scratch/bad.stdout" || fail "a missing check passed"
 grep -q 'check "rk4 is the most accurate" (ok) is not in report.html' "$scratch/bad.stdout" || fail "missing check not named"
+# ... on a headline that miscounts, a path into the seeds, a QUICK run unlabelled, a paper missing.
+sed -E 's/([0-9]+) not run in this list/1\1 not run in this list/' "$scratch/report.good" >"$scratch/root/report.html"
+! $py tests/cli/check_report.py "$scratch/root" >"$scratch/bad.stdout" || fail "a miscounting headline passed"
+grep -q "headline: 1[0-9]* not run in this list, the summary table" "$scratch/bad.stdout" || fail "miscount not named"
+sed 's|</body>|<p>../shared/seeds/x.txt</p></body>|' "$scratch/report.good" >"$scratch/root/report.html"
+! $py tests/cli/check_report.py "$scratch/root" >/dev/null || fail "a path into the seeds passed"
+sed 's|setting <span class="setting">QUICK</span>|setting default|' "$scratch/report.good" >"$scratch/root/report.html"
+! $py tests/cli/check_report.py "$scratch/root" >"$scratch/bad.stdout" || fail "an unlabelled QUICK run passed"
+grep -q "made_up_oscillator: a QUICK run not labelled QUICK" "$scratch/bad.stdout" || fail "unlabelled QUICK run not named"
+sed 's|<h2 id="paper-tu">Tu 1996|<h2 id="paper-tu">T. 1996|' "$scratch/report.good" >"$scratch/root/report.html"
+! $py tests/cli/check_report.py "$scratch/root" >"$scratch/bad.stdout" || fail "a missing paper section passed"
+grep -q "no section for Tu 1996" "$scratch/bad.stdout" || fail "the missing paper not named"
+cp "$scratch/report.good" "$scratch/root/report.html"
 
 # A bad list entry: exit 2, nothing run.
 printf 'experiments = [{ file = "experiments/web/default.toml", sett = [] }]\n' >"$scratch/bad.toml"
