@@ -1,5 +1,7 @@
 """Writes docs/validation/<system>.md from run folders: per claim or study, its checks (expected,
-measured, verdict) and the sweep table of the metrics its checks read, with units.
+measured, verdict) and the sweep table of the metrics its checks read, with units; and
+docs/validation/values.json, the same checks machine-readable (per run folder name: commit, setting,
+each check's got, passed and status), which analysis/report.py compares a QUICK run with.
 
     /usr/bin/python3 analysis/validation.py RUNS [RUNS ...] [--out docs/validation]
 
@@ -8,6 +10,7 @@ system of a run is the folder of its experiment file (experiments/<system>/ or s
 Every table in the pages comes from the runs' index.h5 files; nothing is typed by hand.
 """
 import argparse
+import json
 import math
 import os
 import sys
@@ -16,7 +19,11 @@ import tomllib
 import h5py
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import report_provenance as P  # noqa: E402
+import report_units as U  # noqa: E402
 from figures import runs as R  # noqa: E402
+
+VERDICT = {"ok": "reproduced", "KNOWN": "deviates", "FAILED": "FAILED", "inconclusive": "inconclusive"}
 
 SYSTEM_OF_KIND = {"oscillator": "oscillator", "strand": "web", "web": "web", "charlotte": "web",
                   "fluid": "fluid", "membrane": "jellyfish", "jellyfish": "jellyfish", "control": "control",
@@ -62,14 +69,14 @@ def cell(s):
     return str(s).replace("|", "\\|").replace("\n", " ")
 
 
-def checks_table(checks):
+def checks_table(checks, units):
     if not checks:
         return ["No checks: this run records data for a figure only.", ""]
     lines = ["| verdict | check | expected | measured | known deviation |", "|---|---|---|---|---|"]
     for c in checks:
-        verdict = {"ok": "reproduced", "KNOWN": "deviates", "FAILED": "FAILED"}[c["status"]]
-        lines.append(f"| {verdict} | {cell(c['name'])} | {cell(c.get('expected', ''))} | "
-                     f"{cell(significant(c.get('got', '')))} | {cell(c.get('known_deviation', ''))} |")
+        expected, got = U.check_texts(c, units)
+        lines.append(f"| {VERDICT[c['status']]} | {cell(c['name'])} | {cell(expected)} | "
+                     f"{cell(got)} | {cell(c.get('known_deviation', ''))} |")
     return lines + [""]
 
 
@@ -106,13 +113,29 @@ def sweep_table(run, metrics):
 def section(run):
     commit, finished = provenance(run)
     lines = [f"## {run.title}", "",
-             f"Experiment `{run.experiment}`" + (f", run folder `{run.name}`" if run.name else "") +
+             f"Experiment `{run.experiment}` ({P.setting(run)} setting)" + (f", run folder `{run.name}`" if run.name else "") +
              (f"; commit `{commit}`" if commit else "") + (f", finished {finished}" if finished else "") + ".", ""]
     if run.overrides:
         lines += ["Overrides: " + ", ".join(f"`{o}`" for o in run.overrides) + ".", ""]
-    lines += checks_table(run.checks)
+    lines += checks_table(run.checks, run.units)
     lines += sweep_table(run, metrics_of_checks(run))
     return lines
+
+
+def values_entry(run):
+    """values.json's record of one run: what analysis/report.py needs to compare a QUICK run with it."""
+    return {"experiment": run.experiment, "setting": P.setting(run), "commit": P.provenance(run)["git_commit"],
+            "checks": [{"name": c["name"], "got": c.get("got", ""), "passed": c["passed"], "status": c["status"]}
+                       for c in run.checks]}
+
+
+def write_values(values, out, sources):
+    path = os.path.join(out, "values.json")
+    with open(path + ".tmp", "w", encoding="utf-8") as f:
+        json.dump({"generated_from": list(sources), "runs": values}, f, indent=1, sort_keys=True)
+        f.write("\n")
+    os.replace(path + ".tmp", path)
+    return path
 
 
 def write(pages, out, sources):
@@ -138,17 +161,18 @@ def main(argv=None):
     ap.add_argument("runs", nargs="+")
     ap.add_argument("--out", default="docs/validation")
     args = ap.parse_args(argv)
-    pages = {}
+    pages, values = {}, {}
     for root in args.runs:
         for folder in R.runs_under(root):
             if not os.path.exists(os.path.join(folder, "index.h5")):
                 continue
             with R.Run(folder) as run:
                 pages.setdefault(system_of(run), []).append(section(run))
+                values[run.name] = values_entry(run)
     if not pages:
         print(f"validation.py: no run folder with an index.h5 under {', '.join(args.runs)}", file=sys.stderr)
         return 2
-    for path in write(pages, args.out, args.runs):
+    for path in write(pages, args.out, args.runs) + [write_values(values, args.out, args.runs)]:
         print(path)
     return 0
 
