@@ -45,6 +45,7 @@ cat >"$scratch/list.toml" <<TOML
 experiments = [
   "experiments/web/strand_layouts.toml",
   { file = "$scratch/osc.toml", name = "made_up_oscillator", set = ["params.end_time_s=1.5"] },
+  { file = "experiments/control/parallel_dofs.toml", set = ["params.frames=20"] },
 ]
 TOML
 rc=0
@@ -92,6 +93,12 @@ grep -q "distance from default not measured" "$scratch/root/report.html" || fail
 grep -q "mid_sag_m strictly decreasing in overextension</td><td>[0-9.]*, [0-9.]*, [0-9.]*, [0-9.]* mm</td>" \
   "$scratch/root/report.html" || fail "Fig. 5.2's sags are not in mm"
 
+# Lentine Fig. 10 as a table: the paper's seconds per frame beside ours (the QUICK parallel_dofs).
+grep -q '<td>1</td><td>14 s</td><td>14 s</td><td>[0-9.]* [µm]*s</td><td>[0-9.]* [µm]*s</td><td>not run</td>' \
+  "$scratch/root/report.html" || fail "no Fig. 10 table with our seconds per frame"
+grep -q '<td>Human minimizing effort on back (gravity)</td><td>0.26 s</td><td>not run</td>' "$scratch/root/report.html" ||
+  fail "no Fig. 14 table"
+
 # The default's values (values.json): the QUICK run's distance from them, in its unit.
 $py - "$scratch/root/made_up_oscillator" "$scratch/values.json" <<'PY'
 import json, re, sys
@@ -113,12 +120,24 @@ import sys, h5py, numpy as np
 with h5py.File(sys.argv[1], "r+") as f:
     f["checks"].create_dataset("inconclusive", data=np.array([0, 1, 1], dtype=np.int8))
 PY
+# ... and the provenance the runner records (index.h5's root attributes) at the top.
+$py - "$scratch/root2/made_up_oscillator/index.h5" <<'PY'
+import sys, h5py, numpy as np
+with h5py.File(sys.argv[1], "r+") as f:
+    f.attrs.update({"build_type": "Release", "cpu_model": "Test CPU", "cpu_cores": np.int64(2),
+                    "started_utc": "at the start", "wall_s": 75.5})
+PY
 $py analysis/report.py "$scratch/root2" >/dev/null || fail "report.py failed on an inconclusive run"
 $py tests/cli/check_report.py "$scratch/root2" >/dev/null || fail "the inconclusive report does not check"
 grep -q '<h3 id="run-made-up-oscillator">made_up_oscillator: <span class="inconclusive">inconclusive on the quick setting</span>' \
   "$scratch/root2/report.html" || fail "no inconclusive verdict"
 grep -q '<td class="inconclusive">inconclusive</td><td>symplectic Euler is the most accurate' "$scratch/root2/report.html" ||
   fail "the inconclusive check's status"
+for row in "<td>build type</td><td>Release</td>" "<td>machine</td><td>Test CPU, 2 cores</td>" \
+  "<td>date</td><td>at the start</td>" "<td>wall time, all runs</td><td>1 min 15 s</td>"; do
+  grep -qF "$row" "$scratch/root2/report.html" || fail "provenance: no $row"
+done
+grep -q "<td>build type</td><td>" "$scratch/root/report.html" || fail "no build type in the provenance"
 grep -q "0 reproduced, 0 deviates, 0 FAILED, 0 inconclusive on the quick setting, [0-9]* not run in this list" \
   "$scratch/root2/report.html" || fail "a folder without paper runs: every figure not run"
 
