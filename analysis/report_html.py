@@ -92,6 +92,8 @@ def write(m):
              "root).</p>", "<h2 id=\"contents\">Contents</h2><ul>"]
     for paper, _ in papers:
         parts.append(f"<li><a href=\"#paper-{paper.key}\">{e(paper.title)}</a></li>")
+        if paper.key == "lentine":
+            parts += [f"<li><a href=\"#lentine-timing-{k}\">{e(t[0])}</a></li>" for k, t in enumerate(m["tables"])]
     if others:
         parts.append("<li><a href=\"#other-runs\">Other runs</a></li>")
     parts.append("<li><a href=\"#runs\">Runs: setting, commit and wall time</a></li></ul>")

@@ -52,7 +52,9 @@ def write(m):
     lines += table(["provenance", ""], m["provenance"])
     lines += [f"**{m['headline'][0]}**.", "", f"{m['headline'][1]}. Every figure is drawn from the run folders' HDF5 "
               "files alone; each section ends with the command that remakes it.", "", "## Contents", ""]
-    lines += [f"- {paper.title}" for paper, _ in papers] + (["- Other runs"] if others else [])
+    for paper, _ in papers:
+        lines += [f"- {paper.title}"] + ([f"- {t[0]}" for t in m["tables"]] if paper.key == "lentine" else [])
+    lines += ["- Other runs"] if others else []
     lines += ["- Runs: setting, commit and wall time", "", "## Summary", ""]
     lines += table(["verdict", "paper", "figure or claim", "setting"],
                    [[s.verdict, paper.title.split(",")[0], s.title, s.setting or "-"]

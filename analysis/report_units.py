@@ -101,10 +101,37 @@ def expected_text(expected, unit, like=()):
     return _with_unit(f"{m.group(1)}[{a}, {b}]", u)
 
 
+_SE = re.compile(rf"(.*?) \+- ({NUMBER}|nan|inf)(?: \(2 s\.e\.: \[({NUMBER}), ({NUMBER})\]\))?")
+_SE_MOST = re.compile(rf"(.*), standard errors up to ({NUMBER}|nan|inf)")
+
+
+def with_error(value, se, unit, interval=None):
+    """"1.024 ± 0.012 N": the value to the standard error's second digit, the error to two; the
+    runner's 2-standard-error interval after it when given."""
+    scale, u = prefix_for([value], unit)
+    d = digits_for(value, se) + 1 if math.isfinite(se) and se > 0 else 3
+    err = number(se / scale, 2) if math.isfinite(se) else str(se)
+    out = _with_unit(f"{number(value / scale, d)} ± {err}", u)
+    if interval:
+        lo, hi = (number(x / scale, d) for x in interval)
+        out += " (2 s.e.: " + _with_unit(f"[{lo}, {hi}]", u) + ")"
+    return out
+
+
 def got_text(got, unit, units, uncertainty=None):
     """A check's measured text with units: one value, "[lo, hi] over N points", a list (monotonic
-    checks), or "name=value" pairs whose names are sweep columns (argmax, argmin)."""
+    checks), "name=value" pairs whose names are sweep columns (argmax, argmin), each perhaps with the
+    runner's standard error ("v +- s (2 s.e.: [a, b])", "..., standard errors up to s")."""
     g = got.strip()
+    m = _SE.fullmatch(g)
+    if m and re.fullmatch(NUMBER, m.group(1).strip()):
+        interval = (float(m.group(3)), float(m.group(4))) if m.group(3) else None
+        return with_error(float(m.group(1)), float(m.group(2)), unit, interval)
+    m = _SE_MOST.fullmatch(g)
+    if m:
+        most = float(m.group(2))
+        return (got_text(m.group(1), unit, units, most if math.isfinite(most) else uncertainty) +
+                f", standard errors up to {quantity(most, unit, digits=2) if math.isfinite(most) else most}")
     d = digits_for(_first(g) or 0.0, uncertainty)
     if re.fullmatch(NUMBER, g):
         return quantity(float(g), unit, digits=d)
@@ -164,6 +191,7 @@ def named_numbers(s):
     """[(value, the name written just before it as "name=" or "name ", or "")] of a measured text,
     without "over N points"' count."""
     s = re.sub(r" over \d+ points", "", s)
+    s = re.sub(r"( \+- |, standard errors up to ).*$", "", s)  # the runner's standard error
     out = []
     for m in _NUM.finditer(s):
         name = re.search(r"([A-Za-z_][A-Za-z0-9_]*)[= ]$", s[:m.start()])

@@ -165,6 +165,24 @@ sed 's|<h2 id="paper-tu">Tu 1996|<h2 id="paper-tu">T. 1996|' "$scratch/report.go
 grep -q "no section for Tu 1996" "$scratch/bad.stdout" || fail "the missing paper not named"
 cp "$scratch/report.good" "$scratch/root/report.html"
 
+# Numbers with units: SI prefixes, three significant digits, or the digits a standard error resolves.
+$py - <<'PY' || fail "report_units formats numbers wrongly"
+import sys
+sys.path.insert(0, "analysis")
+import report_units as U
+cases = [(U.quantity(0.00106039, "m/s"), "1.06 mm/s"), (U.quantity(0.65, "Hz"), "0.650 Hz"),
+         (U.quantity(3333, ""), "3333"), (U.quantity(1.0261e-6, "rad"), "1.03 µrad"),
+         (U.quantity(0.0547852, "m", uncertainty=0.0004), "54.8 mm"), (U.quantity(2.33988e-16, ""), "2.34e-16"),
+         (U.got_text("[0.0309, 0.00713] over 2 points", "m", {}), "[30.9, 7.13] mm over 2 points"),
+         (U.got_text("0.0151378 +- 0.00213 (2 s.e.: [0.0108, 0.0194])", "m", {}), "15.1 ± 2.1 mm (2 s.e.: [10.8, 19.4] mm)"),
+         (U.got_text('integrator="rk4" (max_abs_error_m=1.90882e-09)', "", {"max_abs_error_m": "m"}),
+          'integrator="rk4" (max_abs_error_m=1.91 nm)'),
+         (U.expected_text("hub_rms_displacement_m in [0.05, 0.06]", "m", [0.0547852]), "hub_rms_displacement_m in [50, 60] mm"),
+         (U.expected_text("mean_up_force_n ratio in [1, 1e+09]", ""), "mean_up_force_n ratio ≥ 1")]
+bad = [(got, want) for got, want in cases if got != want]
+assert not bad, bad
+PY
+
 # A bad list entry: exit 2, nothing run.
 printf 'experiments = [{ file = "experiments/web/default.toml", sett = [] }]\n' >"$scratch/bad.toml"
 rc=0
