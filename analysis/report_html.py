@@ -87,6 +87,8 @@ def write(m):
     parts = ["<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>creaturelab reproduction report</title>"
              f"<style>{CSS}</style></head><body>", "<h1>creaturelab: reproduced paper figures</h1>",
              table(["provenance", ""], [[e(k), e(v)] for k, v in m["provenance"]]),
+             f"<details id=\"runs\"><summary>each run: setting, commit, build, start and wall time "
+             f"({len(m['found'])} runs)</summary>" + table(*runs_table(m["found"])) + "</details>",
              f"<p><b>{e(m['headline'][0])}</b>.<br>{e(m['headline'][1])}. Every figure is drawn from the run "
              "folders' HDF5 files alone; each section ends with the command that remakes it (from the repository "
              "root).</p>", "<h2 id=\"contents\">Contents</h2><ul>"]
@@ -96,7 +98,7 @@ def write(m):
             parts += [f"<li><a href=\"#lentine-timing-{k}\">{e(t[0])}</a></li>" for k, t in enumerate(m["tables"])]
     if others:
         parts.append("<li><a href=\"#other-runs\">Other runs</a></li>")
-    parts.append("<li><a href=\"#runs\">Runs: setting, commit and wall time</a></li></ul>")
+    parts.append("</ul>")
     parts.append("<h2 id=\"summary\">Summary</h2>")
     rows, classes = [], []
     for paper, sections in papers:
@@ -123,8 +125,6 @@ def write(m):
                 r = e(rel(p, root))
                 parts.append(f"<a href=\"{r}\"><img src=\"{r}\" loading=\"lazy\" alt=\"{e(os.path.basename(p))}\"></a>")
             parts.append("</div></details>")
-    parts.append("<h2 id=\"runs\">Runs: setting, commit and wall time</h2>")
-    parts.append(table(*runs_table(m["found"])))
     parts.append("</body></html>\n")
     path = os.path.join(root, "report.html")
     with open(path + ".tmp", "w", encoding="utf-8") as fh:

@@ -50,12 +50,19 @@ def write(m):
     root, papers, others = m["root"], m["papers"], m["others"]
     lines = ["# creaturelab: reproduced paper figures", ""]
     lines += table(["provenance", ""], m["provenance"])
+    lines += ["Each run: setting, commit, build, start and wall time.", ""]
+    rows = []
+    for name, run in sorted(m["found"].items()):
+        p = P.provenance(run)
+        rows.append([name, P.setting(run), p["git_commit"], p["build_type"], p["started_utc"],
+                     P.duration(P.seconds(p["wall_s"])), run.experiment or run.title])
+    lines += table(["run", "setting", "commit", "build", "started (UTC)", "wall time", "experiment"], rows)
     lines += [f"**{m['headline'][0]}**.", "", f"{m['headline'][1]}. Every figure is drawn from the run folders' HDF5 "
               "files alone; each section ends with the command that remakes it.", "", "## Contents", ""]
     for paper, _ in papers:
         lines += [f"- {paper.title}"] + ([f"- {t[0]}" for t in m["tables"]] if paper.key == "lentine" else [])
     lines += ["- Other runs"] if others else []
-    lines += ["- Runs: setting, commit and wall time", "", "## Summary", ""]
+    lines += ["", "## Summary", ""]
     lines += table(["verdict", "paper", "figure or claim", "setting"],
                    [[s.verdict, paper.title.split(",")[0], s.title, s.setting or "-"]
                     for paper, secs in papers for s in secs])
@@ -75,13 +82,6 @@ def write(m):
         for name, pngs in m["extra"].items():
             lines += [f"- {name}: " + ", ".join(f"[{os.path.basename(p)}]({rel(p, root)})" for p in pngs)]
         lines.append("")
-    lines += ["## Runs: setting, commit and wall time", ""]
-    header, rows = [], []
-    for name, run in sorted(m["found"].items()):
-        p = P.provenance(run)
-        rows.append([name, P.setting(run), p["git_commit"], p["build_type"], p["started_utc"],
-                     P.duration(P.seconds(p["wall_s"])), run.experiment or run.title])
-    lines += table(["run", "setting", "commit", "build", "started (UTC)", "wall time", "experiment"], rows)
     path = os.path.join(root, "REPORT.md")
     with open(path + ".tmp", "w", encoding="utf-8") as fh:
         fh.write("\n".join(lines))

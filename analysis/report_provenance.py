@@ -47,10 +47,12 @@ def claim_key(run):
 
 
 def provenance(run):
-    """The run's provenance attributes as text ("not recorded" where index.h5 has none)."""
+    """The run's provenance attributes as text (index.h5's, or a fit's record's; "not recorded"
+    where the file has none)."""
     out = {k: NOT_RECORDED for k in PROVENANCE}
-    path = os.path.join(run.folder, "index.h5")
-    if not os.path.exists(path):
+    path = next((p for p in (os.path.join(run.folder, n) for n in ("index.h5",) + R.FIT_FILES)
+                 if os.path.exists(p)), None)  # a fit folder's record carries its own
+    if path is None:
         return out
     with h5py.File(path, "r") as idx:
         for k in PROVENANCE:
