@@ -179,6 +179,9 @@ def build(root, values):
             annotate(s, row.run, values, lists)
             if run is None:
                 s.notes = [P.not_run_text(row.run, lists, experiment_file(row.run))]
+                if row.command and not any(P.where_run(row.run, lists)):
+                    s.notes = ["made by the command below (make reproduce and make reproduce-full run it after "
+                               "the experiments)"]
             sections.append(s)
         papers.append((paper, sections))
     # Rows drawn by the kind's plotter (module None): the run's first such row shows its other PNGs.

@@ -131,10 +131,10 @@ def where_run(key, lists):
 
 def not_run_text(key, lists, experiment=None):
     full, quick = where_run(key, lists)
-    if full:
-        return "runs in " + " and ".join(full)
-    if quick:
-        return "its QUICK version runs in " + " and ".join(quick)
+    parts = (["runs in " + " and ".join(full)] if full else []) + \
+        (["its QUICK version runs in " + " and ".join(quick)] if quick else [])
+    if parts:
+        return "; ".join(parts)
     return f"runs on demand: build/creaturelab run {experiment}" if experiment else "in no reproduce list"
 
 
