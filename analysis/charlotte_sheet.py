@@ -17,6 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+import style  # noqa: E402
 
 COLUMNS = [
     ("segments_removed", "removed", "{:.0f}"),
@@ -34,12 +35,9 @@ COLUMNS = [
 RENDERS = ["web", "overlay", "cut", "result"]
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("run")
-    ap.add_argument("--out", default=None)
-    args = ap.parse_args()
-    with h5py.File(os.path.join(args.run, "index.h5"), "r") as idx:
+def draw(run, out):
+    """The table of the run folder `run` (printed) and its contact sheet, as a PNG in folder `out`."""
+    with h5py.File(os.path.join(run, "index.h5"), "r") as idx:
         s = idx["sweep"]
         labels = [lab or str(i) for lab, i in zip(s["label"].asstr()[...], s["point_index"][...])]
         points = list(s["point_index"][...])
@@ -54,23 +52,34 @@ def main():
             cells.append(f"{fmt.format(v * 1000 if m == 'hub_shift_m' else v):>8}")
         print(f"{lab:<{width}}  " + "  ".join(cells))
 
-    out = args.out or os.path.join(args.run, "figures")
     os.makedirs(out, exist_ok=True)
-    fig, axes = plt.subplots(len(points), len(RENDERS), figsize=(3.2 * len(RENDERS), 3.3 * len(points)), squeeze=False)
+    panel = style.WIDTH_IN / len(RENDERS)
+    fig, axes = style.subplots(len(points), len(RENDERS), height=(panel + 0.45) * len(points), squeeze=False)
     for row, (p, lab) in enumerate(zip(points, labels)):
         for col, name in enumerate(RENDERS):
             ax = axes[row][col]
             ax.axis("off")
-            path = os.path.join(args.run, f"point_{p:06d}_{name}.png")
+            path = os.path.join(run, f"point_{p:06d}_{name}.png")
             if os.path.exists(path):
                 ax.imshow(mpimg.imread(path))
-            ax.set_title(f"{lab}: {name}", fontsize=8)
-    fig.suptitle(title, fontsize=9)
-    fig.tight_layout(rect=(0, 0, 1, 1 - 0.25 / (3.3 * len(points))))
+            ax.set_title(f"{lab}: {name}", fontsize=9)
+    fig.suptitle(style.wrap(title, 100))
     png = os.path.join(out, "charlotte_sheet.png")
-    fig.savefig(png, dpi=90)
+    style.save(fig, png)
     print(png)
 
+
+def figures(run):
+    """(name, Figure) of the contact sheet of the run folder `run`."""
+    return style.collect(draw, run)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("run")
+    ap.add_argument("--out", default=None)
+    args = ap.parse_args()
+    draw(args.run, args.out or os.path.join(args.run, "figures"))
 
 if __name__ == "__main__":
     main()

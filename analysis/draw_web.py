@@ -17,9 +17,9 @@ import h5py
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
+import style  # noqa: E402
 
 TYPES = ["outer_frame", "inner_frame", "primary_spoke", "hub", "secondary_spoke", "spiral"]
 COLOURS = ["#8c564b", "#d62728", "#1f77b4", "#9467bd", "#2ca02c", "#ff7f0e"]
@@ -48,7 +48,7 @@ def draw_web(f, ax, frame, by_type):
     if not by_type:
         ax.set_facecolor("#1a1a1a")
     else:
-        ax.legend(fontsize=6, loc="lower right")
+        ax.legend(fontsize=9, loc="lower right")
 
 
 def draw_point(path, out, frame, by_type):
@@ -57,12 +57,12 @@ def draw_point(path, out, frame, by_type):
         if f.attrs["status"] != "ok":
             print(f"{name}: {f.attrs['status']}: {f.attrs['message']}")
             return None
-        fig, (web_ax, ke_ax) = plt.subplots(1, 2, figsize=(11, 5.2), gridspec_kw={"width_ratios": [1.3, 1]})
+        fig, (web_ax, ke_ax) = style.subplots(1, 2, height=5.0, gridspec_kw={"width_ratios": [1.3, 1]})
         k = frame if frame is not None else f["lagrangian/positions_m"].shape[0] - 1
         draw_web(f, web_ax, k, by_type)
         t = f["lagrangian/time_s"][k]
-        web_ax.set_title(f"{f.attrs['label'] or name}: t = {t:.1f} s, {int(f['metrics/particles'][()])} particles",
-                         fontsize=9)
+        web_ax.set_title(style.wrap(f"{f.attrs['label'] or name}: t = {t:.1f} s, "
+                                    f"{int(f['metrics/particles'][()])} particles", 60))
         if "timeseries/kinetic_energy_j" in f:
             ts = f["timeseries/time_s"][...]
             ke = f["timeseries/kinetic_energy_j"][...]
@@ -70,15 +70,13 @@ def draw_point(path, out, frame, by_type):
             settle = float(f["metrics/settling_time_s"][()])
             if np.isfinite(settle):
                 ke_ax.axvline(settle, color="tab:red", lw=0.8, label=f"settled at {settle:.2f} s")
-                ke_ax.legend(fontsize=8)
+                ke_ax.legend()
             ke_ax.set_ylim(max(ke.max() * 1e-9, 1e-300), ke.max() * 3)
             ke_ax.set_xlabel("time (s)")
             ke_ax.set_ylabel("kinetic energy (J)")
-        fig.suptitle(f.attrs["title"], fontsize=9)
-        fig.tight_layout()
+        fig.suptitle(style.wrap(f.attrs["title"], 100))
         png = os.path.join(out, name + (".types" if by_type else "") + ".png")
-        fig.savefig(png, dpi=110)
-        plt.close(fig)
+        style.save(fig, png)
         return png
 
 
@@ -92,18 +90,37 @@ def sweep_plot(run, out):
             return None
         labels = [lab or str(i) for lab, i in zip(s["label"].asstr()[...], s["point_index"][...])]
         metrics = ["particles", "spokes", "spiral_segments", "silk_length_m", "hub_sag_m", "settling_time_s"]
-        fig, axes = plt.subplots(2, 3, figsize=(12, 6))
+        fig, axes = style.subplots(2, 3, height=6.4, sharex=True)
         for ax, m in zip(axes.flat, metrics):
+            unit = s[m].attrs["unit"]
+            unit = unit.decode() if isinstance(unit, bytes) else str(unit)
             ax.plot(range(len(labels)), s[m][...], "o-")
-            ax.set_title(f"{m} ({s[m].attrs['unit']})" if s[m].attrs["unit"] else m, fontsize=9)
+            ax.set_ylabel(style.label(m, unit if m not in ("particles", "spokes", "spiral_segments") else "count"))
             ax.set_xticks(range(len(labels)))
-            ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=7)
-        fig.suptitle(idx.attrs["title"], fontsize=9)
-        fig.tight_layout()
+            ax.set_xticklabels(labels, rotation=30, ha="right")
+        for ax in axes[-1]:
+            ax.set_xlabel("sweep point")
+        fig.suptitle(style.wrap(idx.attrs["title"], 100))
         png = os.path.join(out, "sweep.png")
-        fig.savefig(png, dpi=100)
-        plt.close(fig)
+        style.save(fig, png)
         return png
+
+
+def draw(run, out, by_type=None, frame=None):
+    """Every figure of the run folder `run`, as PNGs (and tables) in folder `out`."""
+    os.makedirs(out, exist_ok=True)
+    for path in sorted(glob.glob(os.path.join(run, "point_*.h5"))):
+        png = draw_point(path, out, frame, by_type)
+        if png:
+            print(png)
+    png = sweep_plot(run, out)
+    if png:
+        print(png)
+
+
+def figures(run):
+    """(name, Figure) of every figure of the run folder `run`."""
+    return style.collect(draw, run)
 
 
 def main():
@@ -113,15 +130,7 @@ def main():
     ap.add_argument("--frame", type=int, default=None, help="stored frame to draw (default: last)")
     ap.add_argument("--out", default=None)
     args = ap.parse_args()
-    out = args.out or os.path.join(args.run, "figures")
-    os.makedirs(out, exist_ok=True)
-    for path in sorted(glob.glob(os.path.join(args.run, "point_*.h5"))):
-        png = draw_point(path, out, args.frame, args.by_type)
-        if png:
-            print(png)
-    png = sweep_plot(args.run, out)
-    if png:
-        print(png)
+    draw(args.run, args.out or os.path.join(args.run, "figures"), by_type=args.by_type, frame=args.frame)
 
 
 if __name__ == "__main__":

@@ -14,6 +14,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import style  # noqa: E402
 
 
 def circulation_series(f, param):
@@ -69,7 +70,5 @@ def wake(points, labels, param, out):
         ax.plot(tf, neg * 1e4, lw=1, ls="--", color=line.get_color(), label=f"{label}: w < 0 (stopping vortex)")
     ax.set_xlabel("time (s)")
     ax.set_ylabel("circulation below the aperture, right half (cm^2/s)")
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "wake.png"), dpi=110)
-    plt.close(fig)
+    ax.legend(fontsize=9)
+    style.save(fig, os.path.join(out, "wake.png"))

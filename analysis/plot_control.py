@@ -21,6 +21,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import style  # noqa: E402
 
 BOX, SPHERE, CAPSULE, ELLIPSOID, CYLINDER = 6, 2, 3, 4, 5
 
@@ -70,9 +71,9 @@ def has_ball(f):
 
 def frames_figure(points, png, plane=(0, 2)):
     n = len(points)
-    cols = min(n, 4)
+    cols = min(n, 3)
     rows = (n + cols - 1) // cols
-    fig, axes = plt.subplots(rows, cols, figsize=(3.6 * cols, 3.6 * rows), squeeze=False)
+    fig, axes = style.subplots(rows, cols, width=min(style.WIDTH_IN, 3.8 * cols), height=3.9 * rows, squeeze=False)
     for ax in axes.flat[n:]:
         ax.axis("off")
     for ax, f in zip(axes.flat, points):
@@ -85,27 +86,25 @@ def frames_figure(points, png, plane=(0, 2)):
             draw_pose(ax, frames, types, k, 0.25 + 0.75 * i / 5, 2.0 if last else 0.8, plane)
         wind = np.array([float(f.attrs[f"wind_{a}_m_per_s"]) for a in "xyz"])
         if np.linalg.norm(wind) > 0 and float(f.attrs["density_kg_per_m3"]) > 0:
-            lo, hi = ax.get_xlim(), ax.get_ylim()
+            # The wind as an arrow in the axes' lower left corner (axes fractions), clear of the title.
             w2 = wind[list(plane)]
             direction = w2 / np.linalg.norm(w2) if np.linalg.norm(w2) > 0 else np.zeros(2)
-            start = np.array([lo[0], hi[1]])
-            ax.annotate("", xy=start + 0.25 * (lo[1] - lo[0]) * direction, xytext=start,
+            start = np.array([0.05, 0.08])
+            ax.annotate("", xy=start + 0.2 * direction, xytext=start, xycoords="axes fraction",
                         arrowprops=dict(arrowstyle="->", color="tab:red"))
-            ax.text(lo[0], hi[1], f" wind {np.linalg.norm(wind):g} m/s", color="tab:red", fontsize=7, va="bottom")
+            ax.text(0.05, 0.1, f"wind {np.linalg.norm(wind):g} m/s", color="tab:red", transform=ax.transAxes,
+                    va="bottom")
         m = f["metrics"]
-        ax.set_title(f"{title(f)}\nfinal {float(m['final_angle_deg'][()]):.1f} deg, converged frame "
-                     f"{int(m['converged_frame'][()])}", fontsize=7)
+        ax.set_title(style.wrap(f"{title(f)}; final {float(m['final_angle_deg'][()]):.1f} deg, converged at frame "
+                                f"{int(m['converged_frame'][()])}", 34))
         ax.set_aspect("equal", adjustable="datalim")
-        ax.set_xlabel(f"{'xyz'[plane[0]]} (m)", fontsize=7)
-        ax.set_ylabel(f"{'xyz'[plane[1]]} (m)", fontsize=7)
-        ax.tick_params(labelsize=6)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+        ax.set_xlabel(f"{'xyz'[plane[0]]} (m)")
+        ax.set_ylabel(f"{'xyz'[plane[1]]} (m)")
+    style.save(fig, png)
 
 
 def angles_figure(points, png):
-    fig, (ax_angle, ax_obj) = plt.subplots(1, 2, figsize=(12, 4.2))
+    fig, (ax_angle, ax_obj) = style.subplots(1, 2, height=4.6)
     for f in points:
         t = f["timeseries/time_s"][...]
         dofs = [k[len("angle_deg_"):] for k in f["timeseries"] if k.startswith("angle_deg_")]
@@ -121,10 +120,10 @@ def angles_figure(points, png):
     ax_obj.set_xlabel("time (s)")
     ax_obj.set_ylabel("objective J_i (effort N m s, drag N)")
     ax_obj.set_yscale("symlog", linthresh=1e-3)
-    ax_angle.legend(fontsize=5, ncol=2)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+    ax_angle.set_title("controlled angles")
+    ax_obj.set_title("objectives (colours as the angles)")
+    ax_angle.legend(ncol=1 if len(ax_angle.get_lines()) < 6 else 2)
+    style.save(fig, png)
 
 
 def timing_table(points, path):
@@ -146,17 +145,13 @@ def timing_table(points, path):
                                              for c, n in zip(columns, names)) + "\n")
 
 
-def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("run")
-    parser.add_argument("--out")
-    args = parser.parse_args()
-    out = args.out or os.path.join(args.run, "figures")
+def draw(run, out):
+    """Every figure of a control run folder, as PNGs (and the timing table) in folder `out`."""
     os.makedirs(out, exist_ok=True)
-    files = [h5py.File(p, "r") for p in sorted(glob.glob(os.path.join(args.run, "point_*.h5")))]
+    files = [h5py.File(p, "r") for p in sorted(glob.glob(os.path.join(run, "point_*.h5")))]
     points = [f for f in files if "lagrangian/geom_frames_m" in f]
     if not points:
-        raise SystemExit(f"{args.run}: no control points with geom frames")
+        raise SystemExit(f"{run}: no control points with geom frames")
     frames_figure(points, os.path.join(out, "frames.png"))
     if any(has_ball(f) for f in points):
         frames_figure(points, os.path.join(out, "frames_top.png"), plane=(0, 1))
@@ -165,6 +160,19 @@ def main():
         timing_table(points, os.path.join(out, "parallel_dofs.txt"))
     for f in files:
         f.close()
+
+
+def figures(run):
+    """(name, Figure) of every figure of the run folder `run`."""
+    return style.collect(draw, run)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("run")
+    parser.add_argument("--out")
+    args = parser.parse_args()
+    draw(args.run, args.out or os.path.join(args.run, "figures"))
 
 
 if __name__ == "__main__":

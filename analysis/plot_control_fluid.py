@@ -26,6 +26,7 @@ import numpy as np  # noqa: E402
 
 from plot_control import timing_table  # noqa: E402
 import plot_swimmer  # noqa: E402
+import style  # noqa: E402
 
 # Fig. 2, the Navier-Stokes rows: first converged frame by (objective, sense); drag_along is the
 # drag the block feels along the stream.
@@ -69,13 +70,11 @@ def vorticity_figure(points, png):
         last = f["fields/vorticity_per_s"].shape[0] - 1
         im, _ = draw_field(ax, f, last)
         ax.set_title(f"{label(f)}\nflow angle {metric(f, 'flow_angle_deg'):.1f} deg, t = "
-                     f"{f['fields/time_s'][last]:.2f} s", fontsize=7)
+                     f"{f['fields/time_s'][last]:.2f} s", fontsize=9)
         ax.tick_params(labelsize=6)
         fig.colorbar(im, ax=ax, shrink=0.7).ax.tick_params(labelsize=6)
     fig.suptitle("vorticity (1/s) and the bodies' outline markers; stream from the left (Fig. 8)", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+    style.save(fig, png)
 
 
 def frame_series(f, folder):
@@ -85,10 +84,8 @@ def frame_series(f, folder):
     for k in range(w.shape[0]):
         fig, ax = plt.subplots(figsize=(5, 5))
         draw_field(ax, f, k, lim)
-        ax.set_title(f"{label(f)}: t = {f['fields/time_s'][k]:.2f} s", fontsize=8)
-        fig.tight_layout()
-        fig.savefig(os.path.join(folder, f"frame_{k:04d}.png"), dpi=80)
-        plt.close(fig)
+        ax.set_title(f"{label(f)}: t = {f['fields/time_s'][k]:.2f} s", fontsize=9)
+        style.save(fig, os.path.join(folder, f"frame_{k:04d}.png"))
 
 
 def angles_figure(points, png):
@@ -104,10 +101,8 @@ def angles_figure(points, png):
     ax_force.set_xlabel("time (s)")
     ax_force.set_ylabel("fluid force on the joint's bodies along w (N)")
     ax_force.set_yscale("symlog", linthresh=100)
-    ax_angle.legend(fontsize=5, ncol=2)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+    ax_angle.legend(fontsize=9, ncol=2)
+    style.save(fig, png)
 
 
 def converged(angles, tol_deg, tail):
@@ -136,16 +131,12 @@ def convergence_table(points, path):
                       f"{PAPER_FRAME.get((objective, sense), 0):11d}\n")
 
 
-def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("run")
-    parser.add_argument("--out")
-    args = parser.parse_args()
-    out = args.out or os.path.join(args.run, "figures")
+def draw(run, out):
+    """Every figure of the run folder `run`, as PNGs (and tables) in folder `out`."""
     os.makedirs(out, exist_ok=True)
-    points = [h5py.File(p, "r") for p in sorted(glob.glob(os.path.join(args.run, "point_*.h5")))]
+    points = [h5py.File(p, "r") for p in sorted(glob.glob(os.path.join(run, "point_*.h5")))]
     if not points:
-        raise SystemExit(f"{args.run}: no points")
+        raise SystemExit(f"{run}: no points")
     with_fields = [f for f in points if "fields/vorticity_per_s" in f]
     if with_fields:
         vorticity_figure(with_fields, os.path.join(out, "vorticity.png"))
@@ -158,6 +149,19 @@ def main():
     plot_swimmer.draw(points, out, draw_field)  # the swimmer's rise (§7.2), when the run tracks one
     for f in points:
         f.close()
+
+
+def figures(run):
+    """(name, Figure) of every figure of the run folder `run`."""
+    return style.collect(draw, run)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("run")
+    parser.add_argument("--out")
+    args = parser.parse_args()
+    draw(args.run, args.out or os.path.join(args.run, "figures"))
 
 
 if __name__ == "__main__":

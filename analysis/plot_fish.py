@@ -32,6 +32,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import style  # noqa: E402
 
 
 def text(v):
@@ -73,10 +74,8 @@ def trajectories(points, axes, out):
     ax.set_ylabel("y (m), left of the initial heading")
     ax.set_title("centre of mass, top view (fish outline at the end)")
     if len(points) > 1:
-        ax.legend(fontsize=6, loc="best")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "trajectories.png"), dpi=130)
-    plt.close(fig)
+        ax.legend(fontsize=9, loc="best")
+    style.save(fig, os.path.join(out, "trajectories.png"))
 
 
 def speed(points, axes, out):
@@ -97,9 +96,7 @@ def speed(points, axes, out):
     ax2.set_xlabel("gait frequency / body's lowest sideways mode")
     ax2.set_ylabel("stride (body lengths per swim cycle)")
     ax2.set_title("the body's inertia filters gaits faster than its modes", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "speed.png"), dpi=130)
-    plt.close(fig)
+    style.save(fig, os.path.join(out, "speed.png"))
 
 
 def stability(points, axes, out):
@@ -117,20 +114,18 @@ def stability(points, axes, out):
                 continue
             x = groups.index(n) + (k - (len(schemes) - 1) / 2) * width
             ax.bar(x, v, width, color=colors[sc], label=sc if n == groups[0] else None)
-            ax.text(x, v, f"{v:.3g}", ha="center", va="bottom", fontsize=6)
+            ax.text(x, v, f"{v:.3g}", ha="center", va="bottom", fontsize=9)
     for g in groups:
         lim = limit[names.index(g)]
         i = groups.index(g)
         ax.plot([i - 0.45, i + 0.45], [lim, lim], "k--", lw=0.8, label="2 / w_max" if i == 0 else None)
     ax.set_xticks(range(len(groups)))
-    ax.set_xticklabels([g or "-" for g in groups], fontsize=7, rotation=15)
+    ax.set_xticklabels([g or "-" for g in groups], fontsize=9, rotation=15)
     ax.set_yscale("log")
     ax.set_ylabel("largest stable step (s)")
     ax.set_title("largest stable step per scheme; dashed: the stiffest vibration's 2 / w_max", fontsize=9)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "stability.png"), dpi=130)
-    plt.close(fig)
+    ax.legend(fontsize=9)
+    style.save(fig, os.path.join(out, "stability.png"))
 
 
 def air(points, axes, out):
@@ -150,11 +145,9 @@ def air(points, axes, out):
     a1.set_ylabel("|sum m v| (kg m/s)")
     a2.set_ylabel("centre-of-mass travel (m)")
     a2.set_xlabel("time (s)")
-    a1.legend(fontsize=7)
+    a1.legend(fontsize=9)
     a1.set_title("fish in air (mu = 0): momentum and centre of mass stay at round-off")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "air.png"), dpi=130)
-    plt.close(fig)
+    style.save(fig, os.path.join(out, "air.png"))
 
 
 def coupling(f, out):
@@ -182,14 +175,12 @@ def coupling(f, out):
                 ax.plot(g[i, :, 0], g[i, :, 1], g[i, :, 2], color="#3a3", lw=0.4)
             for j in range(21):
                 ax.plot(g[:, j, 0], g[:, j, 1], g[:, j, 2], color="#3a3", lw=0.4)
-        ax.set_title(title + "\nunits: red muscle, grey cross, blue other; green: NURBS control net", fontsize=8)
+        ax.set_title(title + "\nunits: red muscle, grey cross, blue other; green: NURBS control net", fontsize=9)
         span = np.ptp(c, axis=0)
         ax.set_box_aspect(tuple(max(v, 0.05 * span.max()) for v in span))
         ax.view_init(elev=25, azim=-60)
         ax.set_axis_off()
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "coupling.png"), dpi=130)
-    plt.close(fig)
+    style.save(fig, os.path.join(out, "coupling.png"))
 
 
 def school(points, out):
@@ -204,13 +195,11 @@ def school(points, out):
     ax.loglog(n, realtime, "s--", label="real-time factor of the school (sim s / wall s)")
     ax.axhline(1.0, color="grey", lw=0.8)
     for x, y, z in zip(n, rate, realtime):
-        ax.annotate(f"{y:.3g}/s, x{z:.3g}", (x, y), fontsize=7, textcoords="offset points", xytext=(4, 4))
+        ax.annotate(f"{y:.3g}/s, x{z:.3g}", (x, y), fontsize=9, textcoords="offset points", xytext=(4, 4))
     ax.set_xlabel("fish in the school")
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=9)
     ax.set_title("school: one core, 0.055 s steps (wall time from the point files' wall_time_s)", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "school.png"), dpi=130)
-    plt.close(fig)
+    style.save(fig, os.path.join(out, "school.png"))
 
 
 def render_skin(run, out):
@@ -232,24 +221,18 @@ def render_skin(run, out):
     for ax, png in zip(axes, images):
         ax.imshow(plt.imread(png))
         ax.set_axis_off()
-        ax.set_title(os.path.basename(png), fontsize=8)
+        ax.set_title(os.path.basename(png), fontsize=9)
     fig.suptitle("the skinned fish over one tail-beat cycle (POV-Ray)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "skin_cycle.png"), dpi=110)
-    plt.close(fig)
+    style.save(fig, os.path.join(out, "skin_cycle.png"))
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("run")
-    parser.add_argument("--out")
-    args = parser.parse_args()
-    out = args.out or os.path.join(args.run, "figures")
+def draw(run, out):
+    """Every figure of the run folder `run`, as PNGs (and tables) in folder `out`."""
     os.makedirs(out, exist_ok=True)
-    axes = sweep_axes(args.run)
-    points = [h5py.File(p, "r") for p in sorted(glob.glob(os.path.join(args.run, "point_*.h5")))]
+    axes = sweep_axes(run)
+    points = [h5py.File(p, "r") for p in sorted(glob.glob(os.path.join(run, "point_*.h5")))]
     if not points:
-        raise SystemExit("no point files in " + args.run)
+        raise SystemExit("no point files in " + run)
     task = text(attr(points[0], "task", "simulate"))
     if task == "stable_step":
         stability(points, axes, out)
@@ -267,7 +250,20 @@ def main():
         if "lagrangian/skin_control_points_m" in f:
             coupling(f, out)
             break
-    render_skin(args.run, out)
+    render_skin(run, out)
+
+
+def figures(run):
+    """(name, Figure) of every figure of the run folder `run`."""
+    return style.collect(draw, run)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("run")
+    parser.add_argument("--out")
+    args = parser.parse_args()
+    draw(args.run, args.out or os.path.join(args.run, "figures"))
 
 
 if __name__ == "__main__":

@@ -21,6 +21,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import style  # noqa: E402
 
 
 def text(v):
@@ -48,16 +49,14 @@ def plot_spline(path, out_png):
     curve.set_ylabel("value")
     curve.set_title(f"period {f.attrs['period_s']:.4g} s ({text(f.attrs['period_source'])}); "
                     f"loss {text(f.attrs['loss'])}", fontsize=9)
-    curve.legend(fontsize=8)
+    curve.legend(fontsize=9)
     resid.plot(f["data/time_s"][...][used], f["data/residual"][...][used], ".", color="0.3", ms=3)
     resid.axhline(0, color="k", lw=0.6)
     resid.set_xlabel("time (s)")
     resid.set_ylabel("fit - data")
     resid.set_title("residuals", fontsize=9)
     fig.suptitle(text(f.attrs["data_source"]), fontsize=9)
-    fig.tight_layout()
-    fig.savefig(out_png, dpi=110)
-    plt.close(fig)
+    style.save(fig, out_png)
 
 
 def plot_controller(path, out_png):
@@ -78,7 +77,7 @@ def plot_controller(path, out_png):
     curves.set_xlabel("phase in the cycle")
     curves.set_ylabel("muscle rest-length factor")
     curves.set_title("contraction curves", fontsize=9)
-    curves.legend(fontsize=8)
+    curves.legend(fontsize=9)
 
     for group, color in (("start", "0.45"), ("fitted", "tab:red")):
         ts = f[f"{group}/timeseries"]
@@ -90,7 +89,7 @@ def plot_controller(path, out_png):
     traj.set_xlabel("time (s)")
     traj.set_ylabel("axial displacement (mm)")
     traj.set_title("trajectories", fontsize=9)
-    traj.legend(fontsize=8)
+    traj.legend(fontsize=9)
 
     h = f["history"]
     hist.plot(h["iteration"][...], h["objective"][...], "ko-", ms=4)
@@ -98,11 +97,30 @@ def plot_controller(path, out_png):
     hist.set_ylabel(metric if text(f.attrs["objective_type"]) == "maximise" else "cost")
     ev = f["evaluations"]
     hist.set_title(f"{ev['cost'].shape[0]} runs; " + ", ".join(
-        f"{n} {a:.3g}→{b:.3g}" for n, a, b in zip(names, x0, x1)), fontsize=8)
+        f"{n} {a:.3g}→{b:.3g}" for n, a, b in zip(names, x0, x1)), fontsize=9)
     fig.suptitle(text(f.attrs["title"]), fontsize=9)
-    fig.tight_layout()
-    fig.savefig(out_png, dpi=110)
-    plt.close(fig)
+    style.save(fig, out_png)
+
+
+def draw(run, out):
+    """Every figure of the run folder `run`, as PNGs (and tables) in folder `out`."""
+    os.makedirs(out, exist_ok=True)
+    drawn = []
+    for name, draw in (("spline_fit", plot_spline), ("controller_fit", plot_controller)):
+        path = os.path.join(run, name + ".h5")
+        if os.path.exists(path):
+            png = os.path.join(out, name + ".png")
+            draw(path, png)
+            drawn.append(png)
+    if not drawn:
+        raise SystemExit(f"{run}: no spline_fit.h5 or controller_fit.h5")
+    for png in drawn:
+        print(png)
+
+
+def figures(run):
+    """(name, Figure) of every figure of the run folder `run`."""
+    return style.collect(draw, run)
 
 
 def main():
@@ -110,19 +128,7 @@ def main():
     ap.add_argument("fit_dir")
     ap.add_argument("--out", help="figure folder (default FIT_DIR/figures)")
     args = ap.parse_args()
-    out = args.out or os.path.join(args.fit_dir, "figures")
-    os.makedirs(out, exist_ok=True)
-    drawn = []
-    for name, draw in (("spline_fit", plot_spline), ("controller_fit", plot_controller)):
-        path = os.path.join(args.fit_dir, name + ".h5")
-        if os.path.exists(path):
-            png = os.path.join(out, name + ".png")
-            draw(path, png)
-            drawn.append(png)
-    if not drawn:
-        raise SystemExit(f"{args.fit_dir}: no spline_fit.h5 or controller_fit.h5")
-    for png in drawn:
-        print(png)
+    draw(args.fit_dir, args.out or os.path.join(args.fit_dir, "figures"))
 
 
 if __name__ == "__main__":

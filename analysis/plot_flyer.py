@@ -33,6 +33,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from plot_control_fluid import draw_field, text  # noqa: E402
+import style  # noqa: E402
 
 
 def is_flyer(f):
@@ -62,10 +63,8 @@ def angles_figure(points, png):
     axes[2].set_ylabel("fluid's upward force on all bodies (N)")
     axes[2].set_xlabel("time (s)")
     for ax in axes:
-        ax.legend(fontsize=5, ncol=2)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+        ax.legend(fontsize=9, ncol=2)
+    style.save(fig, png)
 
 
 def extreme_frames(f):
@@ -84,14 +83,12 @@ def vorticity_figure(points, png):
     for row, f in zip(axes, points):
         for ax, k, when in zip(row, extreme_frames(f), ("wing furthest down", "wing furthest up")):
             im, _ = draw_field(ax, f, k)
-            ax.set_title(f"{text(f, 'label')} ({resolution(f)}): {when}, t = {f['fields/time_s'][k]:.2f} s", fontsize=7)
+            ax.set_title(f"{text(f, 'label')} ({resolution(f)}): {when}, t = {f['fields/time_s'][k]:.2f} s", fontsize=9)
             ax.tick_params(labelsize=6)
             fig.colorbar(im, ax=ax, shrink=0.7).ax.tick_params(labelsize=6)
     fig.suptitle("the driven flyer: vorticity (1/s) and the bodies' outline markers; source at the floor, "
-                 "open top (§7.1, Figs. 11, 12)", fontsize=8)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+                 "open top (§7.1, Figs. 11, 12)", fontsize=9)
+    style.save(fig, png)
 
 
 def window(f):
@@ -216,23 +213,17 @@ def phase_outputs(points, png, path):
     axes[1].set_ylabel("fluid's upward force on all bodies (N)")
     axes[1].set_xlabel("phase of the flap")
     for ax in axes:
-        ax.legend(fontsize=5, ncol=2)
-    fig.suptitle("the driven flyer over a flap: phase means over the force window (§7.1)", fontsize=8)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+        ax.legend(fontsize=9, ncol=2)
+    fig.suptitle("the driven flyer over a flap: phase means over the force window (§7.1)", fontsize=9)
+    style.save(fig, png)
 
 
-def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("run")
-    parser.add_argument("--out")
-    args = parser.parse_args()
-    out = args.out or os.path.join(args.run, "figures")
-    points = [h5py.File(p, "r") for p in sorted(glob.glob(os.path.join(args.run, "point_*.h5")))]
+def draw(run, out):
+    """Every figure of the run folder `run`, as PNGs (and tables) in folder `out`."""
+    os.makedirs(out, exist_ok=True)
+    points = [h5py.File(p, "r") for p in sorted(glob.glob(os.path.join(run, "point_*.h5")))]
     flyers = [f for f in points if is_flyer(f)]
     if flyers:
-        os.makedirs(out, exist_ok=True)
         angles_figure(flyers, os.path.join(out, "flyer_angles.png"))
         force_table(flyers, os.path.join(out, "flyer_force.txt"))
         phase_outputs(flyers, os.path.join(out, "flyer_phase.png"), os.path.join(out, "flyer_phase.txt"))
@@ -241,6 +232,19 @@ def main():
             vorticity_figure(with_fields, os.path.join(out, "flyer_vorticity.png"))
     for f in points:
         f.close()
+
+
+def figures(run):
+    """(name, Figure) of every figure of the run folder `run`."""
+    return style.collect(draw, run)
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("run")
+    parser.add_argument("--out")
+    args = parser.parse_args()
+    draw(args.run, args.out or os.path.join(args.run, "figures"))
 
 
 if __name__ == "__main__":

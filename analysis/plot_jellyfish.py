@@ -36,6 +36,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import style  # noqa: E402
 
 
 def text(v):
@@ -134,21 +135,29 @@ def settings(points, indices):
 
 
 def trajectories(sweep, points, out, axis_name):
-    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.5))
+    fig, (left, right) = style.subplots(1, 2, height=4.4)
     axis = numeric_axis(sweep, axis_name)
     cmap = plt.get_cmap("viridis")
     n = len(points)
+    # Colour by the swept value, with a colour bar, when a numeric axis varies; else a legend.
+    values = np.asarray(sweep[axis], dtype=float) if axis else None
+    norm = plt.Normalize(np.nanmin(values), np.nanmax(values)) if axis else None
     for k, f in enumerate(points):
         if text(f["metrics"].attrs.get("status", b"ok")) not in ("ok",) and "timeseries" not in f:
             continue
         t = f["timeseries/time_s"][...]
         y = f["timeseries/centroid_y_m"][...]
-        left.plot(t, (y - y[0]) * 1e3, color=cmap(k / max(1, n - 1)), lw=0.8, label=label_of(sweep, k) if n <= 8 else None)
+        colour = cmap(norm(values[k])) if axis else cmap(k / max(1, n - 1))
+        left.plot(t, (y - y[0]) * 1e3, color=colour, lw=0.9, ls=":" if plucked(f) else "-",
+                  label=None if axis else label_of(sweep, k))
     left.set_xlabel("time (s)")
     left.set_ylabel("centroid displacement (mm)")
-    left.set_title("trajectories (Fig. 5 left)")
-    if n <= 8:
-        left.legend(fontsize=7)
+    left.set_title("trajectories (Fig. 5 left)" + ("; dotted: pluck" if any(plucked(f) for f in points) else ""))
+    if axis:
+        bar = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=left)
+        bar.set_label(style.label(axis))
+    else:
+        left.legend()
     dist = np.array([window_distance(f) for f in points])
     driven = np.array([not plucked(f) for f in points])
     if axis:
@@ -158,21 +167,20 @@ def trajectories(sweep, points, out, axis_name):
             colour = f"C{g}" if name else "k"
             right.plot(x[ks], dist[ks] * 1e3, "o-", color=colour, ms=3, label=name)
             best = ks[int(np.nanargmax(dist[ks]))]
-            right.axvline(x[best], color=colour, lw=0.8, ls="--", label=f"max at {axis} = {x[best]:g}")
+            right.axvline(x[best], color=colour, lw=0.8, ls="--", label=f"largest at {style.value_label(axis, float(x[best]))}")
         fn = [metric(f, "natural_hz") for f in points if plucked(f)]
         if fn and axis == "contraction_hz":
-            right.axvline(np.mean(fn), color="tab:blue", lw=0.8, ls=":", label=f"f_n = {np.mean(fn):.3g} Hz (pluck)")
-        right.set_xlabel(axis)
-        right.legend(fontsize=8)
+            right.axvline(np.mean(fn), color="tab:blue", lw=0.8, ls=":", label=f"natural frequency {np.mean(fn):.3g} Hz (pluck)")
+        right.set_xlabel(style.label(axis))
+        right.legend()
     else:
         right.bar(range(n), dist * 1e3, color="0.4")
-        right.set_xticks(range(n), [label_of(sweep, k) for k in range(n)], rotation=20, fontsize=7)
+        right.set_xticks(range(n), [label_of(sweep, k) for k in range(n)], rotation=20)
+        right.set_xlabel("sweep point")
     right.axhline(0, color="0.7", lw=0.6)
-    right.set_ylabel("distance in the window at its whole cycles' rate (mm)")
-    right.set_title("distance (Fig. 5 right)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "trajectories.png"), dpi=110)
-    plt.close(fig)
+    right.set_ylabel("distance in the window (mm)")
+    right.set_title(style.wrap("distance at the whole cycles' mean speed (Fig. 5 right)", 50))
+    style.save(fig, os.path.join(out, "trajectories.png"))
 
 
 def outline(xy, bell, thickness):
@@ -218,16 +226,27 @@ def morphology(sweep, points, out, cycles):
             for chain, root in ((tent[:half], p[0]), (tent[half:], p[bell - 1])):
                 c = np.vstack([root, chain])
                 ax.plot(c[:, 0] * 1e3, c[:, 1] * 1e3, "k", lw=0.5)
-            ax.text(col * spacing * 1e3, -35, f"t = {t[fr] - warm:.2f} s", ha="center", fontsize=7)
+            ax.text(col * spacing * 1e3, -35, f"t = {t[fr] - warm:.2f} s", ha="center", fontsize=9)
         ax.set_aspect("equal")
         ax.set_xlabel("mm (frames offset sideways; height relative to the first frame)")
         ax.set_title(f"bell through {cycles:g} cycle(s) at {hz:g} Hz (Fig. 11): {label_of(sweep, k)}", fontsize=9)
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, f"morphology_{k}.png"), dpi=110)
-        plt.close(fig)
+        style.save(fig, os.path.join(out, f"morphology_{k}.png"))
+
+
+def drawn_cycle(f, times):
+    """(start, end) in s of the contraction cycle a figure of the point shows: the first cycle after
+    the warm-up when `times` reach it, else the last whole cycle of `times`."""
+    period = 1.0 / float(param(f, "contraction_hz"))
+    start = float(param(f, "warmup_cycles") or 0.0) * period
+    if start + period > times[-1] + 1e-9 or start < times[0] - 1e-9:
+        start = max(times[0], times[-1] - period)
+    return start, start + period
 
 
 def vorticity(sweep, points, out):
+    """Rudolf & Mould Fig. 6: the vorticity around the bell at four phases of one contraction cycle,
+    with the trace particles' paths over the cycle before each frame (/lagrangian/tracers_m, stored
+    at the markers' frames: they move a few mm per cycle, so a dot per frame would hide the flow)."""
     for k, f in enumerate(points):
         if "fields/vorticity_per_s" not in f:
             continue
@@ -236,29 +255,42 @@ def vorticity(sweep, points, out):
         dx = float(f["fields"].attrs.get("dx_m", 0)) or float(param(f, "domain_m")) / w.shape[2]
         xy = f["lagrangian/markers_m"][...]
         tm = f["lagrangian/time_s"][...]
-        picks = np.linspace(0, len(tf) - 1, 4).astype(int)
-        fig, axes = plt.subplots(1, 4, figsize=(14, 4))
+        bell = int(f["topology/bell_markers"][0]) if "topology/bell_markers" in f else xy.shape[1]
+        tracers = f["lagrangian/tracers_m"] if "lagrangian/tracers_m" in f and f["lagrangian/tracers_m"].shape[0] else None
+        start, end = drawn_cycle(f, tf)
+        hz = float(param(f, "contraction_hz"))
+        picks = [int(np.argmin(np.abs(tf - (start + q * (end - start))))) for q in (0.0, 0.25, 0.5, 0.75)]
+        lim = max(np.percentile(np.abs(w[fr]), 99.5) for fr in picks) or 1.0
+        trail = int(round(1.0 / hz / np.median(np.diff(tm)))) if len(tm) > 1 else 0  # marker frames per cycle
+        if tracers is not None:  # every other row and column of the n x n lattice, so that paths stay apart
+            side = int(round(np.sqrt(tracers.shape[1])))
+            idx = np.arange(tracers.shape[1])
+            keep = idx[((idx // side) % 2 == 0) & ((idx % side) % 2 == 0)] if side * side == len(idx) else idx
+        fig, axes = style.subplots(1, 4, height=3.9, sharey=True)
+        half = 0.05  # m: the window around the bell's centre
+        ext = [0, w.shape[2] * dx * 1e3, 0, w.shape[1] * dx * 1e3]
         for ax, fr in zip(axes, picks):
-            m = np.searchsorted(tm, tf[fr])
-            m = min(m, len(tm) - 1)
-            c = xy[m, :, :].mean(axis=0)
-            half = 0.06
-            ext = [0, w.shape[2] * dx, 0, w.shape[1] * dx]
-            lim = np.percentile(np.abs(w[fr]), 99.5) or 1
-            ax.imshow(w[fr], origin="lower", extent=ext, cmap="RdBu_r", vmin=-lim, vmax=lim)
-            ax.plot(xy[m, :, 0], xy[m, :, 1], "k.", ms=1.5)
-            if "lagrangian/tracers_m" in f and f["lagrangian/tracers_m"].shape[0] > 0:
-                tr = f["lagrangian/tracers_m"][min(m, f["lagrangian/tracers_m"].shape[0] - 1)]
-                ax.plot(tr[:, 0], tr[:, 1], ".", color="0.3", ms=0.8)
-            ax.set_xlim(c[0] - half, c[0] + half)
-            ax.set_ylim(c[1] - half, c[1] + half)
-            ax.set_title(f"t = {tf[fr]:.2f} s", fontsize=8)
-            ax.set_xticks([])
-            ax.set_yticks([])
-        fig.suptitle(f"vorticity (1/s) and tracers (Fig. 6): {label_of(sweep, k)}", fontsize=9)
-        fig.tight_layout()
-        fig.savefig(os.path.join(out, f"vorticity_{k}.png"), dpi=110)
-        plt.close(fig)
+            m = min(int(np.searchsorted(tm, tf[fr])), len(tm) - 1)
+            c = xy[m, :bell, :].mean(axis=0)
+            image = ax.imshow(w[fr], origin="lower", extent=ext, cmap="RdBu_r", vmin=-lim, vmax=lim)
+            if tracers is not None:
+                path = tracers[max(0, m - trail):m + 1][:, keep]  # the last cycle's frames x tracers x 2
+                near = np.all(np.abs(path[-1] - c) < half, axis=1)
+                ax.plot(path[:, near, 0] * 1e3, path[:, near, 1] * 1e3, color="0.1", lw=0.8)
+                ax.plot(path[-1, near, 0] * 1e3, path[-1, near, 1] * 1e3, ".", color="0.1", ms=1.5)
+            ax.plot(xy[m, :, 0] * 1e3, xy[m, :, 1] * 1e3, ".", color="tab:green", ms=2)
+            ax.set_xlim((c[0] - half) * 1e3, (c[0] + half) * 1e3)
+            ax.set_ylim((c[1] - half) * 1e3, (c[1] + half) * 1e3)
+            ax.set_title(f"t = {tf[fr]:.2f} s (phase {(tf[fr] - start) * hz:.2f})")
+            ax.set_xlabel("x (mm)")
+        axes[0].set_ylabel("y (mm)")
+        bar = fig.colorbar(image, ax=list(axes), shrink=0.9)
+        bar.set_label("vorticity (1/s)")
+        warm = float(param(f, "warmup_cycles") or 0.0)
+        fig.suptitle(style.wrap(f"Fig. 6: the flow through one contraction cycle at {hz:g} Hz, t = {start:.2f}-{end:.2f} s"
+                                f" (after {warm:g} warm-up cycles); green: the bell; black: trace particles and their"
+                                f" paths over the last cycle; {label_of(sweep, k)}", 110))
+        style.save(fig, os.path.join(out, f"vorticity_{k}.png"))
 
 
 def resonance(sweep, points, out):
@@ -277,7 +309,7 @@ def resonance(sweep, points, out):
     left.set_xlabel("time (s)")
     left.set_ylabel("aperture width / rest width")
     left.set_title("pluck: free decay of the diameter")
-    left.legend(fontsize=7)
+    left.legend(fontsize=9)
     driven = [k for k, f in enumerate(points) if not plucked(f)]
     if driven and "contraction_hz" in sweep:
         hz = {k: float(sweep["contraction_hz"][k]) for k in driven}
@@ -297,12 +329,10 @@ def resonance(sweep, points, out):
         right.set_xlabel("driving frequency (Hz)")
         right.set_ylabel("stroke amplitude (diameter ratio)")
         right.set_title("driven at fixed peak tension")
-        right.legend(fontsize=7, loc="upper left")
+        right.legend(fontsize=9, loc="upper left")
     else:
         right.axis("off")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "resonance.png"), dpi=110)
-    plt.close(fig)
+    style.save(fig, os.path.join(out, "resonance.png"))
 
 
 def size_scaling(sweep, points, out):
@@ -341,7 +371,7 @@ def size_scaling(sweep, points, out):
     left.set_xlabel("driving frequency / f_n")
     left.set_ylabel("distance in the window at its whole cycles' rate / largest")
     left.set_title("distance against frequency per size (grey: within 20% of f_n)")
-    left.legend(fontsize=7)
+    left.legend(fontsize=9)
     fn_all = [fn for fns, _ in peaks.values() for fn in fns]
     if fn_all:
         line = np.array([0.8 * min(fn_all), 1.25 * max(fn_all)])
@@ -357,10 +387,8 @@ def size_scaling(sweep, points, out):
     right.set_xlabel("natural frequency f_n from the pluck (Hz)")
     right.set_ylabel("distance peak (Hz)")
     right.set_title("peak against f_n across sizes")
-    right.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, "size_scaling.png"), dpi=110)
-    plt.close(fig)
+    right.legend(fontsize=9)
+    style.save(fig, os.path.join(out, "size_scaling.png"))
 
 
 def richardson(h, q):
@@ -393,9 +421,7 @@ def setting_name(keys, values):
 
 def save_study(fig, lines, out, stem):
     """Writes a convergence study's figure STEM.png and table STEM.txt, and prints the table."""
-    fig.tight_layout()
-    fig.savefig(os.path.join(out, stem + ".png"), dpi=110)
-    plt.close(fig)
+    style.save(fig, os.path.join(out, stem + ".png"))
     with open(os.path.join(out, stem + ".txt"), "w") as fh:
         fh.write("\n".join(lines) + "\n")
     print("\n".join(lines))
@@ -433,7 +459,7 @@ def step_convergence(sweep, points, out):
         ax.set_xlim(left=0)
         ax.set_xlabel("coupled step dt (s), one grid")
         ax.set_ylabel(what)
-        ax.legend(fontsize=6)
+        ax.legend(fontsize=9)
     left.set_title("step convergence (issue 13 §1)")
     save_study(fig, lines, out, "step_convergence")
 
@@ -478,9 +504,30 @@ def convergence(sweep, points, out):
         ax.set_xlabel("cell size (mm), dt ∝ dx, markers ≤ half a cell apart")
         ax.set_ylabel(what)
     # One legend, beside the right panel, for both (the same colours): inside, it hid points.
-    right.legend(*left.get_legend_handles_labels(), fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    right.legend(*left.get_legend_handles_labels(), fontsize=9, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     left.set_title("grid convergence (issue 13 §1)")
     save_study(fig, lines, out, "convergence")
+
+
+def draw(run, out, axis=None, cycles=None, no_morphology=None):
+    """Every figure of the run folder `run`, as PNGs (and tables) in folder `out`."""
+    os.makedirs(out, exist_ok=True)
+    sweep, points = load(run)
+    trajectories(sweep, points, out, axis)
+    if not no_morphology:
+        morphology(sweep, points, out, cycles)
+    vorticity(sweep, points, out)
+    jellyfish_wake.wake(points, [label_of(sweep, k) for k in range(len(points))], param, out)
+    resonance(sweep, points, out)
+    size_scaling(sweep, points, out)
+    convergence(sweep, points, out)
+    step_convergence(sweep, points, out)
+    print(f"figures in {out}")
+
+
+def figures(run):
+    """(name, Figure) of every figure of the run folder `run`."""
+    return style.collect(draw, run)
 
 
 def main():
@@ -491,19 +538,7 @@ def main():
     ap.add_argument("--cycles", type=float, default=1.0, help="cycles drawn in the morphology strip")
     ap.add_argument("--no-morphology", action="store_true", help="skip the per-point film strips")
     a = ap.parse_args()
-    out = a.out or os.path.join(a.run_dir, "figures")
-    os.makedirs(out, exist_ok=True)
-    sweep, points = load(a.run_dir)
-    trajectories(sweep, points, out, a.axis)
-    if not a.no_morphology:
-        morphology(sweep, points, out, a.cycles)
-    vorticity(sweep, points, out)
-    jellyfish_wake.wake(points, [label_of(sweep, k) for k in range(len(points))], param, out)
-    resonance(sweep, points, out)
-    size_scaling(sweep, points, out)
-    convergence(sweep, points, out)
-    step_convergence(sweep, points, out)
-    print(f"figures in {out}")
+    draw(a.run_dir, a.out or os.path.join(a.run_dir, "figures"), axis=a.axis, cycles=a.cycles, no_morphology=a.no_morphology)
 
 
 if __name__ == "__main__":

@@ -17,13 +17,14 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import style  # noqa: E402
 
 
 def label(f):
     return f"{f.attrs['kernel']}, {f.attrs['cells']} cells"
 
 
-def style(f):
+def line_style(f):
     """Colour by kernel, line by grid, so the four runs of membrane.toml read at a glance."""
     colour = {"bilinear": "tab:blue", "peskin4": "tab:orange"}.get(str(f.attrs["kernel"]), "k")
     line = "-" if int(f.attrs["cells"]) >= 100 else "--"
@@ -34,22 +35,20 @@ def area_loss(points, title, png):
     fig, (ax_loss, ax_aspect) = plt.subplots(1, 2, figsize=(11, 4))
     for f in points:
         t = f["timeseries/time_s"][...]
-        colour, line = style(f)
+        colour, line = line_style(f)
         ax_loss.plot(t, 100 * f["timeseries/area_loss_fraction"][...], line, color=colour, label=label(f))
         ax_aspect.plot(t, f["timeseries/aspect_ratio"][...], line, color=colour, label=label(f))
     ax_loss.set_xlabel("time (s)")
     ax_loss.set_ylabel("enclosed-area loss (% of initial)")
     ax_loss.axhline(0, color="k", lw=0.5)
-    ax_loss.legend(fontsize=8)
+    ax_loss.legend(fontsize=9)
     ax_aspect.set_xlabel("time (s)")
     ax_aspect.set_ylabel("aspect ratio (principal second moments)")
     ax_aspect.axhline(1, color="k", lw=0.5)
     ax_aspect.axhline(1.05, color="k", lw=0.5, ls=":")
-    ax_aspect.legend(fontsize=8)
+    ax_aspect.legend(fontsize=9)
     fig.suptitle(title, fontsize=9)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+    style.save(fig, png)
 
 
 def outlines(points, png):
@@ -76,21 +75,15 @@ def outlines(points, png):
         ax.set_xticks([])
         ax.set_yticks([])
     handles, names = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, names, loc="lower center", ncol=len(names), fontsize=8)
-    fig.tight_layout(rect=(0, 0.08, 1, 1))
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+    fig.legend(handles, names, loc="lower center", ncol=len(names), fontsize=9)
+    style.save(fig, png)
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("run")
-    ap.add_argument("--out", default=None)
-    args = ap.parse_args()
-    out = args.out or os.path.join(args.run, "figures")
+def draw(run, out):
+    """Every figure of the run folder `run`, as PNGs (and tables) in folder `out`."""
     os.makedirs(out, exist_ok=True)
     files = []
-    for path in sorted(glob.glob(os.path.join(args.run, "point_*.h5"))):
+    for path in sorted(glob.glob(os.path.join(run, "point_*.h5"))):
         f = h5py.File(path, "r")
         if f.attrs["status"] != "ok" or "lagrangian/markers_m" not in f:
             print(f"{os.path.basename(path)}: {f.attrs['status']} {f.attrs['message']}")
@@ -98,7 +91,7 @@ def main():
             continue
         files.append(f)
     if not files:
-        raise SystemExit(f"{args.run}: no finished membrane points")
+        raise SystemExit(f"{run}: no finished membrane points")
     files.sort(key=lambda f: (str(f.attrs["kernel"]), int(f.attrs["cells"])))
     title = files[0].attrs["title"]
     png = os.path.join(out, "area_loss.png")
@@ -109,6 +102,19 @@ def main():
     print(png)
     for f in files:
         f.close()
+
+
+def figures(run):
+    """(name, Figure) of every figure of the run folder `run`."""
+    return style.collect(draw, run)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("run")
+    ap.add_argument("--out", default=None)
+    args = ap.parse_args()
+    draw(args.run, args.out or os.path.join(args.run, "figures"))
 
 
 if __name__ == "__main__":

@@ -5,7 +5,8 @@ usage: /usr/bin/python3 analysis/plot_run.py RUN_DIR [--out DIR]
 
 For every point file: a strand run gives its settled shape (and the shapes stored along the way)
 and its kinetic-energy curve on a log scale with the settling time marked; an oscillator run gives
-the numeric and exact displacement and the error. Figures go to RUN_DIR/figures/ as PNG.
+every integrator and step in one figure (displacement, error,
+error against the step). Figures go to RUN_DIR/figures/ as PNG.
 """
 import argparse
 import glob
@@ -15,8 +16,8 @@ import h5py
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import style  # noqa: E402
 
 
 def text(attr):
@@ -24,7 +25,7 @@ def text(attr):
 
 
 def plot_strand(f, title, out_png):
-    fig, (shape, energy) = plt.subplots(1, 2, figsize=(11, 4))
+    fig, (shape, energy) = style.subplots(1, 2, height=4.0)
     pos = f["lagrangian/positions_m"][...]  # (frames, particles, 2)
     times = f["lagrangian/time_s"][...]
     for k in range(pos.shape[0]):
@@ -37,7 +38,7 @@ def plot_strand(f, title, out_png):
     shape.set_ylabel("y (mm)")
     shape.set_aspect("equal", adjustable="datalim")
     shape.set_title("shape (grey: earlier frames)")
-    shape.legend(loc="lower right", fontsize=8)
+    shape.legend(loc="lower right")
 
     t = f["timeseries/time_s"][...]
     ke = f["timeseries/kinetic_energy_j"][...]
@@ -51,28 +52,89 @@ def plot_strand(f, title, out_png):
     energy.set_xlabel("time (s)")
     energy.set_ylabel("kinetic energy (J)")
     energy.set_title("settling")
-    energy.legend(fontsize=8)
-    fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(out_png, dpi=110)
-    plt.close(fig)
+    energy.legend()
+    fig.suptitle(title)
+    style.save(fig, out_png)
 
 
-def plot_oscillator(f, title, out_png):
-    fig, (xs, err) = plt.subplots(1, 2, figsize=(11, 4))
-    t = f["timeseries/time_s"][...]
-    xs.plot(t, f["timeseries/x_exact_m"][...], "k", lw=2, label="exact")
-    xs.plot(t, f["timeseries/x_m"][...], "tab:orange", lw=1, label=text(f.attrs["integrator"]))
+INTEGRATOR_WORDS = {"euler": "explicit Euler", "symplectic_euler": "symplectic Euler", "rk4": "RK4",
+                    "implicit_euler": "implicit Euler"}
+
+
+def plot_oscillators(points, title, out_png):
+    """Every integrator and step of an oscillator sweep in one figure: the displacement and the
+    error against time at the largest step (a colour per integrator), and the largest error
+    against the step on log axes (thesis §4.1-4.2)."""
+    fig, (xs, err, order) = style.subplots(1, 3, height=4.0)
+    integrators = list(dict.fromkeys(text(f.attrs["integrator"]) for f in points))
+    colour = {name: f"C{k}" for k, name in enumerate(integrators)}
+    dts = sorted({float(f.attrs["dt_s"]) for f in points})
+    coarse = [f for f in points if float(f.attrs["dt_s"]) == dts[-1]]
+    t = coarse[0]["timeseries/time_s"][...]
+    xs.plot(t, coarse[0]["timeseries/x_exact_m"][...] * 1e3, "k", lw=2, label="exact")
+    for f in coarse:
+        name = text(f.attrs["integrator"])
+        tf = f["timeseries/time_s"][...]
+        xs.plot(tf, f["timeseries/x_m"][...] * 1e3, color=colour[name], lw=0.9, label=INTEGRATOR_WORDS.get(name, name))
+        err.semilogy(tf, np.abs(f["timeseries/error_m"][...]) + 1e-300, color=colour[name], lw=0.9)
     xs.set_xlabel("time (s)")
-    xs.set_ylabel("displacement (m)")
-    xs.legend(fontsize=8)
-    err.semilogy(t, np.abs(f["timeseries/error_m"][...]) + 1e-300, "tab:orange", lw=1)
+    xs.set_ylabel("displacement (mm)")
+    xs.set_title(f"step {dts[-1]:g} s")
+    xs.legend(loc="lower left")
     err.set_xlabel("time (s)")
-    err.set_ylabel("|x - x_exact| (m)")
-    fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    fig.savefig(out_png, dpi=110)
-    plt.close(fig)
+    err.set_ylabel("|x - exact| (m)")
+    err.set_title(f"error, step {dts[-1]:g} s")
+    for name in integrators:
+        mine = sorted((float(f.attrs["dt_s"]), float(f["metrics/max_abs_error_m"][()])) for f in points
+                      if text(f.attrs["integrator"]) == name)
+        order.loglog([d for d, _ in mine], [e for _, e in mine], "o-", color=colour[name], ms=4,
+                     label=INTEGRATOR_WORDS.get(name, name))
+    order.set_xlabel("time step (s)")
+    order.set_ylabel("largest |x - exact| (m)")
+    order.set_title("error against the step")
+    order.legend()
+    fig.suptitle(style.wrap(title, 100))
+    style.save(fig, out_png)
+
+
+def draw(run, out):
+    """Every figure of a strand or oscillator run, as PNGs in folder `out`."""
+    os.makedirs(out, exist_ok=True)
+    drawn = 0
+    oscillators, title = [], ""
+    for path in sorted(glob.glob(os.path.join(run, "point_*.h5"))):
+        f = h5py.File(path, "r")
+        kind = text(f.attrs["kind"])
+        label = text(f.attrs["label"])
+        status = text(f.attrs["status"])
+        name = os.path.splitext(os.path.basename(path))[0]
+        png = os.path.join(out, name + ".png")
+        if status != "ok":
+            print(f"{name}: {status}: {text(f.attrs['message'])}")
+            f.close()
+            continue
+        if kind == "oscillator":
+            oscillators.append(f)
+            title = text(f.attrs["title"])
+            continue
+        if kind == "strand":
+            plot_strand(f, style.wrap(f"{text(f.attrs['title'])}: {label}", 100), png)
+            drawn += 1
+        else:
+            print(f"{name}: kind {kind} is not drawn by this script")
+        f.close()
+    if oscillators:
+        plot_oscillators(oscillators, title, os.path.join(out, "integrators.png"))
+        drawn += 1
+        for f in oscillators:
+            f.close()
+    if drawn == 0:
+        raise SystemExit(f"{run}: nothing drawn")
+
+
+def figures(run):
+    """(name, Figure) of every figure of the run folder `run`."""
+    return style.collect(draw, run)
 
 
 def main():
@@ -80,31 +142,7 @@ def main():
     ap.add_argument("run")
     ap.add_argument("--out", default=None)
     args = ap.parse_args()
-    out = args.out or os.path.join(args.run, "figures")
-    os.makedirs(out, exist_ok=True)
-    drawn = 0
-    for path in sorted(glob.glob(os.path.join(args.run, "point_*.h5"))):
-        with h5py.File(path, "r") as f:
-            kind = text(f.attrs["kind"])
-            label = text(f.attrs["label"])
-            status = text(f.attrs["status"])
-            name = os.path.splitext(os.path.basename(path))[0]
-            title = f"{text(f.attrs['title'])}\n{name} {label} ({status})"
-            png = os.path.join(out, name + ".png")
-            if status != "ok":
-                print(f"{name}: {status}: {text(f.attrs['message'])}")
-                continue
-            if kind == "strand":
-                plot_strand(f, title, png)
-            elif kind == "oscillator":
-                plot_oscillator(f, title, png)
-            else:
-                print(f"{name}: kind {kind} is not drawn by this script")
-                continue
-            drawn += 1
-            print(png)
-    if drawn == 0:
-        raise SystemExit(f"{args.run}: nothing drawn")
+    draw(args.run, args.out or os.path.join(args.run, "figures"))
 
 
 if __name__ == "__main__":

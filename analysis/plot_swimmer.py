@@ -13,6 +13,7 @@ import os
 
 import matplotlib.pyplot as plt
 import numpy as np
+import style  # noqa: E402
 
 
 PHASE_COLOURS = ["#d8e8f8", "#f8e0d0", "#e8e8e8"]
@@ -54,12 +55,10 @@ def rise_figure(points, png):
         axf.plot(tt, f["timeseries/mouth_flux_m_per_s"][...], lw=1)
     ax.set_ylabel("centre of mass height - first frame's (cm)")
     ax.set_title("swimmer: phases 1 draw in + min drag (blue), 2 expel + min (orange), 3 max drag (grey)", fontsize=9)
-    ax.legend(fontsize=6)
-    axf.set_ylabel("mouth flux (m/s)", fontsize=8)
+    ax.legend(fontsize=9)
+    axf.set_ylabel("mouth flux (m/s)", fontsize=9)
     axf.set_xlabel("time (s)")
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+    style.save(fig, png)
 
 
 def angles_figure(points, png):
@@ -71,12 +70,10 @@ def angles_figure(points, png):
         for name in [k for k in f["timeseries"] if k.startswith("angle_deg_")]:
             ax.plot(t, f[f"timeseries/{name}"][...], lw=1, label=name[len("angle_deg_"):])
         ax.set_ylabel("leg angle (deg)")
-        ax.set_title(_label(f), fontsize=8)
-        ax.legend(fontsize=6, ncol=5)
+        ax.set_title(_label(f), fontsize=9)
+        ax.legend(fontsize=9, ncol=5)
     axes[-1, 0].set_xlabel("time (s)")
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+    style.save(fig, png)
 
 
 def phase_split(f):
@@ -119,12 +116,10 @@ def vorticity_strip(f, draw_field, png):
     for ax, k in zip(axes[0], picks):
         _, lim = draw_field(ax, f, int(k), lim)
         ax.set_xlim(-1.0, 1.0)
-        ax.set_title(f"t = {times[k]:.2f} s", fontsize=7)
+        ax.set_title(f"t = {times[k]:.2f} s", fontsize=9)
         ax.tick_params(labelsize=5)
-    fig.suptitle(f"{_label(f)}: vorticity (1/s, +-{lim:.2g}), last cycle", fontsize=8)
-    fig.tight_layout()
-    fig.savefig(png, dpi=110)
-    plt.close(fig)
+    fig.suptitle(f"{_label(f)}: vorticity (1/s, +-{lim:.2g}), last cycle", fontsize=9)
+    style.save(fig, png)
 
 
 def draw(points, out_dir, draw_field):

@@ -8,11 +8,18 @@ if __package__ in (None, ""):  # run as a script: make `figures` importable
 
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from figures import runs  # noqa: E402
+import style  # noqa: E402
 
 
 def draw(run, out):
     pf = runs.plotter("plot_fluid")
     return runs.moved_outputs(out, "fluid_taylor_green", lambda tmp: pf.convergence(run.folder, tmp))
+
+
+def figures(folder):
+    """(name, Figure) pairs of this figure, drawn from the run folder `folder`."""
+    with runs.Run(folder) as run:
+        return style.collect(draw, run)
 
 
 if __name__ == "__main__":

@@ -13,6 +13,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from figures import webs  # noqa: E402
+import os  # noqa: E402
+
+import style  # noqa: E402
 
 
 def draw(run, out):
@@ -26,9 +29,14 @@ def draw(run, out):
         webs.settling_curve(f, energy)
         energy.set_title("settling (dashed: settled)", fontsize=9)
         fig.suptitle(run.title, fontsize=9)
-        fig.tight_layout()
-        pngs.append(runs.savefig(fig, out, "mehla_fig5_14" + (f"_{k}" if k else "")))
+        pngs.append(style.save(fig, os.path.join(out, "mehla_fig5_14" + (f"_{k}" if k else ""))))
     return pngs
+
+
+def figures(folder):
+    """(name, Figure) pairs of this figure, drawn from the run folder `folder`."""
+    with runs.Run(folder) as run:
+        return style.collect(draw, run)
 
 
 if __name__ == "__main__":

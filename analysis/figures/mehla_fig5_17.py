@@ -7,6 +7,7 @@ if __package__ in (None, ""):  # run as a script: make `figures` importable
 
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from figures import runs  # noqa: E402
+import style  # noqa: E402
 from figures import webs  # noqa: E402
 
 METRICS = ("spokes", "spiral_segments", "particles", "hub_sag_m", "settling_time_s")
@@ -14,6 +15,12 @@ METRICS = ("spokes", "spiral_segments", "particles", "hub_sag_m", "settling_time
 
 def draw(run, out):
     return [webs.sweep_grid(run, out, "mehla_fig5_17", f"Mehla Fig. 5.17: {run.title}", METRICS)]
+
+
+def figures(folder):
+    """(name, Figure) pairs of this figure, drawn from the run folder `folder`."""
+    with runs.Run(folder) as run:
+        return style.collect(draw, run)
 
 
 if __name__ == "__main__":

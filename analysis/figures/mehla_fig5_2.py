@@ -15,6 +15,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from figures import webs  # noqa: E402
+import os  # noqa: E402
+
+import style  # noqa: E402
 
 
 def draw(run, out):
@@ -32,12 +35,17 @@ def draw(run, out):
     shape.set_xlabel("x (mm)")
     shape.set_ylabel("y (mm)")
     shape.set_title("settled strands (Fig. 5.1: rest layout sags; Fig. 5.2: Provot)", fontsize=9)
-    shape.legend(fontsize=7)
+    shape.legend(fontsize=9)
     energy.set_title("settling: kinetic energy (dashed: settled, 1e-4 of peak)", fontsize=9)
-    energy.legend(fontsize=7)
+    energy.legend(fontsize=9)
     fig.suptitle(run.title, fontsize=9)
-    fig.tight_layout()
-    return [runs.savefig(fig, out, "mehla_fig5_2")]
+    return [style.save(fig, os.path.join(out, "mehla_fig5_2"))]
+
+
+def figures(folder):
+    """(name, Figure) pairs of this figure, drawn from the run folder `folder`."""
+    with runs.Run(folder) as run:
+        return style.collect(draw, run)
 
 
 if __name__ == "__main__":

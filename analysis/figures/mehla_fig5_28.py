@@ -7,6 +7,7 @@ if __package__ in (None, ""):  # run as a script: make `figures` importable
 
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from figures import runs  # noqa: E402
+import style  # noqa: E402
 from figures import webs  # noqa: E402
 
 METRICS = ("spiral_segments", "spiral_coverage", "silk_length_m", "settling_time_s")
@@ -14,6 +15,12 @@ METRICS = ("spiral_segments", "spiral_coverage", "silk_length_m", "settling_time
 
 def draw(run, out):
     return [webs.sweep_grid(run, out, "mehla_fig5_28", f"Mehla Figs. 5.24-5.28: {run.title}", METRICS)]
+
+
+def figures(folder):
+    """(name, Figure) pairs of this figure, drawn from the run folder `folder`."""
+    with runs.Run(folder) as run:
+        return style.collect(draw, run)
 
 
 if __name__ == "__main__":

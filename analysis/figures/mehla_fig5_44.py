@@ -14,6 +14,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
+import os  # noqa: E402
+
+import style  # noqa: E402
 
 # Fig. 5.44: frames brightest, spiral faintest (the same shades as analysis/draw_web.py).
 SHADES = [0.95, 0.9, 0.85, 0.85, 0.8, 0.75]
@@ -74,8 +77,13 @@ def draw(run, out):
     panel(axes[1, 2], segs, types, "#1a1a1a", 0.55, True)
     axes[1, 2].set_title("shading by strand type + alpha (Fig. 5.44)", fontsize=9)
     fig.suptitle(run.title, fontsize=9)
-    fig.tight_layout()
-    return [runs.savefig(fig, out, "mehla_fig5_44", dpi=100)]
+    return [style.save(fig, os.path.join(out, "mehla_fig5_44"))]
+
+
+def figures(folder):
+    """(name, Figure) pairs of this figure, drawn from the run folder `folder`."""
+    with runs.Run(folder) as run:
+        return style.collect(draw, run)
 
 
 if __name__ == "__main__":

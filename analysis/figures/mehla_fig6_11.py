@@ -16,6 +16,7 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+import style  # noqa: E402
 
 RENDERS = [("overlay", "target over the web, removed in red"), ("result", "settled again")]
 
@@ -37,10 +38,15 @@ def draw(run, out):
             if row == 1:
                 iou, con = run.metric("emptied_iou")[col], run.metric("letter_contrast")[col]
                 title += f"\nIoU {iou:.2f}, contrast {con:+.2f}"
-            ax.set_title(title, fontsize=7)
+            ax.set_title(title, fontsize=9)
     fig.suptitle(run.title, fontsize=9)
-    fig.tight_layout()
-    return [runs.savefig(fig, out, "mehla_fig6_11", dpi=100)]
+    return [style.save(fig, os.path.join(out, "mehla_fig6_11"))]
+
+
+def figures(folder):
+    """(name, Figure) pairs of this figure, drawn from the run folder `folder`."""
+    with runs.Run(folder) as run:
+        return style.collect(draw, run)
 
 
 if __name__ == "__main__":

@@ -17,6 +17,9 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import os  # noqa: E402
+
+import style  # noqa: E402
 
 
 def attr(f, name, default=None):
@@ -40,63 +43,94 @@ def network(f, ax):
     ax.set_aspect("equal")
     ax.set_xlabel("x (mm)")
     ax.set_ylabel("y (mm)")
-    ax.set_title("spring network: chain (grey), muscles aperture → apex (dark → light)", fontsize=8)
+    ax.set_title("spring network: chain (grey), muscles by height (colour bar)")
 
 
-def muscle_curves(points, labels, ax):
+def release(f):
+    """The point's expansion in words: staggered (apex first, pulse_stagger > 0) or unison."""
+    stagger = float(attr(f, "pulse_stagger", 0.0))
+    return f"staggered release (pulse stagger {stagger:g})" if stagger > 0 else "unison release (pulse stagger 0)"
+
+
+def drawn_cycle(f, t):
+    """Times and phases of the first cycle after the warm-up (the cycle the figure compares)."""
+    hz = float(attr(f, "contraction_hz", 1.0))
+    warm = float(attr(f, "warmup_cycles", 0.0)) / hz
+    sel = (t >= warm) & (t <= warm + 1.0 / hz)
+    return sel, (t[sel] - warm) * hz
+
+
+def muscle_curves(points, ax):
     """Each muscle element's activation over the cycle after the warm-up (/lagrangian/muscle_activation,
-    frames x muscles x 1), coloured aperture -> apex as in the network panel: Fig. 4 right's family of
-    staggered curves. Solid: the first point (staggered); dashed: the second (unison)."""
+    frames x muscles x 1), coloured aperture -> apex by a colour bar as in the network panel: Fig. 4
+    right's family of staggered curves. Solid: the staggered point; dashed: the unison one."""
     cmap = plt.get_cmap("plasma")
     for k, f in enumerate(points[:2]):
         t = f["lagrangian/time_s"][...]
         act = f["lagrangian/muscle_activation"][...][:, :, 0]
-        hz = float(attr(f, "contraction_hz", 1.0))
-        warm = float(attr(f, "warmup_cycles", 0.0)) / hz
-        sel = (t >= warm) & (t <= warm + 1.0 / hz)
+        sel, phase = drawn_cycle(f, t)
         xy = f["lagrangian/markers_m"][0]
         muscles = f["topology/muscles"][...].reshape(-1, 2)
         height = np.array([xy[[a, b], 1].mean() for a, b in muscles])
         order = np.argsort(np.argsort(height))
-        for m in range(act.shape[1]):
-            ax.plot((t[sel] - warm) * hz, act[sel, m], color=cmap(order[m] / max(1, act.shape[1] - 1)),
-                    lw=0.8, ls="-" if k == 0 else "--", label=labels[k] if m == 0 else None)
-    ax.set_xlabel("phase in the cycle after the warm-up")
-    ax.set_ylabel("muscle activation a(t)")
-    ax.set_title("each muscle's activation, aperture → apex (dark → light)", fontsize=8)
-    ax.legend(fontsize=7)
+        for m in range(0, act.shape[1], max(1, act.shape[1] // 24)):
+            ax.plot(phase, act[sel, m], color=cmap(order[m] / max(1, act.shape[1] - 1)),
+                    lw=0.8, ls="-" if k == 0 else "--", label=release(f) if m == 0 else None)
+    ax.set_xlabel("phase in the cycle after the warm-up (cycles)")
+    ax.set_ylabel("muscle activation a(t) (0 to 1)")
+    ax.set_xlim(0, 0.3)
+    ax.set_title("the pulse: each muscle's activation (solid: staggered, dashed: unison)")
 
 
 def draw(run, out):
     points = run.ok_points()
     if not points or "topology/muscles" not in points[0]:
         return []
-    labels = run.labels()
     has_curves = "lagrangian/muscle_activation" in points[0]
-    if has_curves:
-        fig, (left, middle, right) = plt.subplots(1, 3, figsize=(17, 4.6), gridspec_kw={"width_ratios": [1, 1.2, 1.3]})
-        muscle_curves(points, labels, middle)
-    else:
-        fig, (left, right) = plt.subplots(1, 2, figsize=(12, 4.6), gridspec_kw={"width_ratios": [1, 1.3]})
+    fig = style.figure(height=7.6)
+    grid = fig.add_gridspec(2, 2)
+    left = fig.add_subplot(grid[0, 0])
     network(points[0], left)
+    if has_curves:
+        middle = fig.add_subplot(grid[0, 1])
+        muscle_curves(points, middle)
+        bar = fig.colorbar(plt.cm.ScalarMappable(cmap="plasma"), ax=middle)
+        bar.set_label("muscle height, aperture (0) to apex (1) (fraction)")
+    right = fig.add_subplot(grid[1, 0])
+    diff = fig.add_subplot(grid[1, 1])
+    ratios = []
     for k, f in enumerate(points):
         t = f["timeseries/time_s"][...]
-        hz = float(attr(f, "contraction_hz", 1.0))
-        warm = float(attr(f, "warmup_cycles", 0.0)) / hz
-        sel = (t >= warm) & (t <= warm + 1.0 / hz)
-        phase = (t[sel] - warm) * hz
-        line = right.plot(phase, f["timeseries/aperture_muscle_factor"][sel], lw=1.2,
-                          label=f"{labels[k]}: aperture muscle curve")[0]
-        right.plot(phase, f["timeseries/diameter_ratio"][sel], ls="--", color=line.get_color(), lw=1,
-                   label=f"{labels[k]}: diameter ratio")
+        sel, phase = drawn_cycle(f, t)
+        ratio = f["timeseries/diameter_ratio"][sel]
+        ratios.append((release(f), phase, ratio))
+        right.plot(phase, f["timeseries/aperture_muscle_factor"][sel], lw=1.0, color=f"C{k}")
+        right.plot(phase, ratio, ls="--", color=f"C{k}", lw=1.6, label=release(f))
     right.axhline(0.56, color="0.6", lw=0.6, ls=":")
-    right.set_xlabel("phase in the cycle after the warm-up")
-    right.set_ylabel("factor / ratio")
-    right.set_title("the aperture muscle's curve (aperture_muscle_factor) and the diameter it gives (0.56: Fig. 3)", fontsize=8)
-    right.legend(fontsize=7)
-    fig.suptitle(run.title, fontsize=9)
-    fig.tight_layout()
-    return [runs.savefig(fig, out, "rm_fig4")]
+    right.plot([], [], color="0.3", lw=1.0, label="solid: aperture muscle's rest-length factor")
+    right.plot([], [], color="0.3", lw=1.6, ls="--", label="dashed: diameter ratio (dotted 0.56: Fig. 3)")
+    right.set_xlabel("phase in the cycle after the warm-up (cycles)")
+    right.set_ylabel("factor or diameter ratio (fraction of rest)")
+    right.set_title("aperture muscle's curve and the diameter it gives")
+    right.legend(fontsize=9, loc="lower right")
+    if len(ratios) >= 2:
+        (name_a, pa, ra), (name_b, pb, rb) = ratios[0], ratios[1]
+        d = ra - np.interp(pa, pb, rb)
+        diff.plot(pa, d * 100, color="k", lw=1.2)
+        diff.axhline(0, color="0.6", lw=0.6)
+        diff.set_title(style.wrap(f"diameter ratio: {name_a.split(' (')[0]} minus {name_b.split(' (')[0]}", 55))
+        diff.set_xlabel("phase in the cycle after the warm-up (cycles)")
+        diff.set_ylabel("difference (% of the rest diameter)")
+    else:
+        diff.axis("off")
+    fig.suptitle(style.wrap(run.title, 110))
+    return [style.save(fig, os.path.join(out, "rm_fig4"))]
+
+
+def figures(folder):
+    """(name, Figure) pairs of this figure, drawn from the run folder `folder`."""
+    with runs.Run(folder) as run:
+        return style.collect(draw, run)
 
 
 if __name__ == "__main__":

@@ -7,6 +7,7 @@ if __package__ in (None, ""):  # run as a script: make `figures` importable
 
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from figures import runs  # noqa: E402
+import style  # noqa: E402
 
 
 def draw(run, out):
@@ -17,6 +18,12 @@ def draw(run, out):
     finally:
         for f in points:
             f.close()
+
+
+def figures(folder):
+    """(name, Figure) pairs of this figure, drawn from the run folder `folder`."""
+    with runs.Run(folder) as run:
+        return style.collect(draw, run)
 
 
 if __name__ == "__main__":

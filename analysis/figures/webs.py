@@ -1,6 +1,7 @@
 """Drawing orb webs for the Mehla figures: one web per panel from a point file's positions and
 topology (analysis/draw_web.py's draw_web), a grid of the points of a sweep, settling curves."""
 import math
+import os
 
 import matplotlib
 
@@ -9,6 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from figures import runs  # noqa: E402
+import style  # noqa: E402
 
 
 def draw_web(f, ax, frame=-1, by_type=False):
@@ -49,11 +51,11 @@ def sweep_grid(run, out, name, title, metrics=("particles", "spiral_segments", "
     for k, f in enumerate(points):
         ax = fig.add_subplot(gs[k // cols, k % cols])
         if runs.text(f.attrs.get("status", "ok")) != "ok":
-            ax.text(0.5, 0.5, runs.text(f.attrs.get("message", "failed")), ha="center", wrap=True, fontsize=7)
+            ax.text(0.5, 0.5, runs.text(f.attrs.get("message", "failed")), ha="center", wrap=True, fontsize=9)
             ax.axis("off")
         else:
             draw_web(f, ax)
-        ax.set_title(labels[k] if k < len(labels) else str(k), fontsize=8)
+        ax.set_title(labels[k] if k < len(labels) else str(k), fontsize=9)
     bottom = gs[rows, :].subgridspec(1, 2, width_ratios=[1, 1])
     bars = fig.add_subplot(bottom[0, 0])
     x = np.arange(len(labels))
@@ -62,17 +64,16 @@ def sweep_grid(run, out, name, title, metrics=("particles", "spiral_segments", "
         v = run.metric(m)
         ref = np.nanmax(np.abs(v)) or 1.0
         bars.plot(x, v / ref, "o-", ms=3, label=f"{m} (max {ref:.3g} {run.units.get(m, '')})")
-    bars.set_xticks(x, labels, rotation=25, ha="right", fontsize=6)
+    bars.set_xticks(x, labels, rotation=25, ha="right", fontsize=9)
     bars.set_ylabel("relative to the largest")
-    bars.legend(fontsize=6)
+    bars.legend(fontsize=9)
     curves = fig.add_subplot(bottom[0, 1])
     cmap = plt.get_cmap("viridis")
     for k, f in enumerate(points):
         if "timeseries/kinetic_energy_j" in f:
             settling_curve(f, curves, labels[k] if n <= 8 else None, cmap(k / max(1, n - 1)))
     if n <= 8:
-        curves.legend(fontsize=6)
-    curves.set_title("settling (dashed: settled)", fontsize=8)
+        curves.legend(fontsize=9)
+    curves.set_title("settling (dashed: settled)", fontsize=9)
     fig.suptitle(title, fontsize=9)
-    fig.tight_layout()
-    return runs.savefig(fig, out, name, dpi=90)
+    return style.save(fig, os.path.join(out, name))
