@@ -141,7 +141,8 @@ def verdict(s):
     why = {"FAILED": "FAILED", "inconclusive": "inconclusive (the quick setting cannot resolve it)",
            "KNOWN": "known deviation"}
     s.notes = [f"{why[c['status']]}: {c['name']}: measured {c['got_u']}, the claim {c['expected_u']}" +
-               (f". Why: {c['known_deviation']}" if c["status"] == "KNOWN" and c["known_deviation"] else "")
+               (f". Why: {' '.join(c['known_deviation'].split())}" if c["status"] == "KNOWN" and c["known_deviation"]
+                else "")
                for k in ("FAILED", "inconclusive", "KNOWN") for c in s.checks if c["status"] == k]
 
 

@@ -68,11 +68,18 @@ def quantity(value, unit="", uncertainty=None, digits=None):
 
 
 def group(values, unit="", digits=3, exact=False):
-    """Several values of one unit with one prefix: "30.9, 7.13, 5.11 mm". exact: the shortest text
-    that keeps each value (a check's typed bounds)."""
+    """Several values of one unit with one prefix: "30.9, 7.13, 5.11 mm", with more digits (up to
+    six) where three would print two different values alike ("1.0001, 1.0004", not "1.00, 1.00").
+    exact: the shortest text that keeps each value (a check's typed bounds)."""
     scale, u = prefix_for(values, unit)
-    out = [(_exact(v / scale) if exact else number(v / scale, digits)) for v in values]
-    return out, u
+    if exact:
+        return [_exact(v / scale) for v in values], u
+    while True:
+        out = [number(v / scale, digits) for v in values]
+        alike = any(out[i] == out[j] and values[i] != values[j] for i in range(len(out)) for j in range(i))
+        if not alike or digits >= 6:
+            return out, u
+        digits += 1
 
 
 def _exact(v):
@@ -93,7 +100,7 @@ def expected_text(expected, unit, like=()):
         return expected
     lo, hi = float(m.group(2)), float(m.group(3))
     scale, u = prefix_for(list(like), unit)
-    if any(v != 0 and not 1e-3 <= abs(v / scale) < HUGE for v in (lo, hi) if abs(v) < HUGE):
+    if any(v != 0 and not 1e-3 <= abs(v / scale) < 1e3 for v in (lo, hi) if abs(v) < HUGE):
         scale, u = 1.0, unit
     a, b = _exact(lo / scale), _exact(hi / scale)
     if hi >= HUGE and lo > -HUGE:
