@@ -1,11 +1,13 @@
 #include "cli/commands.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <new>
+#include <numeric>
 #include <sstream>
 #include <toml++/toml.h>
 
@@ -17,6 +19,7 @@
 #include "runner/checks.hpp"
 #include "runner/compare.hpp"
 #include "runner/experiment.hpp"
+#include "runner/progress.hpp"
 #include "runner/store.hpp"
 #include "runner/verify.hpp"
 
@@ -317,28 +320,50 @@ int Commands::reproduce(const ReproduceArgs& args) const {
     planned.push_back(std::move(o));
   }
   checkRenderEntries(list, args.list);
-  // A list may say how long it takes (minutes = measured wall time of each entry): say so first.
-  double minutes = 0;
-  for (auto&& f : *files)
-    if (const auto* t = f.as_table()) minutes += (*t)["minutes"].value_or(0.0);
+  // A list may say how long it takes (minutes = measured wall time of each entry): say so first,
+  // and estimate the time left from it as the entries finish.
+  std::vector<double> listed_s;
+  for (auto&& f : *files) {
+    const auto* t = f.as_table();
+    listed_s.push_back(t ? (*t)["minutes"].value_or(0.0) * 60 : 0.0);
+  }
+  const double minutes = std::accumulate(listed_s.begin(), listed_s.end(), 0.0) / 60;
   if (minutes > 0 && primary())
     std::fprintf(stderr, "== %zu experiments from %s: about %.0f minutes on 2 cores (the sum of the times it lists)\n",
                  planned.size(), args.list.c_str(), minutes);
+  // One line per experiment as it finishes (a status line on a terminal while it runs); the
+  // check tables after every experiment and render.
+  runner::ListProgress progress(listed_s);
   std::vector<runner::CheckOutcome> all;
+  std::vector<std::string> unevaluated;
   int code = 0;
   for (runner::RunOptions& o : planned) {
-    if (primary()) std::fprintf(stderr, "== %s\n", o.experiment_path.c_str());
+    const std::string name = fs::path(o.out_dir).filename().string();
+    o.point_lines = false;
+    o.progress_label = progress.label(name);
+    const auto t0 = std::chrono::steady_clock::now();
     const runner::RunReport r = runner::runExperiment(o, registry_, cluster_);
     if (!primary()) continue;
-    printReport(r);
+    std::string problems;
+    if (r.failed > 0) problems = std::to_string(r.failed) + " FAILED";
+    if (r.missing > 0) problems += (problems.empty() ? "" : ", ") + std::to_string(r.missing) + " not run";
+    progress.experimentFinished(name, r.total, problems,
+                                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    if (!r.write_error.empty()) std::fprintf(stderr, "error: %s\n", r.write_error.c_str());
+    if (!r.checks_evaluated) unevaluated.push_back(name);
     for (auto c : r.checks) {
-      c.name = fs::path(o.out_dir).filename().string() + ": " + c.name;
+      c.name = name + ": " + c.name;
       all.push_back(c);
     }
     code = std::max(code, r.exitCode());
   }
-  if (primary()) std::printf("\n== checks of every experiment\n%s", runner::formatCheckTable(all).c_str());
   if (primary()) code = std::max(code, reproduceRenders(list, args.list, args.out_root));
+  if (primary()) {
+    std::fflush(stderr);
+    std::printf("\n== checks of every experiment\n%s", runner::formatCheckTable(all).c_str());
+    for (const auto& name : unevaluated)
+      std::printf("%s: checks not evaluated (not every point has run)\n", name.c_str());
+  }
   return code;
 }
 

@@ -22,6 +22,7 @@
 #include "runner/folder_lock.hpp"
 #include "runner/interrupt.hpp"
 #include "runner/progress.hpp"
+#include "runner/provenance.hpp"
 #include "runner/store.hpp"
 #include "runner/sweep_size.hpp"
 
@@ -164,6 +165,7 @@ struct ShareContext {
   const std::vector<std::string>& columns;
   const Cluster& cluster;
   const FolderLock& lock;  // held by rank 0; other ranks write under rank 0's lock
+  const RunProvenance& run_provenance;  // index.h5's build, machine, start and wall time
 };
 
 RunReport runShare(const ShareContext& c, RunReport report);
@@ -171,6 +173,7 @@ RunReport runShare(const ShareContext& c, RunReport report);
 }  // namespace
 
 RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, const Cluster& cluster) {
+  const RunProvenance run_provenance = startRunProvenance();
   const Experiment e = loadExperiment(o.experiment_path, o.overrides, registry);
   const kinds::Kind& kind = *registry.find(e.kind);
   sweepPointCount(e);  // before expanding: a count beyond the limit, never wrapped
@@ -215,7 +218,7 @@ RunReport runExperiment(const RunOptions& o, const kinds::Registry& registry, co
   }
   if (cluster.broadcastFromRoot(refusal.empty() ? 1 : 0) == 0)
     throw ExperimentError(cluster.rank() == 0 ? refusal : "rank 0 refused the output folder " + report.out_dir);
-  const ShareContext context{o, e, kind, points, columns, cluster, lock};
+  const ShareContext context{o, e, kind, points, columns, cluster, lock, run_provenance};
   if (cluster.size() == 1) return runShare(context, report);
   // Past this point an error on one rank would leave the others waiting: it ends them all.
   try {
@@ -250,6 +253,7 @@ void writeIndexFromFiles(const ShareContext& c, RunReport& report, const Provena
   }
   c.lock.lockIndex();  // shares finishing together take turns
   writeIndex(report.out_dir, c.e, c.kind, table, report.checks, provenance);
+  writeRunProvenance(report.out_dir + "/index.h5", c.run_provenance);
   c.lock.unlockIndex();
 }
 
@@ -306,7 +310,7 @@ RunReport runShare(const ShareContext& c, RunReport report) {
   jobs = std::min<int>(jobs, std::max<size_t>(1, todo.size()));
   if (report.skipped > 0)
     std::fprintf(stderr, "resume: %d point file(s) already complete, %zu to run\n", report.skipped, todo.size());
-  Progress progress(int(todo.size()) + report.skipped, report.skipped);
+  Progress progress(int(todo.size()) + report.skipped, report.skipped, stderr, o.point_lines, o.progress_label);
   // SIGINT/SIGTERM only set a flag; this thread watches it while the workers run the points.
   const InterruptGuard interrupt_guard;
   std::mutex write_mutex;  // one point file written at a time; guards write_error

@@ -21,6 +21,10 @@ struct RunOptions {
   bool dry_run = false; // print the plan only
   int slice_index = 0, slice_count = 1;  // --points i/N: run points with index % N == i
   bool allow_long = false;  // run points estimated to take very many steps or much memory
+  // Progress on stderr: a line per finished point; false (a run of a list) only a status line on a
+  // terminal, after progress_label.
+  bool point_lines = true;
+  std::string progress_label;
 };
 
 struct RunReport {
