@@ -47,3 +47,7 @@ creaturelab_cli_test(baseline_disk_full SKIP_RETURN_CODE 77)
 creaturelab_cli_test(fuzz)
 creaturelab_cli_test(web_checks_fail) # each web claim check FAILs with its mechanism broken (Provot, wind, drag, spacing)
 creaturelab_cli_test(control_checks_fail) # each no-fluid controller claim check FAILs with its mechanism broken (wind, gravity, controller, ranges, contacts)
+creaturelab_cli_test(reproduce_progress) # reproduce: a line per experiment with the ETA, check tables last; index.h5 provenance, out of the digests
+# XDMF readers (meshio, ParaView's pvbatch) open the field sidecar and the render series with the
+# HDF5's counts and values. Skipped (77) when neither reader is installed.
+creaturelab_cli_test(xdmf_readers SKIP_RETURN_CODE 77)
