@@ -15,6 +15,7 @@ packages=(
   libssl-dev
   libcairo2-dev libpango1.0-dev fonts-dejavu-core
   python3-h5py python3-numpy python3-matplotlib
+  python3-meshio  # an XDMF reader for the cli_xdmf_readers test (ParaView's pvbatch is optional)
 )
 
 missing=()

@@ -1,78 +1,121 @@
 #include "io/xdmf.hpp"
 
+#include "io/hdf5_detail.hpp"
+#include "io/hdf5_error.hpp"
+
+#include <cstdio>
 #include <sstream>
 
 namespace creaturelab::io {
 
-std::string xdmfText(const XdmfGrid& g) {
-  std::ostringstream s;
-  s.precision(17);
-  // Node counts are cells + 1; XDMF lists dimensions slowest first (y, x).
-  s << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n"
-    << "  <Grid Name=\"fields\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (size_t k = 0; k < g.time_s.size(); ++k) {
-    s << "   <Grid Name=\"frame " << k << "\" GridType=\"Uniform\">\n"
-      << "    <Time Value=\"" << g.time_s[k] << "\" />\n"
-      << "    <Topology TopologyType=\"2DCoRectMesh\" Dimensions=\"" << g.ny + 1 << " " << g.nx + 1 << "\" />\n"
-      << "    <Geometry GeometryType=\"ORIGIN_DXDY\">\n"
-      << "     <DataItem Dimensions=\"2\" Format=\"XML\">" << g.origin_y << " " << g.origin_x << "</DataItem>\n"
-      << "     <DataItem Dimensions=\"2\" Format=\"XML\">" << g.dy << " " << g.dx << "</DataItem>\n"
-      << "    </Geometry>\n";
-    for (const auto& f : g.fields) {
-      s << "    <Attribute Name=\"" << f << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
-        << "     <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << g.ny << " " << g.nx << "\" Type=\"HyperSlab\">\n"
-        << "      <DataItem Dimensions=\"3 3\" Format=\"XML\">" << k << " 0 0  1 1 1  1 " << g.ny << " " << g.nx
-        << "</DataItem>\n"
-        << "      <DataItem Dimensions=\"" << g.time_s.size() << " " << g.ny << " " << g.nx
-        << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << g.h5_file << ":/fields/" << f
-        << "</DataItem>\n     </DataItem>\n    </Attribute>\n";
-    }
-    s << "   </Grid>\n";
-  }
-  s << "  </Grid>\n </Domain>\n</Xdmf>\n";
-  return s.str();
-}
-
 namespace {
 
-// One frame's rows of a (frames, vertices, 3) dataset.
-void frameSlab(std::ostringstream& s, const XdmfTriangleMesh& m, size_t k, const std::string& name) {
-  s << "     <DataItem ItemType=\"HyperSlab\" Dimensions=\"" << m.vertices << " 3\" Type=\"HyperSlab\">\n"
-    << "      <DataItem Dimensions=\"3 3\" Format=\"XML\">" << k << " 0 0  1 1 1  1 " << m.vertices << " 3</DataItem>\n"
-    << "      <DataItem Dimensions=\"" << m.time_s.size() << " " << m.vertices << " 3\" NumberType=\"Float\" "
-    << "Precision=\"8\" Format=\"HDF\">" << m.h5_file << ":" << m.group << "/" << name << "</DataItem>\n"
-    << "     </DataItem>\n";
+// XDMF 3 header and the temporal collection `name` opened; closeCollection() ends both.
+void openCollection(std::ostringstream& s, const char* name) {
+  s.precision(17);
+  s << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
+    << "  <Grid Name=\"" << name << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+}
+
+void closeCollection(std::ostringstream& s) { s << "  </Grid>\n </Domain>\n</Xdmf>\n"; }
+
+// A whole HDF5 dataset of doubles (Precision 8: XDMF's default Float is 4 bytes).
+void floatItem(std::ostringstream& s, const std::string& dims, const std::string& where) {
+  s << "     <DataItem Dimensions=\"" << dims << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << where
+    << "</DataItem>\n";
 }
 
 }  // namespace
 
+std::string xdmfText(const XdmfGrid& g) {
+  std::ostringstream s;
+  openCollection(s, "fields");
+  const std::string cells = std::to_string(g.ny) + " " + std::to_string(g.nx);
+  for (size_t k = 0; k < g.time_s.size(); ++k) {
+    // Node counts are cells + 1; XDMF lists dimensions slowest first (y, x).
+    s << "   <Grid Name=\"frame " << k << "\" GridType=\"Uniform\">\n"
+      << "    <Time Value=\"" << g.time_s[k] << "\" />\n"
+      << "    <Topology TopologyType=\"2DCoRectMesh\" Dimensions=\"" << g.ny + 1 << " " << g.nx + 1 << "\" />\n"
+      << "    <Geometry GeometryType=\"ORIGIN_DXDY\">\n"
+      << "     <DataItem Dimensions=\"2\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" << g.origin_y << " "
+      << g.origin_x << "</DataItem>\n"
+      << "     <DataItem Dimensions=\"2\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" << g.dy << " " << g.dx
+      << "</DataItem>\n"
+      << "    </Geometry>\n";
+    // Frame k of (frames, ny, nx): start k 0 0, stride 1 1 1, count 1 ny nx, then the dataset's shape.
+    const std::string slab = "|" + std::to_string(k) + " 0 0:1 1 1:1 " + cells + ":" +
+                             std::to_string(g.time_s.size()) + " " + cells;
+    for (const auto& f : g.fields) {
+      s << "    <Attribute Name=\"" << f << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
+      floatItem(s, cells, g.h5_file + ":/fields/" + f + slab);
+      s << "    </Attribute>\n";
+    }
+    s << "   </Grid>\n";
+  }
+  closeCollection(s);
+  return s.str();
+}
+
+std::string frameViewName(const std::string& name, std::size_t k) {
+  char frame[32];
+  std::snprintf(frame, sizeof frame, "%06zu", k);
+  return name + "_frames/" + frame;
+}
+
 std::string xdmfMeshText(const XdmfTriangleMesh& m) {
   std::ostringstream s;
-  s.precision(17);
-  s << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n"
-    << "  <Grid Name=\"mesh\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  openCollection(s, "mesh");
+  const std::string rows = std::to_string(m.vertices) + " 3", at = m.h5_file + ":" + m.group + "/";
   for (size_t k = 0; k < m.time_s.size(); ++k) {
     s << "   <Grid Name=\"frame " << k << "\" GridType=\"Uniform\">\n"
       << "    <Time Value=\"" << m.time_s[k] << "\" />\n"
       << "    <Topology TopologyType=\"Triangle\" NumberOfElements=\"" << m.triangles << "\">\n"
       << "     <DataItem Dimensions=\"" << m.triangles << " 3\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">"
-      << m.h5_file << ":" << m.group << "/triangles</DataItem>\n    </Topology>\n"
+      << at << "triangles</DataItem>\n    </Topology>\n"
       << "    <Geometry GeometryType=\"XYZ\">\n";
-    frameSlab(s, m, k, m.positions);
+    floatItem(s, rows, at + frameViewName(m.positions, k));
     s << "    </Geometry>\n";
-    for (const auto& v : m.vectors) {
+    std::vector<std::string> vectors = m.vectors;
+    vectors.insert(vectors.begin(), m.positions);  // meshio keeps only the first frame's geometry
+    for (const auto& v : vectors) {
       s << "    <Attribute Name=\"" << v << "\" AttributeType=\"Vector\" Center=\"Node\">\n";
-      frameSlab(s, m, k, v);
+      floatItem(s, rows, at + frameViewName(v, k));
       s << "    </Attribute>\n";
     }
     for (const auto& f : m.fixed_scalars)
       s << "    <Attribute Name=\"" << f << "\" AttributeType=\"Scalar\" Center=\"Node\">\n"
-        << "     <DataItem Dimensions=\"" << m.vertices << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">"
-        << m.h5_file << ":" << m.group << "/" << f << "</DataItem>\n    </Attribute>\n";
+        << "     <DataItem Dimensions=\"" << m.vertices << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << at
+        << f << "</DataItem>\n    </Attribute>\n";
     s << "   </Grid>\n";
   }
-  s << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  closeCollection(s);
   return s.str();
+}
+
+void writeFrameViews(const Group& group, const std::string& name) {
+  const auto lock = lockHdf5();
+  const Dataset source = group.openDataset(name);
+  const std::vector<hsize_t> shape = source.shape();
+  if (shape.size() != 3) detail::failAt(group.id(), name, "make frame views of", "not a (frames, rows, columns) array");
+  const Group views = group.createGroup(name + "_frames");
+  const std::string source_path = source.path();
+  const Handle type(detail::check(H5Dget_type(source.id()), group.id(), name, "read the type of"));
+  const Handle source_space(detail::check(H5Dget_space(source.id()), group.id(), name, "read the shape of"));
+  const Handle view_space = detail::dataspaceOf({shape[1], shape[2]});
+  const Handle link_props = detail::linkCreateProps();
+  for (hsize_t k = 0; k < shape[0]; ++k) {
+    const std::string view = frameViewName(name, k);
+    const hsize_t start[3] = {k, 0, 0}, count[3] = {1, shape[1], shape[2]};
+    detail::check(H5Sselect_hyperslab(source_space.id(), H5S_SELECT_SET, start, nullptr, count, nullptr), group.id(),
+                  view, "select the frame for");
+    const Handle props = detail::datasetCreateProps();
+    // "." = this file: the view moves with it.
+    detail::check(H5Pset_virtual(props.id(), view_space.id(), ".", source_path.c_str(), source_space.id()),
+                  group.id(), view, "map");
+    const Handle created(detail::check(H5Dcreate2(views.id(), view.substr(view.rfind('/') + 1).c_str(), type.id(),
+                                                  view_space.id(), link_props.id(), props.id(), H5P_DEFAULT),
+                                       group.id(), view, "create the virtual dataset"));
+  }
 }
 
 }  // namespace creaturelab::io

@@ -1,11 +1,17 @@
 #pragma once
-// XDMF 2 sidecar text for cell-centred fields stored in an HDF5 file as /fields/<name> with shape
-// (frames, ny, nx): a temporal collection of 2D co-rectilinear grids that ParaView opens.
+// XDMF 3 sidecar text that ParaView's Xdmf3 readers (Xdmf3ReaderS/T, what ParaView opens a .xdmf
+// with) and meshio's xdmf.TimeSeriesReader read; the HDF5 data stay where the run wrote them.
+#include "io/hdf5_object.hpp"
+
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace creaturelab::io {
 
+// Cell-centred fields stored as /fields/<name> with shape (frames, ny, nx): a temporal collection
+// of 2D co-rectilinear grids; each frame selects its slab with XDMF 3's "file:/path|start:stride:
+// count:dataspace" form (ParaView's Xdmf3 readers; its legacy XDMF 2 reader and meshio cannot).
 struct XdmfGrid {
   std::string h5_file;  // as referenced from the .xdmf (a bare name when side by side)
   std::vector<double> time_s;
@@ -19,7 +25,9 @@ std::string xdmfText(const XdmfGrid& grid);
 // A triangle mesh whose vertices move from frame to frame (a rendered jellyfish, src/render/):
 // <group>/triangles (triangles, 3) int64 indices, fixed; <group>/<positions> (frames, vertices, 3)
 // doubles; per-frame vector attributes (frames, vertices, 3) and fixed per-vertex scalars (vertices).
-// A temporal collection of unstructured triangle grids that ParaView opens.
+// Each frame names whole datasets only, the per-frame views of writeFrameViews(), so every reader
+// opens it: ParaView (Xdmf3 and legacy XDMF readers) and meshio's TimeSeriesReader, which takes
+// the mesh from the first frame and gets each frame's positions as the point data "<positions>".
 struct XdmfTriangleMesh {
   std::string h5_file;  // as referenced from the .xdmf
   std::string group;    // e.g. "/render"
@@ -31,5 +39,13 @@ struct XdmfTriangleMesh {
 };
 
 std::string xdmfMeshText(const XdmfTriangleMesh& mesh);
+
+// The name of frame `k`'s view of dataset `name`: "<name>_frames/NNNNNN" (relative to its group).
+std::string frameViewName(const std::string& name, std::size_t k);
+
+// For a (frames, rows, columns) dataset `name` in `group`, writes frameViewName(name, k) for every
+// frame k: an HDF5 virtual dataset (rows, columns) mapping that frame of `name` in the same file,
+// no data copied. XDMF readers without slab selection (meshio) read these.
+void writeFrameViews(const Group& group, const std::string& name);
 
 }  // namespace creaturelab::io

@@ -528,6 +528,9 @@ RenderReport renderRun(const RenderRunOptions& o) {
             report.files.push_back(std::string("obj/") + name);
           }
         }
+        // Per-frame views of the moving arrays for render.xdmf (io/xdmf.hpp).
+        io::writeFrameViews(group, "positions_m");
+        io::writeFrameViews(group, "normals");
       }
       file.close();
     }

@@ -40,10 +40,10 @@ frames = root.findall(".//Grid[@GridType='Uniform']")
 assert len(frames) == 5, len(frames)
 for item in root.iter("DataItem"):
     if item.get("Format") == "HDF":
-        path = item.text.strip()
+        path, slab = item.text.strip().split("|")  # XDMF 3: file:/dataset|start:stride:count:shape
         fname, dset = path.split(":")
         assert fname == "point_000000.h5", fname
         assert dset.split("/")[-1] in names, dset
-        assert item.get("Dimensions") == "5 24 24", item.get("Dimensions")
+        assert item.get("Dimensions") == "24 24" and slab.split(":")[-1] == "5 24 24", (item.get("Dimensions"), slab)
 print("fluid fields and XDMF sidecar ok")
 PY
