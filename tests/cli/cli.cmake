@@ -51,6 +51,3 @@ creaturelab_cli_test(reproduce_progress) # reproduce: a line per experiment with
 # XDMF readers (meshio, ParaView's pvbatch) open the field sidecar and the render series with the
 # HDF5's counts and values. Skipped (77) when neither reader is installed.
 creaturelab_cli_test(xdmf_readers SKIP_RETURN_CODE 77)
-# XDMF readers (meshio, ParaView's pvbatch) open the field sidecar and the render series with the
-# HDF5's counts and values. Skipped (77) when neither reader is installed.
-creaturelab_cli_test(xdmf_readers SKIP_RETURN_CODE 77)
