@@ -106,7 +106,7 @@ def sweep_plot(run, out):
         return png
 
 
-def draw(run, out, by_type=None, frame=None):
+def draw(run, out, by_type=False, frame=None):
     """Every figure of the run folder `run`, as PNGs (and tables) in folder `out`."""
     os.makedirs(out, exist_ok=True)
     for path in sorted(glob.glob(os.path.join(run, "point_*.h5"))):

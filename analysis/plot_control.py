@@ -121,7 +121,7 @@ def angles_figure(points, png):
     ax_obj.set_ylabel("objective J_i (effort N m s, drag N)")
     ax_obj.set_yscale("symlog", linthresh=1e-3)
     ax_angle.set_title("controlled angles")
-    ax_obj.set_title("objectives (colours as the angles)")
+    ax_obj.set_title("objectives J_i")
     ax_angle.legend(ncol=1 if len(ax_angle.get_lines()) < 6 else 2)
     style.save(fig, png)
 

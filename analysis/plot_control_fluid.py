@@ -21,7 +21,6 @@ import h5py
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from plot_control import timing_table  # noqa: E402
@@ -56,24 +55,25 @@ def draw_field(ax, f, k, lim=None):
     xy = f["lagrangian/markers_m"][min(k, f["lagrangian/markers_m"].shape[0] - 1)]
     ax.plot(xy[:, 0], xy[:, 1], "k.", ms=1.0)
     ax.set_aspect("equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("z (m)")
     return im, lim
 
 
 def vorticity_figure(points, png):
     n = len(points)
-    cols = min(n, 4)
+    cols = min(n, 3)
     rows = (n + cols - 1) // cols
-    fig, axes = plt.subplots(rows, cols, figsize=(3.8 * cols, 3.6 * rows), squeeze=False)
+    fig, axes = style.subplots(rows, cols, width=min(style.WIDTH_IN, 4.2 * cols), height=4.0 * rows, squeeze=False)
     for ax in axes.flat[n:]:
         ax.axis("off")
     for ax, f in zip(axes.flat, points):
         last = f["fields/vorticity_per_s"].shape[0] - 1
         im, _ = draw_field(ax, f, last)
-        ax.set_title(f"{label(f)}\nflow angle {metric(f, 'flow_angle_deg'):.1f} deg, t = "
-                     f"{f['fields/time_s'][last]:.2f} s", fontsize=9)
-        ax.tick_params(labelsize=6)
-        fig.colorbar(im, ax=ax, shrink=0.7).ax.tick_params(labelsize=6)
-    fig.suptitle("vorticity (1/s) and the bodies' outline markers; stream from the left (Fig. 8)", fontsize=9)
+        ax.set_title(style.wrap(f"{label(f)}; flow angle {metric(f, 'flow_angle_deg'):.1f} deg, t = "
+                                f"{f['fields/time_s'][last]:.2f} s", 36))
+        fig.colorbar(im, ax=ax, shrink=0.8).set_label("vorticity (1/s)")
+    fig.suptitle(style.wrap("vorticity (1/s) and the bodies' outline markers; stream from the left (Fig. 8)", 100))
     style.save(fig, png)
 
 
@@ -82,14 +82,15 @@ def frame_series(f, folder):
     w = f["fields/vorticity_per_s"]
     lim = np.percentile(np.abs(w[w.shape[0] - 1]), 99) or 1
     for k in range(w.shape[0]):
-        fig, ax = plt.subplots(figsize=(5, 5))
-        draw_field(ax, f, k, lim)
-        ax.set_title(f"{label(f)}: t = {f['fields/time_s'][k]:.2f} s", fontsize=9)
+        fig, ax = style.subplots(width=5.5, height=5)
+        im, _ = draw_field(ax, f, k, lim)
+        fig.colorbar(im, ax=ax, shrink=0.8).set_label("vorticity (1/s)")
+        ax.set_title(style.wrap(f"{label(f)}: t = {f['fields/time_s'][k]:.2f} s", 50))
         style.save(fig, os.path.join(folder, f"frame_{k:04d}.png"))
 
 
 def angles_figure(points, png):
-    fig, (ax_angle, ax_force) = plt.subplots(1, 2, figsize=(12, 4.2))
+    fig, (ax_angle, ax_force) = style.subplots(1, 2, height=4.6)
     for f in points:
         t = f["timeseries/time_s"][...]
         joints = [k[len("angle_deg_"):] for k in f["timeseries"] if k.startswith("angle_deg_")]
@@ -101,7 +102,7 @@ def angles_figure(points, png):
     ax_force.set_xlabel("time (s)")
     ax_force.set_ylabel("fluid force on the joint's bodies along w (N)")
     ax_force.set_yscale("symlog", linthresh=100)
-    ax_angle.legend(fontsize=9, ncol=2)
+    ax_angle.legend(ncol=1 if len(ax_angle.get_lines()) < 6 else 2)
     style.save(fig, png)
 
 

@@ -93,7 +93,7 @@ def speed(points, axes, out):
     ax.legend()
     ax.set_title("swim-MC: speed against amplitude and rate")
     ax2.axvline(1.0, color="grey", lw=0.8)
-    ax2.set_xlabel("gait frequency / body's lowest sideways mode")
+    ax2.set_xlabel("gait frequency / body's lowest sideways mode (ratio)")
     ax2.set_ylabel("stride (body lengths per swim cycle)")
     ax2.set_title("the body's inertia filters gaits faster than its modes", fontsize=9)
     style.save(fig, os.path.join(out, "speed.png"))
@@ -106,7 +106,7 @@ def stability(points, axes, out):
     schemes = sorted({text(attr(f, "scheme")) for f in points})
     colors = dict(zip(schemes, ["#c54", "#4a7", "#58c", "#a6c"]))
     groups = sorted(set(names), key=names.index)
-    fig, ax = plt.subplots(figsize=(max(6, 1.6 * len(groups)), 4.5))
+    fig, ax = style.subplots(width=min(style.WIDTH_IN, max(6, 1.6 * len(groups))), height=4.5)
     width = 0.8 / max(1, len(schemes))
     for k, sc in enumerate(schemes):
         for f, n, v in zip(points, names, dts):
@@ -122,8 +122,9 @@ def stability(points, axes, out):
     ax.set_xticks(range(len(groups)))
     ax.set_xticklabels([g or "-" for g in groups], fontsize=9, rotation=15)
     ax.set_yscale("log")
+    ax.set_xlabel("setting")
     ax.set_ylabel("largest stable step (s)")
-    ax.set_title("largest stable step per scheme; dashed: the stiffest vibration's 2 / w_max", fontsize=9)
+    ax.set_title(style.wrap("largest stable step per scheme; dashed: the stiffest vibration's 2 / w_max", 60))
     ax.legend(fontsize=9)
     style.save(fig, os.path.join(out, "stability.png"))
 
@@ -190,15 +191,16 @@ def school(points, out):
     rate = np.array([r[1] for r in rows])
     # real-time factor: simulated seconds of the whole school per wall second
     realtime = rate * float(attr(points[0], "dt_s")) / n
-    fig, ax = plt.subplots(figsize=(6, 4))
+    fig, ax = style.subplots(width=7.5, height=4.5)
     ax.loglog(n, rate, "o-", label="fish-steps per second")
     ax.loglog(n, realtime, "s--", label="real-time factor of the school (sim s / wall s)")
     ax.axhline(1.0, color="grey", lw=0.8)
     for x, y, z in zip(n, rate, realtime):
         ax.annotate(f"{y:.3g}/s, x{z:.3g}", (x, y), fontsize=9, textcoords="offset points", xytext=(4, 4))
-    ax.set_xlabel("fish in the school")
+    ax.set_xlabel("fish in the school (count)")
+    ax.set_ylabel("rate (1/s) or real-time factor (ratio)")
     ax.legend(fontsize=9)
-    ax.set_title("school: one core, 0.055 s steps (wall time from the point files' wall_time_s)", fontsize=9)
+    ax.set_title(style.wrap("school: one core, 0.055 s steps (wall time from the point files' wall_time_s)", 70))
     style.save(fig, os.path.join(out, "school.png"))
 
 
@@ -216,7 +218,7 @@ def render_skin(run, out):
         subprocess.run([povray, "+I" + scene, "+O" + png, "+W800", "+H450", "-D", "+A0.3", "+FN", "-V", "+WT1"],
                        check=True, capture_output=True)
         images.append(png)
-    fig, axes = plt.subplots(1, len(images), figsize=(4 * len(images), 2.6))
+    fig, axes = style.subplots(1, len(images), height=style.WIDTH_IN / len(images) * 0.6 + 0.8)
     axes = np.atleast_1d(axes)
     for ax, png in zip(axes, images):
         ax.imshow(plt.imread(png))

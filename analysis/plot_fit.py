@@ -19,7 +19,6 @@ import h5py
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import style  # noqa: E402
 
@@ -30,7 +29,7 @@ def text(v):
 
 def plot_spline(path, out_png):
     f = h5py.File(path, "r")
-    fig, (curve, resid) = plt.subplots(1, 2, figsize=(11, 4), gridspec_kw={"width_ratios": [3, 2]})
+    fig, (curve, resid) = style.subplots(1, 2, height=4.2, gridspec_kw={"width_ratios": [3, 2]})
     phase, value, weight = f["data/phase"][...], f["data/value"][...], f["data/weight"][...]
     used = weight > 0
     curve.plot(phase[used], value[used], ".", color="0.55", ms=3, label=f"data ({used.sum()} samples)")
@@ -45,17 +44,18 @@ def plot_spline(path, out_png):
     for b in (lo, hi):
         curve.axhline(b, color="tab:red", lw=0.6, ls=":")
     curve.set_xlim(0, 1)
-    curve.set_xlabel("phase in the period")
-    curve.set_ylabel("value")
-    curve.set_title(f"period {f.attrs['period_s']:.4g} s ({text(f.attrs['period_source'])}); "
-                    f"loss {text(f.attrs['loss'])}", fontsize=9)
+    curve.set_xlabel("phase in the period (cycles)")
+    name = text(f.attrs["data_source"]).rsplit("/", 1)[-1].replace("_", " ")
+    curve.set_ylabel(f"{name} (dimensionless)")
+    curve.set_title(style.wrap(f"period {f.attrs['period_s']:.4g} s ({text(f.attrs['period_source'])}); "
+                               f"loss {text(f.attrs['loss'])}", 60))
     curve.legend(fontsize=9)
     resid.plot(f["data/time_s"][...][used], f["data/residual"][...][used], ".", color="0.3", ms=3)
     resid.axhline(0, color="k", lw=0.6)
     resid.set_xlabel("time (s)")
-    resid.set_ylabel("fit - data")
+    resid.set_ylabel("fit - data (dimensionless)")
     resid.set_title("residuals", fontsize=9)
-    fig.suptitle(text(f.attrs["data_source"]), fontsize=9)
+    fig.suptitle(style.wrap(text(f.attrs["data_source"]), 100))
     style.save(fig, out_png)
 
 
@@ -66,7 +66,7 @@ def plot_controller(path, out_png):
     names = [text(n) for n in f["tuned/name"][...]]
     x0, x1 = f["result/x_start"][...], f["result/x_fitted"][...]
     metric = text(f.attrs["objective_metric"])
-    fig, (curves, traj, hist) = plt.subplots(1, 3, figsize=(15, 4.3))
+    fig, (curves, traj, hist) = style.subplots(1, 3, height=4.3)
 
     for group, color, label in (("start", "0.45", "start"), ("fitted", "tab:red", "fitted")):
         if f"{group}/curve" not in f:
@@ -74,7 +74,7 @@ def plot_controller(path, out_png):
         c = f[f"{group}/curve"]
         curves.plot(c["phase"][...], c["aperture"][...], color=color, lw=1.6, label=f"{label}: aperture")
         curves.plot(c["phase"][...], c["apex"][...], color=color, lw=1.0, ls="--", label=f"{label}: apex")
-    curves.set_xlabel("phase in the cycle")
+    curves.set_xlabel("phase in the cycle (cycles)")
     curves.set_ylabel("muscle rest-length factor")
     curves.set_title("contraction curves", fontsize=9)
     curves.legend(fontsize=9)
@@ -93,12 +93,12 @@ def plot_controller(path, out_png):
 
     h = f["history"]
     hist.plot(h["iteration"][...], h["objective"][...], "ko-", ms=4)
-    hist.set_xlabel("iteration")
-    hist.set_ylabel(metric if text(f.attrs["objective_type"]) == "maximise" else "cost")
+    hist.set_xlabel("iteration (count)")
+    hist.set_ylabel(style.label(metric) if text(f.attrs["objective_type"]) == "maximise" else "cost (as the objective)")
     ev = f["evaluations"]
     hist.set_title(f"{ev['cost'].shape[0]} runs; " + ", ".join(
         f"{n} {a:.3g}→{b:.3g}" for n, a, b in zip(names, x0, x1)), fontsize=9)
-    fig.suptitle(text(f.attrs["title"]), fontsize=9)
+    fig.suptitle(style.wrap(text(f.attrs["title"]), 100))
     style.save(fig, out_png)
 
 

@@ -28,7 +28,6 @@ import h5py
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 
 import numpy as np  # noqa: E402
 
@@ -45,7 +44,7 @@ def resolution(f):
 
 
 def angles_figure(points, png):
-    fig, axes = plt.subplots(3, 1, figsize=(10, 9), sharex=True)
+    fig, axes = style.subplots(3, 1, height=9, sharex=True)
     for f in points:
         ts = f["timeseries"]
         t = ts["time_s"][...]
@@ -79,15 +78,14 @@ def extreme_frames(f):
 
 
 def vorticity_figure(points, png):
-    fig, axes = plt.subplots(len(points), 2, figsize=(8, 3.9 * len(points)), squeeze=False)
+    fig, axes = style.subplots(len(points), 2, width=9, height=4.4 * len(points), squeeze=False)
     for row, f in zip(axes, points):
         for ax, k, when in zip(row, extreme_frames(f), ("wing furthest down", "wing furthest up")):
             im, _ = draw_field(ax, f, k)
-            ax.set_title(f"{text(f, 'label')} ({resolution(f)}): {when}, t = {f['fields/time_s'][k]:.2f} s", fontsize=9)
-            ax.tick_params(labelsize=6)
-            fig.colorbar(im, ax=ax, shrink=0.7).ax.tick_params(labelsize=6)
-    fig.suptitle("the driven flyer: vorticity (1/s) and the bodies' outline markers; source at the floor, "
-                 "open top (§7.1, Figs. 11, 12)", fontsize=9)
+            ax.set_title(style.wrap(f"{text(f, 'label')} ({resolution(f)}): {when}, t = {f['fields/time_s'][k]:.2f} s", 45))
+            fig.colorbar(im, ax=ax, shrink=0.8).set_label("vorticity (1/s)")
+    fig.suptitle(style.wrap("the driven flyer: vorticity (1/s) and the bodies' outline markers; source at the floor, "
+                            "open top (§7.1, Figs. 11, 12)", 90))
     style.save(fig, png)
 
 
@@ -189,7 +187,7 @@ def phase_outputs(points, png, path):
         return
     held = held_references(long)
     centres = (np.arange(PHASE_BINS) + 0.5) / PHASE_BINS
-    fig, axes = plt.subplots(2, 1, figsize=(9, 7), sharex=True)
+    fig, axes = style.subplots(2, 1, height=7, sharex=True)
     with open(path, "w") as out:
         out.write("Phase means over each point's force window (phase 0: the inner pattern's zero, rising = "
                   "turning the wings down); the stroke split follows the sense the controller followed.\n")
@@ -214,7 +212,7 @@ def phase_outputs(points, png, path):
     axes[1].set_xlabel("phase of the flap")
     for ax in axes:
         ax.legend(fontsize=9, ncol=2)
-    fig.suptitle("the driven flyer over a flap: phase means over the force window (§7.1)", fontsize=9)
+    fig.suptitle("the driven flyer over a flap: phase means over the force window (§7.1)")
     style.save(fig, png)
 
 

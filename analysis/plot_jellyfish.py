@@ -209,7 +209,7 @@ def morphology(sweep, points, out, cycles):
         muscles = f["topology/muscles"][...].reshape(-1, 2)
         frames = np.searchsorted(t, warm + np.linspace(0, cycles / hz, 9)[:-1])
         frames = frames[frames < len(t)]
-        fig, ax = plt.subplots(figsize=(14, 3.4))
+        fig, ax = style.subplots(height=3.0)
         spacing = 0.06
         for col, fr in enumerate(frames):
             p = xy[fr].copy()
@@ -228,8 +228,9 @@ def morphology(sweep, points, out, cycles):
                 ax.plot(c[:, 0] * 1e3, c[:, 1] * 1e3, "k", lw=0.5)
             ax.text(col * spacing * 1e3, -35, f"t = {t[fr] - warm:.2f} s", ha="center", fontsize=9)
         ax.set_aspect("equal")
-        ax.set_xlabel("mm (frames offset sideways; height relative to the first frame)")
-        ax.set_title(f"bell through {cycles:g} cycle(s) at {hz:g} Hz (Fig. 11): {label_of(sweep, k)}", fontsize=9)
+        ax.set_xlabel("x, each frame offset sideways (mm)")
+        ax.set_ylabel("height from the first frame (mm)")
+        ax.set_title(style.wrap(f"bell through {cycles:g} cycle(s) at {hz:g} Hz (Fig. 11): {short_label(sweep, k)}", 110))
         style.save(fig, os.path.join(out, f"morphology_{k}.png"))
 
 
@@ -509,7 +510,7 @@ def convergence(sweep, points, out):
     save_study(fig, lines, out, "convergence")
 
 
-def draw(run, out, axis=None, cycles=None, no_morphology=None):
+def draw(run, out, axis=None, cycles=1.0, no_morphology=False):
     """Every figure of the run folder `run`, as PNGs (and tables) in folder `out`."""
     os.makedirs(out, exist_ok=True)
     sweep, points = load(run)

@@ -32,7 +32,7 @@ def line_style(f):
 
 
 def area_loss(points, title, png):
-    fig, (ax_loss, ax_aspect) = plt.subplots(1, 2, figsize=(11, 4))
+    fig, (ax_loss, ax_aspect) = style.subplots(1, 2, height=4.0)
     for f in points:
         t = f["timeseries/time_s"][...]
         colour, line = line_style(f)
@@ -52,7 +52,7 @@ def area_loss(points, title, png):
 
 
 def outlines(points, png):
-    fig, axes = plt.subplots(1, len(points), figsize=(3.6 * len(points), 3.8), squeeze=False)
+    fig, axes = style.subplots(1, len(points), height=min(3.8, style.WIDTH_IN / len(points)) + 1.2, squeeze=False)
     for ax, f in zip(axes[0], points):
         x = f["lagrangian/markers_m"]
         t = f["lagrangian/time_s"][...] if "lagrangian/time_s" in f else f["timeseries/time_s"][...]
@@ -75,7 +75,7 @@ def outlines(points, png):
         ax.set_xticks([])
         ax.set_yticks([])
     handles, names = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, names, loc="lower center", ncol=len(names), fontsize=9)
+    axes[0][-1].legend(handles, names, loc="lower right", fontsize=9)
     style.save(fig, png)
 
 

@@ -11,7 +11,6 @@ vorticity with the bodies at six moments of the controller's last cycle (a Fig. 
 """
 import os
 
-import matplotlib.pyplot as plt
 import numpy as np
 import style  # noqa: E402
 
@@ -43,7 +42,7 @@ def _shade_phases(ax, t, phase):
 
 
 def rise_figure(points, png):
-    fig, (ax, axf) = plt.subplots(2, 1, figsize=(9, 6), sharex=True, gridspec_kw={"height_ratios": [3, 1]})
+    fig, (ax, axf) = style.subplots(2, 1, height=6, sharex=True, gridspec_kw={"height_ratios": [3, 1]})
     first = points[0]
     t = first["timeseries/time_s"][...]
     _shade_phases(ax, t, first["timeseries/phase"][...])
@@ -54,24 +53,24 @@ def rise_figure(points, png):
                 label=f"{_label(f)}: {100 * float(f['metrics/rise_per_cycle_m'][()]):+.2f} cm/cycle")
         axf.plot(tt, f["timeseries/mouth_flux_m_per_s"][...], lw=1)
     ax.set_ylabel("centre of mass height - first frame's (cm)")
-    ax.set_title("swimmer: phases 1 draw in + min drag (blue), 2 expel + min (orange), 3 max drag (grey)", fontsize=9)
-    ax.legend(fontsize=9)
-    axf.set_ylabel("mouth flux (m/s)", fontsize=9)
+    ax.set_title(style.wrap("swimmer: phases 1 draw in + min drag (blue), 2 expel + min (orange), 3 max drag (grey)", 100))
+    ax.legend()
+    axf.set_ylabel("mouth flux (m/s)")
     axf.set_xlabel("time (s)")
     style.save(fig, png)
 
 
 def angles_figure(points, png):
     n = len(points)
-    fig, axes = plt.subplots(n, 1, figsize=(9, 2.4 * n), sharex=True, squeeze=False)
+    fig, axes = style.subplots(n, 1, height=2.6 * n, sharex=True, squeeze=False)
     for ax, f in zip(axes[:, 0], points):
         t = f["timeseries/time_s"][...]
         _shade_phases(ax, t, f["timeseries/phase"][...])
         for name in [k for k in f["timeseries"] if k.startswith("angle_deg_")]:
             ax.plot(t, f[f"timeseries/{name}"][...], lw=1, label=name[len("angle_deg_"):])
         ax.set_ylabel("leg angle (deg)")
-        ax.set_title(_label(f), fontsize=9)
-        ax.legend(fontsize=9, ncol=5)
+        ax.set_title(_label(f))
+        ax.legend(ncol=5)
     axes[-1, 0].set_xlabel("time (s)")
     style.save(fig, png)
 
@@ -111,14 +110,17 @@ def vorticity_strip(f, draw_field, png):
     times = f["fields/time_s"][...]
     last = np.nonzero(times >= times[-1] - float(f.attrs["cycle_s"]) + 1e-9)[0]
     picks = last[np.linspace(0, len(last) - 1, min(6, len(last))).round().astype(int)]
-    fig, axes = plt.subplots(1, len(picks), figsize=(2.6 * len(picks), 3.0), squeeze=False)
+    fig, axes = style.subplots(1, len(picks), height=style.WIDTH_IN / len(picks) + 0.9, squeeze=False)
     lim = None
-    for ax, k in zip(axes[0], picks):
-        _, lim = draw_field(ax, f, int(k), lim)
+    for j, (ax, k) in enumerate(zip(axes[0], picks)):
+        im, lim = draw_field(ax, f, int(k), lim)
         ax.set_xlim(-1.0, 1.0)
-        ax.set_title(f"t = {times[k]:.2f} s", fontsize=9)
-        ax.tick_params(labelsize=5)
-    fig.suptitle(f"{_label(f)}: vorticity (1/s, +-{lim:.2g}), last cycle", fontsize=9)
+        ax.set_title(f"t = {times[k]:.2f} s")
+        if j:  # one y axis for the strip
+            ax.set_ylabel("")
+            ax.set_yticklabels([])
+    fig.colorbar(im, ax=list(axes[0]), shrink=0.8).set_label("vorticity (1/s)")
+    fig.suptitle(style.wrap(f"{_label(f)}: vorticity, the last cycle", 100))
     style.save(fig, png)
 
 

@@ -142,6 +142,7 @@ def save(fig, path, dpi=DPI):
     if _collecting:
         _collecting[-1].append((os.path.splitext(os.path.basename(path))[0], fig))
         return path
+    fig.draw_without_rendering()  # a layout pass first: constrained layout settles over two draws
     fig.savefig(path, dpi=dpi)
     plt.close(fig)
     return path

@@ -10,7 +10,6 @@ from figures import runs  # noqa: E402
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 
 from figures import webs  # noqa: E402
 import os  # noqa: E402
@@ -21,14 +20,14 @@ import style  # noqa: E402
 def draw(run, out):
     pngs = []
     for k, f in enumerate(run.ok_points()):
-        fig, (types, grey, energy) = plt.subplots(1, 3, figsize=(15, 5), gridspec_kw={"width_ratios": [1, 1, 0.9]})
+        fig, (types, grey, energy) = style.subplots(1, 3, height=4.4, gridspec_kw={"width_ratios": [1, 1, 0.9]})
         webs.draw_web(f, types, by_type=True)
-        types.set_title("strand types (Figs. 5.7-5.14)", fontsize=9)
+        types.set_title("strand types (Figs. 5.7-5.14)")
         webs.draw_web(f, grey)
-        grey.set_title(f"settled, {int(f['metrics/particles'][()])} particles", fontsize=9)
+        grey.set_title(f"settled, {int(f['metrics/particles'][()])} particles")
         webs.settling_curve(f, energy)
-        energy.set_title("settling (dashed: settled)", fontsize=9)
-        fig.suptitle(run.title, fontsize=9)
+        energy.set_title("settling (dashed: settled)")
+        fig.suptitle(style.wrap(run.title, 100))
         pngs.append(style.save(fig, os.path.join(out, "mehla_fig5_14" + (f"_{k}" if k else ""))))
     return pngs
 

@@ -12,7 +12,6 @@ import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
 
 from figures import webs  # noqa: E402
 import os  # noqa: E402

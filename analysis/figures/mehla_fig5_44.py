@@ -11,7 +11,6 @@ from figures import runs  # noqa: E402
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 import os  # noqa: E402
@@ -63,7 +62,7 @@ def panel(ax, segs, types, bg, alpha, shaded, colour="white"):
 def draw(run, out):
     f = run.ok_points()[0]
     segs, types = segments(f)
-    fig, axes = plt.subplots(2, 3, figsize=(13, 9))
+    fig, axes = style.subplots(2, 3, height=7.6)
     panel(axes[0, 0], segs, types, "black", 1.0, False)
     axes[0, 0].set_title("black background (Fig. 5.39)", fontsize=9)
     panel(axes[0, 1], segs, types, "sky", 0.6, True)

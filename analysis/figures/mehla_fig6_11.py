@@ -15,7 +15,6 @@ import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
-import matplotlib.pyplot as plt  # noqa: E402
 import style  # noqa: E402
 
 RENDERS = [("overlay", "target over the web, removed in red"), ("result", "settled again")]
@@ -26,20 +25,26 @@ def draw(run, out):
     labels = run.labels()
     if not idx:
         return []
-    fig, axes = plt.subplots(2, len(idx), figsize=(3.1 * len(idx), 6.6), squeeze=False)
-    for col, p in enumerate(idx):
-        for row, (name, what) in enumerate(RENDERS):
-            ax = axes[row][col]
-            ax.axis("off")
+    # Two cases a row, each as its two renders side by side.
+    pairs = 2 if len(idx) > 1 else 1
+    rows = (len(idx) + pairs - 1) // pairs
+    cols = pairs * len(RENDERS)
+    panel = style.WIDTH_IN / cols
+    fig, axes = style.subplots(rows, cols, height=(panel + 0.75) * rows, squeeze=False)
+    for ax in axes.flat:
+        ax.axis("off")
+    for k, p in enumerate(idx):
+        for j, (name, what) in enumerate(RENDERS):
+            ax = axes[k // pairs][(k % pairs) * len(RENDERS) + j]
             path = os.path.join(run.folder, f"point_{int(p):06d}_{name}.png")
             if os.path.exists(path):
                 ax.imshow(mpimg.imread(path))
-            title = f"{labels[col]}: {what}"
-            if row == 1:
-                iou, con = run.metric("emptied_iou")[col], run.metric("letter_contrast")[col]
-                title += f"\nIoU {iou:.2f}, contrast {con:+.2f}"
-            ax.set_title(title, fontsize=9)
-    fig.suptitle(run.title, fontsize=9)
+            title = f"{labels[k]}: {what}"
+            if j == 1:
+                iou, con = run.metric("emptied_iou")[k], run.metric("letter_contrast")[k]
+                title += f"; IoU {iou:.2f}, contrast {con:+.2f}"
+            ax.set_title(style.wrap(title, 30))
+    fig.suptitle(style.wrap(run.title, 100))
     return [style.save(fig, os.path.join(out, "mehla_fig6_11"))]
 
 

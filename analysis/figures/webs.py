@@ -46,8 +46,9 @@ def sweep_grid(run, out, name, title, metrics=("particles", "spiral_segments", "
     n = len(points)
     cols = min(4, max(1, n))
     rows = math.ceil(n / cols)
-    fig = plt.figure(figsize=(3.2 * cols, 3.2 * rows + 3.0))
-    gs = fig.add_gridspec(rows + 1, cols, height_ratios=[3.2] * rows + [3.0])
+    panel = style.WIDTH_IN / cols
+    fig = style.figure(height=(panel + 0.4) * rows + 3.6)
+    gs = fig.add_gridspec(rows + 1, cols, height_ratios=[panel + 0.4] * rows + [3.6])
     for k, f in enumerate(points):
         ax = fig.add_subplot(gs[k // cols, k % cols])
         if runs.text(f.attrs.get("status", "ok")) != "ok":
@@ -55,7 +56,7 @@ def sweep_grid(run, out, name, title, metrics=("particles", "spiral_segments", "
             ax.axis("off")
         else:
             draw_web(f, ax)
-        ax.set_title(labels[k] if k < len(labels) else str(k), fontsize=9)
+        ax.set_title(style.wrap(labels[k] if k < len(labels) else str(k), int(panel * 9)))
     bottom = gs[rows, :].subgridspec(1, 2, width_ratios=[1, 1])
     bars = fig.add_subplot(bottom[0, 0])
     x = np.arange(len(labels))
@@ -65,7 +66,9 @@ def sweep_grid(run, out, name, title, metrics=("particles", "spiral_segments", "
         ref = np.nanmax(np.abs(v)) or 1.0
         bars.plot(x, v / ref, "o-", ms=3, label=f"{m} (max {ref:.3g} {run.units.get(m, '')})")
     bars.set_xticks(x, labels, rotation=25, ha="right", fontsize=9)
-    bars.set_ylabel("relative to the largest")
+    bars.set_ylabel("relative to the largest (ratio)")
+    bars.set_xlabel("sweep point")
+    bars.set_title("the sweep's measures")
     bars.legend(fontsize=9)
     curves = fig.add_subplot(bottom[0, 1])
     cmap = plt.get_cmap("viridis")
@@ -75,5 +78,5 @@ def sweep_grid(run, out, name, title, metrics=("particles", "spiral_segments", "
     if n <= 8:
         curves.legend(fontsize=9)
     curves.set_title("settling (dashed: settled)", fontsize=9)
-    fig.suptitle(title, fontsize=9)
+    fig.suptitle(style.wrap(title, 100))
     return style.save(fig, os.path.join(out, name))
