@@ -190,6 +190,8 @@ ControlFluidKind::ControlFluidKind() {
       {"marker_cells_per_step_most", "", "largest marker displacement in one coupled step of the main run, cells"},
       {"mean_up_force_n", "N", "§7.1: the fluid's upward force on all bodies (per depth_m), mean over the last "
                                "force_cycles flap periods (flap_period_s > 0) or the last average_frames"},
+      {"mean_up_force_n_stderr", "N", "standard error of mean_up_force_n from the scatter of its force_cycles flaps' "
+                                      "means (NaN with one flap or flap_period_s = 0)"},
   };
   for (auto& spec : swimmerParams()) params_.push_back(std::move(spec));
   for (auto& spec : swimmerMetrics()) metrics_.push_back(std::move(spec));
@@ -379,6 +381,11 @@ Result ControlFluidKind::run(const Params& params) const {
                                                         int(r.integer("force_cycles")))
                                        : tailMean(body_fz.values, tail),
                           "N"};
+  m["mean_up_force_n_stderr"] = {period_s > 0 ? lastCyclesStandardError(body_fz.values,
+                                                                        framesPerCycle(period_s, r.real("frame_s")),
+                                                                        int(r.integer("force_cycles")))
+                                              : std::numeric_limits<double>::quiet_NaN(),
+                                 "N"};
   rise.measure(result, density_ratio);
   return result;
 }

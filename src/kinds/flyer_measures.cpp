@@ -56,4 +56,19 @@ double lastCyclesMean(const std::vector<double>& v, int frames_per_cycle, int cy
   return sum / double(n);
 }
 
+double lastCyclesStandardError(const std::vector<double>& v, int frames_per_cycle, int cycles) {
+  const long n = long(frames_per_cycle) * cycles;
+  if (cycles < 2 || frames_per_cycle < 1 || n > long(v.size())) return std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> means;
+  for (long k = long(v.size()) - n; k < long(v.size()); k += frames_per_cycle) {
+    double sum = 0;
+    for (long j = k; j < k + frames_per_cycle; ++j) sum += v[j];
+    means.push_back(sum / double(frames_per_cycle));
+  }
+  double mean = 0, squares = 0;
+  for (double m : means) mean += m / double(cycles);
+  for (double m : means) squares += (m - mean) * (m - mean);
+  return std::sqrt(squares / double(cycles - 1) / double(cycles));
+}
+
 }  // namespace creaturelab::kinds

@@ -2,7 +2,7 @@
 // What the driven flyer (Lentine et al. 2010 §7.1, Figs. 11-13; experiments/control/flyer.toml) adds to
 // the control_fluid kind: the stroke each controlled joint's sense follows, read from a parameter, and
 // the mean of a per-frame series over whole flap cycles (a mean over a part of a cycle would weigh up-
-// and down-stroke unequally).
+// and down-stroke unequally) and its standard error from the cycles' scatter.
 #include <string>
 #include <vector>
 
@@ -22,5 +22,9 @@ int framesPerCycle(double period_s, double frame_s);
 
 // Mean of the last `cycles` x `frames_per_cycle` values of v; NaN when v is shorter.
 double lastCyclesMean(const std::vector<double>& v, int frames_per_cycle, int cycles);
+
+// Standard error of lastCyclesMean from its cycles' means m_k: sqrt(sum (m_k - mean)^2 / (cycles - 1)) /
+// sqrt(cycles), cycles taken as independent samples; NaN with fewer than two cycles or v shorter.
+double lastCyclesStandardError(const std::vector<double>& v, int frames_per_cycle, int cycles);
 
 }  // namespace creaturelab::kinds

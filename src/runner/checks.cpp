@@ -91,6 +91,22 @@ CheckOutcome extremum(const CheckSpec& c, const Table& table, const std::vector<
   return out;
 }
 
+// A row's standard error of its value (uncertainty metric); NaN when the row has none.
+double standardError(const Row& row, const std::string& metric) {
+  auto it = row.metrics.find(metric);
+  return it == row.metrics.end() ? std::nan("") : it->second;
+}
+
+// Sets the outcome's verdict and appends " +- s" (s the standard error) to its got text.
+void judge(CheckOutcome& out, const CheckSpec& c, double value, double standard_error) {
+  const Verdict v = intervalVerdict(value, standard_error, c.expect_lo, c.expect_hi);
+  out.passed = v == Verdict::pass;
+  out.inconclusive = v == Verdict::inconclusive;
+  out.got += " +- " + formatNumber(standard_error);
+  if (out.inconclusive && std::isfinite(standard_error))
+    out.got += " (2 s.e.: " + range(value - 2 * standard_error, value + 2 * standard_error) + ")";
+}
+
 CheckOutcome inRange(const CheckSpec& c, const std::vector<const Row*>& rows) {
   double lo = rows.front()->metrics.at(c.metric), hi = lo;
   for (const Row* r : rows) {
@@ -100,6 +116,24 @@ CheckOutcome inRange(const CheckSpec& c, const std::vector<const Row*>& rows) {
   CheckOutcome out{c.name, c.type, c.metric + " in " + range(c.expect_lo, c.expect_hi), "", false};
   out.got = rows.size() == 1 ? formatNumber(lo) : range(lo, hi) + " over " + std::to_string(rows.size()) + " points";
   out.passed = lo >= c.expect_lo && hi <= c.expect_hi;
+  if (c.uncertainty.empty()) return out;
+  if (rows.size() == 1) {
+    judge(out, c, lo, standardError(*rows.front(), c.uncertainty));
+    return out;
+  }
+  // Over several points: every interval inside passes, any wholly outside fails, else inconclusive.
+  bool any_fail = false, all_pass = true;
+  double most = 0;
+  for (const Row* r : rows) {
+    const double s = standardError(*r, c.uncertainty);
+    most = std::isfinite(s) && std::isfinite(most) ? std::max(most, s) : std::nan("");
+    const Verdict v = intervalVerdict(r->metrics.at(c.metric), s, c.expect_lo, c.expect_hi);
+    any_fail = any_fail || v == Verdict::fail;
+    all_pass = all_pass && v == Verdict::pass;
+  }
+  out.passed = !any_fail && all_pass;
+  out.inconclusive = !any_fail && !all_pass;
+  out.got += ", standard errors up to " + formatNumber(most);
   return out;
 }
 
@@ -152,6 +186,15 @@ CheckOutcome order(const CheckSpec& c, const std::vector<const Row*>& rows) {
 
 }  // namespace
 
+Verdict intervalVerdict(double value, double standard_error, double lo, double hi) {
+  if (!std::isfinite(value)) return Verdict::fail;
+  if (!std::isfinite(standard_error) || standard_error < 0) return Verdict::inconclusive;
+  const double a = value - 2 * standard_error, b = value + 2 * standard_error;
+  if (a >= lo && b <= hi) return Verdict::pass;
+  if (b < lo || a > hi) return Verdict::fail;
+  return Verdict::inconclusive;
+}
+
 namespace {
 CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
   std::string problem;
@@ -197,6 +240,11 @@ CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
     }
     out.got = formatNumber(r);
     out.passed = std::isfinite(r) && r >= c.expect_lo && r <= c.expect_hi;
+    if (!c.uncertainty.empty()) {
+      // Independent sides: a ratio's relative errors and a difference's errors add in quadrature.
+      const double sn = standardError(*num[0], c.uncertainty), sd = standardError(*den[0], c.uncertainty);
+      judge(out, c, r, ratio ? std::abs(r) * std::hypot(sn / n, sd / d) : std::hypot(sn, sd));
+    }
     return out;
   }
   auto rows = select(table, c.where, c.metric, problem);
@@ -273,20 +321,25 @@ std::vector<CheckOutcome> evaluateChecks(const std::vector<CheckSpec>& checks, c
 }
 
 std::string formatCheckTable(const std::vector<CheckOutcome>& outcomes) {
-  size_t w_name = 5, w_exp = 8;
+  size_t w_name = 5, w_exp = 8, w_status = 6;
   for (const auto& o : outcomes) {
     w_name = std::max(w_name, o.name.size());
     w_exp = std::max(w_exp, o.expected.size());
+    if (o.inconclusive) w_status = 14;
   }
   std::ostringstream s;
   auto pad = [](const std::string& t, size_t w) { return t + std::string(w > t.size() ? w - t.size() : 0, ' '); };
-  s << pad("check", w_name) << "  " << "pass  " << pad("expected", w_exp) << "  got\n";
+  s << pad("check", w_name) << "  " << pad("pass", w_status) << pad("expected", w_exp) << "  got\n";
   for (const auto& o : outcomes) {
-    const char* status = o.passed ? "ok    " : o.known_deviation.empty() ? "FAIL  " : "KNOWN ";
-    s << pad(o.name, w_name) << "  " << status << pad(o.expected, w_exp) << "  " << o.got << "\n";
+    const char* status = o.passed ? "ok" : o.inconclusive ? "inconclusive" : o.known_deviation.empty() ? "FAIL" : "KNOWN";
+    s << pad(o.name, w_name) << "  " << pad(status, w_status) << pad(o.expected, w_exp) << "  " << o.got << "\n";
   }
+  for (const auto& o : outcomes)
+    if (o.inconclusive)
+      s << "inconclusive: '" << o.name << "': its value +- 2 standard errors holds a bound of " << o.expected
+        << " (not counted in the exit code; a longer run decides)\n";
   for (const auto& o : outcomes) {
-    if (o.known_deviation.empty()) continue;
+    if (o.known_deviation.empty() || o.inconclusive) continue;
     if (o.passed)
       s << "note: '" << o.name << "' is marked as a known deviation but passed this time\n";
     else

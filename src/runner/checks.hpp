@@ -1,7 +1,8 @@
 #pragma once
 // [[check]] evaluation over the sweep table (DESIGN.md): argmax, argmin, range, ratio, difference
 // (numerator − denominator, with ratio's selections), monotonic, and order (observed order of
-// convergence: log-log slope of a metric against an axis).
+// convergence: log-log slope of a metric against an axis). A range, ratio or difference check with
+// `uncertainty = "<metric>"` (each point's standard error of its value) is pass, fail or inconclusive.
 #include <string>
 #include <vector>
 
@@ -17,8 +18,18 @@ struct CheckOutcome {
   std::string got;
   bool passed = false;
   std::string known_deviation;  // from the spec: a failure is expected and does not fail the run
-  bool counts() const { return passed || !known_deviation.empty(); }  // true when it does not fail the run
+  // With the spec's uncertainty: value +- 2 standard errors holds a bound of the window, so the run
+  // decides nothing (passed is false; the exit code is as for a pass).
+  bool inconclusive = false;
+  // true when it does not fail the run
+  bool counts() const { return passed || inconclusive || !known_deviation.empty(); }
 };
+
+// A value with a standard error against the window [lo, hi]: the interval value +- 2 standard errors
+// wholly inside passes, wholly outside fails, one that holds a bound (or a standard error that is not
+// a finite number >= 0) is inconclusive.
+enum class Verdict { pass, fail, inconclusive };
+Verdict intervalVerdict(double value, double standard_error, double lo, double hi);
 
 CheckOutcome evaluateCheck(const CheckSpec& check, const Table& table);
 std::vector<CheckOutcome> evaluateChecks(const std::vector<CheckSpec>& checks, const Table& table);

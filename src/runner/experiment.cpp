@@ -110,7 +110,7 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
                                                  "expect",    "direction",   "strict",           "where",
                                                  "numerator", "denominator", "numerator_metric", "denominator_metric",
                                                  "numerator_base", "denominator_base", "known_deviation",
-                                                 "relative_to", "relative_metric"};
+                                                 "relative_to", "relative_metric", "uncertainty"};
   kinds::checkKeys(t, known, ctx, key);
   CheckSpec c;
   c.name = t["name"].value_or(std::string());
@@ -174,6 +174,20 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
     if (c.relative_to.empty() || c.relative_metric.empty())
       ctx.fail(key, "relative_to = {...} and relative_metric go together", &t);
     if (c.expect_choice) ctx.fail(key + ".expect", "a relative argmax/argmin expects [low, high]", t.get("expect"));
+  }
+  if (t.contains("uncertainty")) {
+    c.uncertainty = t["uncertainty"].value_or(std::string());
+    const toml::node* u = t.get("uncertainty");
+    if (c.type != "range" && c.type != "ratio" && c.type != "difference")
+      ctx.fail(key + ".uncertainty", "belongs to range, ratio and difference checks", u);
+    if (std::find(metric_names.begin(), metric_names.end(), c.uncertainty) == metric_names.end())
+      ctx.fail(key + ".uncertainty", "expected the name of the metric holding " + c.metric + "'s standard error; '" +
+                                         c.uncertainty + "' is not a metric of kind '" + kind.name() + "'" +
+                                         core::didYouMean(c.uncertainty, metric_names), u);
+    if (c.numerator_metric != c.metric || c.denominator_metric != c.metric || !c.numerator_base.empty() ||
+        !c.denominator_base.empty())
+      ctx.fail(key + ".uncertainty", "is one metric's standard error: not with numerator_metric, denominator_metric "
+                                     "or a *_base selection", u);
   }
   return c;
 }

@@ -61,6 +61,9 @@ struct CheckSpec {
   // issue 5"). The check is still evaluated and printed (KNOWN instead of FAIL) but a failure
   // does not change the exit code; if it passes the table says so.
   std::string known_deviation;
+  // range, ratio, difference: the metric holding each point's standard error of `metric`; the value
+  // +- 2 standard errors (propagated through the ratio or difference) decides pass, fail or inconclusive.
+  std::string uncertainty;
 };
 
 struct OutputOptions {

@@ -310,6 +310,7 @@ static void writeIndexContents(const io::Group& root, const Experiment& e, const
   io::writeColumn(chk, "got", checks, &CheckOutcome::got);
   io::writeColumn(chk, "passed", checks, &CheckOutcome::passed);
   io::writeColumn(chk, "known_deviation", checks, &CheckOutcome::known_deviation);
+  io::writeColumn(chk, "inconclusive", checks, &CheckOutcome::inconclusive);
 
   // The seal of each point file, checked by `check` and `compare` before they trust this index.
   std::vector<Row> present;

@@ -67,6 +67,10 @@ TEST(FlapCycles, MeanOverWholeCycles) {
   const std::vector<double> v = {100, 1, 2, 3, 4};
   EXPECT_DOUBLE_EQ(kinds::lastCyclesMean(v, 2, 2), 2.5);
   EXPECT_TRUE(std::isnan(kinds::lastCyclesMean(v, 3, 2)));
+  // cycle means 1.5 and 3.5: sample deviation sqrt(2), over sqrt(2) cycles
+  EXPECT_DOUBLE_EQ(kinds::lastCyclesStandardError(v, 2, 2), 1.0);
+  EXPECT_TRUE(std::isnan(kinds::lastCyclesStandardError(v, 2, 1)));
+  EXPECT_TRUE(std::isnan(kinds::lastCyclesStandardError(v, 3, 2)));
 }
 
 // models/flyer.xml in a 4 m, 32^2 box with the floor source: inner joints PD-driven to a 30 deg,

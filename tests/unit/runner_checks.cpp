@@ -535,3 +535,120 @@ TEST(RunnerChecks, AnOrdinaryFailureStillCounts) {
   EXPECT_FALSE(o.counts());
   EXPECT_TRUE(contains(runner::formatCheckTable({o}), "FAIL")) << o.got;
 }
+
+// ---- uncertainty: value +- 2 standard errors decides pass, fail or inconclusive ----
+
+TEST(RunnerChecks, IntervalVerdictAgainstAWindow) {
+  using runner::Verdict;
+  EXPECT_EQ(runner::intervalVerdict(1.5, 0.1, 1.0, 2.0), Verdict::pass);    // [1.3, 1.7] inside
+  EXPECT_EQ(runner::intervalVerdict(1.1, 0.05, 1.0, 2.0), Verdict::pass);   // [1.0, 1.2]: bounds inclusive
+  EXPECT_EQ(runner::intervalVerdict(1.1, 0.06, 1.0, 2.0), Verdict::inconclusive);  // [0.98, 1.22] holds 1
+  EXPECT_EQ(runner::intervalVerdict(1.9, 0.1, 1.0, 2.0), Verdict::inconclusive);   // holds 2
+  EXPECT_EQ(runner::intervalVerdict(0.9, 0.1, 1.0, 2.0), Verdict::inconclusive);   // below, but [0.7, 1.1] holds 1
+  EXPECT_EQ(runner::intervalVerdict(0.7, 0.1, 1.0, 2.0), Verdict::fail);           // [0.5, 0.9] wholly below
+  EXPECT_EQ(runner::intervalVerdict(2.5, 0.2, 1.0, 2.0), Verdict::fail);           // [2.1, 2.9] wholly above
+  EXPECT_EQ(runner::intervalVerdict(1.5, 0.0, 1.0, 2.0), Verdict::pass);           // no scatter: the value decides
+  EXPECT_EQ(runner::intervalVerdict(0.5, 0.0, 1.0, 2.0), Verdict::fail);
+  EXPECT_EQ(runner::intervalVerdict(1.5, std::nan(""), 1.0, 2.0), Verdict::inconclusive);  // no standard error
+  EXPECT_EQ(runner::intervalVerdict(1.5, -0.1, 1.0, 2.0), Verdict::inconclusive);
+  EXPECT_EQ(runner::intervalVerdict(std::nan(""), 0.1, 1.0, 2.0), Verdict::fail);
+  EXPECT_EQ(runner::intervalVerdict(1.1, 0.2, 1.0, 1e9), Verdict::inconclusive);  // a one-sided bound
+  EXPECT_EQ(runner::intervalVerdict(1.5, 0.2, 1.0, 1e9), Verdict::pass);
+}
+
+// Two labelled points, each with a mean force and its standard error.
+Table forceTable(double controlled, double controlled_se, double held, double held_se) {
+  Table t{{}, {"force_n", "force_n_stderr"}, {}};
+  t.rows.push_back(row(0, {}, {{"force_n", controlled}, {"force_n_stderr", controlled_se}}, "ok", "", "controlled"));
+  t.rows.push_back(row(1, {}, {{"force_n", held}, {"force_n_stderr", held_se}}, "ok", "", "held"));
+  return t;
+}
+
+CheckSpec forceRatio(std::string type = "ratio") {
+  CheckSpec c = spec(std::move(type), "force_n");
+  c.numerator = {{"label", std::string("controlled")}};
+  c.denominator = {{"label", std::string("held")}};
+  c.expect_lo = 1.0;
+  c.expect_hi = 1e9;
+  c.uncertainty = "force_n_stderr";
+  return c;
+}
+
+TEST(RunnerChecks, ARatioWhoseIntervalHoldsTheBoundIsInconclusiveAndDoesNotCount) {
+  // 9.73 +- 0.14 over 9.50 +- 1.30: 1.024 +- 0.141 (relative errors in quadrature), [0.742, 1.306] holds 1.
+  const CheckOutcome o = runner::evaluateCheck(forceRatio(), forceTable(9.73, 0.14, 9.50, 1.30));
+  EXPECT_FALSE(o.passed) << o.got;
+  EXPECT_TRUE(o.inconclusive) << o.got;
+  EXPECT_TRUE(o.counts());
+  EXPECT_EQ(o.got, "1.02421 +- 0.140928 (2 s.e.: [0.742355, 1.30607])");
+  const std::string table = runner::formatCheckTable({o});
+  EXPECT_TRUE(contains(table, "  inconclusive  ")) << table;
+  EXPECT_TRUE(contains(table, "inconclusive: 'ratio check'")) << table;
+  EXPECT_FALSE(contains(table, "FAIL")) << table;
+  EXPECT_FALSE(contains(table, "ok ")) << table;
+}
+
+TEST(RunnerChecks, ARatioWithSmallErrorsPassesOrFails) {
+  CheckOutcome o = runner::evaluateCheck(forceRatio(), forceTable(10.4, 0.05, 10.0, 0.05));  // 1.04 +- 0.0072
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_FALSE(o.inconclusive);
+  EXPECT_TRUE(contains(runner::formatCheckTable({o}), "ok    ")) << runner::formatCheckTable({o});
+  o = runner::evaluateCheck(forceRatio(), forceTable(9.0, 0.05, 10.0, 0.05));  // 0.9 +- 0.0067
+  EXPECT_FALSE(o.passed) << o.got;
+  EXPECT_FALSE(o.inconclusive);
+  EXPECT_FALSE(o.counts());
+  // Without the uncertainty the same values decide alone.
+  CheckSpec plain = forceRatio();
+  plain.uncertainty.clear();
+  o = runner::evaluateCheck(plain, forceTable(9.73, 0.14, 9.50, 1.30));
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.got, "1.02421");
+}
+
+TEST(RunnerChecks, ADifferenceAddsItsErrorsInQuadrature) {
+  CheckSpec c = forceRatio("difference");
+  c.expect_lo = 0.0;
+  // 0.5 +- hypot(0.3, 0.4) = 0.5: [-0.5, 1.5] holds 0.
+  CheckOutcome o = runner::evaluateCheck(c, forceTable(10.5, 0.3, 10.0, 0.4));
+  EXPECT_TRUE(o.inconclusive) << o.got;
+  EXPECT_TRUE(contains(o.got, "0.5 +- 0.5")) << o.got;
+  o = runner::evaluateCheck(c, forceTable(12.0, 0.3, 10.0, 0.4));  // 2 +- 0.5
+  EXPECT_TRUE(o.passed) << o.got;
+}
+
+TEST(RunnerChecks, ARangeOverPointsWithErrors) {
+  CheckSpec c = spec("range", "force_n");
+  c.expect_lo = 9.0;
+  c.expect_hi = 11.0;
+  c.uncertainty = "force_n_stderr";
+  EXPECT_TRUE(runner::evaluateCheck(c, forceTable(10.0, 0.1, 10.5, 0.2)).passed);
+  const CheckOutcome inconclusive = runner::evaluateCheck(c, forceTable(10.0, 0.1, 10.5, 0.3));  // [9.9, 11.1]
+  EXPECT_TRUE(inconclusive.inconclusive) << inconclusive.got;
+  EXPECT_TRUE(contains(inconclusive.got, "standard errors up to 0.3")) << inconclusive.got;
+  const CheckOutcome failed = runner::evaluateCheck(c, forceTable(10.0, 0.6, 12.0, 0.3));  // one wholly above
+  EXPECT_FALSE(failed.passed);
+  EXPECT_FALSE(failed.inconclusive);
+  c.where = {{"label", std::string("held")}};
+  const CheckOutcome one = runner::evaluateCheck(c, forceTable(10.0, 0.1, 10.5, 0.3));
+  EXPECT_TRUE(one.inconclusive) << one.got;
+  EXPECT_TRUE(contains(one.got, "10.5 +- 0.3 (2 s.e.: [9.9, 11.1])")) << one.got;
+}
+
+TEST(RunnerChecks, AMissingOrNonFiniteStandardErrorIsInconclusive) {
+  CheckOutcome o = runner::evaluateCheck(forceRatio(), forceTable(12.0, std::nan(""), 10.0, 0.1));
+  EXPECT_TRUE(o.inconclusive) << o.got;
+  EXPECT_TRUE(contains(o.got, "1.2 +- nan")) << o.got;
+  CheckSpec c = forceRatio();
+  c.uncertainty = "no_such_metric";
+  o = runner::evaluateCheck(c, forceTable(12.0, 0.1, 10.0, 0.1));
+  EXPECT_TRUE(o.inconclusive) << o.got;
+}
+
+TEST(RunnerChecks, AKnownDeviationThatIsInconclusiveIsPrintedInconclusive) {
+  CheckSpec c = forceRatio();
+  c.known_deviation = "the model's ratio sits at 1";
+  const CheckOutcome o = runner::evaluateCheck(c, forceTable(9.73, 0.14, 9.50, 1.30));
+  const std::string table = runner::formatCheckTable({o});
+  EXPECT_TRUE(contains(table, "  inconclusive  ")) << table;
+  EXPECT_FALSE(contains(table, "KNOWN")) << table;
+}

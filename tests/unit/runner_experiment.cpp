@@ -728,6 +728,23 @@ expect = [0, 1]
   EXPECT_NE(m.find("expected a non-empty string"), std::string::npos) << m;
 }
 
+TEST(RunnerExperiment, UncertaintyNamesAMetricOfARangeRatioOrDifference) {
+  const std::string head = "kind = \"oscillator\"\n[sweep]\ndt_s = [0.01, 0.02]\n[[check]]\nname = \"c\"\n";
+  const std::string range = head + "type = \"range\"\nmetric = \"max_abs_error_m\"\nexpect = [0, 1]\n";
+  EXPECT_EQ(load(range + "uncertainty = \"final_abs_error_m\"\n").checks[0].uncertainty, "final_abs_error_m");
+  EXPECT_EQ(load(range).checks[0].uncertainty, "");
+  std::string m = errorOf(range + "uncertainty = \"final_abs_eror_m\"\n");
+  EXPECT_NE(m.find("check[0].uncertainty"), std::string::npos) << m;
+  EXPECT_NE(m.find("final_abs_error_m"), std::string::npos) << m;  // the close match
+  m = errorOf(head + "type = \"monotonic\"\nmetric = \"max_abs_error_m\"\naxis = \"dt_s\"\n"
+                     "uncertainty = \"final_abs_error_m\"\n");
+  EXPECT_NE(m.find("belongs to range, ratio and difference checks"), std::string::npos) << m;
+  m = errorOf(head + "type = \"ratio\"\nmetric = \"max_abs_error_m\"\nnumerator_metric = \"final_abs_error_m\"\n"
+                     "numerator = { dt_s = 0.01 }\ndenominator = { dt_s = 0.02 }\nexpect = [0, 1]\n"
+                     "uncertainty = \"final_abs_error_m\"\n");
+  EXPECT_NE(m.find("one metric's standard error"), std::string::npos) << m;
+}
+
 // ---- issue 19 §5: input that should never start ----
 
 TEST(RunnerExperimentError, DuplicateCaseLabelsAreRefused) {
