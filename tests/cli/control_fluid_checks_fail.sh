@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Every check that decides a fluid-controller claim (Lentine et al. 2010, Figs. 2 and 8, §7.2) fails when
+# the controller the claim rests on is off (strength zero, no search): the claim file runs at its own
+# setting (the fluid is cheap when nothing searches), and the check must then be FAIL with exit code 1.
+# usage: control_fluid_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
+source "$(dirname "${BASH_SOURCE[0]}")/checks_fail_lib.sh"  # status, broken, also, study
+
+# Fig. 8, Fig. 2's Navier-Stokes rows: without the controller the block stays where it starts, 30 degrees
+# off the flow, whatever it would minimise or maximise.
+broken flow_no_control experiments/control/block_flow.toml \
+  "min_drag: minimising drag turns the block near the flow (within 5 degrees, Fig. 8a; not exact: §4.3)" \
+  params.strength_rad_per_s=0.0 params.search_every_frames=100000 params.field_every_frames=0
+also flow_no_control "max_drag: maximising drag turns the block across the flow (within 10 degrees, Fig. 8b)"
+also flow_no_control \
+  "min_effort: minimising effort (Eq. 1) turns the block near the flow (within 5 degrees; Fig. 2's third Navier-Stokes row)"
+
+# §7.2: without the controller (its strength and its phases' strengths zero) the swimmer is moved by its
+# mouth alone: 1.6 mm a cycle, the mouth-only case's rise, so both cases are the same run.
+broken swimmer_no_control experiments/control/swimmer.toml "the swimmer rises with the controller (§7.2)" \
+  params.strength_rad_per_s=0.0 params.search_every_frames=100000 'params.phase_strength_rad_per_s="0, 0, 0"' \
+  params.field_every_frames=0
+also swimmer_no_control "the controller rises farther than the mouth alone (§7.2: 'significant locomotion')"
+also swimmer_no_control \
+  "the mouth alone moves the creature less than a quarter as far as the controller (§7.2: 'not enough to move the creature significantly')"
