@@ -51,3 +51,7 @@ creaturelab_cli_test(reproduce_progress) # reproduce: a line per experiment with
 # XDMF readers (meshio, ParaView's pvbatch) open the field sidecar and the render series with the
 # HDF5's counts and values. Skipped (77) when neither reader is installed.
 creaturelab_cli_test(xdmf_readers SKIP_RETURN_CODE 77)
+creaturelab_cli_test(fish_checks_fail) # each fish claim check FAILs with its mechanism broken (water, side current, stiff body, thin skin)
+creaturelab_cli_test(control_fluid_checks_fail) # block_flow's and the swimmer's claim checks FAIL with the controller off
+# each jellyfish claim check FAILs with its mechanism broken (slack or sparse membrane, muscles off); 80 s CPU
+creaturelab_cli_test(jellyfish_checks_fail TIMEOUT 600)
