@@ -228,8 +228,8 @@ def morphology(sweep, points, out, cycles):
                 ax.plot(c[:, 0] * 1e3, c[:, 1] * 1e3, "k", lw=0.5)
             ax.text(col * spacing * 1e3, -35, f"t = {t[fr] - warm:.2f} s", ha="center", fontsize=9)
         ax.set_aspect("equal")
-        ax.set_xlabel("x, each frame offset sideways (mm)")
-        ax.set_ylabel("height from the first frame (mm)")
+        ax.set_xlabel("x, each frame offset sideways; height from the first frame (mm)")
+        ax.set_ylabel("height (mm)")
         ax.set_title(style.wrap(f"bell through {cycles:g} cycle(s) at {hz:g} Hz (Fig. 11): {short_label(sweep, k)}", 110))
         style.save(fig, os.path.join(out, f"morphology_{k}.png"))
 
