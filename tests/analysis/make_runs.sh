@@ -37,7 +37,7 @@ done
 # Two of the four cases (the radial one alone takes seconds).
 run spring_constants web/spring_constants.toml params.end_time_s=0.05 params.lagrangian_interval_s=0.025 --points 0/2
 run wind web/wind.toml params.end_time_s=0.2 params.lagrangian_interval_s=0.05
-run charlotte web/charlotte.toml params.resettle_time_s=0.05 params.canvas_px=120
+run charlotte web/charlotte.toml params.resettle_time_s=0.05 params.canvas_px=120 --points 0/2
 run taylor_green fluid/taylor_green.toml "sweep.cells=[32,64,128]" params.end_time_s=0.1 params.output_interval_s=0.05 \
   --points 0/2
 run stagger jellyfish/stagger.toml $jelly params.duration_s=2
@@ -47,14 +47,14 @@ run morphology jellyfish/morphology.toml $jelly params.warmup_cycles=1 params.tr
 run membrane jellyfish/membrane.toml params.duration_s=0.5 params.markers=64
 "$bin" fit spline "$out/stagger" --point 0 --knots 4 --from 1.5384615384615385 --out "$out/fit_spline" \
   > "$out/fit_spline.log" 2>&1 || { cat "$out/fit_spline.log" >&2; exit 1; }
-run block_wind control/block_wind.toml params.frames=30 params.average_frames=10
+run block_wind control/block_wind.toml params.frames=30 params.average_frames=10 --points 0/2
 run block_ball control/block_ball.toml params.frames=30 params.average_frames=10
 run flyer_quick control/flyer_quick.toml params.cells=32 params.frames=24 params.warmup_frames=4 \
   params.average_frames=4 params.flap_period_s=0.2 params.force_cycles=1 params.field_every_frames=12
 # 96 cells: coarser grids break the swimmer's coupled stability limit (a marker moves > 1 cell a step).
 run swimmer control/swimmer.toml params.cells=96 params.frames=30 params.warmup_frames=2 params.average_frames=4 \
   params.rise_cycles=1 params.cycle_s=0.4 params.field_every_frames=15
-run swim fish/swim.toml 'params.schedule="swim 4"' params.warmup_s=1 "sweep.swim_rate=[0.004,0.008]"
+run swim fish/swim.toml 'params.schedule="swim 4"' params.warmup_s=1 "sweep.swim_rate=[0.004,0.008]" --points 0/3
 run air fish/air.toml 'params.schedule="swim 4"'
 run school fish/school.toml 'params.schedule="swim 2"' params.warmup_s=1 "sweep.school_size=[1,3]"
 run stability fish/stability.toml 'params.schedule="swim 2"' params.stable_iterations=4
