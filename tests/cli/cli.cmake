@@ -55,3 +55,4 @@ creaturelab_cli_test(fish_checks_fail) # each fish claim check FAILs with its me
 creaturelab_cli_test(control_fluid_checks_fail) # block_flow's and the swimmer's claim checks FAIL with the controller off
 # each jellyfish claim check FAILs with its mechanism broken (slack or sparse membrane, muscles off); 80 s CPU
 creaturelab_cli_test(jellyfish_checks_fail TIMEOUT 600)
+creaturelab_cli_test(jellyfish_frequency_checks_fail TIMEOUT 600) # Fig. 5's checks FAIL with the driven bell's muscles off; 60 s CPU
