@@ -295,7 +295,8 @@ void checkSelections(const Experiment& experiment, const std::vector<Point>& poi
                                                                {"relative_to", &c.relative_to}};
     for (const auto& [field, where] : selections) {
       if (where->empty()) continue;
-      if (std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return matches(r, *where); })) continue;
+      const Where& wanted = *where;  // clang 14 cannot capture a structured binding in a lambda
+      if (std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return matches(r, wanted); })) continue;
       const std::string head =
           experiment.path + ": check '" + c.name + "': " + field + " = {" + describeWhere(*where) + "}";
       for (const auto& [key, value] : *where) {
