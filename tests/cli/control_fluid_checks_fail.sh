@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Every check that decides a fluid-controller claim (Lentine et al. 2010, Figs. 2 and 8, §7.2) fails when
+# Every check that decides a fluid-controller claim (Lentine et al. 2010, Figs. 2, 8, 11-13, §7.2) fails when
 # the controller the claim rests on is off (strength zero, no search): the claim file runs at its own
-# setting (the fluid is cheap when nothing searches), and the check must then be FAIL with exit code 1.
+# setting (the fluid is cheap when nothing searches), and the check must then be FAIL with exit code 1 (the
+# flyer's, decided on its standard error, inconclusive: never ok).
 # usage: control_fluid_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 source "$(dirname "${BASH_SOURCE[0]}")/checks_fail_lib.sh"  # status, broken, also, study
@@ -23,3 +24,16 @@ broken swimmer_no_control experiments/control/swimmer.toml "the swimmer rises wi
 also swimmer_no_control "the controller rises farther than the mouth alone (§7.2: 'significant locomotion')"
 also swimmer_no_control \
   "the mouth alone moves the creature less than a quarter as far as the controller (§7.2: 'not enough to move the creature significantly')"
+
+# Figs. 11-13 (§7.1): with the controller off both cases are one run: the ratio is exactly 1 and its
+# interval holds 1, so the check is inconclusive, never ok (exit 0). [1, 1e9] alone passed it. On 32^2 over
+# two 0.25 s flaps (tests/cli/flyer.sh's setting), where the intact file is inconclusive too: the flyer's
+# noise needs flyer.toml's twenty flaps to decide, beyond this test's time.
+small=(params.cells=32 params.frames=30 params.warmup_frames=2 params.average_frames=5 params.field_every_frames=0
+       params.flap_period_s=0.25 'params.pd_pattern=inner_r = sine(0, 30, 4, 0); inner_l = sine(0, 30, 4, 0)')
+check="§7.1: mean upward force over whole flap cycles larger with the controller than with the outer joints held"
+"$bin" run experiments/control/flyer_quick.toml "${small[@]}" params.strength_rad_per_s=0.0 --out "$scratch/run_flyer_off" \
+  --jobs 2 >"$scratch/flyer_off.out" 2>&1 || { cat "$scratch/flyer_off.out" >&2; fail "flyer_off: exit code $?, expected 0"; }
+[[ $(status flyer_off "$check") == inconclusive ]] || { cat "$scratch/flyer_off.out" >&2; fail "flyer_off: not inconclusive"; }
+grep -q "^$check .* 1 +- " "$scratch/flyer_off.out" || fail "flyer_off: the ratio is not exactly 1"
+echo "ok   flyer_off: '$check' is inconclusive (ratio 1)"
