@@ -104,14 +104,24 @@ def frames_figure(points, png, plane=(0, 2)):
 
 
 def angles_figure(points, png):
-    fig, (ax_angle, ax_obj) = style.subplots(1, 2, height=4.6)
+    """Every controlled DOF's angle and every controlled joint's objective against time; the legend
+    in a row of its own below both panels (a sweep has tens of lines)."""
+    entries = sum(1 for f in points for k in f["timeseries"] if k.startswith("angle_deg_"))
+    ncol = 1 if entries < 4 else 2
+    legend_rows = -(-entries // ncol)
+    fig = style.figure(height=4.2 + 0.22 * legend_rows)
+    grid = fig.add_gridspec(2, 2, height_ratios=[4.2, 0.22 * legend_rows])
+    ax_angle, ax_obj = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
+    key = fig.add_subplot(grid[1, :])
+    key.axis("off")
     for f in points:
         t = f["timeseries/time_s"][...]
         dofs = [k[len("angle_deg_"):] for k in f["timeseries"] if k.startswith("angle_deg_")]
         joints = [k[len("objective_"):] for k in f["timeseries"] if k.startswith("objective_")]
         colour = {}
+        name = text(f, "label") or title(f)
         for d in dofs:
-            line, = ax_angle.plot(t, f[f"timeseries/angle_deg_{d}"][...], lw=1, label=f"{title(f)}: {d}")
+            line, = ax_angle.plot(t, f[f"timeseries/angle_deg_{d}"][...], lw=1, label=f"{name}: {d}")
             colour.setdefault(d, line.get_color())
         for j in joints:
             ax_obj.plot(t, f[f"timeseries/objective_{j}"][...], lw=1, color=colour.get(j, colour.get(j + "_x")))
@@ -121,8 +131,9 @@ def angles_figure(points, png):
     ax_obj.set_ylabel("objective J_i (effort N m s, drag N)")
     ax_obj.set_yscale("symlog", linthresh=1e-3)
     ax_angle.set_title("controlled angles")
-    ax_obj.set_title("objectives J_i")
-    ax_angle.legend(ncol=1 if len(ax_angle.get_lines()) < 6 else 2)
+    ax_obj.set_title("objectives J_i (colours as the angles)")
+    handles, labels = ax_angle.get_legend_handles_labels()
+    key.legend(handles, labels, ncol=ncol, loc="upper center", frameon=False)
     style.save(fig, png)
 
 
