@@ -61,6 +61,13 @@ INTEGRATOR_WORDS = {"euler": "explicit Euler", "symplectic_euler": "symplectic E
                     "implicit_euler": "implicit Euler"}
 
 
+def step(f):
+    """The step a point ran with in s: the metric dt_used_s (dt_s may be "auto"), else dt_s."""
+    if "metrics/dt_used_s" in f:
+        return float(f["metrics/dt_used_s"][()])
+    return float(f.attrs["dt_s"])
+
+
 def plot_oscillators(points, title, out_png):
     """Every integrator and step of an oscillator sweep in one figure: the displacement and the
     error against time at the largest step (a colour per integrator), and the largest error
@@ -68,8 +75,8 @@ def plot_oscillators(points, title, out_png):
     fig, (xs, err, order) = style.subplots(1, 3, height=4.0)
     integrators = list(dict.fromkeys(text(f.attrs["integrator"]) for f in points))
     colour = {name: f"C{k}" for k, name in enumerate(integrators)}
-    dts = sorted({float(f.attrs["dt_s"]) for f in points})
-    coarse = [f for f in points if float(f.attrs["dt_s"]) == dts[-1]]
+    dts = sorted({step(f) for f in points})
+    coarse = [f for f in points if step(f) == dts[-1]]
     t = coarse[0]["timeseries/time_s"][...]
     xs.plot(t, coarse[0]["timeseries/x_exact_m"][...] * 1e3, "k", lw=2, label="exact")
     for f in coarse:
@@ -85,7 +92,7 @@ def plot_oscillators(points, title, out_png):
     err.set_ylabel("|x - exact| (m)")
     err.set_title(f"error, step {dts[-1]:g} s")
     for name in integrators:
-        mine = sorted((float(f.attrs["dt_s"]), float(f["metrics/max_abs_error_m"][()])) for f in points
+        mine = sorted((step(f), float(f["metrics/max_abs_error_m"][()])) for f in points
                       if text(f.attrs["integrator"]) == name)
         order.loglog([d for d, _ in mine], [e for _, e in mine], "o-", color=colour[name], ms=4,
                      label=INTEGRATOR_WORDS.get(name, name))
