@@ -26,7 +26,6 @@ if(CREATURELAB_PCH)
   add_library(cl_pch_test STATIC EXCLUDE_FROM_ALL "${anchor}")
   target_link_libraries(cl_pch_test PRIVATE Eigen3::Eigen GTest::gtest)
   target_precompile_headers(cl_pch_test PRIVATE ${CREATURELAB_PCH_HEADERS} <gtest/gtest.h>)
-  target_compile_options(cl_pch_test PRIVATE ${CREATURELAB_TEST_COMPILE_OPTIONS})  # as its users
 endif()
 
 # True when compile options hold a flag the precompiled headers were not built with (-m..., -pthread).
