@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
+  clang libclang-rt-14-dev  # the sanitizer tree (make test-asan)
   libeigen3-dev libceres-dev libhdf5-dev hdf5-tools
   libbenchmark-dev libbenchmark-tools libgtest-dev libgmock-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
