@@ -8,7 +8,6 @@ time after removal) from RUN_DIR/index.h5, and puts the renders the kind left be
 (point_NNNNNN_{web,overlay,cut,result}.png) side by side, a row per point, in
 RUN_DIR/figures/charlotte_sheet.png.
 """
-import argparse
 import os
 
 import h5py
@@ -74,11 +73,7 @@ def figures(run):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("run")
-    ap.add_argument("--out", default=None)
-    args = ap.parse_args()
-    draw(args.run, args.out or os.path.join(args.run, "figures"))
+    style.main(draw, __doc__)
 
 if __name__ == "__main__":
     main()

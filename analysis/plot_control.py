@@ -11,7 +11,6 @@ arrow; frames_top.png the same seen from above (x-y) when the creature moves out
 its rotation vector's components) against time, and every controlled joint's objective (per
 point). Figures go to RUN_DIR/figures/ as PNG.
 """
-import argparse
 import glob
 import os
 
@@ -179,11 +178,7 @@ def figures(run):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("run")
-    parser.add_argument("--out")
-    args = parser.parse_args()
-    draw(args.run, args.out or os.path.join(args.run, "figures"))
+    style.main(draw, __doc__)
 
 
 if __name__ == "__main__":

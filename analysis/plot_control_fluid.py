@@ -13,7 +13,6 @@ paper's Fig. 2 (Navier-Stokes rows: 56 maximising, 50 minimising). parallel_dofs
 per frame against controlled joints and threads (Fig. 10), when the run has several thread counts.
 Figures go to RUN_DIR/figures/.
 """
-import argparse
 import glob
 import os
 
@@ -158,11 +157,7 @@ def figures(run):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("run")
-    parser.add_argument("--out")
-    args = parser.parse_args()
-    draw(args.run, args.out or os.path.join(args.run, "figures"))
+    style.main(draw, __doc__)
 
 
 if __name__ == "__main__":

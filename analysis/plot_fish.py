@@ -20,7 +20,6 @@ Writes to RUN_DIR/figures/ (or --out), each when the run has what it needs:
   skin_cycle.png    the skinned fish over the exported swim cycle, rendered by POV-Ray (headless)
                     from the point's .pov scenes; skin_NNN.png each.
 """
-import argparse
 import glob
 import os
 import shutil
@@ -261,11 +260,7 @@ def figures(run):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("run")
-    parser.add_argument("--out")
-    args = parser.parse_args()
-    draw(args.run, args.out or os.path.join(args.run, "figures"))
+    style.main(draw, __doc__)
 
 
 if __name__ == "__main__":

@@ -7,7 +7,6 @@ For every point: vorticity snapshots (with tracers when stored) and the kinetic-
 For a sweep over cells (Taylor-Green), also the error against cells per advection scheme on log
 axes. Figures go to RUN_DIR/figures/ as PNG.
 """
-import argparse
 import glob
 import os
 
@@ -99,11 +98,7 @@ def figures(run):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("run")
-    ap.add_argument("--out", default=None)
-    args = ap.parse_args()
-    draw(args.run, args.out or os.path.join(args.run, "figures"))
+    style.main(draw, __doc__)
 
 
 if __name__ == "__main__":

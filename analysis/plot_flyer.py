@@ -20,7 +20,6 @@ wing (Fig. 12 (a), (b) analogues; Fig. 11's animation is plot_control_fluid.py's
 The vorticity with the bodies and the frame series are plot_control_fluid.py's.
 Figures go to RUN_DIR/figures/.
 """
-import argparse
 import glob
 import os
 
@@ -238,11 +237,7 @@ def figures(run):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("run")
-    parser.add_argument("--out")
-    args = parser.parse_args()
-    draw(args.run, args.out or os.path.join(args.run, "figures"))
+    style.main(draw, __doc__)
 
 
 if __name__ == "__main__":

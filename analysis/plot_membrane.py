@@ -7,7 +7,6 @@ area_loss.png: enclosed-area loss (percent of the initial area) and aspect ratio
 curve per point (kernel x cells). outlines.png: the markers' outline at a few times per point, with
 the circle of the final area dashed. Figures go to RUN_DIR/figures/ as PNG.
 """
-import argparse
 import glob
 import os
 
@@ -110,11 +109,7 @@ def figures(run):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("run")
-    ap.add_argument("--out", default=None)
-    args = ap.parse_args()
-    draw(args.run, args.out or os.path.join(args.run, "figures"))
+    style.main(draw, __doc__)
 
 
 if __name__ == "__main__":

@@ -8,7 +8,6 @@ and its kinetic-energy curve on a log scale with the settling time marked; an os
 every integrator and step in one figure (displacement, error,
 error against the step). Figures go to RUN_DIR/figures/ as PNG.
 """
-import argparse
 import glob
 import os
 
@@ -145,11 +144,7 @@ def figures(run):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("run")
-    ap.add_argument("--out", default=None)
-    args = ap.parse_args()
-    draw(args.run, args.out or os.path.join(args.run, "figures"))
+    style.main(draw, __doc__)
 
 
 if __name__ == "__main__":

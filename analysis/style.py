@@ -11,6 +11,7 @@ through save(). The rules, checked on every module by tests/analysis/check_figur
 Figures are built by functions that return them; save() writes one as PNG, or, inside collecting(),
 hands it to the caller instead (the test inspects the figures without writing files).
 """
+import argparse
 import contextlib
 import os
 import tempfile
@@ -161,3 +162,13 @@ def collect(draw, *args):
     with tempfile.TemporaryDirectory() as tmp, collecting() as figs:
         draw(*args, tmp)
     return figs
+
+
+def main(draw, doc=None):
+    """The command line of a plotter, `RUN [--out FOLDER]`: draw(RUN, FOLDER), FOLDER by default
+    RUN/figures; doc (the module's docstring) gives its first line as the description."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0] if doc else None)
+    ap.add_argument("run", help="run folder")
+    ap.add_argument("--out", help="figure folder (default RUN/figures)")
+    args = ap.parse_args()
+    draw(args.run, args.out or os.path.join(args.run, "figures"))
