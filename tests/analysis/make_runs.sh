@@ -49,7 +49,7 @@ run membrane jellyfish/membrane.toml params.duration_s=0.5 params.markers=64
   > "$out/fit_spline.log" 2>&1 || { cat "$out/fit_spline.log" >&2; exit 1; }
 run block_wind control/block_wind.toml params.frames=30 params.average_frames=10 --points 0/2
 run block_ball control/block_ball.toml params.frames=30 params.average_frames=10
-run flyer_quick control/flyer_quick.toml params.cells=32 params.frames=24 params.warmup_frames=4 \
+run flyer_quick ../studies/control/flyer_quick.toml params.cells=32 params.frames=24 params.warmup_frames=4 \
   params.average_frames=4 params.flap_period_s=0.2 params.force_cycles=1 params.field_every_frames=12
 # 96 cells: coarser grids break the swimmer's coupled stability limit (a marker moves > 1 cell a step).
 run swimmer control/swimmer.toml params.cells=96 params.frames=30 params.warmup_frames=2 params.average_frames=4 \

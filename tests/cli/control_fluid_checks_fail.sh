@@ -32,7 +32,7 @@ also swimmer_no_control \
 small=(params.cells=32 params.frames=30 params.warmup_frames=2 params.average_frames=5 params.field_every_frames=0
        params.flap_period_s=0.25 'params.pd_pattern=inner_r = sine(0, 30, 4, 0); inner_l = sine(0, 30, 4, 0)')
 check="§7.1: mean upward force over whole flap cycles larger with the controller than with the outer joints held"
-"$bin" run experiments/control/flyer_quick.toml "${small[@]}" params.strength_rad_per_s=0.0 --out "$scratch/run_flyer_off" \
+"$bin" run studies/control/flyer_quick.toml "${small[@]}" params.strength_rad_per_s=0.0 --out "$scratch/run_flyer_off" \
   --jobs 2 >"$scratch/flyer_off.out" 2>&1 || { cat "$scratch/flyer_off.out" >&2; fail "flyer_off: exit code $?, expected 0"; }
 [[ $(status flyer_off "$check") == inconclusive ]] || { cat "$scratch/flyer_off.out" >&2; fail "flyer_off: not inconclusive"; }
 grep -q "^$check .* 1 +- " "$scratch/flyer_off.out" || fail "flyer_off: the ratio is not exactly 1"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The driven flyer (issue 16, Lentine et al. 2010 §7.1; experiments/control/flyer_quick.toml, make
+# The driven flyer (issue 16, Lentine et al. 2010 §7.1; studies/control/flyer_quick.toml, make
 # reproduce's version of flyer.toml) end to end
 # on 32^2 for half a second: every point written with its flyer series (senses following the
 # stroke, the PD-driven angles, the force on all bodies) and a finite mean upward force over whole
@@ -12,9 +12,9 @@ small=(params.cells=32 params.frames=30 params.warmup_frames=2 params.average_fr
        params.flap_period_s=0.25 'params.pd_pattern=inner_r = sine(0, 30, 4, 0); inner_l = sine(0, 30, 4, 0)'
        )
 
-"$bin" run experiments/control/flyer_quick.toml "${small[@]}" --out "$scratch/j1" --jobs 1 >"$scratch/j1.log" 2>&1 || true
+"$bin" run studies/control/flyer_quick.toml "${small[@]}" --out "$scratch/j1" --jobs 1 >"$scratch/j1.log" 2>&1 || true
 [[ $(ls "$scratch"/j1/point_*.h5 | wc -l) == 2 ]] || { cat "$scratch/j1.log"; fail "flyer points missing"; }
-"$bin" run experiments/control/flyer_quick.toml "${small[@]}" --out "$scratch/j2" --jobs 2 >"$scratch/j2.log" 2>&1 || true
+"$bin" run studies/control/flyer_quick.toml "${small[@]}" --out "$scratch/j2" --jobs 2 >"$scratch/j2.log" 2>&1 || true
 /usr/bin/python3 tests/cli/same_datasets.py "$scratch/j1" "$scratch/j2" 2 || fail "--jobs 1 and 2 differ"
 /usr/bin/python3 - "$scratch/j1" <<'PY' || fail "flyer series"
 import sys, glob, h5py, numpy as np
@@ -46,7 +46,7 @@ grep -Eq '^held +.* 1\.0000$' "$scratch/j1/figures/flyer_force.txt" || fail "no 
 grep -Eq '^controlled +.* [0-9]+\.[0-9]{4}$' "$scratch/j1/figures/flyer_force.txt" || fail "no force ratio"
 echo "ok   figures"
 
-experiment=experiments/control/flyer_quick.toml
+experiment=studies/control/flyer_quick.toml
 source "$(dirname "${BASH_SOURCE[0]}")/expect_bad.sh"
 expect_bad wing_outside "outside the fluid box" 'params.origin_x_m=-1.0'
 expect_bad no_stroke "stroke_sense: 'inner_r' holds" 'params.pd_pattern=inner_l = sine(0, 30, 4, 0)'
