@@ -103,17 +103,17 @@ FrameRecord Controller::frame() {
     }
     r.searched = true;
   }
-  // (g) -> targets: the strength-limited step (§2.1) on every DOF; kinematic joints follow their
-  // patterns or hold (their targets set by captureHolds).
+  // (g) -> targets: the strength-limited step (§2.1) on every DOF, within the joint's range;
+  // kinematic joints follow their patterns or hold (their targets set by captureHolds).
   const double step_rad = p_.strength_rad_per_s * p_.frame_s;
   for (int t = 0; t < nd;) {
     const Slot& s = pres_.controlled[pres_.dof_joint[t]];
     if (s.ball) {
       const Vec3 r3 = {step_rad * direction_[t], step_rad * direction_[t + 1], step_rad * direction_[t + 2]};
-      pres_.prescribed.balls[s.index].target = rigid::quatRotate(quatAt(main_.qpos(), s.qpos), r3);
+      pres_.prescribed.balls[s.index].target = clampToRange(s, rigid::quatRotate(quatAt(main_.qpos(), s.qpos), r3));
       t += 3;
     } else {
-      pres_.prescribed.target[s.index] = main_.qpos()[s.qpos] + step_rad * direction_[t];
+      pres_.prescribed.target[s.index] = clampToRange(s, main_.qpos()[s.qpos] + step_rad * direction_[t]);
       t += 1;
     }
   }

@@ -293,7 +293,7 @@ FrameRecord FluidController::frame() {
   std::vector<double> from(pres_.prescribed.qpos.size());
   for (std::size_t k = 0; k < from.size(); ++k) from[k] = w.data.qpos()[pres_.prescribed.qpos[k]];
   for (int i = 0; i < n; ++i) {
-    const double t = from[i] + step_rad * direction_[i];
+    const double t = clampToRange(pres_.controlled[i], from[i] + step_rad * direction_[i]);
     pres_.prescribed.target[i] = f_.limit_rad > 0 ? std::clamp(t, -f_.limit_rad, f_.limit_rad) : t;
   }
   w.residual_rad = 0;

@@ -1,6 +1,7 @@
 #include "control/prescription.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace creaturelab::control {
 namespace {
@@ -8,7 +9,7 @@ namespace {
 Slot slotOf(const rigid::RigidModel& model, const std::string& name, const Pattern* pattern,
             Prescribed& pr) {
   const auto j = model.joint(model.findJoint(name));
-  Slot s{j.qpos, j.dof, 0, j.type == rigid::JointType::ball};
+  Slot s{j.qpos, j.dof, 0, j.type == rigid::JointType::ball, j.limited, j.range_lo, j.range_hi};
   if (s.ball) {
     s.index = int(pr.balls.size());
     pr.balls.push_back({j.qpos, j.dof, {1, 0, 0, 0}});
@@ -23,6 +24,19 @@ Slot slotOf(const rigid::RigidModel& model, const std::string& name, const Patte
 }
 
 }  // namespace
+
+double clampToRange(const Slot& s, double target_rad) {
+  return s.limited ? std::clamp(target_rad, s.lo, s.hi) : target_rad;
+}
+
+rigid::Quat clampToRange(const Slot& s, const rigid::Quat& target) {
+  if (!s.limited) return target;
+  const Vec3 r = rigid::quatLog(target);
+  const double angle = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  if (angle <= s.hi) return target;
+  const double shrink = s.hi / angle;
+  return rigid::quatExp({shrink * r[0], shrink * r[1], shrink * r[2]});
+}
 
 rigid::Quat quatAt(const double* qpos, int address) {
   return {qpos[address], qpos[address + 1], qpos[address + 2], qpos[address + 3]};

@@ -15,7 +15,17 @@ namespace creaturelab::control {
 struct Slot {
   int qpos = 0, dof = 0, index = 0;  // index: into Prescribed's scalars or balls
   bool ball = false;
+  // The joint's MJCF range (rigid::JointInfo): hinge [lo, hi] rad; ball: rotation angle up to hi.
+  bool limited = false;
+  double lo = 0, hi = 0;
 };
+
+// A controlled joint's target kept within its range, so that the servo, which reaches any target
+// "irrespective of all external forces" (§2.2), never drives a joint past its anatomical limit: a
+// hinge's angle clamped to [lo, hi]; a ball's rotation vector log(q) shortened to the angle hi,
+// its axis kept. Unlimited joints' targets pass unchanged.
+double clampToRange(const Slot& s, double target_rad);
+rigid::Quat clampToRange(const Slot& s, const rigid::Quat& target);
 
 struct Prescription {
   Prescribed prescribed;

@@ -69,6 +69,11 @@ JointInfo RigidModel::joint(int id) const {
   j.qpos = m->jnt_qposadr[id];
   j.dof = m->jnt_dofadr[id];
   j.body = m->jnt_bodyid[id];
+  j.limited = m->jnt_limited[id] != 0;
+  if (j.limited) {
+    j.range_lo = m->jnt_range[2 * id];
+    j.range_hi = m->jnt_range[2 * id + 1];
+  }
   return j;
 }
 

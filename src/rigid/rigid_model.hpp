@@ -28,6 +28,11 @@ struct JointInfo {
   int qpos = 0;   // address in qpos
   int dof = 0;    // address in qvel
   int body = 0;   // the body the joint moves (with everything outboard of it)
+  // MJCF range (MuJoCo's jnt_limited, jnt_range): a hinge's angle (rad) or a slide's position (m)
+  // stays within [range_lo, range_hi]; a ball joint's rotation angle from its reference within
+  // range_hi (rad; MuJoCo requires range_lo = 0). Without a range both are 0.
+  bool limited = false;
+  double range_lo = 0, range_hi = 0;
 };
 
 class RigidModel {

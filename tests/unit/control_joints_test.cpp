@@ -193,6 +193,64 @@ TEST_F(JointsTest, HeldBallJointStaysHeldUnderLoad) {
   EXPECT_EQ(c.derivatives().size(), 1u);
 }
 
+// Joint ranges (MJCF range): a controlled joint whose objective pulls it past its range stops at
+// the range (the servo would otherwise reach any target, §2.2). The block hangs down under gravity
+// to minimise its effort: a hinge limited to +-0.1 rad ends on 0.1 with no target beyond it (free,
+// it turns 20 steps of the strength in 20 frames); a ball limited to 0.1 rad of rotation likewise.
+TEST_F(JointsTest, TargetsBeyondAJointsRangeAreClamped) {
+  Slot hinge;
+  hinge.limited = true;
+  hinge.lo = -0.3;
+  hinge.hi = 0.2;
+  EXPECT_EQ(clampToRange(hinge, 0.25), 0.2);
+  EXPECT_EQ(clampToRange(hinge, -0.5), -0.3);
+  EXPECT_EQ(clampToRange(hinge, 0.1), 0.1);
+  hinge.limited = false;
+  EXPECT_EQ(clampToRange(hinge, 0.25), 0.25);
+  Slot ball;
+  ball.ball = ball.limited = true;
+  ball.hi = 0.5;
+  const Vec3 r = rigid::quatLog(clampToRange(ball, rigid::quatExp({0.3, -0.6, 0.4})));
+  EXPECT_NEAR(std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]), 0.5, 1e-12);
+  EXPECT_NEAR(r[0] / r[1], -0.5, 1e-12);  // the axis kept
+  EXPECT_NEAR(r[2] / r[1], -2.0 / 3, 1e-12);
+
+  auto limitedXml = [](std::string xml, const std::string& joint, const std::string& range) {
+    const std::string tag = "name=\"" + joint + "\"";
+    xml.insert(xml.find(tag) + tag.size(), " limited=\"true\" range=\"" + range + "\"");
+    return xml;
+  };
+  const NoForce none;
+  auto hingeRun = [&](const std::string& xml, double& worst_target) {
+    const auto model = rigid::RigidModel::load(testing::writeText(file("block.xml"), xml));
+    Controller c(model, minimiseEffort("hinge"), none);
+    worst_target = 0;
+    for (int f = 0; f < 20; ++f) worst_target = std::max(worst_target, c.frame().target_rad[0]);
+    return c.data().qpos()[0];
+  };
+  double target = 0;
+  const std::string block = testing::blockXml(0.1, 9.81);
+  EXPECT_NEAR(hingeRun(block, target), 20.0 / 60, 1e-9);
+  EXPECT_NEAR(hingeRun(limitedXml(block, "hinge", "-0.1 0.1"), target), 0.1, 1e-12);
+  EXPECT_LE(target, 0.1);
+
+  auto ballRun = [&](const std::string& xml) {
+    const auto model = rigid::RigidModel::load(testing::writeText(file("ball.xml"), xml));
+    Controller c(model, minimiseEffort("ball"), none);
+    double worst = 0;
+    for (int f = 0; f < 20; ++f) {
+      const std::vector<double> t = c.frame().target_rad;
+      worst = std::max(worst, std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]));
+    }
+    const Vec3 now = rigid::quatLog(quatAt(c.data().qpos()));
+    return std::pair{std::sqrt(now[0] * now[0] + now[1] * now[1] + now[2] * now[2]), worst};
+  };
+  EXPECT_GT(ballRun(testing::ballBlockXml(9.81)).first, 0.3);
+  const auto [angle, worst] = ballRun(limitedXml(testing::ballBlockXml(9.81), "ball", "0 0.1"));
+  EXPECT_NEAR(angle, 0.1, 1e-9);
+  EXPECT_LE(worst, 0.1 + 1e-12);
+}
+
 // §5 with a ball joint among the controlled ones: four DOFs on 1, 2 or 3 threads give bitwise
 // the same run.
 TEST_F(JointsTest, BallJointRunsDoNotDependOnThreads) {
