@@ -5,6 +5,7 @@ import html
 import os
 
 import report_provenance as P
+import report_text as T
 
 STATUS_CLASS = {"ok": "ok", "FAILED": "failed", "KNOWN": "known", "inconclusive": "inconclusive"}
 VERDICT_CLASS = {"reproduced": "ok", "deviates": "known", "FAILED": "failed",
@@ -126,11 +127,7 @@ def write(m):
                 parts.append(f"<a href=\"{r}\"><img src=\"{r}\" loading=\"lazy\" alt=\"{e(os.path.basename(p))}\"></a>")
             parts.append("</div></details>")
     parts.append("</body></html>\n")
-    path = os.path.join(root, "report.html")
-    with open(path + ".tmp", "w", encoding="utf-8") as fh:
-        fh.write("\n".join(parts))
-    os.replace(path + ".tmp", path)
-    return path
+    return T.write_atomically(os.path.join(root, "report.html"), "\n".join(parts))
 
 
 def runs_table(found):

@@ -3,10 +3,8 @@
 import os
 
 import report_provenance as P
-
-
-def cell(s):
-    return str(s).replace("|", "\\|").replace("\n", " ")
+import report_text as T
+from report_text import md_cell as cell
 
 
 def rel(path, root):
@@ -82,8 +80,4 @@ def write(m):
         for name, pngs in m["extra"].items():
             lines += [f"- {name}: " + ", ".join(f"[{os.path.basename(p)}]({rel(p, root)})" for p in pngs)]
         lines.append("")
-    path = os.path.join(root, "REPORT.md")
-    with open(path + ".tmp", "w", encoding="utf-8") as fh:
-        fh.write("\n".join(lines))
-    os.replace(path + ".tmp", path)
-    return path
+    return T.write_atomically(os.path.join(root, "REPORT.md"), "\n".join(lines))

@@ -21,6 +21,8 @@ import h5py
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report_provenance as P  # noqa: E402
 import report_units as U  # noqa: E402
+from report_text import md_cell as cell  # noqa: E402
+from report_text import write_atomically  # noqa: E402
 from figures import runs as R  # noqa: E402
 
 VERDICT = {"ok": "reproduced", "KNOWN": "deviates", "FAILED": "FAILED", "inconclusive": "inconclusive"}
@@ -63,10 +65,6 @@ def provenance(run):
         with h5py.File(path, "r") as f:
             return R.text(f.attrs.get("git_commit", "")), R.text(f.attrs.get("finished", ""))
     return "", ""
-
-
-def cell(s):
-    return str(s).replace("|", "\\|").replace("\n", " ")
 
 
 def checks_table(checks, units):
@@ -130,12 +128,8 @@ def values_entry(run):
 
 
 def write_values(values, out, sources):
-    path = os.path.join(out, "values.json")
-    with open(path + ".tmp", "w", encoding="utf-8") as f:
-        json.dump({"generated_from": list(sources), "runs": values}, f, indent=1, sort_keys=True)
-        f.write("\n")
-    os.replace(path + ".tmp", path)
-    return path
+    text = json.dumps({"generated_from": list(sources), "runs": values}, indent=1, sort_keys=True) + "\n"
+    return write_atomically(os.path.join(out, "values.json"), text)
 
 
 def write(pages, out, sources):
@@ -150,9 +144,7 @@ def write(pages, out, sources):
                  "the sweep table of the metrics they read.", ""]
         for s in sections:
             lines += s
-        with open(path, "w") as f:
-            f.write("\n".join(lines).rstrip() + "\n")
-        written.append(path)
+        written.append(write_atomically(path, "\n".join(lines).rstrip() + "\n"))
     return written
 
 
