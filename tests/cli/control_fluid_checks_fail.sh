@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Every check that decides a fluid-controller claim (Lentine et al. 2010, Figs. 2, 8, 11-13, §7.2) fails when
+# Every check that decides a fluid-controller claim (Lentine et al. 2010, Figs. 2, 8, 10-13, §7.2) fails when
 # the controller the claim rests on is off (strength zero, no search): the claim file runs at its own
 # setting (the fluid is cheap when nothing searches), and the check must then be FAIL with exit code 1 (the
-# flyer's, decided on its standard error, inconclusive: never ok).
+# flyer's, decided on its standard error, inconclusive: never ok); Fig. 10's threads, which have no switch,
+# are seen to fail on a run moved by one unit in the last place.
 # usage: control_fluid_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 source "$(dirname "${BASH_SOURCE[0]}")/checks_fail_lib.sh"  # status, broken, also, study
@@ -37,3 +38,34 @@ check="§7.1: mean upward force over whole flap cycles larger with the controlle
 [[ $(status flyer_off "$check") == inconclusive ]] || { cat "$scratch/flyer_off.out" >&2; fail "flyer_off: not inconclusive"; }
 grep -q "^$check .* 1 +- " "$scratch/flyer_off.out" || fail "flyer_off: the ratio is not exactly 1"
 echo "ok   flyer_off: '$check' is inconclusive (ratio 1)"
+
+# Fig. 10 in the fluid (§5): each joint's central difference runs on its own copy of the fluid, so evaluation
+# and fluid threads give the serial run bitwise; they have no switch that breaks that, so a parallel point is
+# moved by one unit in the last place (the least a race could change it) and the checks, evaluated again,
+# must fail. The intact run (the checked cases, 64^2, six frames) passes first.
+study parallel_fluid experiments/control/parallel_dofs_fluid.toml <<'TOML'
+[params]
+cells = 64
+frames = 6
+warmup_frames = 2
+average_frames = 2
+[[case]]
+label = "2_joints"
+controlled = "j0, j1"
+kinematic = "j2, j3, j4"
+objectives = "drag_along, drag_along"
+senses = "min, min"
+[[case]]
+label = "4_joints"
+controlled = "j0, j1, j2, j3"
+kinematic = "j4"
+objectives = "drag_along, drag_along, drag_along, drag_along"
+senses = "min, min, min, min"
+TOML
+intact parallel_fluid "$scratch/parallel_fluid.toml"
+nudged parallel_fluid_4_angle "$scratch/run_parallel_fluid" \
+  "4 joints: two evaluation and two fluid threads give exactly the serial run (final angle)" final_angle_deg 4_joints
+nudged parallel_fluid_4_drag "$scratch/run_parallel_fluid" \
+  "4 joints: two evaluation and two fluid threads give exactly the serial run (final drag)" final_drag_along_n 4_joints
+nudged parallel_fluid_2_angle "$scratch/run_parallel_fluid" \
+  "2 joints: two evaluation and two fluid threads give exactly the serial run (final angle)" final_angle_deg 2_joints
