@@ -355,3 +355,8 @@ frame_placement_m = 0.045
 secondary_spoke_stride = 1
 TOML
 broken combined_more_radii "$scratch/combined_more_radii.toml" "spiral segments fall row by row"
+# The silk falls with the spiral's: of the preset's 86 m about 75 m is spiral. With the spiral's rest length
+# cut to 0.01 mm (the strands still laid) the rest follows the spokes' rest / placement (3/7, 3/9, 5/11,
+# 7/15): 10.9, 9.0, 11.4, 11.6 m, not falling.
+broken spiral_no_silk experiments/web/spiral_spacing.toml "silk falls as the spiral thins" \
+  params.spiral_rest_length_m=1e-5 params.end_time_s=0.0
