@@ -44,6 +44,11 @@ broken effort_no_gravity experiments/control/block_effort.toml \
   "a 10 m/s wind leans the block 38 degrees from the vertical (Eq. 2 balance, within 1 degree)" \
   params.gravity_m_per_s2=0.0
 also effort_no_gravity "a 5 m/s wind leans the block 13.9 degrees from the vertical (Eq. 2 balance, within 1 degree)"
+# The remaining effort is chatter about the optimum only once the strength-limited step has reached it: stopped
+# after 40 frames (0.67 s), before 0.5 and 1 rad/s get there, what remains is the load, falling with the
+# strength (0.70, 0.33, 0.19 of holding the block horizontal).
+broken effort_not_reached experiments/control/block_effort.toml \
+  "what effort remains is the chatter of the strength-limited step: it grows with the strength" params.frames=40
 broken effort_no_wind experiments/control/block_effort.toml \
   "weaker wind, smaller lean (Fig. 4 b against a): Eq. 2's 13.9 / 38.4 = 0.36, each lean within one 0.95-degree step" \
   params.density_kg_per_m3=0.0
