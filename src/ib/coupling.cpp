@@ -33,6 +33,9 @@ ImmersedBoundary2::ImmersedBoundary2(fluid::FluidSolver2& fluid, const ElasticBo
     throw std::invalid_argument("immersed boundary: implicit_theta must lie in [0.5, 1]");
   if (!(params_.factor_reuse.tolerance >= 0) || params_.factor_reuse.max_sweeps < 1)
     throw std::invalid_argument("immersed boundary: factor reuse needs a tolerance >= 0 and at least one sweep");
+  if (!params_.marker_kernel_scales.empty() && params_.marker_kernel_scales.size() != markers_.size())
+    throw std::invalid_argument("immersed boundary: " + std::to_string(params_.marker_kernel_scales.size()) +
+                                " marker kernel stretches for " + std::to_string(markers_.size()) + " markers");
   force_.resize(markers_.size());
   velocity_.resize(markers_.size());
   if (params_.banded_solve && static_cast<int>(markers_.size()) >= kBandedFromMarkers) order_ = body_.solveOrder();
@@ -167,22 +170,39 @@ Eigen::VectorXd ImmersedBoundary2::solveWithoutAssembly(const Eigen::SparseMatri
   const double theta_dt_scale = theta_dt_s * scale;
   const std::vector<double>& g_force = applyGram(force);
   banded_rhs_.resize(n);
-  for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = free[i] + scale * g_force[i];
-  Eigen::VectorXd xn(n), predicted(n);
-  const auto apply = [&](const std::vector<double>& x, std::vector<double>& ax) {  // (I − θ dt M K) x
+  Eigen::VectorXd porous_force = Eigen::VectorXd::Zero(n);
+  addPorous(force, porous_force, 1.0);  // P F
+  for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = free[i] + scale * g_force[i] + porous_force[i];
+  const double dt_s = theta_dt_s / params_.implicit_theta;
+  Eigen::VectorXd xn(n), predicted(n), kx(n), porous_kx(n);
+  const auto apply = [&](const std::vector<double>& x, std::vector<double>& ax) {  // (I − dt (θ M + P) K) x
     for (int i = 0; i < n; ++i) xn[i] = x[banded_index(slot_, i)];
-    const std::vector<double>& g_kx = applyGram(stiffness * xn);
+    kx = stiffness * xn;
+    const std::vector<double>& g_kx = applyGram(kx);
+    porous_kx.setZero();
+    addPorous(kx, porous_kx, dt_s);
     ax.resize(n);
-    for (int i = 0; i < n; ++i) ax[banded_index(slot_, i)] = xn[i] - theta_dt_scale * g_kx[i];
+    for (int i = 0; i < n; ++i) ax[banded_index(slot_, i)] = xn[i] - theta_dt_scale * g_kx[i] - porous_kx[i];
   };
   const auto assemble = [&]() -> const BandedLU& {
     transfer_.gram(scale, mobility_);
+    if (!porous_.empty()) mobility_ += porousMatrix(n, 1.0 / params_.implicit_theta);
     assembleBanded(stiffness, theta_dt_s);
     return banded_;
   };
   if (!banded_solver_.solve(n, apply, assemble, banded_rhs_)) throw singular_system(t1_s);
   for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[banded_index(slot_, i)];
   return predicted;
+}
+
+// out += factor P x (numbering 2 marker + axis).
+void ImmersedBoundary2::addPorous(const Eigen::VectorXd& x, Eigen::VectorXd& out, double factor) const {
+  for (const PorousSlip& p : porous_) {
+    const long i = 2L * p.marker;
+    const double normal = factor * p.mobility * (p.nx * x[i] + p.ny * x[i + 1]);
+    out[i] += normal * p.nx;
+    out[i + 1] += normal * p.ny;
+  }
 }
 
 void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
@@ -216,7 +236,11 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
       predicted = solveWithoutAssembly(stiffness, free, force, scale, t1_s, theta_dt_s);
     } else {
       transfer_.gram(scale, mobility_);
-      const Eigen::VectorXd rhs = free + mobility_ * force;
+      Eigen::VectorXd rhs = free + mobility_ * force;
+      if (!porous_.empty()) {  // (M + P) F on the right; θ M + P = θ (M + P / θ) in the system
+        addPorous(force, rhs, 1.0);
+        mobility_ += porousMatrix(n, 1.0 / params_.implicit_theta);
+      }
       if (!order_.empty()) {
         assembleBanded(stiffness, theta_dt_s);
         banded_rhs_.resize(n);
@@ -246,17 +270,49 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
   if (!predicted.allFinite())
     throw std::runtime_error("immersed boundary: the semi-implicit force is not finite at t = " + std::to_string(t1_s) + " s");
   const Eigen::VectorXd correction = theta_dt_s * (stiffness * predicted);
+  if (!porous_.empty()) {  // F_slip = F + dt K U*, the end of the step's force
+    const Eigen::VectorXd k_predicted = stiffness * predicted;
+    for (const PorousSlip& p : porous_)
+      slip_force_[p.marker] = {force_[p.marker].x + dt_s * k_predicted[2 * p.marker],
+                               force_[p.marker].y + dt_s * k_predicted[2 * p.marker + 1]};
+  }
   for (int i = 0; i < n / 2; ++i) {
     force_[i].x += correction[2 * i];
     force_[i].y += correction[2 * i + 1];
   }
 }
 
+Eigen::SparseMatrix<double> ImmersedBoundary2::porousMatrix(int n, double factor) const {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (const PorousSlip& p : porous_) {
+    const int i = 2 * p.marker;
+    const double m = factor * p.mobility;
+    entries.emplace_back(i, i, m * p.nx * p.nx);
+    entries.emplace_back(i, i + 1, m * p.nx * p.ny);
+    entries.emplace_back(i + 1, i, m * p.ny * p.nx);
+    entries.emplace_back(i + 1, i + 1, m * p.ny * p.ny);
+  }
+  Eigen::SparseMatrix<double> out(n, n);
+  out.setFromTriplets(entries.begin(), entries.end());
+  return out;
+}
+
 CouplingStepReport ImmersedBoundary2::step(double dt_s) {
   const double t1_s = fluid_.time_s() + dt_s;
-  transfer_.locate(fluid_.grid(), params_.kernel, markers_, params_.kernel_scale);
+  transfer_.locate(fluid_.grid(), params_.kernel, markers_, params_.kernel_scale, params_.marker_kernel_scales);
   body_.forces(t1_s, markers_, force_);
+  body_.porousSlips(markers_, porous_);
+  for (const PorousSlip& p : porous_) {
+    if (p.marker < 0 || p.marker >= static_cast<int>(markers_.size()) || !(p.mobility >= 0))
+      throw std::invalid_argument("immersed boundary: a porous slip names marker " + std::to_string(p.marker) +
+                                  " of " + std::to_string(markers_.size()) + " or has a negative mobility");
+  }
+  slip_force_.assign(markers_.size(), {});
+  for (const PorousSlip& p : porous_) slip_force_[p.marker] = force_[p.marker];  // explicit unless replaced below
+  const bool implicit_slip = params_.semi_implicit && params_.mobility == ImplicitMobility::stencil;
   if (params_.semi_implicit) semiImplicitForce(t1_s, dt_s);
+  if (params_.semi_implicit && !implicit_slip)
+    for (const PorousSlip& p : porous_) slip_force_[p.marker] = force_[p.marker];
 
   auto& density = fluid_.force_density_n_per_m3();
   density.fill(0.0);
@@ -266,6 +322,12 @@ CouplingStepReport ImmersedBoundary2::step(double dt_s) {
   report.fluid = fluid_.step(dt_s);
 
   transfer_.interpolate(fluid_.grid(), velocity_);
+  for (const PorousSlip& p : porous_) {  // the Darcy slip through the fluid, along the normal
+    const fluid::Vec2 f = slip_force_[p.marker];
+    const double slip = p.mobility * (p.nx * f.x + p.ny * f.y);
+    velocity_[p.marker].x += slip * p.nx;
+    velocity_[p.marker].y += slip * p.ny;
+  }
   for (std::size_t k = 0; k < markers_.size(); ++k) {
     const fluid::Vec2 u = velocity_[k];
     markers_[k].x += dt_s * u.x;

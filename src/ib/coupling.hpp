@@ -11,6 +11,14 @@
 //   4. spread    f = S F                                              (Peskin 2002 Eq. 6.4)
 //   5. fluid     u^{n+1} = fluid step with the force density f        (Eq. 1)
 //   6. move      X^{n+1} = X^n + dt I u^{n+1}                          (Peskin 2002 Eq. 6.5)
+//                plus, for porous markers (PorousSlip), dt P F_slip with P = Σ (α/ds) n nᵀ
+//
+// Porous slip. P is a mobility like M, so the semi-implicit step takes it in too, at the end of the
+// step (backward Euler: a filament's slip relaxes its stiff bending modes at rates far beyond 1/dt,
+// which the trapezoidal θ = ½ would leave ringing):
+//   (I − dt (θ M + P) K) U* = I u^n + (M + P) F,   F_impl = F + θ dt K U*,   F_slip = F + dt K U*,
+// F_impl spread, the porous markers moved by I u^{n+1} + P F_slip. Without the semi-implicit step,
+// F_slip = F. P ⪰ 0, so the system's eigenvalues stay ≥ 1. local_mass: the slip is explicit.
 //
 // Stability. Explicit forces make the coupled step stiff (Stockie & Wetton 1999, the paper's ref.
 // [28]): a marker spring of stiffness k pushes about ρ dx² of fluid per metre of depth, so steps
@@ -72,6 +80,18 @@
 
 namespace creaturelab::ib {
 
+/// A porous marker's Darcy slip (Kim & Peskin 2006, "Penalty immersed boundary method for an elastic
+/// boundary with mass" / "2-D parachute simulation by the immersed boundary method"; IB2d's porous
+/// points as Miles & Battista 2019, Fluids 4:169, use them for tentacles): the marker moves through the
+/// fluid along its unit normal n at U_p = α (F · n) / ds, with F the force it spreads (N/m), ds its share
+/// of the chain's arc (m) and α the Darcy coefficient (m/(Pa s), slip velocity per pressure jump), so
+/// the fluid passes through the chain at α times the normal load per length; mobility = α / ds.
+struct PorousSlip {
+  int marker = 0;
+  double nx = 0, ny = 0;      // unit normal
+  double mobility = 0;        // α / ds, (m/s) per (N/m)
+};
+
 /// The elastic structure, seen by the coupling: forces and stiffness at given marker positions.
 class ElasticBody {
  public:
@@ -87,6 +107,11 @@ class ElasticBody {
   /// other in space, or joined by a spring, are near each other, so that the semi-implicit system
   /// is banded. Empty (the default): the body has no such order and the system is solved dense.
   virtual std::vector<int> solveOrder() const { return {}; }
+  /// The porous markers' slips at positions x (overwrites `out`); none by default (impermeable).
+  virtual void porousSlips(std::span<const fluid::Vec2> x_m, std::vector<PorousSlip>& out) const {
+    (void)x_m;
+    out.clear();
+  }
 };
 
 enum class ImplicitMobility { stencil, local_mass };
@@ -101,6 +126,9 @@ struct CouplingParams {
   // The kernel stretched to kernel_scale cells per kernel unit (Transfer::locate): 1 is Peskin's
   // grid-scaled delta; a fixed physical width (scale ∝ 1/dx) makes a grid study refine one body.
   int kernel_scale = 1;
+  // Each marker's own stretch (Transfer::locate), e.g. filaments narrower than the body they hang
+  // from; empty: kernel_scale for every marker.
+  std::vector<int> marker_kernel_scales;
   bool semi_implicit = true;
   ImplicitMobility mobility = ImplicitMobility::stencil;
   double implicit_mass_factor = 1.0;  // local_mass only: m = factor · ρ dx², see above
@@ -152,7 +180,10 @@ class ImmersedBoundary2 {
   std::vector<fluid::Vec2> markers_;
   CouplingParams params_;
   Transfer transfer_;
-  std::vector<fluid::Vec2> force_, velocity_;
+  std::vector<fluid::Vec2> force_, velocity_, slip_force_;
+  std::vector<PorousSlip> porous_;
+  void addPorous(const Eigen::VectorXd& x, Eigen::VectorXd& out, double factor) const;
+  Eigen::SparseMatrix<double> porousMatrix(int n, double factor) const;  // factor P, 2n × 2n numbering
   std::vector<Eigen::Triplet<double>> triplets_;
   // The stencil mobility's M, the system I − θ dt M K and its LU (kept to reuse their storage).
   Eigen::SparseMatrix<double> mobility_;

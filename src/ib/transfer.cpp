@@ -97,8 +97,25 @@ void require_count(std::size_t got, int markers, const char* what) {
 
 }  // namespace
 
+namespace {
+// axis_stencil for a marker stretched `scale` times inside a stencil `support` faces wide (its own
+// stencil_faces(kernel, scale) ≤ support): its faces centred in the wide window, zero weights around.
+bool padded_axis_stencil(Kernel kernel, int scale, int support, double xs, int first_face, int last_face, int& start,
+                         double (&weights)[kMaxStencilFaces]) {
+  const int own = stencil_faces(kernel, scale);
+  if (own == support) return axis_stencil(kernel, scale, support, xs, first_face, last_face, start, weights);
+  const int pad = (support - own) / 2;  // both even: support − own is even
+  double narrow[kMaxStencilFaces] = {};
+  if (!axis_stencil(kernel, scale, own, xs, first_face + pad, last_face - pad, start, narrow)) return false;
+  start -= pad;
+  for (int a = 0; a < kMaxStencilFaces; ++a) weights[a] = 0.0;
+  for (int a = 0; a < own; ++a) weights[pad + a] = narrow[a];
+  return true;
+}
+}  // namespace
+
 void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<const fluid::Vec2> positions_m,
-                      int kernel_scale) {
+                      int kernel_scale, std::span<const int> marker_scales) {
   u_stencils_.clear();  // keeps the capacity: no allocation once the largest marker count was seen
   v_stencils_.clear();
   if (grid.nx < 1 || grid.ny < 1 || !(std::isfinite(grid.dx_m) && grid.dx_m > 0.0)) {
@@ -106,9 +123,15 @@ void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<cons
                                 std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " cells of " +
                                 show(grid.dx_m) + " m)");
   }
-  support_ = ib::stencil_faces(kernel, kernel_scale);  // throws for a scale out of range
+  if (!marker_scales.empty() && marker_scales.size() != positions_m.size())
+    throw std::invalid_argument("immersed-boundary transfer: " + std::to_string(marker_scales.size()) +
+                                " kernel stretches for " + std::to_string(positions_m.size()) + " markers");
+  int widest = kernel_scale;
+  if (!marker_scales.empty()) widest = *std::max_element(marker_scales.begin(), marker_scales.end());
+  for (const int s : marker_scales) ib::stencil_faces(kernel, s);  // throws for a scale out of range
+  support_ = ib::stencil_faces(kernel, widest);  // throws for a scale out of range
   kernel_ = kernel;
-  scale_ = kernel_scale;
+  scale_ = widest;
   nx_ = grid.nx;
   ny_ = grid.ny;
   dx_m_ = grid.dx_m;
@@ -129,10 +152,11 @@ void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<cons
     FaceStencil& v = v_stencils_[k];
     // u faces at (i, j + 1/2) cells: interior faces i = 1..nx−1, all rows j = 0..ny−1.
     // v faces at (i + 1/2, j) cells: all columns i = 0..nx−1, interior faces j = 1..ny−1.
-    const bool fits = axis_stencil(kernel, scale_, support_, xs, 1, nx_ - 1, u.i0, u.wx) &&
-                      axis_stencil(kernel, scale_, support_, ys - 0.5, 0, ny_ - 1, u.j0, u.wy) &&
-                      axis_stencil(kernel, scale_, support_, xs - 0.5, 0, nx_ - 1, v.i0, v.wx) &&
-                      axis_stencil(kernel, scale_, support_, ys, 1, ny_ - 1, v.j0, v.wy);
+    const int m = marker_scales.empty() ? scale_ : marker_scales[k];
+    const bool fits = padded_axis_stencil(kernel, m, support_, xs, 1, nx_ - 1, u.i0, u.wx) &&
+                      padded_axis_stencil(kernel, m, support_, ys - 0.5, 0, ny_ - 1, u.j0, u.wy) &&
+                      padded_axis_stencil(kernel, m, support_, xs - 0.5, 0, nx_ - 1, v.i0, v.wx) &&
+                      padded_axis_stencil(kernel, m, support_, ys, 1, ny_ - 1, v.j0, v.wy);
     if (!fits) {
       u_stencils_.clear();
       v_stencils_.clear();

@@ -66,8 +66,14 @@ class Transfer {
   /// `kernel_scale` m stretches the kernel to m cells per kernel unit (stretched_kernel_weights_1d):
   /// a delta function of width m · support · dx; 1 is Peskin's grid-scaled delta_h. Throws
   /// std::invalid_argument for a scale stencil_faces() refuses.
+  ///
+  /// `marker_scales`, if not empty, gives each marker its own stretch (one per marker, each accepted
+  /// by stencil_faces()): a filament spread narrower than the body it hangs from. Every stencil then
+  /// spans the widest one's faces, a narrower marker's weights centred in it with zeros around, so
+  /// spread, interpolate and gram treat all markers alike (a marker keeps the widest kernel's
+  /// distance from the walls). `kernel_scale` is then unused.
   void locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<const fluid::Vec2> positions_m,
-              int kernel_scale = 1);
+              int kernel_scale = 1, std::span<const int> marker_scales = {});
 
   /// ADDS Σ_k F_k delta_h(x_face − X_k) into the face field; delta_h = phi(dx)phi(dy)/dx².
   /// Forces are per metre of depth (N/m, 2-D), so the density is N/m³.
@@ -99,7 +105,8 @@ class Transfer {
 
   /// The kernel of the last locate() (bilinear before the first).
   Kernel kernel() const { return kernel_; }
-  /// The stretch of the last locate() (1 before the first) and its stencil width in faces per axis.
+  /// The stretch of the last locate() (1 before the first; the widest with marker_scales) and its
+  /// stencil width in faces per axis.
   int kernel_scale() const { return scale_; }
   int stencil_faces() const { return support_; }
   /// Stencil of marker k on u faces (x components) and on v faces (y components).

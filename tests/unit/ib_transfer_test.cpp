@@ -322,6 +322,63 @@ TEST_P(TransferTest, StretchedKernelKeepsConservationExactnessAndAdjointness) {
   }
 }
 
+// Markers of two widths in one locate (a filament beside a wider body): each narrow marker spreads and
+// interpolates exactly as it would located alone at its own stretch, the wide ones as at theirs, and G
+// is the gram of the mixed stencils (interpolate(spread(F)) = G F / dx²).
+TEST_P(TransferTest, MixedKernelWidthsActAsEachMarkersOwnKernel) {
+  std::mt19937_64 rng(93);
+  const double margin = 0.5 * 2 * support() * kDx;
+  const double inset = 1e-9 * kDx;
+  std::vector<Vec2> p;
+  std::vector<int> scales;
+  for (int k = 0; k < 40; ++k) {
+    p.push_back({uniform(rng, margin, kNx * kDx - margin - inset), uniform(rng, margin, kNy * kDx - margin - inset)});
+    scales.push_back(k % 3 == 0 ? 2 : 1);
+  }
+  const std::vector<Vec2> f = random_vectors(94, static_cast<int>(p.size()), 1.0);
+  Transfer mixed;
+  mixed.locate(grid_, kernel(), p, 1, scales);
+  ASSERT_EQ(mixed.stencil_faces(), 2 * support());
+  FaceVectorField2 density(kNx, kNy);
+  mixed.spread(f, density);
+  // The same spread, marker by marker, each alone at its own stretch.
+  FaceVectorField2 alone(kNx, kNy);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    Transfer one;
+    one.locate(grid_, kernel(), std::span<const Vec2>(&p[k], 1), scales[k]);
+    one.spread(std::span<const Vec2>(&f[k], 1), alone);
+  }
+  for (std::size_t n = 0; n < density.x.size(); ++n) EXPECT_NEAR(density.x.data()[n], alone.x.data()[n], 1e-9);
+  for (std::size_t n = 0; n < density.y.size(); ++n) EXPECT_NEAR(density.y.data()[n], alone.y.data()[n], 1e-9);
+
+  fill_random(grid_.u_m_per_s, rng, 0.3);
+  fill_random(grid_.v_m_per_s, rng, 0.3);
+  std::vector<Vec2> velocity(p.size());
+  mixed.interpolate(grid_, velocity);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    Transfer one;
+    one.locate(grid_, kernel(), std::span<const Vec2>(&p[k], 1), scales[k]);
+    Vec2 v;
+    one.interpolate(grid_, std::span<Vec2>(&v, 1));
+    EXPECT_DOUBLE_EQ(velocity[k].x, v.x) << "marker " << k;
+    EXPECT_DOUBLE_EQ(velocity[k].y, v.y) << "marker " << k;
+  }
+
+  grid_.u_m_per_s = density.x;
+  grid_.v_m_per_s = density.y;
+  mixed.interpolate(grid_, velocity);
+  Eigen::MatrixXd gram;
+  mixed.gram(gram);
+  Eigen::VectorXd fv(2 * p.size());
+  for (std::size_t k = 0; k < p.size(); ++k) fv[2 * k] = f[k].x, fv[2 * k + 1] = f[k].y;
+  const Eigen::VectorXd via_gram = gram * fv / (kDx * kDx);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    EXPECT_NEAR(via_gram[2 * k], velocity[k].x, 1e-9 * via_gram.cwiseAbs().maxCoeff());
+    EXPECT_NEAR(via_gram[2 * k + 1], velocity[k].y, 1e-9 * via_gram.cwiseAbs().maxCoeff());
+  }
+  EXPECT_THROW(mixed.locate(grid_, kernel(), p, 1, std::vector<int>(3, 1)), std::invalid_argument);
+}
+
 // dx² <S F, u> = Σ_k F_k · (I u)_k for random forces and random (not smooth) fields.
 TEST_P(TransferTest, SpreadIsTheAdjointOfInterpolation) {
   std::mt19937_64 rng(61);
