@@ -96,9 +96,9 @@ void perturbation(const Prescription& base, const rigid::RigidModel& model, cons
   if (s.ball) {
     Vec3 r{};
     r[base.dof_axis[t]] = offset;
-    pr.balls[s.index].target = rigid::quatRotate(pr.balls[s.index].target, r);
+    pr.balls[s.index].target = clampToRange(s, rigid::quatRotate(pr.balls[s.index].target, r));
   } else {
-    pr.target[s.index] += offset;
+    pr.target[s.index] = clampToRange(s, pr.target[s.index] + offset);
   }
   for (int id : base.holds[i]) {
     const auto j = model.joint(id);

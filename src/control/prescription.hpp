@@ -40,9 +40,11 @@ Prescription prescription(const ControllerParams& p, const rigid::RigidModel& mo
 // The poses the kinematic and PD joints without a moving pattern hold: those in qpos.
 void captureHolds(Prescription& pr, const double* qpos);
 
-// pr = base's prescription for evaluating controlled DOF `dof` moved by offset_rad from qpos: the
-// other controlled joints and the kinematic ones without a pattern held where they are in qpos,
-// kinematic patterns going on, the DOF's joint's outboard joints held (and their PD drives off).
+// pr = base's prescription for evaluating controlled DOF `dof` moved by offset_rad from qpos, within
+// its joint's range (at a limit the probe past it stays on it, so the difference sees only poses the
+// joint can take): the other controlled joints and the kinematic ones without a pattern held where
+// they are in qpos, kinematic patterns going on, the DOF's joint's outboard joints held (and their PD
+// drives off).
 void perturbation(const Prescription& base, const rigid::RigidModel& model, const double* qpos, int dof,
                   double offset_rad, Prescribed& pr);
 

@@ -194,7 +194,7 @@ TEST_F(JointsTest, HeldBallJointStaysHeldUnderLoad) {
 }
 
 // Joint ranges (MJCF range): a controlled joint whose objective pulls it past its range stops at
-// the range (the servo would otherwise reach any target, §2.2). The block hangs down under gravity
+// the range (the servo would otherwise reach any target, §2.2), and so do the derivative's probes. The block hangs down under gravity
 // to minimise its effort: a hinge limited to +-0.1 rad ends on 0.1 with no target beyond it (free,
 // it turns 20 steps of the strength in 20 frames); a ball limited to 0.1 rad of rotation likewise.
 TEST_F(JointsTest, TargetsBeyondAJointsRangeAreClamped) {
@@ -221,11 +221,15 @@ TEST_F(JointsTest, TargetsBeyondAJointsRangeAreClamped) {
     return xml;
   };
   const NoForce none;
+  double probe_past = 0, probe_on = 0, probe_inside = 0;
   auto hingeRun = [&](const std::string& xml, double& worst_target) {
     const auto model = rigid::RigidModel::load(testing::writeText(file("block.xml"), xml));
     Controller c(model, minimiseEffort("hinge"), none);
     worst_target = 0;
     for (int f = 0; f < 20; ++f) worst_target = std::max(worst_target, c.frame().target_rad[0]);
+    probe_past = c.evaluate(0, 0.01);
+    probe_on = c.evaluate(0, 0.0);
+    probe_inside = c.evaluate(0, -0.01);
     return c.data().qpos()[0];
   };
   double target = 0;
@@ -233,6 +237,9 @@ TEST_F(JointsTest, TargetsBeyondAJointsRangeAreClamped) {
   EXPECT_NEAR(hingeRun(block, target), 20.0 / 60, 1e-9);
   EXPECT_NEAR(hingeRun(limitedXml(block, "hinge", "-0.1 0.1"), target), 0.1, 1e-12);
   EXPECT_LE(target, 0.1);
+  // At the limit the derivative's probe past it stays on it: the objective there is the limit's own.
+  EXPECT_EQ(probe_past, probe_on);
+  EXPECT_NE(probe_inside, probe_on);
 
   auto ballRun = [&](const std::string& xml) {
     const auto model = rigid::RigidModel::load(testing::writeText(file("ball.xml"), xml));
