@@ -74,9 +74,11 @@ TravelTurn measureTravelTurn(const FishRecord& rec, const std::vector<ScheduleIt
       item = &it;
       break;
     }
-  const double end = rec.time_s.back();
-  if (!item || !(window_s > 0) || item->start_s < window_s || end - window_s < item->start_s + item->duration_s) return m;
-  const Eigen::Vector2d before = travel(rec, item->start_s - window_s, item->start_s), after = travel(rec, end - window_s, end);
+  if (!item) return m;
+  const double end = rec.time_s.back(), item_end = item->start_s + item->duration_s;
+  if (!(window_s > 0) || item->start_s < window_s || end + 1e-9 < item_end + window_s) return m;
+  const Eigen::Vector2d before = travel(rec, item->start_s - window_s, item->start_s),
+                        after = travel(rec, item_end, item_end + window_s);
   m.found = true;
   const double turned = turnedRad(before, after);
   m.heading_change_deg = turned * 180.0 / M_PI;

@@ -38,7 +38,7 @@ struct TurnMeasures {
 
 // A manoeuvre from a swimming start (how Tu's fish turn): the direction of travel of the centre of
 // mass, averaged over one window (a swim period) just before the first item that is not swim
-// (left, right or glide) and over the last window of the run, where the fish swims straight again.
+// (left, right or glide) and over the window just after it: the turn the item made.
 // A glide item in its place is the control: the heading the swim alone would have changed.
 struct TravelTurn {
   bool found = false;               // a non-swim item with a full window before it and after it

@@ -65,14 +65,11 @@ std::vector<ScheduleItem> parseSchedule(const std::string& text) {
 
 double scheduleDurationS(const std::vector<ScheduleItem>& s) { return s.back().start_s + s.back().duration_s; }
 
-SwimCommand swimFromSpeed(double f, double r_max) {
-  const double a = std::sqrt(std::clamp(f, 0.0, 1.0));
-  return {a, a * r_max, a, a * r_max};
-}
-
 double swimPeriodS(const MotorParams& p) {
-  // Rest lengths cancel: height alpha (1 - f) l0 (twice that when antagonistic), slope r l0 / dt_ref.
-  const double height = p.swim.amplitude_anterior * (1.0 - p.contracted_fraction) * (p.stroke == Stroke::antagonistic ? 2 : 1);
+  // Rest lengths cancel: height alpha (1 - f) l0 (twice that when antagonistic), slope r l0 / dt_ref
+  // (alpha r l0 / dt_ref when the rate is the full stroke's).
+  const double stroke = p.rate_reading == RateReading::full_stroke ? 1.0 : p.swim.amplitude_anterior;
+  const double height = stroke * (1.0 - p.contracted_fraction) * (p.stroke == Stroke::antagonistic ? 2 : 1);
   return 2.0 * height / p.swim.rate_anterior * p.reference_step_s;
 }
 
@@ -111,36 +108,71 @@ const ScheduleItem& MotorController::itemAt(double t) const {
   return schedule_.back();
 }
 
+// The start of the run of swim and turn items that contains t's item: the swim wave runs on
+// through a turn (the middle segment swims and turns) and across swim items, restarting only after
+// a glide.
+double MotorController::swimClockStart(const ScheduleItem& item) const {
+  double start = 0;
+  for (const auto& it : schedule_) {
+    if (it.start_s >= item.start_s) break;
+    if (it.action == Action::glide) start = it.start_s + it.duration_s;
+  }
+  return start;
+}
+
 std::array<double, kMuscles> MotorController::targetContraction(double t) const {
   std::array<double, kMuscles> c{};
   if (t >= scheduleDurationS(schedule_)) return c;  // after the schedule: relax
   const ScheduleItem& item = itemAt(t);
-  const double local = t - item.start_s, per_s = 1.0 / params_.reference_step_s;
+  const bool turning = item.action == Action::left || item.action == Action::right;
+  const bool swimming = item.action == Action::swim || (turning && params_.swim_during_turn);
+  const double since_swim = t - swimClockStart(item), per_s = 1.0 / params_.reference_step_s;
+  const bool anta = params_.stroke == Stroke::antagonistic;
   for (int k = 0; k < kMuscles; ++k) {
     const Muscle& m = fish_.muscles[k];
     const int side = params_.mirror ? 1 - m.side : m.side;
     const double full = rest_m_[k] * (1.0 - params_.contracted_fraction);
-    if (item.action == Action::swim && m.segment >= 1) {
+    if (swimming && m.segment >= 1) {
       const bool posterior = m.segment == 2;
       const double alpha = posterior ? params_.swim.amplitude_posterior : params_.swim.amplitude_anterior;
       const double r = posterior ? params_.swim.rate_posterior : params_.swim.rate_anterior;
-      const double peak = alpha * full, slope = r * rest_m_[k] * per_s;
+      const double ramp = params_.rate_reading == RateReading::full_stroke ? alpha : 1.0;
+      const double peak = alpha * full, slope = ramp * r * rest_m_[k] * per_s;
       // contract: 0 -> peak -> 0; antagonistic: 0 -> peak -> -peak -> 0 (a triangle of twice the
       // height, entered a quarter period in so that it starts at 0 rising).
-      const bool anta = params_.stroke == Stroke::antagonistic;
       const double height = anta ? 2 * peak : peak, period = 2 * height / slope;
       double delay = posterior ? params_.posterior_lag_rad / (2 * M_PI) * period : 0.0;
       if (side == 1) delay += 0.5 * period;  // right side: exactly out of phase
-      const double since = local - delay;
+      const double since = since_swim - delay;
       c[k] = !anta ? triangle(since, peak, slope) : since <= 0 ? 0.0 : triangle(since + 0.25 * period, height, slope) - peak;
-    } else if ((item.action == Action::left && side == 0) || (item.action == Action::right && side == 1)) {
-      if (m.segment <= 1) {
-        const double peak = params_.turn_amplitude * full, slope = params_.turn_rate * rest_m_[k] * per_s;
-        const double rise = peak / slope, fall = rise / params_.turn_relax_fraction;  // one pulse
-        if (local < rise) c[k] = slope * local;
-        else if (local < rise + fall) c[k] = peak * (1.0 - (local - rise) / fall);
-      }
     }
+    if (m.segment <= 1) c[k] += turnContraction(k, side, t);
+    c[k] = std::clamp(c[k], anta || params_.turn_stroke == Stroke::antagonistic ? -full : 0.0, full);
+  }
+  return c;
+}
+
+// A turn item on this muscle's side: contract at turn_rate up to turn_amplitude, hold while the item
+// lasts, then relax at turn_rate x turn_relax_fraction (also into the next item); on the other side,
+// when the turn stroke is antagonistic, the opposite (a lengthening).
+double MotorController::turnContraction(int k, int side, double t) const {
+  const double full = rest_m_[k] * (1.0 - params_.contracted_fraction);
+  const double ramp = params_.rate_reading == RateReading::full_stroke ? params_.turn_amplitude : 1.0;
+  const double peak = params_.turn_amplitude * full;
+  const double slope = ramp * params_.turn_rate * rest_m_[k] / params_.reference_step_s;
+  double c = 0;
+  for (const auto& it : schedule_) {
+    if (it.start_s > t) break;
+    if (it.action != Action::left && it.action != Action::right) continue;
+    const bool inner = (it.action == Action::left) == (side == 0);
+    if (!inner && params_.turn_stroke != Stroke::antagonistic) {
+      c = 0;
+      continue;
+    }
+    const double end = it.start_s + it.duration_s;
+    const double reached = std::min(peak, slope * (std::min(t, end) - it.start_s));
+    c = t < end ? reached : std::max(0.0, reached - slope * params_.turn_relax_fraction * (t - end));
+    if (!inner) c = -c;  // antagonistic: the outer side lengthens as much as the inner side shortens
   }
   return c;
 }

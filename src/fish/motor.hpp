@@ -9,15 +9,26 @@
 // fixes the direction we take.)
 // Rate r in (0, r_max]: the rest-length change per time step as a fraction of the rest length
 // (r_max = 0.075 [reimpl]), per *reference* step dt_ref = 0.055 s, so that the motion is the same
-// in time whatever step the solver takes (the stability experiment changes it):
-//   dc/dt = r l_rest / dt_ref,
-// rest lengths ramp at that constant rate: a triangle wave of period 2 c_max / (dc/dt).
+// in time whatever step the solver takes (the stability experiment changes it). Two readings
+// (MotorParams::rate_reading):
+//   full_stroke (default): r is the ramp of the full stroke (alpha = 1); a weaker stroke keeps its
+//     period and ramps at alpha r, dc/dt = alpha r l_rest / dt_ref. r then sets the stroke frequency
+//     and alpha its amplitude, as in the public reimplementation (its swim parameters "amplitude" in
+//     [0, 1] and "frequency" in [0, 0.075]) and as the thesis's claim that speed grows with both reads.
+//   rest_length (the spec's literal reading): every stroke ramps at dc/dt = r l_rest / dt_ref, so a
+//     weaker stroke beats faster (its period is alpha times the full stroke's) and the tail's lateral
+//     speed, hence the swimming speed, depends on r alone.
+// Rest lengths ramp at that constant rate: a triangle wave of period 2 c_max / (dc/dt).
 //
 // swim-MC: the middle and posterior muscle segments (spec §1: the two posterior segments swim);
 // left and right exactly out of phase (the right side starts half a period later); the posterior
 // segment lags the anterior one by posterior_lag_rad of its period (ours: pi/2, a travelling wave).
-// turn-MCs: the left (or right) muscles of the anterior and middle segments contract once at
-// turn_rate and relax more slowly (turn_relax_fraction); the fish bends and turns towards that side.
+// turn-MCs: the left (or right) muscles of the anterior and middle segments contract at turn_rate
+// to turn_amplitude, hold while the turn item lasts and then relax more slowly
+// (turn_relax_fraction); the fish bends and turns towards that side. The swim-MC keeps driving the
+// middle and posterior segments during a turn (swim_during_turn; spec §1: the middle segment both
+// swims and turns), its wave running on from the swim before; the middle segment's muscles take the
+// sum of both contractions, clamped to the full one.
 // Between controllers every muscle's contraction moves towards its new target at no more than the
 // fastest rate (r_max), so switching never jerks a rest length.
 #include <array>
@@ -47,9 +58,9 @@ struct SwimCommand {
   double amplitude_posterior = 0.7, rate_posterior = 0.004;
 };
 
-// swim-MC from a desired speed, as a fraction of the top speed (alpha = r / r_max = 1) in (0, 1]:
-// speed grows roughly as amplitude x rate (spec §3), so both scale with its square root (ours).
-SwimCommand swimFromSpeed(double speed_fraction, double r_max);
+
+// What the rate r is a fraction of (see the header comment).
+enum class RateReading { full_stroke, rest_length };
 
 // How a swim segment's rest lengths move (spec §3 fixes neither; see MotorParams::stroke).
 enum class Stroke { contract, antagonistic };
@@ -64,6 +75,7 @@ struct MotorParams {
   //   l0 - alpha (l0 - lc), its partner the opposite way; twice the bend of `contract`, and no
   //   mean shortening of the segment.
   Stroke stroke = Stroke::contract;
+  RateReading rate_reading = RateReading::full_stroke;
   // Swap left and right in every controller (the swim's starting side and the turns): the mirror
   // image of a run, for the left/right symmetry checks from a swimming start.
   bool mirror = false;
@@ -75,6 +87,10 @@ struct MotorParams {
   // bends the body and unbends it along the same path, and the water gives back most of the turn;
   // a slow release lets the bent body glide round (the thesis's turns: a quick bend, a slow return).
   double turn_relax_fraction = 0.25;
+  // contract: only the inner side's muscles shorten; antagonistic (ours, after the [reimpl] pair
+  // above): the outer side's lengthen as much, twice the bend.
+  Stroke turn_stroke = Stroke::antagonistic;
+  bool swim_during_turn = true;  // ours: the tail beats on through a turn, which carries the fish round
   double r_max = 0.075;             // [reimpl]
   double reference_step_s = 0.055;  // the step r is defined per ([reimpl] dt)
 };
@@ -99,6 +115,9 @@ class MotorController {
   const ScheduleItem& itemAt(double t_s) const;
 
  private:
+  double swimClockStart(const ScheduleItem& item) const;
+  double turnContraction(int muscle, int side, double t_s) const;
+
   const FishModel& fish_;
   MotorParams params_;
   std::vector<ScheduleItem> schedule_;

@@ -317,4 +317,14 @@ FoldCheck checkOutward(const SkinMesh& m) {
   return out;
 }
 
+double seamGapM(const SkinMesh& m) {
+  const int around = m.samples_around, along = m.samples_along, half = around * along;
+  double gap = 0;
+  for (int iv = 0; iv < along; ++iv)
+    for (int iu : {0, around - 1}) gap = std::max(gap, (m.positions[iu * along + iv] - m.positions[half + iu * along + iv]).norm());
+  for (int iu = 0; iu < around; ++iu)
+    gap = std::max(gap, (m.positions[iu * along + along - 1] - m.positions[half + iu * along + along - 1]).norm());
+  return gap;
+}
+
 }  // namespace creaturelab::fish

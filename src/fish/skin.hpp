@@ -116,4 +116,8 @@ struct FoldCheck {
 };
 FoldCheck checkOutward(const SkinMesh& mesh);
 
+// The largest distance between the two body halves where they must meet: their first and last rows
+// around (the dorsal and ventral midlines) and their last station (the tail edge). Zero for a closed skin.
+double seamGapM(const SkinMesh& mesh);
+
 }  // namespace creaturelab::fish

@@ -9,6 +9,7 @@
 #include "fish/fish_modes.hpp"
 #include "fish/fish_run.hpp"
 #include "fish/skin.hpp"
+#include "fish/swim_mc.hpp"
 
 namespace creaturelab::kinds {
 namespace {
@@ -29,6 +30,7 @@ FishSetup setupOf(const ParamReader& r) {
   FishSetup s;
   if (r.text("shape") == "reimplementation") s.geometry = fish::reimplementationGeometry();
   s.geometry.body_length_m = r.real("body_length_m");
+  if (r.text("shape") == "ours") s.geometry.tail_half_height = r.real("tail_half_height");
   s.units.mass_unit_kg = r.real("mass_unit_kg");
   s.units.mass_units[6] = r.real("tail_mass_units");
   s.units.stiffness_cross_n_per_m = r.real("stiffness_cross_n_per_m");
@@ -53,14 +55,12 @@ FishSetup setupOf(const ParamReader& r) {
   m.turn_amplitude = r.real("turn_amplitude");
   m.turn_rate = r.real("turn_rate");
   m.turn_relax_fraction = r.real("turn_relax_fraction");
+  m.swim_during_turn = r.boolean("swim_during_turn");
+  m.turn_stroke = r.text("turn_stroke") == "contract" ? fish::Stroke::contract : fish::Stroke::antagonistic;
   m.stroke = r.text("muscle_stroke") == "antagonistic" ? fish::Stroke::antagonistic : fish::Stroke::contract;
+  m.rate_reading = r.text("rate_reading") == "rest_length" ? fish::RateReading::rest_length : fish::RateReading::full_stroke;
   m.mirror = r.boolean("mirror");
-  const double speed = r.real("swim_desired_speed");
-  if (speed > 0) {
-    m.swim = fish::swimFromSpeed(speed, m.r_max);
-  } else {
-    m.swim = {r.real("swim_amplitude"), r.real("swim_rate"), r.real("swim_amplitude"), r.real("swim_rate")};
-  }
+  m.swim = {r.real("swim_amplitude"), r.real("swim_rate"), r.real("swim_amplitude"), r.real("swim_rate")};
   if (auto e = fish::validate(m); !e.empty()) throw std::invalid_argument(e);
   s.skin.degree_around = int(r.integer("skin_degree_around"));
   s.skin.degree_along = int(r.integer("skin_degree_along"));
@@ -115,11 +115,7 @@ void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& mo
     creases += fold.creases;
     inward = std::max(inward, double(fold.inward));
     worst = std::min(worst, fold.worst_neighbour_cosine);
-    const int half = around * along;
-    for (int iv = 0; iv < along; ++iv)
-      for (int iu : {0, around - 1}) gap = std::max(gap, (mesh.positions[iu * along + iv] - mesh.positions[half + iu * along + iv]).norm());
-    for (int iu = 0; iu < around; ++iu)
-      gap = std::max(gap, (mesh.positions[iu * along + along - 1] - mesh.positions[half + iu * along + along - 1]).norm());
+    gap = std::max(gap, fish::seamGapM(mesh));
     if (next < exported.size() && exported[next] == f) {
       ++next;
       net.time_s.push_back(rec.time_s[f]);
@@ -177,53 +173,77 @@ FishKind::FishKind() {
              "node coordinates: ours (fish_model.hpp: fusiform, laterally compressed) | reimplementation (FishData.cs InitNodes, scaled to body_length_m)"),
       real("body_length_m", 2.0, "m", 1e-3, 1e3,
            "snout to tail (ours: with the [reimpl] masses, 107 kg, our shape then has about the density of water)"),
+      real("tail_half_height", 0.12, "", 1e-3, 10,
+           "height of the dorsal and ventral tail-fin tips (nodes 21, 22) above and below the axis, in body lengths (shape = ours)"),
       real("mass_unit_kg", 1.1, "kg", 1e-9, 1e9, "mass unit m of the [reimpl] masses (snout 1, rings 6/10/6/1/1, tail 0.15 m)"),
       real("tail_mass_units", 0.15, "", 1e-9, 1e9,
            "mass of each tail-fin tip (nodes 21, 22) in units of mass_unit_kg ([reimpl] 0.15; the lightest nodes, they carry the body's stiffest vibration)"),
-      real("stiffness_cross_n_per_m", 38.0, "N/m", 1e-9, 1e9, "cross units (spec §1 [reimpl])"),
-      real("stiffness_other_n_per_m", 30.0, "N/m", 1e-9, 1e9, "other passive units (spec §1 [reimpl])"),
-      real("stiffness_muscle_n_per_m", 28.0, "N/m", 1e-9, 1e9, "muscle units (spec §1 [reimpl])"),
+      real("stiffness_cross_n_per_m", 15200.0, "N/m", 1e-9, 1e9,
+           "cross units: 400 x the [reimpl] 38 (spec §1; its ratios kept), so that the body's lowest sideways mode "
+           "sits just above the fastest swim stroke and the body follows every gait (the [reimpl] 38 puts it 15x "
+           "below; studies/fish/units.toml)"),
+      real("stiffness_other_n_per_m", 12000.0, "N/m", 1e-9, 1e9, "other passive units: 400 x the [reimpl] 30 (as the cross units)"),
+      real("stiffness_muscle_n_per_m", 11200.0, "N/m", 1e-9, 1e9, "muscle units: 400 x the [reimpl] 28 (as the cross units)"),
       real("damping_ns_per_m", 0.1, "N*s/m", 0, 1e9, "Voigt damping gamma of every unit (spec §1 [reimpl])"),
       real("contracted_fraction", 0.7, "", 1e-6, 1 - 1e-6,
            "fully contracted length / rest length of a muscle (ours: the thesis value is not in text; 0.7 keeps the "
            "tail from folding at alpha = 1)"),
-      real("water_mu", 100.0, "", 0, 1e9,
-           "water force coefficient mu (linear: N*s/m^3; quadratic: N*s^2/m^4); ours, chosen so the tail-fin tip's "
-           "mu A dt / (4 m) stays under the explicit limit 2; 0 = in air"),
-      choice("water_law", "linear", {"linear", "quadratic"},
-             "f = min(0, -mu A (n.v)) n (linear) or min(0, -mu A |v| (n.v)) n (quadratic, [reimpl]); spec §2"),
+      real("water_mu", 600.0, "", 0, 1e9,
+           "water force coefficient mu (linear: N*s/m^3; quadratic: N*s^2/m^4); ours: the pressure drag of a plate "
+           "broadside to the flow, rho C_D / 2 with rho = 1000 kg/m^3 and C_D = 1.2; 0 = in air"),
+      choice("water_law", "quadratic", {"linear", "quadratic"},
+             "f = min(0, -mu A (n.v)) n (linear) or min(0, -mu A |v| (n.v)) n (quadratic, [reimpl]; ours by default: "
+             "the drag of water at a fish's Reynolds numbers grows as the square of the speed); spec §2"),
       real("current_x_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, x (still water by default)"),
       real("current_y_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, y"),
       real("current_z_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, z"),
-      real("dt_s", 0.055, "s", 1e-9, 100, "time step ([reimpl] 0.055 s, spec §2)"),
+      real("dt_s", 0.002, "s", 1e-9, 100,
+           "time step (ours: the [reimpl] 0.055 s is for its soft units; the calibrated body's stiffest vibration "
+           "allows about 3 ms, 2 / w_max; studies/fish/convergence.toml)"),
       choice("scheme", "semi_implicit", {"semi_implicit", "explicit_euler", "symplectic_euler", "tangent_implicit"},
              "time integrator (spec §2: semi-implicit Euler); the explicit ones and tangent_implicit (full tangent, "
              "not the spec's) for the stability comparison"),
       real("blowup_strain", 2.0, "", 1e-3, 1e3,
            "a unit longer than (1 + this) or shorter than 1/(1 + this) times its undeformed length counts as a blow-up"),
-      real("swim_amplitude", 0.7, "", 0, 1,
+      real("swim_amplitude", 1.0, "", 0, 1,
            "swim-MC amplitude alpha in (0, 1]: the fraction of full contraction reached (spec §3)"),
-      real("swim_rate", 0.004, "", 0, 1,
+      real("swim_rate", 0.0375, "", 0, 1,
            "swim-MC rate r in (0, r_max]: rest-length change per reference step as a fraction of the rest length "
-           "(spec §3)"),
-      real("swim_desired_speed", 0.0, "", 0, 1,
-           "if > 0: desired speed as a fraction of the top one; alpha = r / r_max = sqrt(it) (ours), overriding "
-           "swim_amplitude/rate"),
+           "(spec §3; see rate_reading); the default r_max / 2 cruises"),
+      real("swim_speed_body_lengths_per_s", 0.0, "1/s", 0, 100,
+           "if > 0: the swim-MC sets alpha = s and r = s r_max for this speed from its calibrated speed map "
+           "(swim_mc.hpp), overriding swim_amplitude/rate; a speed outside the map's range fails the point"),
+      real("swim_mc_slowest_knob", 0.5, "", 1e-3, 0.999,
+           "swim-MC calibration: the slowest knob s (ours: below s = 1/2 the fish swims under 0.15 body lengths/s and, "
+           "the drag growing as the square of the speed, takes longer than a 40 s swim to settle)"),
+      integer("swim_mc_levels", 5, 2, 24, "swim-MC calibration: knobs spaced evenly in log s from the slowest to 1"),
+      real("swim_mc_swim_s", 40.0, "s", 1e-3, 1e6, "swim-MC calibration: each level swims this long from rest"),
       real("posterior_lag_rad", M_PI / 2, "rad", -100, 100, "phase lag of the posterior swim segment (spec §3 [choose]: pi/2)"),
-      real("turn_amplitude", 0.7, "", 0, 1, "turn-MC amplitude alpha in (0, 1]"),
-      real("turn_rate", 0.016, "", 0, 1, "turn-MC rate r in (0, r_max] of the contraction"),
+      real("turn_amplitude", 1.0, "", 0, 1, "turn-MC amplitude alpha in (0, 1]"),
+      real("turn_rate", 0.0375, "", 0, 1, "turn-MC rate r in (0, r_max] of the contraction"),
       choice("muscle_stroke", "contract", {"contract", "antagonistic"},
              "swim-MC stroke: contract (rest length to alpha of the way to the contracted one; ours) | antagonistic "
              "([reimpl]: l0 -+ alpha (l0 - lc), the partner opposite)"),
+      choice("rate_reading", "full_stroke", {"full_stroke", "rest_length"},
+             "what a motor controller's rate r is a fraction of (motor.hpp): full_stroke (ours: r l0 per reference step "
+             "is the alpha = 1 stroke's ramp, a weaker stroke keeps the period; r sets the frequency, alpha the "
+             "amplitude, as in the reimplementation) | rest_length (the spec's literal reading: every stroke ramps at "
+             "r l0 per step, a weaker one beats faster)"),
       boolean("mirror", false, "swap left and right in every controller (the mirror image of the run; symmetry checks)"),
       real("turn_relax_fraction", 0.25, "", 0, 1,
            "turn-MC: relaxation rate / contraction rate (ours: a quick bend, a slow return)"),
+      choice("turn_stroke", "antagonistic", {"contract", "antagonistic"},
+             "turn-MC stroke: antagonistic (ours, after the [reimpl] pair: the outer side's muscles lengthen as much "
+             "as the inner side's shorten, twice the bend; a 90-degree turn needs it) | contract (the inner side only)"),
+      boolean("swim_during_turn", true,
+              "the swim-MC keeps driving the middle and posterior segments through a turn item (spec §1: the middle "
+              "segment swims and turns); false: the fish glides bent"),
       real("r_max", 0.075, "", 1e-9, 1, "the largest rate ([reimpl] 0.075)"),
       real("reference_step_s", 0.055, "s", 1e-9, 100, "the step the rates are defined per (the [reimpl] step)"),
       real("warmup_s", 10.0, "s", 0, 1e6, "speed is measured from this time to the end (the gait settles first)"),
       choice("on_blowup", "fail", {"fail", "record"},
              "fail: a blow-up fails the point (exit 3); record: the run stops there and the step is a metric (air experiment)"),
-      integer("frame_every_steps", 1, 1, 1000000, "record a frame every this many steps"),
+      integer("frame_every_steps", 10, 1, 1000000, "record a frame every this many steps (20 ms at the default step)"),
       boolean("skin", false,
               "NURBS skin (seed; spec §4): check it on every frame, store it on export_frames frames, write .glb/.obj/.pov artifacts"),
       integer("skin_degree_around", 3, 1, 15, "NURBS degree around the body (9 control points; spec §4 [choose]: cubic)"),
@@ -260,9 +280,13 @@ FishKind::FishKind() {
       {"turn_radius_m", "m", "turn_path_m / |heading change|"},
       {"turn_radius_body_lengths", "", "turn_radius_m / body length"},
       {"travel_heading_change_deg", "deg",
-       "from a swimming start: change of the centre of mass's direction of travel, one swim period before the first non-swim item against the run's last swim period (left > 0)"},
+       "from a swimming start: change of the centre of mass's direction of travel, one swim period before the first non-swim item against the swim period right after it (left > 0)"},
       {"travel_turn_path_m", "m", "centre-of-mass path over that item"},
       {"travel_turn_radius_body_lengths", "", "travel_turn_path_m / |travel_heading_change| / body length"},
+      {"swim_mc_knob", "", "swim-MC: the knob s (alpha = s, r = s r_max) chosen for swim_speed_body_lengths_per_s (NaN if not asked)"},
+      {"swim_mc_speed_ratio", "", "swim-MC: the measured speed over swim_speed_body_lengths_per_s (NaN if not asked)"},
+      {"swim_mc_slowest_body_lengths_per_s", "1/s", "swim-MC: the slowest calibrated speed (the lower end of its claimed range)"},
+      {"swim_mc_fastest_body_lengths_per_s", "1/s", "swim-MC: the fastest calibrated speed (s = 1)"},
       {"swim_period_s", "s", "the swim-MC's period (from alpha, r, the stroke and the reference step)"},
       {"lowest_lateral_mode_hz", "Hz", "the undeformed body's lowest sideways bending mode in air (fish_modes.hpp)"},
       {"stroke_frequency_over_mode", "", "1 / swim_period_s over lowest_lateral_mode_hz: above about 1 the body's inertia filters the gait"},
@@ -322,10 +346,26 @@ CostEstimate FishKind::estimateCost(const Params& p) const {
 
 Result FishKind::run(const Params& p) const {
   ParamReader r(p);
-  const FishSetup s = setupOf(r);
+  FishSetup s = setupOf(r);
   const fish::FishModel model = fish::buildFish(s.geometry, s.units);
   const double L = model.body_length_m, nan = std::nan("");
   Result result;
+  result.metrics["swim_mc_knob"] = {nan, ""};
+  result.metrics["swim_mc_speed_ratio"] = {nan, ""};
+  result.metrics["swim_mc_slowest_body_lengths_per_s"] = {nan, "1/s"};
+  result.metrics["swim_mc_fastest_body_lengths_per_s"] = {nan, "1/s"};
+  if (const double want = r.real("swim_speed_body_lengths_per_s"); want > 0) {  // the swim-MC's speed map
+    const fish::SpeedMap map = fish::calibrateSwimMC(model, s.solver, s.motor, r.real("swim_mc_swim_s"),
+                                                     r.real("warmup_s"), r.real("swim_mc_slowest_knob"),
+                                                     int(r.integer("swim_mc_levels")));
+    std::string error;
+    const double knob = fish::knobForSpeed(map, want, error);
+    result.metrics["swim_mc_slowest_body_lengths_per_s"] = {map.speed_body_lengths_per_s.front(), "1/s"};
+    result.metrics["swim_mc_fastest_body_lengths_per_s"] = {map.speed_body_lengths_per_s.back(), "1/s"};
+    if (!error.empty()) throw RunFailure("swim_speed_body_lengths_per_s: " + error, result);
+    result.metrics["swim_mc_knob"] = {knob, ""};
+    s.motor.swim = fish::swimCommandForKnob(knob, s.motor.r_max);
+  }
   result.metrics["fish_length_m"] = {L, "m"};
   result.metrics["mass_kg"] = {model.totalMassKg(), "kg"};
   const fish::RestModes modes = fish::restModes(model);
@@ -394,6 +434,8 @@ Result FishKind::run(const Params& p) const {
   result.metrics["steps"] = {double(rec.steps), ""};
   result.metrics["speed_body_lengths_per_s"] = {sw.speed_body_lengths_per_s, "1/s"};
   result.metrics["speed_m_per_s"] = {sw.speed_m_per_s, "m/s"};
+  if (const double want = r.real("swim_speed_body_lengths_per_s"); want > 0)
+    result.metrics["swim_mc_speed_ratio"] = {sw.speed_body_lengths_per_s / want, ""};
   result.metrics["forward_distance_m"] = {sw.forward_distance_m, "m"};
   result.metrics["lateral_drift_m"] = {sw.lateral_drift_m, "m"};
   result.metrics["lateral_drift_fraction"] = {sw.lateral_drift_fraction, ""};

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fish/motor.hpp"
+#include "fish/swim_mc.hpp"
 
 namespace creaturelab::fish {
 namespace {
@@ -56,7 +57,8 @@ TEST(Motor, SwimWaveOutOfPhaseAndLagged) {
     if (m.segment == 2 && m.side == 0 && left_post < 0) left_post = k;
   }
   const double l = fish.network.rest_length_m[fish.muscles[left_mid].unit];
-  const double peak = 0.5 * (1 - p.contracted_fraction) * l, slope = 0.01 * l / 0.055;
+  // full_stroke reading: the alpha = 0.5 stroke ramps at alpha r l0 per reference step
+  const double peak = 0.5 * (1 - p.contracted_fraction) * l, slope = 0.5 * 0.01 * l / 0.055;
   const double half = peak / slope;
   auto c = mc.targetContraction(half);
   EXPECT_NEAR(c[left_mid], peak, 1e-12);
@@ -75,21 +77,45 @@ TEST(Motor, SwimWaveOutOfPhaseAndLagged) {
     }
 }
 
-// A turn contracts the left anterior and middle muscles only; rest lengths never jump by more than
-// r_max per reference step, also when the controller switches.
+// The two readings of the rate: the full stroke's keeps the period whatever alpha, the rest length's
+// shortens it in proportion to alpha.
+TEST(Motor, RateReadings) {
+  MotorParams p;
+  p.swim = {0.5, 0.01, 0.5, 0.01};
+  const double full = swimPeriodS(p);
+  EXPECT_NEAR(full, 2 * (1 - p.contracted_fraction) / 0.01 * p.reference_step_s, 1e-12);
+  p.rate_reading = RateReading::rest_length;
+  EXPECT_NEAR(swimPeriodS(p), 0.5 * full, 1e-12);
+}
+
+// A turn contracts the left anterior and middle muscles and, antagonistic, lengthens the right ones
+// as much (contract: leaves them); the posterior segment swims on through it unless
+// swim_during_turn is off; rest lengths never jump by more than r_max per reference step, also when
+// the controller switches.
 TEST(Motor, TurnLeftAndRateLimit) {
   const FishModel fish = buildFish({}, {});
   MotorParams p;
-  MotorController mc(fish, p, parseSchedule("swim 4; left 4; swim 4"));
-  const auto c = mc.targetContraction(4.5);
+  p.swim_during_turn = false;
+  const auto c = MotorController(fish, p, parseSchedule("swim 4; left 4; swim 4")).targetContraction(4.5);
   for (int k = 0; k < kMuscles; ++k) {
     const auto& m = fish.muscles[k];
-    if (m.side == 0 && m.segment <= 1) {
-      EXPECT_GT(c[k], 0.0);
+    if (m.segment <= 1) {
+      EXPECT_GT(m.side == 0 ? c[k] : -c[k], 0.0);
+      EXPECT_NEAR(c[k], -c[k ^ 3], 1e-15);  // muscle k ^ 3 is k's mirror image (fish_model.cpp)
     } else {
       EXPECT_EQ(c[k], 0.0);
     }
   }
+  p.turn_stroke = Stroke::contract;
+  const auto only_left = MotorController(fish, p, parseSchedule("swim 4; left 4; swim 4")).targetContraction(4.5);
+  for (int k = 0; k < kMuscles; ++k) EXPECT_EQ(only_left[k] > 0, fish.muscles[k].side == 0 && fish.muscles[k].segment <= 1);
+  p.swim_during_turn = true;
+  p.turn_stroke = Stroke::antagonistic;
+  MotorController mc(fish, p, parseSchedule("swim 4; left 4; swim 4"));
+  bool tail_beats = false;
+  for (double t = 4.0; t < 8.0; t += 0.1)
+    for (int k = 0; k < kMuscles; ++k) tail_beats = tail_beats || (fish.muscles[k].segment == 2 && mc.targetContraction(t)[k] > 0);
+  EXPECT_TRUE(tail_beats);
   std::array<double, kUnits> rest{};
   for (int e = 0; e < kUnits; ++e) rest[e] = fish.network.rest_length_m[e];
   const double dt = 0.02;
@@ -100,18 +126,34 @@ TEST(Motor, TurnLeftAndRateLimit) {
       const double l0 = fish.network.rest_length_m[m.unit];
       EXPECT_LE(std::fabs(rest[m.unit] - prev[m.unit]), p.r_max * l0 / p.reference_step_s * dt * (1 + 1e-12));
       EXPECT_GE(rest[m.unit], p.contracted_fraction * l0 - 1e-15);
+      EXPECT_LE(rest[m.unit], (2 - p.contracted_fraction) * l0 + 1e-15);
     }
     prev = rest;
   }
 }
 
-TEST(Motor, DesiredSpeedScalesAmplitudeAndRate) {
-  const SwimCommand half = swimFromSpeed(0.25, 0.075), full = swimFromSpeed(1.0, 0.075);
+TEST(Motor, SwimKnobScalesAmplitudeAndRate) {
+  const SwimCommand half = swimCommandForKnob(0.5, 0.075), full = swimCommandForKnob(1.0, 0.075);
   EXPECT_DOUBLE_EQ(half.amplitude_anterior, 0.5);
+  EXPECT_DOUBLE_EQ(half.rate_posterior, 0.0375);
   EXPECT_DOUBLE_EQ(full.rate_posterior, 0.075);
-  EXPECT_NEAR(half.amplitude_anterior * half.rate_anterior / (full.amplitude_anterior * full.rate_anterior), 0.25, 1e-15);
 }
 
+// The speed map interpolates log s linearly in log speed, hits its levels exactly, and refuses a
+// speed outside its range or a map that does not rise.
+TEST(Motor, SwimSpeedMapInverts) {
+  SpeedMap map{{0.25, 0.5, 1.0}, {0.01, 0.04, 0.16}};
+  std::string error;
+  EXPECT_NEAR(knobForSpeed(map, 0.04, error), 0.5, 1e-12);
+  EXPECT_NEAR(knobForSpeed(map, 0.02, error), std::sqrt(0.125), 1e-12);  // speed ~ s^2 here
+  EXPECT_TRUE(error.empty());
+  EXPECT_TRUE(std::isnan(knobForSpeed(map, 0.2, error)));
+  EXPECT_NE(error.find("outside"), std::string::npos);
+  error.clear();
+  map.speed_body_lengths_per_s = {0.01, 0.04, 0.03};
+  EXPECT_TRUE(std::isnan(knobForSpeed(map, 0.02, error)));
+  EXPECT_NE(error.find("does not rise"), std::string::npos);
+}
 
 // The [reimpl] antagonistic stroke: each swim muscle swings l0 +- alpha (l0 - lc), its partner the
 // opposite way (their contractions sum to zero once both run), from 0 at the start; the period is

@@ -128,6 +128,24 @@ TEST(FishSkin, ClosedAndOutwardOverASwim) {
   EXPECT_EQ(mesh.body_triangles, 2 * 2 * 31 * 63);
 }
 
+// The skin checks can fail: the rest skin with one half turned inside out (its triangles' winding
+// reversed) has inward triangles, and with one half moved 1 mm sideways its seam opens by 1 mm.
+TEST(FishSkin, OutwardAndSeamChecksSeeABrokenSkin) {
+  const FishModel fish = buildFish({}, {});
+  FishSkin skin(fish, {});
+  SkinMesh mesh;
+  skin.mesh(16, 32, mesh);
+  ASSERT_EQ(checkOutward(mesh).inward, 0);
+  ASSERT_EQ(seamGapM(mesh), 0.0);
+  SkinMesh inside_out = mesh;
+  for (int k = 0; k < inside_out.body_triangles / 2; ++k) std::swap(inside_out.triangles[k][1], inside_out.triangles[k][2]);
+  EXPECT_GT(checkOutward(inside_out).inward, inside_out.body_triangles / 4);
+  SkinMesh opened = mesh;
+  const size_t half = size_t(mesh.samples_around) * mesh.samples_along;
+  for (size_t v = half; v < 2 * half; ++v) opened.positions[v].y() -= 1e-3;
+  EXPECT_NEAR(seamGapM(opened), 1e-3, 1e-12);
+}
+
 // A surface point from the grid evaluator equals the direct evaluation.
 TEST(FishSkin, GridEqualsPointwise) {
   const FishModel fish = buildFish({}, {});

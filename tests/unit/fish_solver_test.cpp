@@ -160,7 +160,9 @@ TEST(FishSolver, MomentumConservedInAir) {
   EXPECT_GT((s.x_m - f.rest_positions_m).rowwise().norm().maxCoeff(), 0.01);
 }
 
-// The body is mirror-symmetric (y -> -y): a left turn and a right turn from rest are mirror images.
+// The body is mirror-symmetric (y -> -y): a left turn from rest and its mirror image (the mirror
+// switch swaps left and right in every controller, the swim that runs through the turn too) are
+// mirror images.
 TEST(FishSolver, LeftAndRightTurnsMirror) {
   const FishModel f = defaultFish();
   // node k's mirror image: ring node (0 UL, 1 LL, 2 LR, 3 UR) -> (3, 2, 1, 0)
@@ -171,8 +173,10 @@ TEST(FishSolver, LeftAndRightTurnsMirror) {
   };
   SolverParams p;
   p.dt_s = 0.02;
+  MotorParams mirrored;
+  mirrored.mirror = true;
   const FishRecord left = runSchedule(f, p, {}, parseSchedule("left 6"), {});
-  const FishRecord right = runSchedule(f, p, {}, parseSchedule("right 6"), {});
+  const FishRecord right = runSchedule(f, p, mirrored, parseSchedule("left 6"), {});
   ASSERT_FALSE(left.blew_up);
   ASSERT_EQ(left.frames(), right.frames());
   const int last = left.frames() - 1;
