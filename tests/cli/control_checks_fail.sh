@@ -92,7 +92,7 @@ also ball_no_control "(c) the sustained effort is near zero: median torque below
 # back and the back loaded; without arm-leg contacts the arms never meet the legs.
 broken human_no_control experiments/control/human_gravity.toml \
   "(a) the upper body's centre of mass ends above the lower back: offset below 2 cm (of 18 cm)" \
-  params.strength_rad_per_s=0.0 params.frames=150
+  params.strength_rad_per_s=0.0 params.search_every_frames=100000 params.frames=150
 also human_no_control "(a) the back's effort is near its minimum: median torque below 5% of the upper body held horizontal"
 also human_no_control "(b) the back's effort stays near its minimum: median torque below 5% of the upper body held horizontal"
 also human_no_control "(b) the right arm comes down: less than 0.8 of its raise in (a)"
@@ -104,6 +104,9 @@ also human_no_control "(c) ... and the back's effort stays near its minimum (med
 broken human_no_pd experiments/control/human_gravity.toml \
   "(c) the PD-driven elbows follow their swing loosely (within 0.05 rad; kp 200 N m/rad)" \
   params.pd_kp_n_m_per_rad=0.0 params.pd_kd_n_m_s_per_rad=0.0 params.frames=60
+# With the forearms loose the servo misses its goals by 5.8e-4 rad before the projection (its Newton step is
+# exact only without contacts): the check resolves a servo that does not reach them.
+also human_no_pd "(c) ... reached by the servo's torques under gravity and contact (miss before the projection below 1e-5 rad)"
 sed 's/conaffinity="2"/conaffinity="0"/' experiments/control/models/humanoid_upper.xml >"$scratch/no_contacts.xml"
 broken human_no_contacts experiments/control/human_gravity.toml "the arms meet the legs: contacts are on and used" \
   "params.model_file=\"$scratch/no_contacts.xml\"" params.frames=60
@@ -160,7 +163,7 @@ broken human_no_shoulder_ranges "$scratch/human_wind_a.toml" \
 # the back (median torque 0.42 of the upper body held horizontal at 10 m/s), 27 degrees off the load's line.
 broken human_wind_no_control "$scratch/human_wind_a.toml" \
   "(a) the back's effort is near zero: median torque below 5% of the upper body held horizontal" \
-  params.strength_rad_per_s=0.0 'sweep.wind_x_m_per_s=[10.0, 30.0]'
+  params.strength_rad_per_s=0.0 params.search_every_frames=100000 'sweep.wind_x_m_per_s=[10.0, 30.0]'
 also human_wind_no_control \
   "(a) the lean follows the combined force of gravity and wind (within 10 degrees: centre of pressure against mass)"
 
