@@ -74,23 +74,32 @@ BellModel buildBell(const BellParams& p) {
   model.muscle_model = p.muscle_model;
   model.aperture_width_m = model.rest_positions_m.back().x - model.rest_positions_m.front().x;
 
-  // Tentacles: straight down from each aperture point, segments as long as the bell's.
+  // Tentacles: straight down from their roots, segments as long as the bell's; the left chains, then
+  // their mirror images, so that marker k of the left half and k of the right are mirror pairs.
   const int tentacle_segments = p.tentacles ? std::max(1, int(std::lround(p.tentacle_length_m / segment_m))) : 0;
+  const int per_side = p.tentacles ? p.tentacles_per_side : 0;
+  const int root_step = std::max(1, int(std::lround(p.tentacle_root_spacing_m / segment_m)));
+  if (per_side > 1 && (per_side - 1) * root_step >= model.apex)
+    throw std::invalid_argument("the tentacles' roots (" + std::to_string(per_side) + " per side, " +
+                                std::to_string(p.tentacle_root_spacing_m) + " m apart) do not fit on the half bell");
   std::vector<std::vector<int>> tentacle_chains;
-  for (int side = 0; side < 2 && p.tentacles; ++side) {
-    const int root = side == 0 ? 0 : p.segments;
-    std::vector<int> chain{root};
-    // Joint at the root: the bend continues the bell's tangent into the tentacle, so the
-    // previous bell marker is the chain's first point.
-    for (int m = 1; m <= tentacle_segments; ++m) {
-      const fluid::Vec2 top = model.rest_positions_m[root];
-      model.rest_positions_m.push_back({top.x, top.y - p.tentacle_length_m * m / tentacle_segments});
-      const int index = static_cast<int>(model.rest_positions_m.size()) - 1;
-      model.tentacle_markers.push_back(index);
-      chain.push_back(index);
+  std::vector<int> chain_side;
+  for (int side = 0; side < 2; ++side)
+    for (int t = 0; t < per_side; ++t) {
+      const int root = side == 0 ? t * root_step : p.segments - t * root_step;
+      chain_side.push_back(side);
+      std::vector<int> chain{root};
+      for (int m = 1; m <= tentacle_segments; ++m) {
+        const fluid::Vec2 top = model.rest_positions_m[root];
+        model.rest_positions_m.push_back({top.x, top.y - p.tentacle_length_m * m / tentacle_segments});
+        const int index = static_cast<int>(model.rest_positions_m.size()) - 1;
+        model.tentacle_markers.push_back(index);
+        chain.push_back(index);
+      }
+      tentacle_chains.push_back(chain);
     }
-    tentacle_chains.push_back(chain);
-  }
+  model.tentacle_chains = tentacle_chains;
+  model.tentacle_porosity_m_per_pa_s = p.tentacle_porosity_m_per_pa_s;
 
   auto& net = model.network;
   for (std::size_t i = 0; i < model.rest_positions_m.size(); ++i) net.addParticle(1.0, false);
@@ -98,13 +107,14 @@ BellModel buildBell(const BellParams& p) {
   for (int i = 0; i < model.bell_markers; ++i) bell[i] = i;
   addChain(net, model.rest_positions_m, bell, p.bell_modulus_pa, p.thickness_m, p.bending_rigidity_n_m);
   const double factor = p.tentacle_area_factor;
-  for (std::size_t side = 0; side < tentacle_chains.size(); ++side) {
-    addChain(net, model.rest_positions_m, tentacle_chains[side], p.bell_modulus_pa, p.thickness_m * factor,
+  for (std::size_t c = 0; c < tentacle_chains.size(); ++c) {
+    addChain(net, model.rest_positions_m, tentacle_chains[c], p.bell_modulus_pa, p.thickness_m * factor,
              p.bending_rigidity_n_m * factor);
-    // The joint where the tentacle leaves the bell.
-    const int root = tentacle_chains[side][0];
-    const int inner = side == 0 ? 1 : p.segments - 1;
-    const int first = tentacle_chains[side][1];
+    const int root = tentacle_chains[c][0];
+    // Joint at the root: the bend continues the bell's tangent into the tentacle, with the bell
+    // marker bec the root on the apex's c as its first point.
+    const int inner = chain_side[c] == 0 ? root + 1 : root - 1;
+    const int first = tentacle_chains[c][1];
     const auto& x = model.rest_positions_m;
     const double joint_m = 0.5 * (std::hypot(x[root].x - x[inner].x, x[root].y - x[inner].y) +
                                   std::hypot(x[first].x - x[root].x, x[first].y - x[root].y));

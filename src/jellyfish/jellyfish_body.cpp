@@ -107,9 +107,26 @@ void JellyfishBody::forces(double t_s, std::span<const fluid::Vec2> x_m, std::sp
   }
 }
 
+void JellyfishBody::porousSlips(std::span<const fluid::Vec2> x, std::vector<ib::PorousSlip>& out) const {
+  out.clear();
+  const double alpha = model_.tentacle_porosity_m_per_pa_s;
+  if (!(alpha > 0)) return;
+  for (const std::vector<int>& chain : model_.tentacle_chains)
+    for (std::size_t m = 1; m < chain.size(); ++m) {
+      const fluid::Vec2 here = x[chain[m]], before = x[chain[m - 1]];
+      const bool tip = m + 1 == chain.size();
+      const fluid::Vec2 after = tip ? here : x[chain[m + 1]];
+      // Tangent by the central difference (one-sided at the tip); ds = half of the two segments.
+      const double tx = after.x - before.x, ty = after.y - before.y, t = std::hypot(tx, ty);
+      const double ds = 0.5 * (std::hypot(here.x - before.x, here.y - before.y) + std::hypot(after.x - here.x, after.y - here.y));
+      if (!(t > 0 && ds > 0)) continue;  // a collapsed joint has no normal: impermeable this step
+      out.push_back({chain[m], -ty / t, tx / t, alpha / ds});
+    }
+}
+
 std::vector<int> JellyfishBody::solveOrder() const {
   std::vector<int> order;
-  const auto& tentacle = model_.tentacle_markers;  // the left chain root → tip, then the right one
+  const auto& tentacle = model_.tentacle_markers;  // the left chains root → tip, then the right ones
   const int per_side = static_cast<int>(tentacle.size()) / 2;
   for (int m = per_side - 1; m >= 0; --m) {
     order.push_back(tentacle[m]);

@@ -21,6 +21,9 @@ class JellyfishBody : public ib::ElasticBody {
   /// Tentacle tips to roots, then the bell from the aperture to the apex, each left/right pair side by
   /// side: a muscle joins a pair, and markers near each other in space are near in this order.
   std::vector<int> solveOrder() const override;
+  /// The tentacle chains' markers (not their roots) are porous when the model's porosity is > 0:
+  /// normal from the chain's neighbours, ds the marker's share of the chain's present arc.
+  void porousSlips(std::span<const fluid::Vec2> x_m, std::vector<ib::PorousSlip>& out) const override;
 
   /// Activation of muscle `m` at time t, in [0, 1] (0 relaxed). Hermite shape: the §3.3 curve
   /// mapped so that its lowest knot is 1; pulse shape: sin²(π t / duration) at the cycle's start.

@@ -36,6 +36,11 @@ std::string validate(const BellParams& p) {
     e.add("muscle band fraction must be in (0, 1): the band cannot reach the apex, where a muscle element would join a marker to itself");
   if (p.tentacles && !positive(p.tentacle_length_m)) e.add("tentacle length must be > 0");
   if (!positive(p.tentacle_area_factor)) e.add("tentacle area factor must be > 0");
+  if (p.tentacles && p.tentacles_per_side < 1) e.add("tentacles per side must be at least 1");
+  if (p.tentacles && p.tentacles_per_side > 1 && !positive(p.tentacle_root_spacing_m))
+    e.add("tentacle root spacing must be > 0");
+  if (!(p.tentacle_porosity_m_per_pa_s >= 0) || !std::isfinite(p.tentacle_porosity_m_per_pa_s))
+    e.add("tentacle porosity must be >= 0");
   return e.str();
 }
 

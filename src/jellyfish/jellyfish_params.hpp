@@ -84,12 +84,19 @@ struct BellParams {
   double muscle_tension_n_per_m2 = 1.0;
 
   // --- tentacles (§3.2: "the same elastic modulus, but with a volume 1/100th") ----------------
-  // One passive tentacle hangs from each aperture point. Length and count are not given:
+  // Passive tentacles hang from the aperture point (§3.2) and, with more than one per side, from bell
+  // markers every tentacle_root_spacing_m of arc toward the apex. Length and count are not given:
   // 20 mm (half a diameter) in segments as long as the bell's. Stretching and bending rigidity
   // are the bell's times the area factor.
   double tentacle_length_m = 0.020;
   double tentacle_area_factor = 0.01;  // Fig. 12 "Tentacle Cross-sectional Area Factor 1/100"
   bool tentacles = true;
+  int tentacles_per_side = 1;              // chains per side of the slice
+  double tentacle_root_spacing_m = 0.004;  // arc between neighbouring roots (more than one per side)
+  // Darcy coefficient α of a tentacle chain, m/(Pa s): the fluid passes through it at α times the
+  // normal load per length (ib::PorousSlip). A slice's chain stands for a ring of sparse filaments,
+  // not a sheet; 0 is impermeable.
+  double tentacle_porosity_m_per_pa_s = 0.0;
 };
 
 struct ActivationParams {

@@ -14,6 +14,16 @@ std::vector<fluid::Vec2> placed(const BellModel& model, const SwimmerConfig& c) 
   return out;
 }
 
+// The coupling's parameters with the tentacles' own kernel stretch, if they have one.
+ib::CouplingParams couplingFor(const BellModel& model, const SwimmerConfig& c) {
+  ib::CouplingParams out = c.coupling;
+  if (c.tentacle_kernel_scale > 0 && c.tentacle_kernel_scale != c.coupling.kernel_scale && !model.tentacle_markers.empty()) {
+    out.marker_kernel_scales.assign(model.rest_positions_m.size(), c.coupling.kernel_scale);
+    for (const int m : model.tentacle_markers) out.marker_kernel_scales[m] = c.tentacle_kernel_scale;
+  }
+  return out;
+}
+
 }  // namespace
 
 Swimmer::Swimmer(const SwimmerConfig& config) : config_(config) {
@@ -21,7 +31,9 @@ Swimmer::Swimmer(const SwimmerConfig& config) : config_(config) {
   if (!(config.dt_s > 0) || !std::isfinite(config.dt_s)) throw std::invalid_argument("time step must be > 0");
   fluid_ = std::make_unique<fluid::FluidSolver2>(config.fluid);
   body_ = std::make_unique<JellyfishBody>(buildBell(config.bell), config.activation);
-  coupling_ = std::make_unique<ib::ImmersedBoundary2>(*fluid_, *body_, placed(body_->model(), config), config.coupling);
+  if (config.tentacle_kernel_scale < 0) throw std::invalid_argument("the tentacles' kernel stretch must be >= 0");
+  coupling_ = std::make_unique<ib::ImmersedBoundary2>(*fluid_, *body_, placed(body_->model(), config),
+                                                      couplingFor(body_->model(), config));
   initial_elastic_j_per_m_ = elastic_energy_j_per_m();
 }
 

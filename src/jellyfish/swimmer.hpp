@@ -16,6 +16,9 @@ struct SwimmerConfig {
   ActivationParams activation;
   fluid::FluidParams fluid;   // domain, grid, water, walls, advection
   ib::CouplingParams coupling;
+  // The tentacle markers' own kernel stretch (ib::CouplingParams::marker_kernel_scales): filaments spread
+  // narrower than the bell. 0: the bell's (coupling.kernel_scale).
+  int tentacle_kernel_scale = 0;
   double dt_s = 0.005;        // coupled step (see ib/coupling.hpp on stability)
   // Where the middle of the aperture starts, as fractions of the domain (apex toward +y).
   double start_x_fraction = 0.5;

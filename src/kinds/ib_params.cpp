@@ -60,8 +60,10 @@ fluid::FluidParams squareFluidParams(const ParamReader& r, double dt_s) {
 
 fluid::FluidParams fluidBoxParams(const ParamReader& r) { return squareFluidParams(r, r.real("dt_s")); }
 
-KernelScale kernelScale(const ParamReader& r) {
-  const double radius_m = r.real("kernel_radius_m");
+KernelScale kernelScale(const ParamReader& r) { return kernelScale(r, "kernel_radius_m"); }
+
+KernelScale kernelScale(const ParamReader& r, const std::string& radius_param) {
+  const double radius_m = r.real(radius_param);
   if (radius_m == 0) return {};
   const ib::Kernel kernel = *ib::parse_kernel(r.text("kernel"));
   const int reach_cells = ib::kernel_support_cells(kernel) / 2;
@@ -75,10 +77,11 @@ KernelScale kernelScale(const ParamReader& r) {
   if (whole > largest || std::abs(scale - double(whole)) > 1e-6 * scale) {
     char msg[400];
     std::snprintf(msg, sizeof msg,
-                  "kernel_radius_m = %g m must be a whole multiple (at most %d) of the %s kernel's reach of %d "
+                  "%s = %g m must be a whole multiple (at most %d) of the %s kernel's reach of %d "
                   "cell(s) of %g m (domain_m / cells), or at most one reach; it is %.4g reaches: change "
-                  "kernel_radius_m or cells",
-                  radius_m, largest, r.text("kernel").c_str(), reach_cells, dx_m, scale);
+                  "%s or cells",
+                  radius_param.c_str(), radius_m, largest, r.text("kernel").c_str(), reach_cells, dx_m, scale,
+                  radius_param.c_str());
     return {1, msg};
   }
   return {int(whole), ""};

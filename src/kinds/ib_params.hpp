@@ -63,6 +63,8 @@ struct KernelScale {
   std::string error;
 };
 KernelScale kernelScale(const ParamReader& r);
+// The same for another radius parameter (e.g. the jellyfish's tentacle_kernel_radius_m).
+KernelScale kernelScale(const ParamReader& r, const std::string& radius_param);
 
 ib::CouplingParams couplingParams(const ParamReader& r);
 

@@ -79,6 +79,11 @@ jellyfish::SwimmerConfig config(const ParamReader& r) {
   b.tentacles = r.boolean("tentacles");
   b.tentacle_length_m = r.real("tentacle_length_m");
   b.tentacle_area_factor = r.real("tentacle_area_factor");
+  b.tentacles_per_side = int(r.integer("tentacles_per_side"));
+  b.tentacle_root_spacing_m = 2 * r.real("tentacle_kernel_radius_m");
+  // Darcy: α = κ / μ, the permeability length over the dynamic viscosity ρ ν.
+  b.tentacle_porosity_m_per_pa_s =
+      r.real("tentacle_permeability_m") / (r.real("density_kg_per_m3") * r.real("kinematic_viscosity_m2_per_s"));
 
   auto& a = c.activation;
   a.contraction_hz = r.real("contraction_hz");
@@ -96,6 +101,7 @@ jellyfish::SwimmerConfig config(const ParamReader& r) {
   c.fluid.cells_y = int(std::lround(r.real("box_aspect") * c.fluid.cells_x));
   c.fluid.domain_height_m = c.fluid.cells_y * c.fluid.domain_width_m / c.fluid.cells_x;
   c.coupling = couplingParams(r);
+  c.tentacle_kernel_scale = kernelScale(r, "tentacle_kernel_radius_m").scale;
   c.fluid.viscosity_tolerance = r.real("viscosity_tolerance");
   c.fluid.force_stage = *fluid::parse_force_stage(r.text("force_stage"));
   c.dt_s = r.real("dt_s");
@@ -277,6 +283,16 @@ JellyfishKind::JellyfishKind() {
       boolean("tentacles", bell.tentacles, "passive tentacle chains at the aperture (§3.2)"),
       real("tentacle_length_m", bell.tentacle_length_m, "m", 1e-5, 10, "not given; half a diameter"),
       real("tentacle_area_factor", bell.tentacle_area_factor, "", 1e-9, 10, "Fig. 12: 1/100 of the bell's section"),
+      integer("tentacles_per_side", bell.tentacles_per_side, 1, 8,
+              "tentacle chains per side of the slice, from the aperture inward, roots two tentacle kernel radii "
+              "apart; not given (§3.2: one per aperture point)"),
+      real("tentacle_kernel_radius_m", 0.004, "m", 0, 10,
+           "the tentacles' own kernel support radius (at most kernel_radius_m; 0 = the grid's kernel); the "
+           "default is the bell's: 2 mm filaments made porous lose their chain on the 1 mm grid"),
+      real("tentacle_permeability_m", 0.0, "m", 0, 10,
+           "Darcy permeability over thickness of a tentacle chain, slip = permeability / (rho nu) x normal load "
+           "per length (Kim & Peskin's porous boundary); 0 = impermeable; 1.7e-3 estimates a ring of 16 "
+           "filaments 0.5 mm thick in Stokes flow, h ln(h/d) / 4 pi"),
   };
   // --- fluid (§3.2, Fig. 12)
   const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
@@ -409,6 +425,14 @@ std::string JellyfishKind::validate(const Params& p) const {
   if (std::string err = jellyfish::validate(c.activation); !err.empty()) return err;
   if (std::string err = c.fluid.validate(); !err.empty()) return err;
   if (std::string err = kernelScale(r).error; !err.empty()) return err;
+  if (std::string err = kernelScale(r, "tentacle_kernel_radius_m").error; !err.empty()) return err;
+  if (r.real("tentacle_kernel_radius_m") > r.real("kernel_radius_m") && r.real("kernel_radius_m") > 0)
+    return "tentacle_kernel_radius_m must not exceed kernel_radius_m (filaments are narrower than the bell)";
+  try {
+    jellyfish::buildBell(c.bell);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
   if (3 * r.real("bell_diameter_m") > r.real("domain_m"))
     return "the box (domain_m) must be at least three bell diameters wide";
   const double rows = r.real("box_aspect") * double(r.integer("cells"));

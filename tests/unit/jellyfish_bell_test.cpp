@@ -230,6 +230,36 @@ TEST(JellyfishBell, NetworkTopologyAndTentacles) {
   EXPECT_EQ(b.network.bendCount(), p.segments - 1);
 }
 
+// Several tentacles a side: chains from the aperture and from bell markers a root spacing apart toward
+// the apex, the left ones then their mirror images (marker k of the left half mirrors k of the right);
+// each chain a bend where it leaves the bell. Roots that do not fit on the half bell are refused.
+TEST(JellyfishBell, SeveralTentaclesPerSideHangFromSpacedRoots) {
+  BellParams p;
+  p.tentacles_per_side = 3;
+  p.tentacle_root_spacing_m = 4e-3;  // two segments of 1.98 mm
+  const BellModel m = buildBell(p);
+  const auto& x = m.rest_positions_m;
+  ASSERT_EQ(m.tentacle_chains.size(), 6u);
+  const int per_chain = 10;
+  EXPECT_EQ(static_cast<int>(m.tentacle_markers.size()), 6 * per_chain);
+  const int roots[6] = {0, 2, 4, p.segments, p.segments - 2, p.segments - 4};
+  for (int c = 0; c < 6; ++c) {
+    EXPECT_EQ(m.tentacle_chains[c].front(), roots[c]) << "chain " << c;
+    EXPECT_EQ(static_cast<int>(m.tentacle_chains[c].size()), per_chain + 1);
+    EXPECT_EQ(x[m.tentacle_chains[c].back()].x, x[roots[c]].x);
+  }
+  const std::size_t half = m.tentacle_markers.size() / 2;
+  for (std::size_t j = 0; j < half; ++j) {
+    EXPECT_EQ(x[m.tentacle_markers[j]].x, -x[m.tentacle_markers[half + j]].x);
+    EXPECT_EQ(x[m.tentacle_markers[j]].y, x[m.tentacle_markers[half + j]].y);
+  }
+  EXPECT_EQ(m.network.bendCount(), (p.segments - 1) + 6 * (per_chain - 1) + 6);
+  EXPECT_EQ(m.network.validate(), "");
+  p.tentacles_per_side = 5;
+  p.tentacle_root_spacing_m = 8e-3;  // the fifth root 16 segments in: the apex
+  EXPECT_THROW((void)buildBell(p), std::invalid_argument);
+}
+
 // The bell as drawn is its rest shape: every spring at its rest length and every bend at its rest
 // angle, so the network's elastic force and energy vanish there (up to round-off); a small
 // deformation does give a force (the check is not vacuous).

@@ -366,5 +366,29 @@ TEST(JellyfishBody, UnisonPairsMoveTogetherStaggeredPairsDifferOnlyInExpansion) 
   }
 }
 
+// Porous tentacles (ib::PorousSlip): every tentacle marker but the root slips, along the chain's unit
+// normal, with mobility α / ds (ds half of the two segments beside it, half the last at the tip);
+// impermeable chains (α = 0) and the bell have none.
+TEST(JellyfishBody, TentacleMarkersArePorousAlongTheirNormal) {
+  BellParams p;
+  p.tentacle_porosity_m_per_pa_s = 0.02;
+  const BellModel model = buildBell(p);
+  const JellyfishBody body(model, activation());
+  std::vector<ib::PorousSlip> slips;
+  body.porousSlips(model.rest_positions_m, slips);
+  ASSERT_EQ(slips.size(), model.tentacle_markers.size());
+  for (const ib::PorousSlip& s : slips) {
+    EXPECT_GE(s.marker, model.bell_markers);
+    EXPECT_NEAR(std::abs(s.nx), 1.0, 1e-12);  // the chains hang straight down: horizontal normals
+    EXPECT_NEAR(s.ny, 0.0, 1e-12);
+  }
+  const double segment = p.tentacle_length_m / 10;
+  EXPECT_NEAR(slips.front().mobility, 0.02 / segment, 1e-9 * 0.02 / segment);
+  EXPECT_NEAR(slips[9].mobility, 0.02 / (0.5 * segment), 1e-9 * 0.02 / segment) << "the tip";
+  const JellyfishBody solid(buildBell(BellParams{}), activation());
+  solid.porousSlips(model.rest_positions_m, slips);
+  EXPECT_TRUE(slips.empty());
+}
+
 }  // namespace
 }  // namespace creaturelab::jellyfish
