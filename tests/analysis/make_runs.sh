@@ -54,7 +54,8 @@ run flyer_quick ../studies/control/flyer_quick.toml params.cells=32 params.frame
 # 96 cells: coarser grids break the swimmer's coupled stability limit (a marker moves > 1 cell a step).
 run swimmer control/swimmer.toml params.cells=96 params.frames=30 params.warmup_frames=2 params.average_frames=4 \
   params.rise_cycles=1 params.cycle_s=0.4 params.field_every_frames=15
-run swim fish/swim.toml 'params.schedule="swim 4"' params.warmup_s=1 "sweep.swim_rate=[0.004,0.008]" --points 0/3
+run swim fish/swim.toml 'params.schedule="swim 4"' params.warmup_s=1
+run turn fish/turn.toml 'params.schedule="swim 2; left 1; swim 1"'
 run air fish/air.toml 'params.schedule="swim 4"'
 run school fish/school.toml 'params.schedule="swim 2"' params.warmup_s=1 "sweep.school_size=[1,3]"
 run stability fish/stability.toml 'params.schedule="swim 2"' params.stable_iterations=4
