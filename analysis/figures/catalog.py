@@ -165,23 +165,26 @@ FIGURES = [
            "step (ch. 4).",
            "stability", None, None),
     Figure("tu", "ch. 5 (swim)",
-           "The swim motor controller's speed grows with its amplitude and its rate, and the fish swims "
-           "straight (ch. 5).",
-           "swim", None, None),
+           "The swim motor controller's speed grows roughly in proportion to its amplitude and its rate, and "
+           "the fish swims straight (ch. 5).",
+           "swim", "tu_swim", None),
+    Figure("tu", "ch. 5 (swim-MC)",
+           "The swim motor controller turns a desired speed into contraction amplitudes and rates (ch. 5).",
+           "swim_mc", None, None),
     Figure("tu", "ch. 5 (swim rate)",
            "Speed grows with the swim motor controller's rate over its whole range up to r_max (ch. 5).",
            "swim_rate", None, None),
     Figure("tu", "ch. 5 (turn)",
-           "The left and right turn motor controllers turn the swimming fish, more sharply for a stronger "
-           "contraction, mirror images of each other (ch. 5).",
-           "turn", None, None),
+           "The turn motor controllers turn the swimming fish, more for a stronger and a quicker contraction "
+           "(ch. 5): heading over time and the top view of a swim-turn-swim sequence.",
+           "turn", "tu_turn", None),
     Figure("tu", "§5 (school)",
            "Several artificial fish are animated together, each an independent biomechanical model (§5).",
            "school", None, None),
     Figure("tu", "ch. 7 (NURBS skin)",
            "The NURBS display surfaces, bound to the dynamic model's faces by patch-nodes and local frames, "
            "deform with the swimming fish, and texture distortions are very small (ch. 7).",
-           "skin", None, None),
+           "skin", "tu_skin", None),
 ]
 
 
