@@ -9,6 +9,7 @@
 #include <new>
 #include <numeric>
 #include <sstream>
+#include <thread>
 #include <toml++/toml.h>
 
 #include "cli/render_commands.hpp"
@@ -20,6 +21,7 @@
 #include "runner/compare.hpp"
 #include "runner/experiment.hpp"
 #include "runner/progress.hpp"
+#include "runner/run_list.hpp"
 #include "runner/store.hpp"
 #include "runner/verify.hpp"
 
@@ -332,27 +334,26 @@ int Commands::reproduce(const ReproduceArgs& args) const {
     std::fprintf(stderr, "== %zu experiments from %s: about %.0f minutes on 2 cores (the sum of the times it lists)\n",
                  planned.size(), args.list.c_str(), minutes);
   // One line per experiment as it finishes (a status line on a terminal while it runs); the
-  // check tables after every experiment and render.
+  // check tables after every experiment and render. Experiments run side by side on the cores.
   runner::ListProgress progress(listed_s);
+  const int jobs = args.jobs > 0 ? args.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+  for (runner::RunOptions& o : planned) o.point_lines = false;
+  std::vector<std::string> names;
+  for (const runner::RunOptions& o : planned) names.push_back(fs::path(o.out_dir).filename().string());
+  const std::vector<runner::ListEntryResult> results =
+      runner::runList(std::move(planned), jobs, progress, registry_, cluster_);
   std::vector<runner::CheckOutcome> all;
   std::vector<std::string> unevaluated;
   int code = 0;
-  for (runner::RunOptions& o : planned) {
-    const std::string name = fs::path(o.out_dir).filename().string();
-    o.point_lines = false;
-    o.progress_label = progress.label(name);
-    const auto t0 = std::chrono::steady_clock::now();
-    const runner::RunReport r = runner::runExperiment(o, registry_, cluster_);
-    if (!primary()) continue;
-    std::string problems;
-    if (r.failed > 0) problems = std::to_string(r.failed) + " FAILED";
-    if (r.missing > 0) problems += (problems.empty() ? "" : ", ") + std::to_string(r.missing) + " not run";
-    progress.experimentFinished(name, r.total, problems,
-                                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  for (size_t i = 0; i < results.size(); ++i) {
+    const runner::ListEntryResult& result = results[i];
+    if (result.error) std::rethrow_exception(result.error);  // the first in the list's order
+    if (!result.ran || !primary()) continue;
+    const runner::RunReport& r = result.report;
     if (!r.write_error.empty()) std::fprintf(stderr, "error: %s\n", r.write_error.c_str());
-    if (!r.checks_evaluated) unevaluated.push_back(name);
+    if (!r.checks_evaluated) unevaluated.push_back(names[i]);
     for (auto c : r.checks) {
-      c.name = name + ": " + c.name;
+      c.name = names[i] + ": " + c.name;
       all.push_back(c);
     }
     code = std::max(code, r.exitCode());

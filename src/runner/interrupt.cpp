@@ -4,18 +4,25 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <mutex>
 
 namespace creaturelab::runner {
 namespace {
 
 volatile sig_atomic_t g_signal = 0;
 struct sigaction g_old_int, g_old_term;
+// Guards alive (experiments of a list run side by side each hold one): the first installs the
+// handlers, the last restores the old ones.
+std::mutex g_guards_mutex;
+int g_guards = 0;
 
 extern "C" void recordSignal(int signal) { g_signal = signal; }
 
 }  // namespace
 
 InterruptGuard::InterruptGuard() {
+  const std::lock_guard lock(g_guards_mutex);
+  if (g_guards++ > 0) return;
   g_signal = 0;
   struct sigaction sa {};
   sa.sa_handler = recordSignal;
@@ -31,6 +38,8 @@ InterruptGuard::InterruptGuard() {
 }
 
 InterruptGuard::~InterruptGuard() {
+  const std::lock_guard lock(g_guards_mutex);
+  if (--g_guards > 0) return;
   sigaction(SIGINT, &g_old_int, nullptr);
   sigaction(SIGTERM, &g_old_term, nullptr);
 }

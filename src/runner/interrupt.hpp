@@ -5,7 +5,8 @@
 // its default action, so the shell still sees 130 (SIGINT) or 143 (SIGTERM).
 namespace creaturelab::runner {
 
-// Installs the handlers while alive; restores the previous ones on destruction.
+// Installs the handlers while alive; restores the previous ones on destruction. Guards nest (and may
+// live on several threads at once): the outermost installs and restores.
 class InterruptGuard {
  public:
   InterruptGuard();

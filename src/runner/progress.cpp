@@ -61,7 +61,9 @@ std::string roughDuration(double s) {
   return buf;
 }
 
-ListProgress::ListProgress(std::vector<double> listed_s, std::FILE* out) : listed_s_(std::move(listed_s)), out_(out) {}
+ListProgress::ListProgress(std::vector<double> listed_s, std::FILE* out)
+    : listed_s_(std::move(listed_s)), out_(out), tty_(isatty(fileno(out)) != 0),
+      start_(std::chrono::steady_clock::now()) {}
 
 std::string ListProgress::label(const std::string& name) const {
   return "[" + std::to_string(done_ + 1) + "/" + std::to_string(listed_s_.size()) + "] " + name;
@@ -79,24 +81,25 @@ double ListProgress::etaSeconds() const {
   if (etaFromListedTimes()) {
     const double listed_done = std::accumulate(listed_s_.begin(), listed_s_.begin() + done_, 0.0);
     const double listed_left = std::accumulate(listed_s_.begin() + done_, listed_s_.end(), 0.0);
-    const double pace = listed_done >= kPaceAfterListedS ? wall_done_s_ / listed_done : 1.0;
+    const double pace = listed_done >= kPaceAfterListedS ? elapsed_s_ / listed_done : 1.0;
     return listed_left * pace;
   }
   if (done_ == 0) return 0;
-  return wall_done_s_ / done_ * (total - done_);
+  return elapsed_s_ / done_ * (total - done_);
 }
 
 void ListProgress::experimentFinished(const std::string& name, int points, const std::string& problems,
                                       double wall_s) {
   const std::string head = label(name);
   ++done_;
-  wall_done_s_ += wall_s;
+  elapsed_s_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   std::string eta;
   if (done_ < int(listed_s_.size()))
     eta = "ETA of the whole list " + roughDuration(etaSeconds()) +
           (etaFromListedTimes() ? " (from the list's minutes)" : " (from the elapsed fraction)");
   else
-    eta = "the whole list took " + roughDuration(wall_done_s_);
+    eta = "the whole list took " + roughDuration(elapsed_s_);
+  if (tty_) std::fputs("\r\033[K", out_);  // over a running entry's status line
   std::fprintf(out_, "%s: %d point%s%s, wall %s, %s\n", head.c_str(), points, points == 1 ? "" : "s",
                problems.empty() ? "" : (" (" + problems + ")").c_str(), roughDuration(wall_s).c_str(), eta.c_str());
   std::fflush(out_);

@@ -34,16 +34,18 @@ class Progress {
 // "12.3 s" under a minute, "4 min" (rounded) from then on.
 std::string roughDuration(double seconds);
 
-// The line printed as each experiment of a list finishes:
+// The line printed as each experiment of a list finishes (k counts finished entries; entries may
+// run side by side and finish out of order):
 //   [k/N] name: P points, wall 12.3 s, ETA of the whole list 4 min (from the list's minutes)
 // The ETA is the listed time (an entry's `minutes`, measured) of the entries left, scaled by the
-// pace so far (wall / listed time of the entries done, once a minute of listed time is done);
-// when some entry lists no time, the mean wall per entry so far times the entries left.
+// pace so far (time since the list started / listed time of the entries done, once a minute of
+// listed time is done); when some entry lists no time, the time so far per entry done times the
+// entries left.
 class ListProgress {
  public:
   // listed_s: each entry's listed time in seconds, 0 where it lists none.
   explicit ListProgress(std::vector<double> listed_s, std::FILE* out = stderr);
-  // "[k/N] name", k counted from 1, for the entry about to run.
+  // "[k/N] name", k counted from 1, for the entry about to run (alone) or finishing.
   std::string label(const std::string& name) const;
   // Prints the entry's line and moves to the next entry. `problems` ("" or e.g. "2 points FAILED")
   // goes after the point count.
@@ -55,8 +57,10 @@ class ListProgress {
  private:
   std::vector<double> listed_s_;
   std::FILE* out_;
+  bool tty_;
   int done_ = 0;
-  double wall_done_s_ = 0;
+  std::chrono::steady_clock::time_point start_;
+  double elapsed_s_ = 0;  // since the list started, when the last entry finished
 };
 
 }  // namespace creaturelab::runner

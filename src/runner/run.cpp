@@ -325,7 +325,10 @@ RunReport runShare(const ShareContext& c, RunReport report) {
   auto worker = [&] {
     for (size_t i = next++; i < todo.size() && !stop; i = next++) {
       const Point& p = *todo[i];
-      PointOutcome outcome = runPoint(c.kind, p);
+      PointOutcome outcome = [&] {
+        const SlotHold slot(o.core_slots);
+        return runPoint(c.kind, p);
+      }();
       std::lock_guard lock(write_mutex);
       if (stop) break;  // interrupted or a write failed while this point ran: it is not written
       try {

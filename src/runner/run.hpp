@@ -8,6 +8,7 @@
 #include "kinds/kind.hpp"
 #include "runner/checks.hpp"
 #include "runner/cluster.hpp"
+#include "runner/core_slots.hpp"
 
 namespace creaturelab::runner {
 
@@ -25,6 +26,9 @@ struct RunOptions {
   // terminal, after progress_label.
   bool point_lines = true;
   std::string progress_label;
+  // Shared with experiments running beside this one (a list): each point computes while holding a
+  // slot. Null: the run's --jobs workers compute at will.
+  CoreSlots* core_slots = nullptr;
 };
 
 struct RunReport {

@@ -32,10 +32,12 @@ TOML
 "$bin" reproduce --list "$scratch/plain.toml" --out "$scratch/plain" --jobs 2 >"$scratch/plain.out" 2>"$scratch/plain.err" ||
   fail "reproduce exited $?: $(cat "$scratch/plain.err")"
 err=$scratch/plain.err
+# The two run side by side (--jobs 2): their lines come in the order they finish, numbered so.
 [[ $(wc -l <"$err") == 2 ]] || fail "expected two progress lines, got: $(cat "$err")"
-grep -qE '^\[1/2\] osc: 2 points, wall [0-9.]+ s, ETA of the whole list [0-9.]+ s \(from the elapsed fraction\)$' "$err" ||
+grep -qE '^\[1/2\] (osc|second): 2 points, wall [0-9.]+ s, ETA of the whole list [0-9.]+ s \(from the elapsed fraction\)$' "$err" ||
   fail "line 1: $(cat "$err")"
-grep -qE '^\[2/2\] second: 2 points, wall [0-9.]+ s, the whole list took [0-9.]+ s$' "$err" || fail "line 2: $(cat "$err")"
+grep -qE '^\[2/2\] (osc|second): 2 points, wall [0-9.]+ s, the whole list took [0-9.]+ s$' "$err" || fail "line 2: $(cat "$err")"
+[[ $(grep -c ' osc: ' "$err") == 1 && $(grep -c ' second: ' "$err") == 1 ]] || fail "not one line per experiment: $(cat "$err")"
 # The check tables only after every experiment: stdout is a blank line, then the table of both runs.
 [[ $(head -n 2 "$scratch/plain.out" | tail -n 1) == "== checks of every experiment" ]] ||
   fail "stdout does not start with the check tables: $(head -n 3 "$scratch/plain.out")"
@@ -43,9 +45,9 @@ grep -q "osc: rk4 is the most accurate" "$scratch/plain.out" || fail "no check o
 grep -q "second: rk4 is the most accurate" "$scratch/plain.out" || fail "no check of second"
 grep -q "point(s)" "$scratch/plain.out" && fail "a per-experiment report line on stdout: $(cat "$scratch/plain.out")"
 
-# Every entry lists minutes: the ETA from them, at the listed pace until a minute of listed time is
-# done (4 min left after the first entry), then at the pace measured (these runs take well under a
-# second, so far less than the 1 min listed for the last entry).
+# Every entry lists minutes (one at a time, --jobs 1, so in order): the ETA from them, at the listed
+# pace until a minute of listed time is done (4 min left after the first entry), then at the pace
+# measured (these runs take well under a second, so far less than the 1 min listed for the last).
 cat >"$scratch/timed.toml" <<TOML
 experiments = [
   { file = "$scratch/osc.toml", name = "a", minutes = 0.5 },
@@ -53,7 +55,7 @@ experiments = [
   { file = "$scratch/osc.toml", name = "c", minutes = 1 },
 ]
 TOML
-"$bin" reproduce --list "$scratch/timed.toml" --out "$scratch/timed" >"$scratch/timed.out" 2>"$scratch/timed.err" ||
+"$bin" reproduce --list "$scratch/timed.toml" --out "$scratch/timed" --jobs 1 >"$scratch/timed.out" 2>"$scratch/timed.err" ||
   fail "reproduce (timed) exited $?: $(cat "$scratch/timed.err")"
 err=$scratch/timed.err
 grep -qF "== 3 experiments from $scratch/timed.toml: about 4 minutes on 2 cores" "$err" || fail "no total: $(cat "$err")"
