@@ -14,6 +14,7 @@ std::string validate(const SkinParams& p) {
     return "skin_degree_along " + std::to_string(p.degree_along) + " must be in [1, " + std::to_string(kSkinAlong - 1) +
            "]: a NURBS degree needs more control points than itself (" + std::to_string(kSkinAlong) + " along)";
   if (!(p.inflate > 0) || !std::isfinite(p.inflate)) return "skin_inflate must be positive";
+  if (!(std::fabs(p.pectoral_pitch_deg) <= 90)) return "pectoral_pitch_deg must be in [-90, 90]";
   return "";
 }
 
@@ -166,6 +167,7 @@ FishSkin::FishSkin(const FishModel& fish, SkinParams params) : fish_(fish), para
 }
 
 void FishSkin::update(const NodeMatrix& x) {
+  nodes_ = x;
   // Each display step (seed, step 4): frames, patch-nodes, offsets back to world coordinates.
   for (int f = 0; f < kFaces; ++f) frames_[f] = faceFrame(x, fish_.faces[f]);
   size_t c = 0;
@@ -217,6 +219,16 @@ void FishSkin::mesh(int around, int along, SkinMesh& out) {
         }
       }
     if (k == 1) out.body_triangles = int(out.triangles.size());
+  }
+  if (params_.pectoral_fins) {
+    const auto fins = pectoralFins(nodes_);
+    for (int side = 0; side < 2; ++side) {
+      const int base = int(out.positions.size());
+      out.positions.insert(out.positions.end(), fins.begin() + 5 * side, fins.begin() + 5 * side + 5);
+      for (int k = 1; k <= 3; ++k)  // a fan from the root's front vertex; the right fin mirrored
+        out.triangles.push_back(side == 0 ? std::array<int, 3>{base, base + k + 1, base + k}
+                                          : std::array<int, 3>{base, base + k, base + k + 1});
+    }
   }
   // Vertex normals: area-weighted sums of the triangles' normals (the cross product's length is
   // twice the area), normalised.
@@ -325,6 +337,34 @@ double seamGapM(const SkinMesh& m) {
   for (int iu = 0; iu < around; ++iu)
     gap = std::max(gap, (m.positions[iu * along + along - 1] - m.positions[half + iu * along + along - 1]).norm());
   return gap;
+}
+
+std::array<Eigen::Vector3d, 10> FishSkin::pectoralFins(const NodeMatrix& x) const {
+  // The fish frame from the nodes: forward from ring 2's centre to the snout, up from ring 1's lower
+  // nodes to its upper ones (made orthogonal), left = up x forward (the body's +y at rest).
+  auto node = [&](int i) -> Eigen::Vector3d { return x.row(i).transpose(); };
+  const Eigen::Vector3d ring2 = (node(5) + node(6) + node(7) + node(8)) / 4.0;
+  const Eigen::Vector3d forward = (node(0) - ring2).normalized();
+  Eigen::Vector3d up = (node(1) + node(4) - node(2) - node(3)) / 2.0;
+  up = (up - up.dot(forward) * forward).normalized();
+  const Eigen::Vector3d left = up.cross(forward);
+  const double L = fish_.body_length_m, pitch = params_.pectoral_pitch_deg * M_PI / 180.0;
+  // Ours (no shape survives in text): a swept-back, rounded fin in body lengths (forward, out, down
+  // from the root); 5 vertices: root front, root back, then around the tip from back to front.
+  static constexpr double kFin[5][3] = {{0.03, 0.0, 0.0}, {-0.05, 0.0, 0.0}, {-0.13, 0.10, 0.03}, {-0.09, 0.13, 0.04}, {-0.02, 0.09, 0.02}};
+  std::array<Eigen::Vector3d, 10> out;
+  for (int side = 0; side < 2; ++side) {
+    const double s = side == 0 ? 1.0 : -1.0;
+    // Root on the lower flank, halfway between rings 1 and 2 (lower-left nodes 2, 6; lower-right 3, 7).
+    const Eigen::Vector3d root = side == 0 ? (node(2) + node(6)) / 2.0 : (node(3) + node(7)) / 2.0;
+    for (int k = 0; k < 5; ++k) {
+      const double f = kFin[k][0] * L, o = kFin[k][1] * L, d = kFin[k][2] * L;
+      // Pitch about the lateral axis through the root: the forward/down components turn together.
+      const double fp = f * std::cos(pitch) - (-d) * std::sin(pitch), up_p = f * std::sin(pitch) + (-d) * std::cos(pitch);
+      out[5 * side + k] = root + fp * forward + s * o * left + up_p * up;
+    }
+  }
+  return out;
 }
 
 }  // namespace creaturelab::fish

@@ -39,13 +39,20 @@ struct SkinParams {
   int degree_along = 3;
   double inflate = 1.15;  // control-net section / body section
   bool fins = true;
+  // Pectoral fins (spec §4: 5-vertex polygons posed in the fish frame): display geometry only. The
+  // thesis's text we cite gives them no force, so they neither lift nor brake; their pose is set
+  // here, not by a controller. pitch: the fin turned about the fish's lateral axis through its root,
+  // leading edge up > 0 (the pose an ascending fish shows), degrees.
+  bool pectoral_fins = true;
+  double pectoral_pitch_deg = 0.0;
 };
 
 // "" or what is wrong, naming the parameter (a degree not below its control-point count, ...).
 std::string validate(const SkinParams& p);
 
 // A triangle mesh with per-vertex normals. Parts: the body halves first (left, right: each
-// samples_around x samples_along vertices, row-major around), then the fins.
+// samples_around x samples_along vertices, row-major around), then the fins, then the pectoral
+// fins (left, right: 5 vertices and 3 triangles each).
 struct SkinMesh {
   std::vector<Eigen::Vector3d> positions;
   std::vector<Eigen::Vector3d> normals;
@@ -71,6 +78,10 @@ class FishSkin {
   void update(const NodeMatrix& x);
   // Samples the current surfaces into a mesh (update() first).
   void mesh(int samples_around, int samples_along, SkinMesh& out);
+  // The pectoral fins' 5 vertices each (left, then right) at node positions x: posed in the fish
+  // frame (origin at the fin's root on the lower flank between rings 1 and 2; axes forward, left, up
+  // from the nodes), so a rigid motion of the nodes carries them exactly.
+  std::array<Eigen::Vector3d, 10> pectoralFins(const NodeMatrix& x) const;
 
   const std::vector<NurbsSurface>& surfaces() const { return surfaces_; }  // left, right, fins
   const std::vector<SkinBinding>& bindings() const { return bindings_; }   // per control point, surface order
@@ -90,6 +101,7 @@ class FishSkin {
   std::vector<SkinBinding> bindings_;
   std::vector<Eigen::Vector3d> rest_control_;
   std::array<Eigen::Matrix3d, kFaces> frames_;
+  NodeMatrix nodes_;  // the positions of the last update()
   // sampling caches
   int cached_around_ = -1, cached_along_ = -1;
   std::vector<SampledBasis> basis_u_, basis_v_;

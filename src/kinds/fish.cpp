@@ -66,6 +66,8 @@ FishSetup setupOf(const ParamReader& r) {
   s.skin.degree_along = int(r.integer("skin_degree_along"));
   s.skin.inflate = r.real("skin_inflate");
   s.skin.fins = r.boolean("skin_fins");
+  s.skin.pectoral_fins = r.boolean("skin_pectoral_fins");
+  s.skin.pectoral_pitch_deg = r.real("pectoral_pitch_deg");
   if (auto e = fish::validate(s.skin); !e.empty()) throw std::invalid_argument(e);
   if (auto e = fish::validate(s.geometry, s.units); !e.empty()) throw std::invalid_argument(e);
   if (auto e = fish::validate(s.solver); !e.empty()) throw std::invalid_argument(e);
@@ -250,6 +252,10 @@ FishKind::FishKind() {
       integer("skin_degree_along", 3, 1, 15, "NURBS degree along the body (21 control points; cubic)"),
       real("skin_inflate", 1.15, "", 1e-3, 100, "control-net section / body section (ours: the surface lies inside its net)"),
       boolean("skin_fins", true, "dorsal and ventral fin surfaces sharing the midline control points"),
+      boolean("skin_pectoral_fins", true,
+              "pectoral fins (spec §4: 5-vertex polygons posed in the fish frame), display only: no force acts on them"),
+      real("pectoral_pitch_deg", 0.0, "deg", -90, 90,
+           "the pectoral fins' pose: turned about the fish's lateral axis, leading edge up > 0 (display only)"),
       integer("skin_samples_around", 32, 2, 1024, "mesh samples around each half body"),
       integer("skin_samples_along", 64, 2, 4096, "mesh samples along the body"),
       integer("export_frames", 16, 1, 1000, "frames stored and exported (glb animation, OBJ), evenly spaced from export_start_s to the end"),

@@ -49,7 +49,7 @@ for k in range(2):
         assert f["lagrangian/nodes_m"].shape == (301, 23, 3)
         assert f["lagrangian/skin_control_points_m"].shape == (4, 2 * 9 * 21 + 2 * 15, 3)
         nv = f["lagrangian/skin_vertices_m"].shape[1]
-        assert nv == 2 * 8 * 16 + 2 * 4 * 8, nv
+        assert nv == 2 * 8 * 16 + 2 * 4 * 8 + 2 * 5, nv  # halves, dorsal and ventral fins, pectoral fins
         assert f["topology/unit_nodes"].shape == (182,) and f["topology/faces"].shape == (96,)
         assert f["topology/muscles"].shape == (36,)
         assert abs(m["heading_change_deg"][()]) > 0

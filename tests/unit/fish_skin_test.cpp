@@ -146,6 +146,39 @@ TEST(FishSkin, OutwardAndSeamChecksSeeABrokenSkin) {
   EXPECT_NEAR(seamGapM(opened), 1e-3, 1e-12);
 }
 
+// The pectoral fins are posed in the fish frame: mirror images at rest, carried exactly by a rigid
+// motion of the nodes, below the body's axis beside ring 1-2, and pitched leading edge up by a
+// positive pitch; the mesh appends them (5 vertices each) after the fins.
+TEST(FishSkin, PectoralFinsPosedInTheFishFrame) {
+  const FishModel fish = buildFish({}, {});
+  const NodeMatrix& x0 = fish.rest_positions_m;
+  FishSkin skin(fish, {});
+  const auto rest = skin.pectoralFins(x0);
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_NEAR(rest[k].x(), rest[5 + k].x(), 1e-15);
+    EXPECT_NEAR(rest[k].y(), -rest[5 + k].y(), 1e-15);
+    EXPECT_NEAR(rest[k].z(), rest[5 + k].z(), 1e-15);
+    EXPECT_GT(rest[k].y(), 0.0);  // the left fin on the left
+    EXPECT_LT(rest[k].z(), 0.0);  // below the axis
+  }
+  const Eigen::Matrix3d rot = Eigen::AngleAxisd(0.7, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+  const Eigen::Vector3d shift(1.5, -2.0, 0.25);
+  NodeMatrix x;
+  for (int i = 0; i < kNodes; ++i) x.row(i) = (rot * x0.row(i).transpose() + shift).transpose();
+  const auto moved = skin.pectoralFins(x);
+  for (int k = 0; k < 10; ++k) EXPECT_LT((moved[k] - (rot * rest[k] + shift)).norm(), 1e-12);
+  SkinParams pitched;
+  pitched.pectoral_pitch_deg = 30;
+  const auto up = FishSkin(fish, pitched).pectoralFins(x0);
+  EXPECT_GT(up[0].z() - up[1].z(), 0.01);  // the root's front vertex above its back one
+  EXPECT_NEAR(rest[0].z(), rest[1].z(), 1e-15);
+  SkinMesh mesh;
+  skin.update(x0);
+  skin.mesh(8, 16, mesh);
+  ASSERT_GE(mesh.positions.size(), 10u);
+  for (int k = 0; k < 10; ++k) EXPECT_LT((mesh.positions[mesh.positions.size() - 10 + k] - rest[k]).norm(), 1e-15);
+}
+
 // A surface point from the grid evaluator equals the direct evaluation.
 TEST(FishSkin, GridEqualsPointwise) {
   const FishModel fish = buildFish({}, {});
