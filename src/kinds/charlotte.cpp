@@ -1,18 +1,19 @@
 #include "kinds/charlotte.hpp"
 
 #include <cmath>
-#include <optional>
 
 #include "charlotte/canvas.hpp"
 #include "charlotte/inscribe.hpp"
+#include "charlotte/inscription_measures.hpp"
+#include "charlotte/inscription_renders.hpp"
 #include "charlotte/legibility.hpp"
 #include "charlotte/morphology.hpp"
 #include "charlotte/netpbm.hpp"
-#include "charlotte/render.hpp"
+#include "charlotte/resettle.hpp"
 #include "charlotte/text_target.hpp"
-#include "kinds/spring_run.hpp"
 #include "springs/equilibrium.hpp"
 #include "springs/provot.hpp"
+#include "springs/simulate.hpp"
 #include "web/build.hpp"
 #include "web/measure.hpp"
 #include "web/web_builder.hpp"
@@ -66,29 +67,100 @@ ch::Raster targetOnCanvas(const ParamReader& r, const ch::CanvasMap& map, const 
                         r.real("target_max_height_m"));
 }
 
-// Shades on a light page (the book's Fig. 6.5 look): frames darkest, spiral lightest; the emphasis
-// strands black and wider (Fig. 6.13: "shaded darker than the rest"; Fig. 6.14: outlines stronger).
-struct Style {
-  float grey, width_px, alpha;
-};
-Style styleOf(StrandType t) {
-  switch (t) {
-    case StrandType::outer_frame:
-    case StrandType::inner_frame: return {0.15f, 1.3f, 1.0f};
-    case StrandType::primary_spoke:
-    case StrandType::hub:
-    case StrandType::secondary_spoke: return {0.45f, 0.8f, 0.8f};
-    case StrandType::spiral: break;
-  }
-  return {0.2f, 0.9f, 0.85f};
+// The static equilibrium, which a long RK4 run reaches (the web kind checks its hub sag to 1%), with the
+// inner frame's constant inward force (Fig. 5.8) as part of the potential; its iterations.
+int settleWeb(const web::WebModel& model, springs::State<3>& state) {
+  springs::System<3> system(model.network);
+  system.setConstantForce(model.external_force_n);
+  const auto eq = springs::solveStaticEquilibrium(system, state);
+  if (!eq.converged) throw RunFailure("the web's static equilibrium did not converge");
+  return eq.iterations;
 }
-constexpr Style kEmphasis{0.0f, 1.6f, 1.0f};
-// Cross-hatch strands (Fig. 6.12) a shade darker than the spiral: the hatch is meant to stand out by
-// its density and direction, which a 600-pixel render of a 1 m web can barely resolve otherwise.
-constexpr Style kHatch{0.05f, 1.0f, 0.9f};
-constexpr ch::Rgb kPage{0.97f, 0.96f, 0.93f};
 
-ch::Rgb grey(float g) { return {g, g, g}; }
+ch::ResettleParams resettleParams(const ParamReader& r) {
+  return {r.text("resettle") == "dynamic", r.real("resettle_time_s"), r.real("settling_fraction")};
+}
+
+// The resettled web's series: the hub's shift per frame, the frames' times and (dynamic) kinetic
+// energy; a run that failed has the shift so far only.
+Result resettleSeries(const ch::Resettled& after) {
+  Result result;
+  result.timeseries["hub_shift_m"] = {after.hub_shift_m, "m"};
+  if (!after.time_s.empty()) result.timeseries["time_s"] = {after.time_s, "s"};
+  if (!after.kinetic_energy_j.empty()) result.timeseries["kinetic_energy_j"] = {after.kinetic_energy_j, "J"};
+  return result;
+}
+
+void addInscriptionMetrics(Result& result, const web::WebModel& model, int settle_iterations, const ch::Inscription& ins,
+                           const ch::Pruned& pruned, const ch::InscriptionMeasures& im, const ch::Resettled& after) {
+  const double nan = std::nan("");
+  const int removed = im.segments_removed, inside = im.removed_inside_target;
+  auto& m = result.metrics;
+  m["particles"] = {double(model.counts.particles), ""};
+  m["spiral_segments"] = {double(ins.spiral_segments), ""};
+  m["settle_iterations"] = {double(settle_iterations), ""};
+  m["segments_removed"] = {double(removed), ""};
+  m["removed_inside_target"] = {double(inside), ""};
+  m["removed_outside_target"] = {double(removed - inside), ""};
+  m["removed_inside_fraction"] = {removed > 0 ? double(inside) / removed : nan, ""};
+  m["springs_removed"] = {double(ins.removed_springs.size()), ""};
+  m["particles_removed"] = {double(pruned.dropped_particles), ""};
+  m["crosshatch_candidates"] = {double(ins.crosshatch_candidates), ""};
+  m["crosshatch_kept"] = {double(ins.crosshatch_kept), ""};
+  m["attachments"] = {double(ins.attachments), ""};
+  m["outline_segments"] = {double(im.outline_segments), ""};
+  m["target_area_fraction"] = {im.target_area_fraction, ""};
+  m["emptied_iou"] = {im.settled.iou, ""};
+  m["emptied_precision"] = {im.settled.precision, ""};
+  m["emptied_recall"] = {im.settled.recall, ""};
+  m["letter_contrast"] = {im.settled.contrast, ""};
+  m["cut_emptied_iou"] = {im.cut.iou, ""};
+  m["cut_letter_contrast"] = {im.cut.contrast, ""};
+  m["settling_time_s"] = {after.settling_time_s, "s"};
+  m["resettle_iterations"] = {after.iterations, ""};
+  m["hub_shift_m"] = {after.hub_shift_m.back(), "m"};
+  m["max_strain"] = {springs::maxStrain(pruned.network, after.state), ""};
+}
+
+// Topology: the web with every strand the emphasis laid, before removal; which segment each spring
+// belongs to; the segments' ends, scores and fates; the removed springs. Positions of every particle
+// of that web: settled before removal (frame 0) and at the end (frame 1; a dropped mass stays where
+// it was).
+void addInscriptionTables(Result& result, const web::WebModel& model, const ch::Inscription& ins,
+                          const ch::Pruned& pruned, const springs::State<3>& state,
+                          const std::vector<std::int64_t>& spring_segment) {
+  auto& topo = result.topology;
+  for (std::size_t i = 0; i < ins.segments.size(); ++i) {
+    const auto& s = ins.segments[i];
+    topo["segment_a"].push_back(s.a);
+    topo["segment_b"].push_back(s.b);
+    topo["segment_origin"].push_back(std::int64_t(s.origin));  // 0 spiral, 1 cross-hatch, 2 random attachment
+    topo["segment_score"].push_back(ins.score[i]);             // -1: not scored (random attachment)
+    topo["segment_outline"].push_back(ins.outline[i]);
+    topo["segment_inside_target"].push_back(ins.inside[i]);
+    if (ins.removed[i]) topo["removed_segments"].push_back(std::int64_t(i));
+  }
+  for (int k = 0; k < ins.network.springCount(); ++k) {
+    topo["spring_a"].push_back(ins.network.spring_a[k]);
+    topo["spring_b"].push_back(ins.network.spring_b[k]);
+    topo["spring_type"].push_back(static_cast<int>(ins.type[k]));
+  }
+  topo["spring_segment"] = spring_segment;
+  topo["removed_springs"].assign(ins.removed_springs.begin(), ins.removed_springs.end());
+  topo["removed_segments"];  // present even when empty
+  for (int a : model.attachment_particles) topo["attachment_particles"].push_back(a);
+  for (int h : model.hub_particles) topo["hub_particles"].push_back(h);
+
+  Tracks& tracks = result.lagrangian["positions_m"];
+  tracks.points = ins.network.particleCount();
+  tracks.dim = 3;
+  const double t_end = result.timeseries["time_s"].values.back();
+  tracks.time_s = {0.0, t_end};
+  springs::Points<3> end = ins.state.x_m;
+  for (int i = 0; i < int(pruned.particle_of.size()); ++i) end.col(pruned.particle_of[i]) = state.x_m.col(i);
+  tracks.data.assign(ins.state.x_m.data(), ins.state.x_m.data() + ins.state.x_m.size());
+  tracks.data.insert(tracks.data.end(), end.data(), end.data() + end.size());
+}
 
 }  // namespace
 
@@ -192,189 +264,38 @@ Result CharlotteKind::run(const Params& params) const {
   ParamReader r(params);
   const web::WebParams wp = webParams(r);
   const web::WebModel model = web::build(wp);
-  const double nan = std::nan("");
-  Result result;
 
-  // 1. Settle (§6: "create an orb web ... and then to allow the web simulation to settle down"): the
-  // static equilibrium, which a long RK4 run reaches (the web kind checks its hub sag to 1%), with the
-  // inner frame's constant inward force (Fig. 5.8) as part of the potential.
-  springs::System<3> system(model.network);
-  system.setConstantForce(model.external_force_n);
+  // 1. Settle (§6: "create an orb web ... and then to allow the web simulation to settle down").
   springs::State<3> settled = model.state;
-  const auto eq = springs::solveStaticEquilibrium(system, settled);
-  if (!eq.converged) throw RunFailure("the web's static equilibrium did not converge", result);
+  const int settle_iterations = settleWeb(model, settled);
 
   // 2. Target on the canvas mapped onto the settled web.
-  const Eigen::Vector2d hub = web::hubPositionM(model, settled).head<2>();
   const ch::CanvasMap map = ch::canvasOver(settled.x_m, int(r.integer("canvas_px")));
-  const ch::Raster target = targetOnCanvas(r, map, hub);
+  const ch::Raster target = targetOnCanvas(r, map, web::hubPositionM(model, settled).head<2>());
 
   // 3. Inscribe: capture, dilate, score, select, emphasise (charlotte/inscribe.hpp).
   const ch::InscribeParams ip = inscribeParams(r);
   const ch::Inscription ins = ch::inscribe(model, settled, map, target, web::strandSpec(wp, StrandType::spiral),
                                            wp.particle_mass_kg, ip);
 
-  // 4. Remove the selected segments and settle again.
+  // 4. Remove the selected segments and settle again (charlotte/resettle.hpp).
   const ch::Pruned pruned = ch::removeSprings(ins.network, ins.state, ins.type, ins.removed_springs);
-  springs::System<3> after(pruned.network);
-  springs::Points<3> frame_force = springs::Points<3>::Zero(3, pruned.network.particleCount());
-  for (int i = 0; i < pruned.network.particleCount(); ++i)  // the web's own masses keep their force; new ones have none
-    if (pruned.particle_of[i] < model.network.particleCount())
-      frame_force.col(i) = model.external_force_n.col(pruned.particle_of[i]);
-  after.setConstantForce(frame_force);
-  springs::State<3> state = pruned.state;
-  std::vector<int> hub_after;
-  for (int h : model.hub_particles) hub_after.push_back(pruned.new_particle[h]);
-  auto hubOf = [&](const springs::State<3>& s) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (int h : hub_after) sum += s.x_m.col(h);
-    return Eigen::Vector3d(sum / double(hub_after.size()));
-  };
-  const Eigen::Vector3d hub0 = hubOf(state);
-  std::optional<double> settling;
-  double resettle_iterations = nan;
-  auto& hub_shift = result.timeseries["hub_shift_m"] = {{}, "m"};
-  if (r.text("resettle") == "dynamic") {
-    springs::SimulationOptions opt;
-    opt.integrator = springs::IntegratorKind::RK4;  // the thesis's integrator (§4.2, Eq. 4.16-4.19)
-    opt.frame_interval_s = 0.02;                    // §5.2.1 'time step'
-    opt.end_time_s = r.real("resettle_time_s");
-    opt.settling_fraction = r.real("settling_fraction");
-    const auto summary = runOrFail(
-        after, state, opt, [&](int, double, const springs::State<3>& s) { hub_shift.values.push_back((hubOf(s) - hub0).norm()); },
-        result);
-    settling = summary.settling_time_s;
-    result.timeseries["time_s"] = {summary.time_s, "s"};
-    result.timeseries["kinetic_energy_j"] = {summary.kinetic_energy_j, "J"};
-  } else {
-    const auto eq2 = springs::solveStaticEquilibrium(after, state);
-    if (!eq2.converged) throw RunFailure("the static equilibrium after removal did not converge", result);
-    resettle_iterations = eq2.iterations;
-    result.timeseries["time_s"] = {{0.0}, "s"};
-    hub_shift.values.push_back((hubOf(state) - hub0).norm());
+  ch::Resettled after;
+  try {
+    ch::resettle(model, pruned, resettleParams(r), after);
+  } catch (const springs::DivergenceError& e) {
+    throw RunFailure(e.what(), resettleSeries(after));
   }
+  if (!after.converged) throw RunFailure("the static equilibrium after removal did not converge", resettleSeries(after));
 
-  // 5. Metrics.
-  const ch::Legibility leg =
-      ch::measureLegibility(ins, map, target, pruned.network, pruned.type, state.x_m, ip.dilation_px);
-  const ch::Legibility cut =
-      ch::measureLegibility(ins, map, target, pruned.network, pruned.type, pruned.state.x_m, ip.dilation_px);
-  int removed = 0, inside = 0, outline = 0;
-  for (std::size_t i = 0; i < ins.segments.size(); ++i) {
-    removed += ins.removed[i];
-    inside += ins.removed[i] && ins.inside[i];
-    outline += ins.outline[i];
-  }
-  double target_px = 0;
-  for (float v : ins.target_dilated.ink) target_px += v >= 0.5f;
-  auto& m = result.metrics;
-  m["particles"] = {double(model.counts.particles), ""};
-  m["spiral_segments"] = {double(ins.spiral_segments), ""};
-  m["settle_iterations"] = {double(eq.iterations), ""};
-  m["segments_removed"] = {double(removed), ""};
-  m["removed_inside_target"] = {double(inside), ""};
-  m["removed_outside_target"] = {double(removed - inside), ""};
-  m["removed_inside_fraction"] = {removed > 0 ? double(inside) / removed : nan, ""};
-  m["springs_removed"] = {double(ins.removed_springs.size()), ""};
-  m["particles_removed"] = {double(pruned.dropped_particles), ""};
-  m["crosshatch_candidates"] = {double(ins.crosshatch_candidates), ""};
-  m["crosshatch_kept"] = {double(ins.crosshatch_kept), ""};
-  m["attachments"] = {double(ins.attachments), ""};
-  m["outline_segments"] = {double(outline), ""};
-  m["target_area_fraction"] = {target_px / double(map.size_px) / double(map.size_px), ""};
-  m["emptied_iou"] = {leg.iou, ""};
-  m["emptied_precision"] = {leg.precision, ""};
-  m["emptied_recall"] = {leg.recall, ""};
-  m["letter_contrast"] = {leg.contrast, ""};
-  m["cut_emptied_iou"] = {cut.iou, ""};
-  m["cut_letter_contrast"] = {cut.contrast, ""};
-  m["settling_time_s"] = {settling.value_or(nan), "s"};
-  m["resettle_iterations"] = {resettle_iterations, ""};
-  m["hub_shift_m"] = {hub_shift.values.back(), "m"};
-  m["max_strain"] = {springs::maxStrain(pruned.network, state), ""};
-
-  // 6. Topology: the web with every strand the emphasis laid, before removal; which segment each
-  // spring belongs to; the segments' ends, scores and fates; the removed springs.
-  auto& topo = result.topology;
-  std::vector<std::int64_t> spring_segment(ins.network.springCount(), -1);
-  for (std::size_t i = 0; i < ins.segments.size(); ++i) {
-    const auto& s = ins.segments[i];
-    for (int k : s.springs) spring_segment[k] = std::int64_t(i);
-    topo["segment_a"].push_back(s.a);
-    topo["segment_b"].push_back(s.b);
-    topo["segment_origin"].push_back(std::int64_t(s.origin));  // 0 spiral, 1 cross-hatch, 2 random attachment
-    topo["segment_score"].push_back(ins.score[i]);             // -1: not scored (random attachment)
-    topo["segment_outline"].push_back(ins.outline[i]);
-    topo["segment_inside_target"].push_back(ins.inside[i]);
-    if (ins.removed[i]) topo["removed_segments"].push_back(std::int64_t(i));
-  }
-  for (int k = 0; k < ins.network.springCount(); ++k) {
-    topo["spring_a"].push_back(ins.network.spring_a[k]);
-    topo["spring_b"].push_back(ins.network.spring_b[k]);
-    topo["spring_type"].push_back(static_cast<int>(ins.type[k]));
-  }
-  topo["spring_segment"] = spring_segment;
-  topo["removed_springs"].assign(ins.removed_springs.begin(), ins.removed_springs.end());
-  topo["removed_segments"];  // present even when empty
-  for (int a : model.attachment_particles) topo["attachment_particles"].push_back(a);
-  for (int h : model.hub_particles) topo["hub_particles"].push_back(h);
-
-  // Positions of every particle of that web: settled before removal (frame 0) and at the end (frame
-  // 1; a dropped mass stays where it was).
-  Tracks& tracks = result.lagrangian["positions_m"];
-  tracks.points = ins.network.particleCount();
-  tracks.dim = 3;
-  const double t_end = result.timeseries["time_s"].values.back();
-  tracks.time_s = {0.0, t_end};
-  springs::Points<3> end = ins.state.x_m;
-  for (int i = 0; i < int(pruned.particle_of.size()); ++i) end.col(pruned.particle_of[i]) = state.x_m.col(i);
-  tracks.data.assign(ins.state.x_m.data(), ins.state.x_m.data() + ins.state.x_m.size());
-  tracks.data.insert(tracks.data.end(), end.data(), end.data() + end.size());
-
-  // 7. Renders, written by the runner beside the point file: the settled web (Fig. 6.7), the target
-  // over it with the segments to remove in red (Figs. 6.3, 6.10), the web just after the cut, and the
-  // result after it settled again (Figs. 6.4, 6.11-6.18).
-  if (r.boolean("renders")) {
-    const int n = map.size_px;
-    auto strand = [&](ch::Painter& p, const springs::Network<3>& net, const springs::Points<3>& x, int k,
-                      const Style& st) {
-      p.line(map.toPx(x.col(net.spring_a[k]).head<2>()), map.toPx(x.col(net.spring_b[k]).head<2>()), st.width_px,
-             grey(st.grey), st.alpha);
-    };
-    ch::Painter before(n, n, kPage);
-    for (int k = 0; k < model.network.springCount(); ++k) strand(before, model.network, settled.x_m, k, styleOf(model.spring_type[k]));
-    result.artifacts["web.png"] = before.png();
-
-    ch::Painter overlay(n, n, kPage);
-    overlay.wash(ins.target_dilated, {0.95f, 0.55f, 0.45f}, 0.5f);  // the dilated target ...
-    overlay.wash(target, {0.8f, 0.2f, 0.15f}, 0.5f);                 // ... and the target itself
-    for (int k = 0; k < ins.network.springCount(); ++k) {
-      const bool gone = spring_segment[k] >= 0 && ins.removed[std::size_t(spring_segment[k])];
-      const Style st = styleOf(ins.type[k]);
-      if (!gone) strand(overlay, ins.network, ins.state.x_m, k, st);
-      else
-        overlay.line(map.toPx(ins.state.x_m.col(ins.network.spring_a[k]).head<2>()),
-                     map.toPx(ins.state.x_m.col(ins.network.spring_b[k]).head<2>()), 1.2f, {0.75f, 0.05f, 0.05f}, 1.0f);
-    }
-    result.artifacts["overlay.png"] = overlay.png();
-
-    // The web after removal at the positions x: emphasis strands drawn last, so they lie on top.
-    auto pruned_web = [&](const springs::Points<3>& x) {
-      ch::Painter p(n, n, kPage);
-      for (int pass = 0; pass < 2; ++pass)
-        for (int k = 0; k < pruned.network.springCount(); ++k) {
-          const std::int64_t seg = spring_segment[std::size_t(pruned.spring_of[k])];
-          const auto origin = seg >= 0 ? ins.segments[std::size_t(seg)].origin : ch::SegmentOrigin::spiral;
-          const bool strong = seg >= 0 && (ins.outline[std::size_t(seg)] || origin == ch::SegmentOrigin::attachment);
-          const bool hatch = origin == ch::SegmentOrigin::cross_hatch;
-          if ((strong || hatch) != (pass == 1)) continue;
-          strand(p, pruned.network, x, k, strong ? kEmphasis : hatch ? kHatch : styleOf(pruned.type[k]));
-        }
-      return p.png();
-    };
-    result.artifacts["cut.png"] = pruned_web(pruned.state.x_m);
-    result.artifacts["result.png"] = pruned_web(state.x_m);
-  }
+  // 5. Measures, tables and (7) renders, written by the runner beside the point file.
+  Result result = resettleSeries(after);
+  const auto measures = ch::measureInscription(ins, map, target, pruned, after.state.x_m, ip.dilation_px);
+  addInscriptionMetrics(result, model, settle_iterations, ins, pruned, measures, after);
+  const std::vector<std::int64_t> spring_segment = ch::springSegments(ins);
+  addInscriptionTables(result, model, ins, pruned, after.state, spring_segment);
+  if (r.boolean("renders"))
+    result.artifacts = ch::renderInscription(model, settled.x_m, ins, target, map, pruned, after.state.x_m, spring_segment);
   return result;
 }
 
