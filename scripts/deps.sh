@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git lld
   clang libclang-rt-14-dev  # the sanitizer tree (make test-asan)
   libeigen3-dev libceres-dev libhdf5-dev hdf5-tools
   libbenchmark-dev libbenchmark-tools libgtest-dev libgmock-dev

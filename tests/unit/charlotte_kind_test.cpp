@@ -14,18 +14,16 @@
 #include "io/hdf5_digest.hpp"
 #include "kinds/kind.hpp"
 #include "runner/store.hpp"
+#include "test_registry.hpp"
 
 namespace {
 
 using namespace creaturelab;
 namespace fs = std::filesystem;
 
-const kinds::Registry& registry() {
-  static const kinds::Registry r = kinds::defaultRegistry();
-  return r;
-}
+using creaturelab::testing::registry;
 
-const kinds::Kind& charlotte() { return *registry().find("charlotte"); }
+const kinds::Kind& charlotteKind() { return *registry().find("charlotte"); }
 
 kinds::Params smallParams(kinds::Params overrides = {}) {
   kinds::Params p = {{"frame_scale", 0.35},        {"target_width_m", 0.3},
@@ -33,7 +31,7 @@ kinds::Params smallParams(kinds::Params overrides = {}) {
                      {"canvas_px", std::int64_t(240)},
                      {"emphasis", std::string("random_attachments")}};
   for (auto& [k, v] : overrides) p[k] = v;
-  return kinds::withDefaults(charlotte(), p);
+  return kinds::withDefaults(charlotteKind(), p);
 }
 
 template <class T>
@@ -57,8 +55,8 @@ bool sameBytes(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_
 // The third test: runs are deterministic (bit for bit; the stored digest follows).
 TEST(CharlotteKind, RunsAreDeterministic) {
   const kinds::Params p = smallParams();
-  ASSERT_EQ(charlotte().validate(p), "");
-  const kinds::Result a = charlotte().run(p), b = charlotte().run(p);
+  ASSERT_EQ(charlotteKind().validate(p), "");
+  const kinds::Result a = charlotteKind().run(p), b = charlotteKind().run(p);
   EXPECT_TRUE(sameMap(a.timeseries, b.timeseries, sameSeries));
   EXPECT_TRUE(sameMap(a.metrics, b.metrics, sameMetric));
   EXPECT_TRUE(sameMap(a.lagrangian, b.lagrangian, sameTracks));
@@ -70,22 +68,22 @@ TEST(CharlotteKind, RunsAreDeterministic) {
   for (const char* name : {"web.png", "overlay.png", "cut.png", "result.png"}) EXPECT_TRUE(a.artifacts.count(name)) << name;
   // Every declared metric is returned, and nothing else.
   std::set<std::string> declared;
-  for (const auto& m : charlotte().metrics()) declared.insert(m.name);
+  for (const auto& m : charlotteKind().metrics()) declared.insert(m.name);
   for (const auto& [name, m] : a.metrics) EXPECT_TRUE(declared.count(name)) << name;
   EXPECT_EQ(a.metrics.size(), declared.size());
 }
 
 TEST(CharlotteKind, BadTargetsAreClearErrorsBeforeAnyWork) {
-  EXPECT_EQ(charlotte().validate(smallParams({{"text", std::string("PIG!\xee\x80\x80")}})),
+  EXPECT_EQ(charlotteKind().validate(smallParams({{"text", std::string("PIG!\xee\x80\x80")}})),
             "text \"PIG!\xee\x80\x80\": the font \"DejaVu Sans Bold\" has no glyph for '\xee\x80\x80' (character 5)");
-  EXPECT_NE(charlotte().validate(smallParams({{"font", std::string("Nonexistent Grotesk")}})).find("is not installed"),
+  EXPECT_NE(charlotteKind().validate(smallParams({{"font", std::string("Nonexistent Grotesk")}})).find("is not installed"),
             std::string::npos);
-  EXPECT_EQ(charlotte().validate(smallParams({{"target", std::string("image")},
+  EXPECT_EQ(charlotteKind().validate(smallParams({{"target", std::string("image")},
                                               {"image_file", std::string("/nonexistent/emblem.pbm")}})),
             "image_file: /nonexistent/emblem.pbm: cannot be read (No such file or directory)");
-  EXPECT_NE(charlotte().validate(smallParams({{"target", std::string("image")}})).find("no image file given"),
+  EXPECT_NE(charlotteKind().validate(smallParams({{"target", std::string("image")}})).find("no image file given"),
             std::string::npos);
-  EXPECT_NE(charlotte().validate(smallParams({{"dilation_px", std::int64_t(4)}})).find("dilation_px is 4"),
+  EXPECT_NE(charlotteKind().validate(smallParams({{"dilation_px", std::int64_t(4)}})).find("dilation_px is 4"),
             std::string::npos);
 }
 

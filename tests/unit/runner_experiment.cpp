@@ -3,6 +3,7 @@
 #include "runner/experiment.hpp"
 #include "runner/checks.hpp"
 #include "runner/cost.hpp"
+#include "test_registry.hpp"
 
 #include <gtest/gtest.h>
 #include <toml++/toml.h>
@@ -20,10 +21,7 @@ using runner::ExperimentError;
 using runner::Point;
 using kinds::Value;
 
-const kinds::Registry& registry() {
-  static const kinds::Registry r = kinds::defaultRegistry();
-  return r;
-}
+using creaturelab::testing::registry;
 
 Experiment load(const std::string& text, const std::vector<std::string>& overrides = {},
                 const std::string& path = "exp/test.toml") {

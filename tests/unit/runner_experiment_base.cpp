@@ -2,6 +2,7 @@
 // key by key, [[case]] and [[check]] lists replace, inherit or clear; bases chain, paths are relative
 // to the naming file; missing bases and cycles name the chain; the stored text is the merged document.
 #include "runner/experiment.hpp"
+#include "test_registry.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,12 +20,9 @@ using runner::Experiment;
 using runner::ExperimentError;
 namespace fs = std::filesystem;
 
-const kinds::Registry& registry() {
-  static const kinds::Registry r = kinds::defaultRegistry();
-  return r;
-}
+using creaturelab::testing::registry;
 
-double real(const kinds::Value& v) { return std::get<double>(v); }
+double realValue(const kinds::Value& v) { return std::get<double>(v); }
 
 // A scratch folder of experiment files, removed after the test; paths in errors are relative to it
 // (the test runs with it as the working folder, as a user runs from the source folder).
@@ -110,8 +108,8 @@ dir = "somewhere"
   EXPECT_EQ(e.stem, "study");       // the file's own stem
   EXPECT_EQ(e.path, "study.toml");
   ASSERT_EQ(e.params.size(), 3u);
-  EXPECT_EQ(real(e.params.at("dt_s")), 0.005);       // the study's
-  EXPECT_EQ(real(e.params.at("end_time_s")), 2.0);   // the claim's
+  EXPECT_EQ(realValue(e.params.at("dt_s")), 0.005);       // the study's
+  EXPECT_EQ(realValue(e.params.at("end_time_s")), 2.0);   // the claim's
   EXPECT_EQ(std::get<std::string>(e.params.at("integrator")), "rk4");
   ASSERT_EQ(e.axes.size(), 2u);  // the claim's axis and the study's
   EXPECT_EQ(e.axes[0].name, "stiffness_n_per_m");  // toml++ orders a table's keys
@@ -129,7 +127,7 @@ TEST_F(ExperimentBase, ASweepAxisOfTheFileReplacesTheBasesValues) {
   const Experiment e = load("study.toml");
   ASSERT_EQ(e.axes.size(), 1u);
   ASSERT_EQ(e.axes[0].values.size(), 1u);
-  EXPECT_EQ(real(e.axes[0].values[0]), 3.0);
+  EXPECT_EQ(realValue(e.axes[0].values[0]), 3.0);
 }
 
 TEST_F(ExperimentBase, CaseAndCheckListsReplaceInheritOrClear) {
@@ -181,8 +179,8 @@ TEST_F(ExperimentBase, BasesChainAndPathsAreRelativeToTheNamingFile) {
   write("studies/osc/grid.toml", "base = \"../../claims/osc/mid.toml\"\n[params]\ndt_s = 0.002\n");
   const Experiment e = load("studies/osc/grid.toml");
   EXPECT_EQ(e.title, "mid");
-  EXPECT_EQ(real(e.params.at("dt_s")), 0.002);
-  EXPECT_EQ(real(e.params.at("end_time_s")), 3.0);
+  EXPECT_EQ(realValue(e.params.at("dt_s")), 0.002);
+  EXPECT_EQ(realValue(e.params.at("end_time_s")), 3.0);
   EXPECT_EQ(std::get<std::string>(e.params.at("integrator")), "rk4");
   EXPECT_EQ(e.cases.size(), 2u);
   EXPECT_EQ(e.stem, "grid");
@@ -246,11 +244,11 @@ TEST_F(ExperimentBase, OverridesApplyAfterTheMerge) {
   write("claim.toml", kClaim);
   write("study.toml", "base = \"claim.toml\"\n[params]\ndt_s = 0.005\n");
   const Experiment e = load("study.toml", {"params.dt_s=0.001", "params.end_time_s=1.5", "sweep.stiffness_n_per_m=[4]"});
-  EXPECT_EQ(real(e.params.at("dt_s")), 0.001);
-  EXPECT_EQ(real(e.params.at("end_time_s")), 1.5);
+  EXPECT_EQ(realValue(e.params.at("dt_s")), 0.001);
+  EXPECT_EQ(realValue(e.params.at("end_time_s")), 1.5);
   EXPECT_EQ(std::get<std::string>(e.params.at("integrator")), "rk4");
   ASSERT_EQ(e.axes.size(), 1u);
-  EXPECT_EQ(real(e.axes[0].values.at(0)), 4.0);
+  EXPECT_EQ(realValue(e.axes[0].values.at(0)), 4.0);
   const std::string m = errorOf("study.toml", {"base=\"other.toml\""});
   EXPECT_NE(m.find("base: cannot be set by an override"), std::string::npos) << m;
 }
@@ -278,8 +276,8 @@ damping_ns_per_m = [0.05, 0.3]
   EXPECT_EQ(back.source_text, e.source_text);
   EXPECT_EQ(back.checks.size(), e.checks.size());
   EXPECT_EQ(back.stem, "study");
-  EXPECT_EQ(real(back.params.at("x0_m")), 1e-8);
-  EXPECT_EQ(real(back.params.at("end_time_s")), 0.7);
+  EXPECT_EQ(realValue(back.params.at("x0_m")), 1e-8);
+  EXPECT_EQ(realValue(back.params.at("end_time_s")), 0.7);
 }
 
 TEST_F(ExperimentBase, AFileWithoutBaseKeepsItsTextAsRead) {

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "io/hdf5.hpp"
+#include "test_registry.hpp"
 
 namespace {
 
@@ -22,10 +23,7 @@ using runner::Point;
 using runner::PointOutcome;
 using runner::Table;
 
-const kinds::Registry& registry() {
-  static const kinds::Registry r = kinds::defaultRegistry();
-  return r;
-}
+using creaturelab::testing::registry;
 
 class RunnerStore : public creaturelab::testing::ScratchDirTest {
  protected:

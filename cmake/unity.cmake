@@ -1,0 +1,17 @@
+# Unity builds: each target's sources compiled in batches of eight, so the templates they share
+# (Eigen's decompositions and products, GoogleTest's) are instantiated once per batch rather than once
+# per file. A batch is one translation unit: names in anonymous namespaces must differ across a
+# target's files. Files with their own compile flags stay alone (CMake leaves them out itself).
+# Arithmetic does not change: -ffp-contract=off holds in every batch; the golden digests check it.
+option(CREATURELAB_UNITY "Compile each target's sources in batches (unity build)" ON)
+if(CREATURELAB_UNITY)
+  set(CMAKE_UNITY_BUILD ON)
+  set(CMAKE_UNITY_BUILD_BATCH_SIZE 8)
+endif()
+
+# creaturelab_unity_alone(DIRECTORY dir FILES ...): files compiled on their own, each for the reason
+# written beside its call (a name its anonymous namespace shares with another file of its target).
+function(creaturelab_unity_alone)
+  cmake_parse_arguments(U "" "DIRECTORY" "FILES" ${ARGN})
+  set_source_files_properties(${U_FILES} DIRECTORY "${U_DIRECTORY}" PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+endfunction()
