@@ -225,6 +225,33 @@ done
 # the primary spokes alone, set by the frame's corners, the count no longer follows the size.
 broken sizes_primary_only experiments/web/sizes.toml "radii decrease as the web shrinks" \
   params.secondary_spoke_stride=1000 params.end_time_s=0.0
+# Fig. 5.17's spiral falls because the spacings are set for the full-size web. A web scaled as a whole
+# (every placement and rest length with the frame: 0.4-1.0) keeps its spiral: 2296, 3091, 3043, 3333
+# segments, not rising. The claim's own check, copied from sizes.toml, on four such cases.
+"$bin" list web >"$scratch/web_params.txt"
+/usr/bin/python3 - "$src/experiments/web/sizes.toml" "$scratch/web_params.txt" >"$scratch/sizes_self_similar.toml" <<'PY'
+import sys
+import tomllib
+claim = tomllib.load(open(sys.argv[1], "rb"))
+check = next(c for c in claim["check"] if c["name"] == "spiral decreases as the web shrinks")
+print('kind = "web"\ntitle = "Fig. 5.17 with every spacing scaled with the web"\n[params]\nend_time_s = 0.0')
+keys = [f"{strand}_{what}_m" for strand in ("spiral", "spoke", "frame", "outer_frame")
+        for what in ("placement", "rest_length")]
+full = {}  # the kind's defaults (`creaturelab list web`: "name unit default VALUE range ...")
+for line in open(sys.argv[2]):
+    words = line.split()
+    if words and words[0] in keys:
+        full[words[0]] = float(words[words.index("default") + 1])
+assert len(full) == len(keys), full
+for scale in claim["sweep"]["frame_scale"]:
+    print(f'[[case]]\nlabel = "scaled {scale}"\nframe_scale = {scale}')
+    for key, value in full.items():
+        print(f"{key} = {value * scale!r}")
+print("[[check]]")
+for key, value in check.items():
+    print(f"{key} = {value!r}".replace("'", '"'))
+PY
+broken sizes_self_similar "$scratch/sizes_self_similar.toml" "spiral decreases as the web shrinks"
 # Fig. 5.38: as in Fig. 5.33, the stride cut as the frame masses spread keeps the spokes' spacing.
 study combined_same_spacing experiments/web/combined.toml <<'TOML'
 [params]
