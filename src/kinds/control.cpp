@@ -7,23 +7,45 @@
 
 #include "control/controller.hpp"
 #include "control/simple_wind.hpp"
+#include "control/wind_run.hpp"
 #include "kinds/control_params.hpp"
 #include "rigid/geom_surface.hpp"
 
 namespace creaturelab::kinds {
 namespace {
 
-using control::Vec3;
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
-Vec3 wind(const ParamReader& r) { return {r.real("wind_x_m_per_s"), r.real("wind_y_m_per_s"), r.real("wind_z_m_per_s")}; }
-
-double norm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+control::Vec3 windVelocity(const ParamReader& r) {
+  return {r.real("wind_x_m_per_s"), r.real("wind_y_m_per_s"), r.real("wind_z_m_per_s")};
+}
 
 control::ControllerParams windControllerParams(const ParamReader& r) {
   control::ControllerParams p = controllerParams(r);
   p.steady_state = r.boolean("steady_state");
   return p;
+}
+
+// initial_deg: a hinge's angle or a ball joint's rotation vector, degrees to radians.
+void setInitialPoses(control::Controller& controller, const std::vector<InitialPose>& poses) {
+  const double deg = 180.0 / std::numbers::pi;
+  for (const auto& pose : poses) {
+    if (pose.deg.size() == 3) controller.setRotation(pose.joint, {pose.deg[0] / deg, pose.deg[1] / deg, pose.deg[2] / deg});
+    else controller.setAngle(pose.joint, pose.deg[0] / deg);
+  }
+}
+
+// The recorded series, the geoms' frames for drawing and their types and bodies.
+Result windRunResult(const control::WindRunRecorder& recorder) {
+  Result result;
+  addSeries(result, recorder.series());
+  const control::GeomFrames& g = recorder.geoms();
+  Tracks& tracks = result.lagrangian["geom_frames_m"];
+  tracks.time_s = g.time_s;
+  tracks.data = g.data;
+  tracks.points = g.points;
+  tracks.dim = 3;
+  result.topology["geom_type"] = g.type;
+  result.topology["geom_body"] = g.body;
+  return result;
 }
 
 }  // namespace
@@ -162,195 +184,19 @@ Result ControlKind::run(const Params& params) const {
   const rigid::RigidModel model = loadModel(r);
   const control::ControllerParams p = windControllerParams(r);
   const control::SimpleWind force(rigid::geomSurfaces(model, int(r.integer("surface_slices"))),
-                                  r.real("density_kg_per_m3"), control::constantWind(wind(r)));
+                                  r.real("density_kg_per_m3"), control::constantWind(windVelocity(r)));
   control::Controller controller(model, p, force);
-  for (const auto& pose : initialPoses(r)) {
-    if (pose.deg.size() == 3) controller.setRotation(pose.joint, {pose.deg[0] / kDeg, pose.deg[1] / kDeg, pose.deg[2] / kDeg});
-    else controller.setAngle(pose.joint, pose.deg[0] / kDeg);
-  }
-
-  const int n = int(p.controlled.size());
-  const int nd = controller.controlledDofs();
-  // Per controlled DOF a name: the hinge's, or the ball's with _x, _y, _z (its rotation vector).
-  std::vector<std::string> dof_names;
-  for (const auto& j : p.controlled) {
-    if (model.joint(model.findJoint(j)).type != rigid::JointType::ball) dof_names.push_back(j);
-    else
-      for (const char* axis : {"_x", "_y", "_z"}) dof_names.push_back(j + axis);
-  }
-  const long frames = r.integer("frames");
-  Result result;
-  auto& ts = result.timeseries;
-  Series& time = ts["time_s"] = {{}, "s"};
-  Series& residual = ts["servo_residual_rad"] = {{}, "rad"};
-  std::vector<Series*> angle, target, objective, derivative, effort, torque, drag, drag_along;
-  for (const auto& d : dof_names) {
-    angle.push_back(&(ts["angle_deg_" + d] = {{}, "deg"}));
-    target.push_back(&(ts["target_deg_" + d] = {{}, "deg"}));
-    derivative.push_back(&(ts["derivative_per_rad_" + d] = {{}, "1/rad"}));
-  }
-  for (const auto& j : p.controlled) {
-    objective.push_back(&(ts["objective_" + j] = {{}, ""}));
-    effort.push_back(&(ts["effort_n_m_s_" + j] = {{}, "N m s"}));
-    torque.push_back(&(ts["torque_n_m_" + j] = {{}, "N m"}));
-    drag.push_back(&(ts["drag_n_" + j] = {{}, "N"}));
-    drag_along.push_back(&(ts["drag_along_n_" + j] = {{}, "N"}));
-  }
-  // Geom frames for drawing: centre and the three axis tips scaled by the half-extents.
-  Tracks& geoms = result.lagrangian["geom_frames_m"];
-  geoms.points = 4 * model.geoms();
-  geoms.dim = 3;
-  auto& types = result.topology["geom_type"];
-  auto& bodies = result.topology["geom_body"];
-  for (int g = 0; g < model.geoms(); ++g) {
-    types.push_back(model.geomType(g));
-    bodies.push_back(model.geomBody(g));
-  }
-  auto recordGeoms = [&](double t) {
-    geoms.time_s.push_back(t);
-    const auto& d = controller.data();
-    for (int g = 0; g < model.geoms(); ++g) {
-      const double* c = d.geomPosition(g);
-      const double* R = d.geomRotation(g);
-      // Half-extents along the geom's axes: MuJoCo's sizes are (radius, half-length) for
-      // capsules and cylinders (along z), (radius) for spheres.
-      Vec3 s = model.geomSize(g);
-      if (types[g] == 3 || types[g] == 5) s = {s[0], s[0], s[1]};
-      if (types[g] == 2) s = {s[0], s[0], s[0]};
-      geoms.data.insert(geoms.data.end(), c, c + 3);
-      for (int a = 0; a < 3; ++a)
-        for (int k = 0; k < 3; ++k) geoms.data.push_back(c[k] + s[a] * R[3 * k + a]);
-    }
-  };
-  recordGeoms(controller.data().time_s());
-
-  // The first controlled joint's load: the line from its anchor to the centre of mass it carries,
-  // and the net external force on those bodies at zero velocity (gravity + Eq. 3), every frame.
-  const auto j0 = model.joint(model.findJoint(p.controlled[0]));
-  const int j0_id = model.findJoint(p.controlled[0]);
-  const double mass = model.subtreeMass_kg(j0.body);
-  const double g = r.real("gravity_m_per_s2");
-  control::ControllerParams steady = p;
-  steady.steady_state = true;
-  steady.threads = 1;
-  control::Controller probe(model, steady, force);
-  Series& flow = ts["flow_angle_deg"] = {{}, "deg"};
-  Series& load = ts["load_line_angle_deg"] = {{}, "deg"};
-  Series& lean = ts["lean_deg"] = {{}, "deg"};
-  Series& force_lean = ts["net_force_lean_deg"] = {{}, "deg"};
-  Series& offset = ts["com_offset_m"] = {{}, "m"};
-  Series& arm_length = ts["com_arm_m"] = {{}, "m"};
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<double> arm_x, arm_y, arm_z, net_x, net_y, net_z;
-  auto recordLoad = [&]() {
-    auto& d = controller.data();
-    d.kinematics();
-    const double* anchor = d.jointAnchor(j0_id);
-    const double* com = d.subtreeCom(j0.body);
-    const Vec3 arm = {com[0] - anchor[0], com[1] - anchor[1], com[2] - anchor[2]};
-    probe.data().restore(d.save());
-    const control::JointMeasures still = probe.measureNow();
-    const Vec3 net = {still.drag_vector_n[0][0], still.drag_vector_n[0][1], still.drag_vector_n[0][2] - mass * g};
-    const double nn = norm(net);
-    double off = 0;
-    if (nn > 0) {
-      const double along = (arm[0] * net[0] + arm[1] * net[1] + arm[2] * net[2]) / nn;
-      off = std::sqrt(std::max(0.0, norm(arm) * norm(arm) - along * along));
-    }
-    flow.values.push_back(norm(wind(r)) > 0 ? lineAngleDeg(arm, wind(r)) : nan);
-    load.values.push_back(nn > 0 ? lineAngleDeg(arm, net) : nan);
-    // Leans from the vertical line through the anchor, positive towards +x: the carried centre of
-    // mass, and the point of the load line on the same side (below the anchor for a hanging
-    // block, above it for an upright trunk).
-    lean.values.push_back(std::atan2(arm[0], std::abs(arm[2])) * kDeg);
-    const double side = arm[0] * net[0] + arm[1] * net[1] + arm[2] * net[2] >= 0 ? 1.0 : -1.0;
-    force_lean.values.push_back(nn > 0 ? std::atan2(side * net[0], std::abs(net[2])) * kDeg : nan);
-    offset.values.push_back(off);
-    arm_length.values.push_back(norm(arm));
-    arm_x.push_back(arm[0]);
-    arm_y.push_back(arm[1]);
-    arm_z.push_back(arm[2]);
-    net_x.push_back(net[0]);
-    net_y.push_back(net[1]);
-    net_z.push_back(net[2]);
-  };
-
-  double max_residual = 0, max_kinematic = 0, max_pd = 0;
-  int max_contacts = 0;
+  setInitialPoses(controller, initialPoses(r));
+  control::WindRunRecorder recorder(model, p, force, windVelocity(r), r.real("gravity_m_per_s2"), controller);
   try {
-    for (long f = 0; f < frames; ++f) {
-      const control::FrameRecord fr = controller.frame();
-      time.values.push_back(fr.time_s);
-      residual.values.push_back(fr.servo_residual_rad);
-      max_residual = std::max(max_residual, fr.servo_residual_rad);
-      max_contacts = std::max(max_contacts, controller.data().contacts());
-      max_kinematic = std::max(max_kinematic, fr.kinematic_error_rad);
-      max_pd = std::max(max_pd, fr.pd_error_rad);
-      for (int t = 0; t < nd; ++t) {
-        angle[t]->values.push_back(fr.angle_rad[t] * kDeg);
-        target[t]->values.push_back(fr.target_rad[t] * kDeg);
-        derivative[t]->values.push_back(fr.derivative[t]);
-      }
-      for (int i = 0; i < n; ++i) {
-        objective[i]->values.push_back(fr.objective[i]);
-        effort[i]->values.push_back(fr.measures.effort_n_m_s[i]);
-        torque[i]->values.push_back(fr.measures.torque_n_m[i]);
-        drag[i]->values.push_back(fr.measures.drag_n[i]);
-        drag_along[i]->values.push_back(fr.measures.drag_along_n[i]);
-      }
-      recordGeoms(fr.time_s);
-      recordLoad();
-    }
+    for (long f = 0; f < r.integer("frames"); ++f) recorder.record(controller.frame(), controller);
   } catch (const std::exception& e) {
-    throw RunFailure("control at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what(), result);
+    throw RunFailure("control at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what(),
+                     windRunResult(recorder));
   }
-
-  // Final values: means over the last average_frames (the strength-limited step chatters by one
-  // step about an optimum).
-  const int tail = int(std::min<long>(r.integer("average_frames"), frames));
-  auto tailMean = [&](const std::vector<double>& v) {
-    double sum = 0;
-    for (int k = int(v.size()) - tail; k < int(v.size()); ++k) sum += v[k] / tail;
-    return sum;
-  };
-  std::vector<std::vector<double>> angles;
-  for (int t = 0; t < nd; ++t) angles.push_back(angle[t]->values);
-
-  auto& m = result.metrics;
-  m["final_angle_deg"] = {tailMean(angle[0]->values), "deg"};
-  m["final_angle_deg_2"] = {nd > 1 ? tailMean(angle[1]->values) : nan, "deg"};
-  m["final_angle_deg_3"] = {nd > 2 ? tailMean(angle[2]->values) : nan, "deg"};
-  m["max_contacts"] = {double(max_contacts), ""};
-  m["converged_frame"] = {convergedFrame(angles, r.real("convergence_tolerance_deg"), tail), ""};
-  m["flow_angle_deg"] = {tailMean(flow.values), "deg"};
-  // Signed means: the strength-limited step chatters about the optimum, and the steady state is
-  // the mean pose of that chatter.
-  m["load_line_angle_deg"] = {std::abs(tailMean(lean.values) - tailMean(force_lean.values)), "deg"};
-  m["com_offset_m"] = {tailMean(offset.values), "m"};
-  m["com_arm_m"] = {tailMean(arm_length.values), "m"};
-  m["lean_deg"] = {tailMean(lean.values), "deg"};
-  m["net_force_lean_deg"] = {tailMean(force_lean.values), "deg"};
-  m["final_effort_n_m_s"] = {tailMean(effort[0]->values), "N m s"};
-  m["gravity_effort_n_m_s"] = {mass * g * tailMean(arm_length.values) * p.frame_s, "N m s"};
-  m["effort_ratio"] = {m["final_effort_n_m_s"].value / m["gravity_effort_n_m_s"].value, ""};
-  m["mean_torque_ratio"] = {std::abs(tailMean(torque[0]->values)) / (mass * g * tailMean(arm_length.values)), ""};
-  {
-    std::vector<double> last(torque[0]->values.end() - tail, torque[0]->values.end());
-    for (double& x : last) x = std::abs(x);
-    std::sort(last.begin(), last.end());
-    const double median = tail % 2 ? last[tail / 2] : 0.5 * (last[tail / 2 - 1] + last[tail / 2]);
-    m["median_torque_ratio"] = {median / (mass * g * tailMean(arm_length.values)), ""};
-  }
-  m["final_drag_n"] = {tailMean(drag[0]->values), "N"};
-  const auto& a0 = angle[0]->values;
-  m["mean_speed_deg_per_s"] = {tail > 1 ? (a0.back() - a0[a0.size() - tail]) / ((tail - 1) * p.frame_s) : 0.0, "deg/s"};
-  m["max_servo_residual_rad"] = {max_residual, "rad"};
-  m["max_kinematic_error_rad"] = {max_kinematic, "rad"};
-  m["max_pd_error_rad"] = {max_pd, "rad"};
-  // The 3-D angle between the mean carried arm and the mean net force (a ball joint's Fig. 4).
-  m["load_line_angle_3d_deg"] = {lineAngleDeg({tailMean(arm_x), tailMean(arm_y), tailMean(arm_z)},
-                                              {tailMean(net_x), tailMean(net_y), tailMean(net_z)}), "deg"};
-  m["triangles"] = {double(force.triangles()), ""};
+  Result result = windRunResult(recorder);
+  addMetrics(result, recorder.measure(int(r.integer("average_frames")), r.real("convergence_tolerance_deg"),
+                                      force.triangles()));
   return result;
 }
 

@@ -1,20 +1,17 @@
 #include "kinds/control_fluid.hpp"
 
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 #include "control/fluid_controller.hpp"
-#include "fluid/diagnostics2.hpp"
+#include "control/fluid_run.hpp"
 #include "kinds/control_params.hpp"
-#include "kinds/flyer_measures.hpp"
 #include "kinds/ib_params.hpp"
 #include "kinds/swimmer.hpp"
 
 namespace creaturelab::kinds {
 namespace {
 
-using control::Vec3;
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
 fluid::WallType wall(const ParamReader& r, const std::string& name) { return *fluid::parse_wall_type(r.text(name)); }
@@ -73,10 +70,25 @@ std::vector<std::pair<std::string, double>> initialRad(const ParamReader& r) {
   return a;
 }
 
-double tailMean(const std::vector<double>& v, int tail) {
-  double sum = 0;
-  for (int k = int(v.size()) - tail; k < int(v.size()); ++k) sum += v[k] / tail;
-  return sum;
+// The recorded series, the outline markers with their bodies, and the vorticity frames.
+void addFluidRun(Result& result, const control::FluidRunRecorder& recorder) {
+  addSeries(result, recorder.series());
+  const control::MarkerFrames& m = recorder.markers();
+  result.topology["marker_body"] = m.body;
+  Tracks& outline = result.lagrangian["markers_m"];
+  outline.time_s = m.time_s;
+  outline.data = m.data;
+  outline.points = m.points;
+  outline.dim = 2;
+  const control::VorticityFrames& w = recorder.vorticity();
+  FieldFrames& fields = result.fields;
+  fields.nx = w.nx;
+  fields.ny = w.ny;
+  fields.dx_m = fields.dy_m = w.dx_m;
+  fields.origin_x_m = w.origin_x_m;
+  fields.origin_y_m = w.origin_z_m;
+  fields.time_s = w.time_s;
+  if (!w.time_s.empty()) fields.fields["vorticity_per_s"] = {w.data, "1/s"};
 }
 
 }  // namespace
@@ -252,140 +264,38 @@ Result ControlFluidKind::run(const Params& params) const {
   ParamReader r(params);
   const rigid::RigidModel model = loadModel(r);
   const control::ControllerParams p = controllerParams(r);
-  control::FluidController controller(model, p, fluidControlParams(r), initialRad(r), fluidParams(r), rigidFluidParams(r));
-  const int n = int(p.controlled.size());
-  const long frames = r.integer("frames");
-  const long field_every = r.integer("field_every_frames");
-  Result result;
-  auto& ts = result.timeseries;
-  Series& time = ts["time_s"] = {{}, "s"};
-  Series& residual = ts["servo_residual_rad"] = {{}, "rad"};
-  Series& flow = ts["flow_angle_deg"] = {{}, "deg"};
-  std::vector<Vec3> lines;  // per frame: anchor -> centre of mass of the first joint's bodies
-  std::vector<Series*> angle, target, objective, derivative, drag, drag_along, fx, fz, torque, effort;
-  for (const auto& j : p.controlled) {
-    angle.push_back(&(ts["angle_deg_" + j] = {{}, "deg"}));
-    target.push_back(&(ts["target_deg_" + j] = {{}, "deg"}));
-    objective.push_back(&(ts["objective_" + j] = {{}, ""}));
-    derivative.push_back(&(ts["derivative_per_rad_" + j] = {{}, "1/rad"}));
-    drag.push_back(&(ts["drag_n_" + j] = {{}, "N"}));
-    drag_along.push_back(&(ts["drag_along_n_" + j] = {{}, "N"}));
-    fx.push_back(&(ts["force_x_n_" + j] = {{}, "N"}));
-    fz.push_back(&(ts["force_z_n_" + j] = {{}, "N"}));
-    torque.push_back(&(ts["torque_n_m_" + j] = {{}, "N m"}));
-    effort.push_back(&(ts["effort_n_m_s_" + j] = {{}, "N m s"}));
-  }
-  // §7.1: the force on all bodies, the senses followed, the PD-driven angles (the flap).
-  Series& body_fx = ts["force_x_n_bodies"] = {{}, "N"};
-  Series& body_fz = ts["force_z_n_bodies"] = {{}, "N"};
-  std::vector<Series*> sense, pd_angle;
-  for (const auto& j : p.controlled) sense.push_back(&(ts["sense_" + j] = {{}, ""}));
-  for (const auto& j : p.pd_driven) pd_angle.push_back(&(ts["pd_angle_deg_" + j] = {{}, "deg"}));
-  // Bodies for drawing: the outline markers (world x, z) and which body each belongs to.
-  const auto& markers = controller.coupling().markers();
-  auto& marker_body = result.topology["marker_body"];
-  for (const auto& m : markers) marker_body.push_back(m.body);
-  Tracks& outline = result.lagrangian["markers_m"];
-  outline.points = int(markers.size());
-  outline.dim = 2;
   const coupling::RigidFluidParams cp = rigidFluidParams(r);
-  FieldFrames& fields = result.fields;
-  const auto& grid = controller.coupling().fluid().grid();
-  fields.nx = grid.nx;
-  fields.ny = grid.ny;
-  fields.dx_m = fields.dy_m = grid.dx_m;
-  fields.origin_x_m = cp.origin_x_m;
-  fields.origin_y_m = cp.origin_z_m;
-  fluid::Array2 w;
-  auto recordField = [&]() {
-    outline.time_s.push_back(controller.data().time_s());
-    for (const auto& x : controller.coupling().markerPosition_m())
-      outline.data.insert(outline.data.end(), {x.x + cp.origin_x_m, x.y + cp.origin_z_m});
-    const auto& c = controller.coupling().fluid();
-    fluid::vorticity_at_centres(c.grid(), c.walls(), w);
-    fields.time_s.push_back(controller.data().time_s());
-    Field& f = fields.fields["vorticity_per_s"];
-    f.unit = "1/s";
-    f.data.insert(f.data.end(), w.data(), w.data() + w.size());
-  };
-  const int j0_id = model.findJoint(p.controlled[0]);
-  const int j0_body = model.joint(j0_id).body;
-  const Vec3 stream = {1, 0, 0};
-  double max_residual = 0, max_cells = 0;
+  control::FluidController controller(model, p, fluidControlParams(r), initialRad(r), fluidParams(r), cp);
+  control::FluidRunRecorder recorder(model, p, controller, cp.origin_x_m, cp.origin_z_m, r.integer("field_every_frames"));
+  Result result;
   // The swimmer (swimmer.hpp, §7.2): the joints' senses follow the mouth's phases; the rise.
   RiseRecorder rise(r, model, result);
-  const auto phase_senses = phaseSenses(r, n);
+  const auto phase_senses = phaseSenses(r, int(p.controlled.size()));
   const auto phase_strengths = phaseStrengths(r);
-  const coupling::PhaseSchedule schedule = cp.mouth.schedule;
   const double density_ratio = densityRatio(model, controller.coupling(), r.real("density_kg_per_m3"));
   try {
     controller.hold(int(r.integer("warmup_frames") * r.integer("substeps")));
     rise.start(controller.data());
-    if (field_every > 0) recordField();
-    for (long f = 0; f < frames; ++f) {
-      const int phase = coupling::phaseAt(schedule, controller.data().time_s());
+    recorder.start(controller);
+    for (long f = 0; f < r.integer("frames"); ++f) {
+      const int phase = coupling::phaseAt(cp.mouth.schedule, controller.data().time_s());
       if (!phase_senses.empty()) controller.setSenses(phase_senses[phase]);
       if (!phase_strengths.empty()) controller.setStrength(phase_strengths[phase]);
       const control::FrameRecord fr = controller.frame();
       rise.record(controller.data());
-      max_cells = std::max(max_cells, controller.coupling().markerCellsPerStep());
-      time.values.push_back(fr.time_s);
-      residual.values.push_back(fr.servo_residual_rad);
-      max_residual = std::max(max_residual, fr.servo_residual_rad);
-      for (int i = 0; i < n; ++i) {
-        angle[i]->values.push_back(fr.angle_rad[i] * kDeg);
-        target[i]->values.push_back(fr.target_rad[i] * kDeg);
-        objective[i]->values.push_back(fr.objective[i]);
-        derivative[i]->values.push_back(fr.derivative[i]);
-        drag[i]->values.push_back(fr.measures.drag_n[i]);
-        drag_along[i]->values.push_back(fr.measures.drag_along_n[i]);
-        fx[i]->values.push_back(fr.measures.drag_vector_n[i][0]);
-        fz[i]->values.push_back(fr.measures.drag_vector_n[i][2]);
-        torque[i]->values.push_back(fr.measures.torque_n_m[i]);
-        effort[i]->values.push_back(fr.measures.effort_n_m_s[i]);
-      }
-      body_fx.values.push_back(controller.frameBodiesForce_n()[0]);
-      body_fz.values.push_back(controller.frameBodiesForce_n()[2]);
-      for (int i = 0; i < n; ++i)
-        sense[i]->values.push_back(controller.frameSenses()[i] == control::Sense::maximize ? 1.0 : -1.0);
-      for (std::size_t k = 0; k < p.pd_driven.size(); ++k)
-        pd_angle[k]->values.push_back(controller.data().qpos()[model.joint(model.findJoint(p.pd_driven[k])).qpos] * kDeg);
-      auto& d = controller.data();
-      const double* anchor = d.jointAnchor(j0_id);
-      const double* com = d.subtreeCom(j0_body);
-      lines.push_back({com[0] - anchor[0], com[1] - anchor[1], com[2] - anchor[2]});
-      flow.values.push_back(lineAngleDeg(lines.back(), stream));
-      if (field_every > 0 && (f + 1) % field_every == 0) recordField();
+      recorder.record(fr, controller);
     }
   } catch (const std::exception& e) {
+    addFluidRun(result, recorder);
     throw RunFailure("control_fluid at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what() +
                          (rise.active() ? stabilityHint(density_ratio) : std::string()),
                      result);
   }
-  const int tail = int(std::min<long>(r.integer("average_frames"), frames));
-  std::vector<std::vector<double>> angles;
-  for (int i = 0; i < n; ++i) angles.push_back(angle[i]->values);
-  auto& m = result.metrics;
-  m["final_angle_deg"] = {tailMean(angle[0]->values, tail), "deg"};
-  m["flow_angle_deg"] = {meanLineAngleDeg({lines.end() - tail, lines.end()}, stream), "deg"};
-  m["converged_frame"] = {convergedFrame(angles, r.real("convergence_tolerance_deg"), tail), ""};
-  m["final_drag_n"] = {tailMean(drag[0]->values, tail), "N"};
-  m["final_drag_along_n"] = {tailMean(drag_along[0]->values, tail), "N"};
-  m["final_effort_n_m_s"] = {tailMean(effort[0]->values, tail), "N m s"};
-  m["max_servo_residual_rad"] = {max_residual, "rad"};
-  m["forcing_iterations_most"] = {double(controller.maxForcingIterations()), ""};
-  m["markers"] = {double(markers.size()), ""};
-  m["marker_cells_per_step_most"] = {max_cells, ""};
+  addFluidRun(result, recorder);
   const double period_s = r.real("flap_period_s");
-  m["mean_up_force_n"] = {period_s > 0 ? lastCyclesMean(body_fz.values, framesPerCycle(period_s, r.real("frame_s")),
-                                                        int(r.integer("force_cycles")))
-                                       : tailMean(body_fz.values, tail),
-                          "N"};
-  m["mean_up_force_n_stderr"] = {period_s > 0 ? lastCyclesStandardError(body_fz.values,
-                                                                        framesPerCycle(period_s, r.real("frame_s")),
-                                                                        int(r.integer("force_cycles")))
-                                              : std::numeric_limits<double>::quiet_NaN(),
-                                 "N"};
+  addMetrics(result, recorder.measure(int(r.integer("average_frames")), r.real("convergence_tolerance_deg"),
+                                      period_s > 0 ? framesPerCycle(period_s, r.real("frame_s")) : 0,
+                                      int(r.integer("force_cycles")), controller.maxForcingIterations()));
   rise.measure(result, density_ratio);
   return result;
 }

@@ -5,8 +5,6 @@
 #include <numbers>
 #include <sstream>
 
-#include <Eigen/Dense>
-
 namespace creaturelab::kinds {
 namespace {
 
@@ -178,35 +176,45 @@ std::vector<InitialPose> initialPoses(const ParamReader& r) {
   return out;
 }
 
-double lineAngleDeg(const control::Vec3& a, const control::Vec3& b) {
-  auto norm = [](const control::Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
-  const double c = std::abs(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (norm(a) * norm(b));
-  return std::acos(std::min(1.0, c)) * 180.0 / std::numbers::pi;
+std::vector<control::StrokeFollow> parseStrokeSense(const std::string& text,
+                                                    const std::vector<std::string>& controlled) {
+  const auto entries = splitList(text, ',');
+  if (entries.empty()) return {};
+  std::vector<control::StrokeFollow> out(controlled.size());
+  for (const auto& e : entries) {
+    const auto eq = e.find('=');
+    if (eq == std::string::npos)
+      throw std::invalid_argument("stroke_sense: '" + e + "' is not 'controlled_joint = [+|-]inboard_joint'");
+    const std::string joint = trim(e.substr(0, eq));
+    std::string follow = trim(e.substr(eq + 1));
+    double sign = 1.0;
+    if (!follow.empty() && (follow[0] == '-' || follow[0] == '+')) {
+      sign = follow[0] == '-' ? -1.0 : 1.0;
+      follow = trim(follow.substr(1));
+    }
+    std::size_t k = 0;
+    while (k < controlled.size() && controlled[k] != joint) ++k;
+    if (k == controlled.size() || follow.empty())
+      throw std::invalid_argument("stroke_sense: '" + e + "': the left side must be a controlled joint, the right an inboard joint");
+    out[k] = {follow, sign};
+  }
+  return out;
 }
 
-double meanLineAngleDeg(const std::vector<control::Vec3>& lines, const control::Vec3& reference) {
-  Eigen::Matrix3d t = Eigen::Matrix3d::Zero();
-  for (const auto& l : lines) {
-    const Eigen::Vector3d u = Eigen::Vector3d(l[0], l[1], l[2]).normalized();
-    t += u * u.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(t);
-  const Eigen::Vector3d axis = eig.eigenvectors().col(2);  // eigenvalues ascending
-  return lineAngleDeg({axis[0], axis[1], axis[2]}, reference);
+int framesPerCycle(double period_s, double frame_s) {
+  const double n = period_s / frame_s;
+  if (n < 1 || std::abs(n - std::round(n)) > 1e-6)
+    throw std::invalid_argument("flap_period_s: " + std::to_string(period_s) + " s is not a whole number of frames of " +
+                                std::to_string(frame_s) + " s");
+  return int(std::round(n));
 }
 
-double convergedFrame(const std::vector<std::vector<double>>& angles_deg, double tol_deg, int tail) {
-  long first = 0;
-  for (const auto& a : angles_deg) {
-    const int n = int(a.size());
-    const int t = std::min(tail, n);
-    double mean = 0;
-    for (int k = n - t; k < n; ++k) mean += a[k] / t;
-    long f = n;
-    while (f > 0 && std::abs(a[f - 1] - mean) <= tol_deg) --f;
-    first = std::max(first, f == n ? long(n) + 1 : f + 1);
-  }
-  return double(first);
+void addSeries(Result& result, const control::SeriesSet& series) {
+  for (const auto& s : series.all()) result.timeseries[s.name] = {s.values, s.unit};
+}
+
+void addMetrics(Result& result, const std::vector<control::NamedValue>& values) {
+  for (const auto& v : values) result.metrics[v.name] = {v.value, v.unit};
 }
 
 }  // namespace creaturelab::kinds

@@ -2,7 +2,8 @@
 // What the controller kinds (control: simple wind, issue 15; control_fluid: the full fluid, issue
 // 16) read and measure the same way: the text parameters parsed into controller parameters (joint
 // lists, objectives, weights, initial poses, the motion patterns of kinematic and PD-driven joints,
-// Lentine et al. 2010 §2.2), the model, and the converged frame of Fig. 2
+// Lentine et al. 2010 §2.2; the flyer's stroke senses and flap period, §7.1), the model, and the copy of a
+// run's measures (control/run_measures.hpp) into the Result
 // (M. Lentine et al., "Creature Control in a Fluid Environment"). Every parse error throws std::invalid_argument naming
 // the key.
 #include <string>
@@ -10,7 +11,10 @@
 #include <vector>
 
 #include "control/controller_params.hpp"
+#include "control/run_measures.hpp"
+#include "control/stroke_sense.hpp"
 #include "kinds/params.hpp"
+#include "kinds/result.hpp"
 
 namespace creaturelab::kinds {
 
@@ -39,17 +43,19 @@ std::vector<InitialPose> initialPoses(const ParamReader& r);
 // "table(t_s angle_deg, t_s angle_deg, ...)"; `key` names the parameter in errors.
 control::Pattern parsePattern(const std::string& text, const std::string& key);
 
-// Angle (deg) between two lines (not directions): in [0, 90].
-double lineAngleDeg(const control::Vec3& a, const control::Vec3& b);
+// "outer=inner, outer2=-inner2" (the driven flyer, Lentine et al. 2010 §7.1): per controlled joint (in
+// `controlled` order) the inboard joint whose pattern's stroke flips its sense; "+" (default) = the
+// given sense while that joint's angle increases, "-" = while it decreases. Joints not named keep their
+// sense; "" = none. Throws std::invalid_argument naming stroke_sense for a malformed entry or a joint
+// not controlled.
+std::vector<control::StrokeFollow> parseStrokeSense(const std::string& text, const std::vector<std::string>& controlled);
 
-// The mean of lines (not directions) as axial data: the principal axis of the orientation tensor
-// sum u u^T of their unit vectors (Mardia & Jupp 2000 §9.2.3), returned as its angle (deg, in
-// [0, 90]) to the line `reference`. Unlike the mean of folded angles it is not biased when the lines
-// wander across the perpendicular or across the reference (a flat optimum at 90 or 0 degrees).
-double meanLineAngleDeg(const std::vector<control::Vec3>& lines, const control::Vec3& reference);
+// Frames in one flap period: period_s / frame_s rounded; throws std::invalid_argument naming
+// flap_period_s when that is not within 1e-6 of a whole number of frames (cycles would drift).
+int framesPerCycle(double period_s, double frame_s);
 
-// The frame from which every controlled angle stays within tol of its mean over the last `tail`
-// frames; frames + 1 if the last frame is not yet settled (frames count from 1).
-double convergedFrame(const std::vector<std::vector<double>>& angles_deg, double tol_deg, int tail);
+// Copies a controller run's series (each the length of time_s) and measures into the Result.
+void addSeries(Result& result, const control::SeriesSet& series);
+void addMetrics(Result& result, const std::vector<control::NamedValue>& values);
 
 }  // namespace creaturelab::kinds

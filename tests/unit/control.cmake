@@ -10,8 +10,8 @@ creaturelab_test(control_unit_test unit
     ${CMAKE_CURRENT_LIST_DIR}/control_joints_test.cpp
   LIBS cl_control
 )
-# The controller kinds' shared measures (kinds/control_params.hpp).
+# What a controller run measures in wind and fluid (control/run_measures.hpp).
 creaturelab_test(control_params_unit_test unit
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/control_params_test.cpp
-  LIBS cl_kinds
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/control_run_measures_test.cpp
+  LIBS cl_control
 )

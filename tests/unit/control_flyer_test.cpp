@@ -10,7 +10,8 @@
 
 #include "control/fluid_controller.hpp"
 #include "control/stroke_sense.hpp"
-#include "kinds/flyer_measures.hpp"
+#include "control/run_measures.hpp"
+#include "kinds/control_params.hpp"
 
 namespace creaturelab::control {
 namespace {
@@ -65,12 +66,12 @@ TEST(FlapCycles, MeanOverWholeCycles) {
   EXPECT_EQ(kinds::framesPerCycle(2.0, 1.0 / 60), 120);
   EXPECT_THROW(kinds::framesPerCycle(0.51, 1.0 / 60), std::invalid_argument);
   const std::vector<double> v = {100, 1, 2, 3, 4};
-  EXPECT_DOUBLE_EQ(kinds::lastCyclesMean(v, 2, 2), 2.5);
-  EXPECT_TRUE(std::isnan(kinds::lastCyclesMean(v, 3, 2)));
+  EXPECT_DOUBLE_EQ(lastCyclesMean(v, 2, 2), 2.5);
+  EXPECT_TRUE(std::isnan(lastCyclesMean(v, 3, 2)));
   // cycle means 1.5 and 3.5: sample deviation sqrt(2), over sqrt(2) cycles
-  EXPECT_DOUBLE_EQ(kinds::lastCyclesStandardError(v, 2, 2), 1.0);
-  EXPECT_TRUE(std::isnan(kinds::lastCyclesStandardError(v, 2, 1)));
-  EXPECT_TRUE(std::isnan(kinds::lastCyclesStandardError(v, 3, 2)));
+  EXPECT_DOUBLE_EQ(lastCyclesStandardError(v, 2, 2), 1.0);
+  EXPECT_TRUE(std::isnan(lastCyclesStandardError(v, 2, 1)));
+  EXPECT_TRUE(std::isnan(lastCyclesStandardError(v, 3, 2)));
 }
 
 // models/flyer.xml in a 4 m, 32^2 box with the floor source: inner joints PD-driven to a 30 deg,

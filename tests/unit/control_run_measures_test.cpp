@@ -1,4 +1,4 @@
-// What the controller kinds measure the same way (kinds/control_params.hpp): the angle between
+// What a controller run measures the same way in wind and fluid (control/run_measures.hpp): the angle between
 // lines, the axial mean of lines wandering about a flat optimum, and the converged frame of Fig. 2.
 #include <gtest/gtest.h>
 
@@ -6,12 +6,11 @@
 #include <numbers>
 #include <vector>
 
-#include "kinds/control_params.hpp"
+#include "control/run_measures.hpp"
 
 namespace {
 
-using creaturelab::control::Vec3;
-using namespace creaturelab::kinds;
+using namespace creaturelab::control;
 
 Vec3 line(double deg) {
   const double a = deg * std::numbers::pi / 180;
