@@ -24,6 +24,9 @@ Writes to RUN_DIR/figures/ (or --out):
                     A run that also varies the step draws a series per ratio dt / dx.
   step_convergence.png  when a grid runs at three or more steps: distance per cycle and stroke
                     against the step, with the order and Richardson's estimate in dt (and .txt).
+  reynolds.png      when the run sweeps the viscosity: forward speed and distance per cycle in
+                    diameters against Re = f D^2 / nu, Re = 10 marked (Herschlag & Miller 2011's
+                    collapse of 2-D bells below it; studies/jellyfish/reynolds.toml), and reynolds.txt.
 """
 import argparse
 import glob
@@ -510,6 +513,43 @@ def convergence(sweep, points, out):
     save_study(fig, lines, out, "convergence")
 
 
+def reynolds(sweep, points, out):
+    """Forward speed against Re = f D^2 / nu when the run sweeps the viscosity (driven points only)."""
+    name = "kinematic_viscosity_m2_per_s"
+    if name not in sweep or len(np.unique(sweep[name])) < 2:
+        return
+    rows = []
+    for f in points:
+        if plucked(f):
+            continue
+        hz, d, nu = (float(param(f, n)) for n in ("contraction_hz", "bell_diameter_m", name))
+        speed = metric(f, "cycle_speed_m_per_s")
+        rows.append((hz * d * d / nu, speed, metric(f, "distance_per_cycle_m") / d, speed * d / nu, nu))
+    if len(rows) < 2:
+        return
+    rows.sort()
+    re, speed, per_d, swim_re, nu = (np.array(c) for c in zip(*rows))
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    ax.semilogx(re, speed * 1e3, "o-", color="k", label="whole cycles' mean speed")
+    ax.axvline(10, color="tab:red", ls=":", label="Re = 10 (Herschlag & Miller 2011)")
+    ax.axhline(0, color="0.7", lw=0.6)
+    ax.set_xlabel("Re = f D^2 / nu")
+    ax.set_ylabel("forward speed (mm/s)")
+    twin = ax.twinx()
+    twin.semilogx(re, per_d, "s--", color="tab:green", ms=3)
+    twin.set_ylabel("distance per cycle (diameters)", color="tab:green")
+    ax.set_ylim(bottom=min(0.0, 1e3 * speed.min() * 1.1))
+    twin.set_ylim(bottom=min(0.0, per_d.min() * 1.1))
+    ax.set_title("the bell's speed against the Reynolds number")
+    ax.legend(fontsize=9, loc="upper left")
+    style.save(fig, os.path.join(out, "reynolds.png"))
+    lines = ["nu_m2_per_s  Re  speed_mm_per_s  per_cycle_diameters  swimming_Re"]
+    lines += [f"{n:.3g}  {r:.3g}  {1e3 * v:.4g}  {p:.4g}  {w:.3g}" for r, v, p, w, n in rows]
+    with open(os.path.join(out, "reynolds.txt"), "w") as fh:
+        fh.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
 def draw(run, out, axis=None, cycles=1.0, no_morphology=False):
     """Every figure of the run folder `run`, as PNGs (and tables) in folder `out`."""
     os.makedirs(out, exist_ok=True)
@@ -523,6 +563,7 @@ def draw(run, out, axis=None, cycles=1.0, no_morphology=False):
     size_scaling(sweep, points, out)
     convergence(sweep, points, out)
     step_convergence(sweep, points, out)
+    reynolds(sweep, points, out)
     print(f"figures in {out}")
 
 
