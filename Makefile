@@ -9,8 +9,9 @@ generator = $(if $(wildcard $(1)/CMakeCache.txt),,-G Ninja)
 # half the time of RelWithDebInfo's -O2 -g.
 ASAN_FLAGS = -O1 -g1 -DNDEBUG
 REPRO_LOG  = $(BUILD)/reproduce-build.log
+ASAN_LOG   = $(BUILD)/asan-build.log
 
-.PHONY: all deps configure build test test-asan test-quick reproduce-build reproduce reproduce-full bench clean
+.PHONY: all deps configure build test test-asan test-asan-build test-asan-run test-quick reproduce-build reproduce reproduce-full bench clean
 
 all: build
 
@@ -24,10 +25,14 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-# Release tests (unit, physics, cli, regression baselines), then the unit tests under ASan+UBSan.
+# Release tests (unit, physics, cli, regression baselines) while the sanitizer tree builds beside them
+# (its output: ASAN_LOG), then the unit tests under ASan+UBSan.
 test: build
-	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
-	@$(MAKE) --no-print-directory test-asan
+	@$(MAKE) --no-print-directory test-asan-build >$(ASAN_LOG) 2>&1 & asan=$$!; \
+	  echo "test: building the sanitizer tree beside the Release tests (log: $(ASAN_LOG))"; \
+	  ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS); release=$$?; \
+	  wait $$asan || { tail -n 40 $(ASAN_LOG) >&2; echo "test: the sanitizer tree did not build (log: $(ASAN_LOG))" >&2; exit 2; }; \
+	  $(MAKE) --no-print-directory test-asan-run && exit $$release
 
 # The sanitizer tree builds only the unit-test programs and the libraries they link. It is compiled
 # by clang, which instruments for ASan+UBSan in about half of gcc's time; a tree configured with
@@ -35,13 +40,19 @@ test: build
 ASAN_CONFIG = -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=$(ASAN_FLAGS)" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=$(ASAN_FLAGS)" \
   -DCREATURELAB_SANITIZE=ON -DCREATURELAB_BUILD_BENCH=OFF -DCREATURELAB_WITH_MPI=OFF
-test-asan: deps
+test-asan: test-asan-build
+	@$(MAKE) --no-print-directory test-asan-run
+
+test-asan-build: deps
 	@if [ -f $(ASAN_BUILD)/CMakeCache.txt ] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang++$$' $(ASAN_BUILD)/CMakeCache.txt; then \
 	  echo "test-asan: $(ASAN_BUILD) was configured with another compiler: configuring it afresh with clang++"; \
 	  rm -rf $(ASAN_BUILD); fi
 	@gen=; [ -f $(ASAN_BUILD)/CMakeCache.txt ] || gen="-G Ninja"; \
 	  cmake -S . -B $(ASAN_BUILD) $$gen $(ASAN_CONFIG) $(CMAKE_ARGS) >/dev/null
 	@cmake --build $(ASAN_BUILD) -j $(JOBS) --target unit_tests
+
+# Each unit-test program is one test in the sanitizer tree (tests/CMakeLists.txt).
+test-asan-run:
 	ASAN_OPTIONS=detect_leaks=0 ctest --test-dir $(ASAN_BUILD) -L unit --output-on-failure -j $(JOBS)
 
 # One module's unit tests in the Release tree, for the edit-compile-test loop: builds what they
