@@ -9,7 +9,6 @@ generator = $(if $(wildcard $(1)/CMakeCache.txt),,-G Ninja)
 # half the time of RelWithDebInfo's -O2 -g.
 ASAN_FLAGS = -O1 -g1 -DNDEBUG
 REPRO_LOG  = $(BUILD)/reproduce-build.log
-ASAN_LOG   = $(BUILD)/asan-build.log
 
 .PHONY: all deps configure build test test-asan test-asan-build test-asan-run test-quick reproduce-build reproduce reproduce-full bench clean
 
@@ -25,14 +24,10 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-# Release tests (unit, physics, cli, regression baselines) while the sanitizer tree builds beside them
-# (its output: ASAN_LOG), then the unit tests under ASan+UBSan.
+# Release tests (unit, physics, cli, regression baselines), then the unit tests under ASan+UBSan.
 test: build
-	@$(MAKE) --no-print-directory test-asan-build >$(ASAN_LOG) 2>&1 & asan=$$!; \
-	  echo "test: building the sanitizer tree beside the Release tests (log: $(ASAN_LOG))"; \
-	  ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS); release=$$?; \
-	  wait $$asan || { tail -n 40 $(ASAN_LOG) >&2; echo "test: the sanitizer tree did not build (log: $(ASAN_LOG))" >&2; exit 2; }; \
-	  $(MAKE) --no-print-directory test-asan-run && exit $$release
+	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
+	@$(MAKE) --no-print-directory test-asan
 
 # The sanitizer tree builds only the unit-test programs and the libraries they link. It is compiled
 # by clang, which instruments for ASan+UBSan in about half of gcc's time; a tree configured with
