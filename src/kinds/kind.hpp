@@ -11,6 +11,8 @@
 
 namespace creaturelab::kinds {
 
+class RenderHook;  // kinds/render_hook.hpp
+
 struct MetricSpec {
   std::string name;
   std::string unit;
@@ -51,6 +53,9 @@ class Kind {
   // See CostEstimate; a kind that cannot tell returns {}. Never throws: a point that cannot run
   // says so in validate() or run().
   virtual CostEstimate estimateCost(const Params& params) const { (void)params; return {}; }
+  // Whether and how `creaturelab render` draws a recorded run of this kind (kinds/render_hook.hpp);
+  // nullptr (the default): its runs do not render.
+  virtual const RenderHook* renderHook() const { return nullptr; }
 };
 
 // A kind whose schema is fixed when it is constructed: the constructor fills params_ and metrics_.
