@@ -13,6 +13,8 @@ class JellyfishKind : public SchemaKind {
   std::string validate(const Params& params) const override;
   Result run(const Params& params) const override;
   CostEstimate estimateCost(const Params& params) const override;
+  // Defined in kinds/jellyfish_render.cpp: a recorded swim drawn in 3-D (Rudolf & Mould 2009 §3.4-3.5).
+  const RenderHook* renderHook() const override;
 
   // The largest number of Hermite knots the schema declares (knot0_* .. knot{N-1}_*).
   static constexpr int kMaxKnots = 6;
