@@ -4,6 +4,7 @@
 // are Lambertian (§4: "rendered with a simple Lambertian surface lighting model"): diffuse only, no
 // highlights. POV-Ray is left-handed: a point (x, y, z) of the render frame is <x, y, −z> there.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/slice_model2.hpp"
@@ -37,6 +38,14 @@ struct PovPlacement {
 
 /// Meshes side by side on white, lit from above left, framed by an orthographic camera.
 std::string povGalleryScene(const std::vector<PovPlacement>& items, const PovView& view, const std::string& title);
+
+/// A figure: its scene and the mesh include files the scene reads, each as (file name, text).
+struct PovFigure {
+  std::string name;  // file stem: NAME.pov, rendered to NAME.png
+  int width_px = 0, height_px = 0;
+  std::string scene;
+  std::vector<std::pair<std::string, std::string>> includes;
+};
 
 /// Fig. 7: the 2-D slice (markers, generated exumbrellar points, resampled outline) in its plane,
 /// with the pairs of the listed rings, each pair's axis and its disc.
