@@ -1,0 +1,116 @@
+// Parameters declared once (kinds/describe.hpp): the schema, the reading of resolved parameters, the
+// way back and the range check all come from one describe().
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "kinds/describe.hpp"
+
+namespace sample {
+
+enum class Scheme { plain, fancy };
+inline std::string to_string(Scheme s) { return s == Scheme::plain ? "plain" : "fancy"; }
+enum class Law { linear, quadratic };
+
+struct Sample {
+  double dt_s = 0.01;
+  int cells = 10;
+  bool record = true;
+  std::string mode = "b";
+  std::string note = "hi";
+  Scheme scheme = Scheme::fancy;
+  Law law = Law::linear;
+  creaturelab::kinds::RealOrAuto step_s;
+
+  template <class V>
+  void describe(V& v) {
+    v.real("dt_s", dt_s, "s", 1e-6, 1, "time step");
+    v.integer("cells", cells, 2, 100, "cells per side");
+    v.boolean("record", record, "record frames");
+    v.choice("mode", mode, {"a", "b"}, "a or b");
+    v.text("note", note, "", "free text");
+    v.choice("scheme", scheme, {Scheme::plain, Scheme::fancy}, "spelled by to_string");
+    v.choice("law", law, {{"linear", Law::linear}, {"quadratic", Law::quadratic}}, "spelled here");
+    v.realOrAuto("step_s", step_s, "s", 1e-9, 10, "a step or auto");
+  }
+};
+
+}  // namespace sample
+
+namespace {
+
+using namespace creaturelab::kinds;
+
+TEST(Describe, SchemaListsEachFieldOnceWithItsInClassDefault) {
+  const std::vector<ParamSpec> specs = schemaOf<sample::Sample>();
+  ASSERT_EQ(specs.size(), 8u);
+  EXPECT_EQ(specs[0].name, "dt_s");
+  EXPECT_EQ(specs[0].type, ParamType::Real);
+  EXPECT_EQ(std::get<double>(specs[0].default_value), 0.01);
+  EXPECT_EQ(specs[0].unit, "s");
+  EXPECT_EQ(specs[0].min, 1e-6);
+  EXPECT_EQ(specs[0].max, 1.0);
+  EXPECT_EQ(specs[0].doc, "time step");
+  EXPECT_EQ(specs[1].type, ParamType::Integer);
+  EXPECT_EQ(std::get<std::int64_t>(specs[1].default_value), 10);
+  EXPECT_EQ(specs[1].max, 100.0);
+  EXPECT_EQ(std::get<bool>(specs[2].default_value), true);
+  EXPECT_EQ(specs[3].type, ParamType::Choice);
+  EXPECT_EQ(specs[3].choices, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(specs[4].type, ParamType::Text);
+  EXPECT_EQ(std::get<std::string>(specs[5].default_value), "fancy");
+  EXPECT_EQ(specs[5].choices, (std::vector<std::string>{"plain", "fancy"}));
+  EXPECT_EQ(std::get<std::string>(specs[6].default_value), "linear");
+  EXPECT_EQ(specs[6].choices, (std::vector<std::string>{"linear", "quadratic"}));
+  EXPECT_EQ(specs[7].type, ParamType::RealOrAuto);
+  EXPECT_EQ(std::get<std::string>(specs[7].default_value), "auto");
+
+  sample::Sample fixed;  // another struct's defaults (a kind composing other defaults)
+  fixed.step_s = {false, 0.5};
+  EXPECT_EQ(std::get<double>(schemaOf(fixed)[7].default_value), 0.5);
+}
+
+TEST(Describe, ReadsResolvedParamsIntoTheFieldsAndBack) {
+  Params p = paramsOf(sample::Sample{});
+  p["dt_s"] = 0.25;
+  p["cells"] = std::int64_t(42);
+  p["record"] = false;
+  p["mode"] = std::string("a");
+  p["scheme"] = std::string("plain");
+  p["law"] = std::string("quadratic");
+  p["step_s"] = 2.0;
+  const sample::Sample s = readParams<sample::Sample>(p);
+  EXPECT_EQ(s.dt_s, 0.25);
+  EXPECT_EQ(s.cells, 42);
+  EXPECT_FALSE(s.record);
+  EXPECT_EQ(s.mode, "a");
+  EXPECT_EQ(s.scheme, sample::Scheme::plain);
+  EXPECT_EQ(s.law, sample::Law::quadratic);
+  EXPECT_FALSE(s.step_s.is_auto);
+  EXPECT_EQ(s.step_s.value, 2.0);
+  EXPECT_EQ(paramsOf(s), p);
+  EXPECT_TRUE(readParams<sample::Sample>(paramsOf(sample::Sample{})).step_s.is_auto);
+}
+
+TEST(Describe, AMissingOrMistypedNameIsAProgrammingError) {
+  Params p = paramsOf(sample::Sample{});
+  p.erase("cells");
+  EXPECT_THROW(readParams<sample::Sample>(p), std::logic_error);
+  p = paramsOf(sample::Sample{});
+  p["dt_s"] = std::string("fast");
+  EXPECT_THROW(readParams<sample::Sample>(p), std::logic_error);
+}
+
+TEST(Describe, RangeProblemsNameEachFieldOutsideItsDescribedRange) {
+  EXPECT_EQ(rangeProblems(sample::Sample{}), "");
+  sample::Sample s;
+  s.dt_s = 2;
+  s.cells = 1;
+  s.mode = "c";
+  EXPECT_EQ(rangeProblems(s),
+            "dt_s: got 2, expected a value in [1e-06, 1]; cells: got 1, expected a value in [2, 100]; "
+            "mode: got \"c\", expected one of \"a\" | \"b\"");
+}
+
+}  // namespace
