@@ -1,12 +1,25 @@
 #pragma once
 // Closed form of m x'' + c x' + k x = 0 with x(0) = x0, x'(0) = v0 (thesis Eq. 4.12), for the
-// under-, critically and over-damped cases.
+// under-, critically and over-damped cases. The defaults are the oscillator kind's: 1 Hz with 1 kg.
 #include <cmath>
 
 namespace creaturelab::kinds {
 
 struct DampedOscillator {
-  double mass_kg, stiffness_n_per_m, damping_ns_per_m, x0_m, v0_m_per_s;
+  double mass_kg = 1.0;
+  double stiffness_n_per_m = 4.0 * M_PI * M_PI;
+  double damping_ns_per_m = 0.1;
+  double x0_m = 0.1;
+  double v0_m_per_s = 0.0;
+
+  template <class V>
+  void describe(V& v) {
+    v.real("mass_kg", mass_kg, "kg", 1e-12, 1e6, "oscillating mass");
+    v.real("stiffness_n_per_m", stiffness_n_per_m, "N/m", 1e-12, 1e12, "spring constant k (default: 1 Hz with 1 kg)");
+    v.real("damping_ns_per_m", damping_ns_per_m, "N*s/m", 0, 1e12, "viscous drag c (thesis Eq. 4.7), 0 = undamped");
+    v.real("x0_m", x0_m, "m", -1e3, 1e3, "initial displacement from rest");
+    v.real("v0_m_per_s", v0_m_per_s, "m/s", -1e3, 1e3, "initial velocity");
+  }
 
   double omega0() const { return std::sqrt(stiffness_n_per_m / mass_kg); }
   double zeta() const { return damping_ns_per_m / (2.0 * std::sqrt(stiffness_n_per_m * mass_kg)); }

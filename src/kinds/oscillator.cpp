@@ -12,17 +12,6 @@
 namespace creaturelab::kinds {
 
 OscillatorKind::OscillatorKind() {
-  params_ = {
-      real("mass_kg", 1.0, "kg", 1e-12, 1e6, "oscillating mass"),
-      real("stiffness_n_per_m", 4.0 * M_PI * M_PI, "N/m", 1e-12, 1e12, "spring constant k (default: 1 Hz with 1 kg)"),
-      real("damping_ns_per_m", 0.1, "N*s/m", 0, 1e12, "viscous drag c (thesis Eq. 4.7), 0 = undamped"),
-      real("x0_m", 0.1, "m", -1e3, 1e3, "initial displacement from rest"),
-      real("v0_m_per_s", 0.0, "m/s", -1e3, 1e3, "initial velocity"),
-      choice("integrator", "rk4", {"euler", "symplectic_euler", "rk4", "implicit_euler"},
-             "time integrator (thesis §4.2.1; rk4 is the thesis's choice, Eq. 4.16-4.19)"),
-      realOrAuto("dt_s", "s", 1e-9, 10, "time step; \"auto\" = half the integrator's stability limit"),
-      real("end_time_s", 10.0, "s", 1e-6, 1e5, "simulated time"),
-  };
   metrics_ = {
       {"omega_dt", "rad", "natural frequency times step, against each integrator's stability bound"},
       {"dt_used_s", "s", "the step used"},
@@ -36,18 +25,17 @@ std::string OscillatorKind::doc() const {
   return "damped mass on a spring beside its closed form (thesis Eq. 4.12); sweep integrator and dt_s";
 }
 
-std::string OscillatorKind::validate(const Params& p) const {
-  ParamReader r(p);
-  if (!r.isAuto("dt_s") && r.real("dt_s") > r.real("end_time_s"))
-    return "dt_s (" + core::formatNumber(r.real("dt_s")) + " s) is longer than end_time_s (" +
-           core::formatNumber(r.real("end_time_s")) + " s)";
+std::string OscillatorParams::validate() const {
+  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
+  if (!dt_s.is_auto && dt_s.value > end_time_s)
+    return "dt_s (" + core::formatNumber(dt_s.value) + " s) is longer than end_time_s (" +
+           core::formatNumber(end_time_s) + " s)";
   return "";
 }
 
 Result OscillatorKind::run(const Params& p) const {
-  ParamReader r(p);
-  const DampedOscillator exact{r.real("mass_kg"), r.real("stiffness_n_per_m"), r.real("damping_ns_per_m"),
-                               r.real("x0_m"), r.real("v0_m_per_s")};
+  const OscillatorParams q = readParams<OscillatorParams>(p);
+  const DampedOscillator& exact = q.body;
   const double rest_m = 1.0;  // arbitrary: only the displacement from rest enters the closed form
 
   springs::Network<2> net;
@@ -62,10 +50,10 @@ Result OscillatorKind::run(const Params& p) const {
   state.v_m_per_s(0, bob) = exact.v0_m_per_s;
 
   springs::SimulationOptions opt;
-  opt.integrator = parseIntegratorOrThrow(r.text("integrator"));
-  opt.end_time_s = r.real("end_time_s");
+  opt.integrator = parseIntegratorOrThrow(q.integrator);
+  opt.end_time_s = q.end_time_s;
   const double omega = springs::estimateOmegaMaxRadPerS(net, state);
-  opt.dt_s = r.isAuto("dt_s") ? springs::autoStepS(opt.integrator, omega, exact.zeta()) : r.real("dt_s");
+  opt.dt_s = q.dt_s.is_auto ? springs::autoStepS(opt.integrator, omega, exact.zeta()) : q.dt_s.value;
   opt.frame_interval_s = opt.dt_s;  // record every step: the error is read step by step
   opt.runaway_factor = 1e6;
 

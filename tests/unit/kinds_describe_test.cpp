@@ -1,11 +1,13 @@
 // Parameters declared once (kinds/describe.hpp): the schema, the reading of resolved parameters, the
-// way back and the range check all come from one describe().
+// way back and the range check all come from one describe(); a kind built on it lists its struct's
+// in-class defaults and reads them back unchanged.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
 
 #include "kinds/describe.hpp"
+#include "kinds/oscillator.hpp"
 
 namespace sample {
 
@@ -111,6 +113,20 @@ TEST(Describe, RangeProblemsNameEachFieldOutsideItsDescribedRange) {
   EXPECT_EQ(rangeProblems(s),
             "dt_s: got 2, expected a value in [1e-06, 1]; cells: got 1, expected a value in [2, 100]; "
             "mode: got \"c\", expected one of \"a\" | \"b\"");
+}
+
+TEST(DescribedKind, OscillatorListsItsStructsDefaultsAndValidatesThroughIt) {
+  const OscillatorKind kind;
+  const Params defaults = withDefaults(kind, {});
+  EXPECT_EQ(defaults, paramsOf(OscillatorParams{}));
+  EXPECT_EQ(kind.params().size(), 8u);
+  EXPECT_EQ(kind.validate(defaults), "");
+  Params p = defaults;
+  p["dt_s"] = 5.0;
+  p["end_time_s"] = 1.0;
+  EXPECT_EQ(kind.validate(p), "dt_s (5 s) is longer than end_time_s (1 s)");
+  p["mass_kg"] = -1.0;  // values the runner did not check: the ranges first
+  EXPECT_EQ(kind.validate(p), "mass_kg: got -1, expected a value in [1e-12, 1e+06]");
 }
 
 }  // namespace
