@@ -73,3 +73,55 @@ intact() {
   [[ $rc == 0 ]] || { cat "$scratch/$name.out" "$scratch/$name.err" >&2; fail "$name: exit code $rc, expected 0"; }
   echo "ok   $name: the intact run passes"
 }
+
+# frequency_coarse NAME [BELL_PLUCK_TENTACLES]: $scratch/NAME.toml, experiments/jellyfish/frequency.toml (Fig. 5 and
+# the bell alone, with its checks) on the setting its breaking tests share: 2 mm cells at twice the step, 64 segments,
+# 3 s windows; the bell with its tentacles driven at 0.6 Hz and alone at 0.7 Hz (points 0 and 1), and both 4 s plucks
+# (points 2 and 3: with the tentacles, and the bell pluck, whose tentacles BELL_PLUCK_TENTACLES sets, false unless
+# given). The plucks set their own tension, so a run that changes only the drives' can reuse them (--resume).
+frequency_coarse() {
+  study "$1" experiments/jellyfish/frequency.toml <<TOML
+[params]
+cells = 125
+dt_s = 0.0025
+duration_s = 3.0
+bell_segments = 64
+[[case]]
+label = "drive 0.6 Hz"
+tentacles = true
+active_cycles = 0
+contraction_hz = 0.6
+[[case]]
+label = "bell alone 0.7 Hz"
+tentacles = false
+active_cycles = 0
+contraction_hz = 0.7
+[[case]]
+label = "pluck"
+tentacles = true
+active_cycles = 1
+pulse_duration_s = 0.1
+muscle_tension_n_per_m2 = 20.0
+contraction_hz = 1.0
+warmup_cycles = 0.0
+duration_s = 4.0
+[[case]]
+label = "bell pluck"
+tentacles = ${2:-false}
+active_cycles = 1
+pulse_duration_s = 0.1
+muscle_tension_n_per_m2 = 20.0
+contraction_hz = 1.0
+warmup_cycles = 0.0
+duration_s = 4.0
+TOML
+}
+
+# reused NAME POINT...: the intact run's ($scratch/run_intact) point files POINT (indices) copied into run NAME's
+# folder, for a `broken NAME ... --resume` whose change leaves those points' configuration as it was.
+reused() {
+  local name=$1 p
+  shift
+  mkdir -p "$scratch/run_$name"
+  for p in "$@"; do cp "$scratch/run_intact/$(printf 'point_%06d.h5' "$p")" "$scratch/run_$name/"; done
+}
