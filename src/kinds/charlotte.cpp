@@ -32,6 +32,7 @@ web::WebParams webParams(const ParamReader& r) {
   w.spiral_jitter = r.real("spiral_jitter");
   w.spiral_k_n_per_m = r.real("spiral_k_n_per_m");
   w.spoke_k_n_per_m = r.real("spoke_k_n_per_m");
+  w.air_drag_ns_per_m = r.real("drag_ns_per_m");
   w.seed = std::uint64_t(r.integer("seed"));
   return w;
 }
@@ -176,6 +177,8 @@ CharlotteKind::CharlotteKind() {
       real("spiral_jitter", w.spiral_jitter, "", 0, 1, "randomness of the spiral (§5.2)"),
       real("spiral_k_n_per_m", w.spiral_k_n_per_m, "N/m", 1e-9, 1e3, "spiral k (the web kind's default; thesis gives none of its own)"),
       real("spoke_k_n_per_m", w.spoke_k_n_per_m, "N/m", 1e-9, 1e3, "radial spoke k (§5.2.1: 0.01 N/m)"),
+      real("drag_ns_per_m", w.air_drag_ns_per_m, "N*s/m", 0, 1,
+           "air friction (§5.2.1: 1e-8 N s/m); it sets the resettle's 5-10 s, exp(-t / 2 s) for 10 ug masses"),
       integer("seed", std::int64_t(w.seed), 0, std::int64_t(1) << 62,
               "seed of every random choice (web, random attachments, random gaps)"),
       // the target (§6, Figs. 6.1, 6.6, 6.16, 6.18)

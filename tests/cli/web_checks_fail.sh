@@ -65,12 +65,39 @@ TOML
 broken sweeps_only "$scratch/sweeps_only.toml" "with the exact finish the 2% limit holds to round-off after every step"
 
 # Figs. 5.1 and §5.1: the 5-10 s settle is the air drag's (it damps the release as exp(-t / 2 s)): twenty
-# times the drag settles every strand twenty times sooner, in 0.45-0.52 s; stopped after 1.5 s the release
-# has not died out; laid at rest whatever the over-extension says, the sag cannot fall.
+# times the drag settles every strand twenty times sooner, in 0.45-0.52 s; laid at rest whatever the
+# over-extension says, the sag cannot fall.
 broken strand_heavy_drag experiments/web/strand_layouts.toml "thesis parameters settle within 5-10 s (§5.1)" \
   params.drag_ns_per_m=2e-7 params.end_time_s=0.8
-broken strand_short experiments/web/strand_layouts.toml "dynamic settle agrees with the static Newton solve" \
-  params.end_time_s=1.5
+# The dynamic settle ends on the static solve's equilibrium because the drag takes the release's energy
+# out; without drag, over the claim's whole 15 s, the free strands still swing 2-48% off their static sags
+# (the rest layout and 75% over; the Provot cases, which the file's other checks name, 0.1 s long).
+study strand_no_drag experiments/web/strand_layouts.toml <<'TOML'
+[params]
+drag_ns_per_m = 0.0
+[[case]]
+label = "rest layout (Fig. 5.1)"
+layout = "rest"
+overextension = 0.0
+[[case]]
+label = "over-extended 75%"
+layout = "overextended"
+overextension = 0.75
+[[case]]
+label = "rest layout + Provot 2% (Fig. 5.2)"
+layout = "rest"
+overextension = 0.0
+provot = true
+end_time_s = 0.1
+[[case]]
+label = "rest layout + Provot 2%, exact finish"
+layout = "rest"
+overextension = 0.0
+provot = true
+provot_exact = true
+end_time_s = 0.1
+TOML
+broken strand_no_drag "$scratch/strand_no_drag.toml" "dynamic settle agrees with the static Newton solve"
 study strand_all_rest experiments/web/strand_layouts.toml <<'TOML'
 [params]
 end_time_s = 1.0
@@ -95,13 +122,15 @@ provot = true
 TOML
 broken strand_all_rest "$scratch/strand_all_rest.toml" "sag decreases with over-extension"
 
-# Default web (Figs. 5.7-5.14): twenty times the drag settles it in 0.5 s; without drag the hub still swings
-# 41% off its static sag after 1 s; a secondary spoke from every frame mass gives more particles than the
-# thesis's 5,000-7,000.
+# Default web (Figs. 5.7-5.14): twenty times the drag settles it in 0.5 s; a secondary spoke from every
+# frame mass gives more particles than the thesis's 5,000-7,000.
 broken web_heavy_drag experiments/web/default.toml "settles within 5-10 s (thesis §5.1)" \
   params.drag_ns_per_m=2e-7 params.end_time_s=0.8
-broken web_no_drag experiments/web/default.toml "dynamic hub sag within 0.5% of the static equilibrium" \
-  params.drag_ns_per_m=0.0 params.end_time_s=1.0
+# The dynamic web and the static solve carry the same forces (the inward frame force is in both): started
+# on the statics it stays there (1.7e-11 off after 2 s). A force the dynamics has and the statics lacks, the
+# calibrated wind, moves the hub 70% of its sag off them.
+broken web_wind_static experiments/web/default.toml "dynamic hub sag within 0.5% of the static equilibrium" \
+  params.start=static params.end_time_s=2.0 params.wind_scale=0.03
 broken web_dense experiments/web/default.toml "particle count within the thesis text's 5,000-7,000 (ch. 3)" \
   params.secondary_spoke_stride=1 params.end_time_s=0.0
 # The silk check is a known deviation on the default web (KNOWN) and passes on a web 0.6 times the size.
@@ -128,13 +157,14 @@ broken no_wind "$scratch/no_wind.toml" "the hub sways 50-60 mm rms under the cal
 [[ $(status no_wind "the sway doubles with WIND") == FAIL ]] || fail "no_wind: the linearity check did not fail"
 
 # Figs. 5.17-5.38: every variant's settling rests on the air drag (exp(-t / 2 s)): twenty times the drag
-# settles each in 0.45-0.53 s; without drag a shape's hub still swings 18-83% off its static sag after 1 s.
+# settles each in 0.45-0.53 s. As on the default web, a shape started on its statics stays there (the
+# triangle 1.6e-11 off after 2 s) until the calibrated wind, which the statics lack, moves it 41% off.
 broken sizes_heavy_drag experiments/web/sizes.toml "every size settles within 5-10 s" \
   params.drag_ns_per_m=2e-7 params.end_time_s=0.8
 broken shapes_heavy_drag experiments/web/shapes.toml "every shape settles within 5-10 s" \
   params.drag_ns_per_m=2e-7 params.end_time_s=0.8
-broken shapes_no_drag experiments/web/shapes.toml "every shape's dynamic hub sag matches its statics within 2%" \
-  params.drag_ns_per_m=0.0 params.end_time_s=1.0
+broken shapes_wind_static experiments/web/shapes.toml "every shape's dynamic hub sag matches its statics within 2%" \
+  params.start=static params.end_time_s=2.0 params.wind_scale=0.03 'sweep.frame_shape=["triangle"]'
 for claim in spiral_spacing spoke_spacing combined; do
   broken ${claim}_heavy_drag experiments/web/$claim.toml "every variant settles within 5-10 s" \
     params.drag_ns_per_m=2e-7 params.end_time_s=0.8
@@ -184,7 +214,7 @@ TOML
 broken charlotte_no_cut "$scratch/charlotte_no_cut.toml" "plain PIG: the letters hold much less spiral than the web around them"
 [[ $(status charlotte_no_cut "cross-hatch: the letters hold more silk than the web around them (Fig. 6.12)") == FAIL ]] ||
   fail "charlotte_no_cut: the cross-hatch check did not fail"
-# A 61-pixel dilation spills the cut far off the letters; a 2 s resettle cannot show a 5-10 s settle.
+# A 61-pixel dilation spills the cut far off the letters.
 study charlotte_spill experiments/web/charlotte.toml <<'TOML'
 [params]
 renders = false
@@ -198,8 +228,23 @@ emphasis = "cross_hatch"
 TOML
 broken charlotte_spill "$scratch/charlotte_spill.toml" \
   "segments are removed where the target is: at least 90% of them have their middle on it"
-[[ $(status charlotte_spill "the web settles again in 5-10 s, as the thesis's webs do (§5.1)") == FAIL ]] ||
-  fail "charlotte_spill: the settling check did not fail"
+# The resettle's 5-10 s is the air drag's (exp(-t / 2 s) for 10 ug masses): twenty times the drag settles
+# both webs in 0.47-0.48 s, too soon (the same times over the claim's 12 s as over the 1 s run here).
+settle="the web settles again in 5-10 s, as the thesis's webs do (§5.1)"
+study charlotte_heavy_drag experiments/web/charlotte.toml <<'TOML'
+[params]
+renders = false
+drag_ns_per_m = 2e-7
+resettle_time_s = 1.0
+[[case]]
+label = "plain"
+[[case]]
+label = "cross_hatch"
+emphasis = "cross_hatch"
+TOML
+broken charlotte_heavy_drag "$scratch/charlotte_heavy_drag.toml" "$settle"
+grep -F "$settle" "$scratch/charlotte_heavy_drag.out" | grep -Eq "FAIL .*\[0\.[0-9]+, 0\.[0-9]+\] over 2 points" ||
+  fail "charlotte_heavy_drag: the webs do not settle within the first second"
 
 # Figs. 5.19-5.23: with no spring constant cut, no family elongates and none more than another (the
 # static equilibria are compared: end_time_s = 0).
