@@ -68,7 +68,8 @@ double Controller::evaluate(Worker& w, const rigid::RigidState& start, int t, do
   w.data.restore(start);
   Prescribed& pr = w.prescribed;
   perturbation(pres_, model_, start.qpos.data(), t, offset, pr);
-  advanceFrame(w.data, pr, force_, p_.substeps, p_.servo_iterations, p_.servo_tolerance_rad, w.servo);
+  advanceFrame(w.data, pr, force_, p_.substeps, p_.servo_iterations, p_.servo_tolerance_rad, w.servo,
+               p_.servo_projection);
   measure(w.data, layout_, force_, w.scratch, w.measures);
   return combined(p_.weights, w.measures.objective, pres_.dof_joint[t]);
 }
@@ -119,7 +120,7 @@ FrameRecord Controller::frame() {
   }
   // (a, c): one frame of the creature.
   const ServoReport servo = advanceFrame(main_, pres_.prescribed, force_, p_.substeps, p_.servo_iterations,
-                                         p_.servo_tolerance_rad, main_servo_);
+                                         p_.servo_tolerance_rad, main_servo_, p_.servo_projection);
   r.time_s = main_.time_s();
   r.servo_residual_rad = servo.residual_rad;
   for (int i = 0; i < n; ++i) {

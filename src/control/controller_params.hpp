@@ -54,6 +54,9 @@ struct ControllerParams {
   int threads = 1;                  // per-DOF evaluations in parallel (§5, Fig. 10)
   int servo_iterations = 8;         // Newton iterations of the target servo per substep
   double servo_tolerance_rad = 1e-10;
+  // Test only: false skips the servo's projection of its last residual (post-stabilisation, §2.2), so
+  // that a test sees the kinematic joints leave their patterns (tests/cli/control_checks_fail.sh).
+  bool servo_projection = true;
 };
 
 // "" when p fits the model, else what is wrong (joint names, lengths, ranges).

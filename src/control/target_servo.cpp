@@ -43,7 +43,7 @@ double residuals(const rigid::RigidData& data, const Prescribed& p, const ServoS
 }  // namespace
 
 ServoReport advanceFrame(rigid::RigidData& data, const Prescribed& p, const ForceModel& force, int substeps,
-                         int max_iterations, double tolerance_rad, ServoScratch& s) {
+                         int max_iterations, double tolerance_rad, ServoScratch& s, bool project) {
   const int nv = data.model().dofs();
   const int ns = int(p.qpos.size());
   const int np = ns + 3 * int(p.balls.size());  // unknown torques
@@ -118,6 +118,7 @@ ServoReport advanceFrame(rigid::RigidData& data, const Prescribed& p, const Forc
       throw std::runtime_error("the rigid bodies diverged (positions or velocities not finite) at t = " +
                                std::to_string(data.time_s()) + " s");
     // Stage 3: projection of the residual (post-stabilisation, §2.2).
+    if (!project) continue;
     for (int k = 0; k < ns; ++k) data.qpos()[p.qpos[k]] = goal[k];
     for (std::size_t b = 0; b < p.balls.size(); ++b)
       std::copy(s.ball_goal[b].begin(), s.ball_goal[b].end(), data.qpos() + p.balls[b].qpos);

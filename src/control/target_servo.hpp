@@ -63,9 +63,10 @@ struct ServoScratch {
 // Advances `data` one frame of `substeps` MuJoCo steps: the prescribed angles move linearly from
 // where they are to their targets (or follow their patterns), reaching each substep's goal exactly;
 // PD-driven joints get their torques; `force` is evaluated at
-// the start of every substep (explicit). Throws std::runtime_error when the state stops being
+// the start of every substep (explicit). `project` false skips stage 3, the projection of the residual
+// (test only: the prescribed joints then end where the Newton iteration left them). Throws std::runtime_error when the state stops being
 // finite (a diverging model) or MuJoCo warns of a bad acceleration.
 ServoReport advanceFrame(rigid::RigidData& data, const Prescribed& p, const ForceModel& force, int substeps,
-                         int max_iterations, double tolerance_rad, ServoScratch& scratch);
+                         int max_iterations, double tolerance_rad, ServoScratch& scratch, bool project = true);
 
 }  // namespace creaturelab::control

@@ -21,6 +21,7 @@ control::Vec3 windVelocity(const ParamReader& r) {
 control::ControllerParams windControllerParams(const ParamReader& r) {
   control::ControllerParams p = controllerParams(r);
   p.steady_state = r.boolean("steady_state");
+  p.servo_projection = r.boolean("servo_projection");
   return p;
 }
 
@@ -92,6 +93,9 @@ ControlKind::ControlKind() {
               "rigid velocity); else §3.2, dynamic"),
       boolean("rigidify_outboard", true, "§5: hold the bodies outboard of a perturbed joint rigid with it"),
       integer("threads", 1, 1, 16, "threads for the per-DOF evaluations (§5, Fig. 10); results do not depend on it"),
+      boolean("servo_projection", true,
+              "test only: false skips the servo's projection of its last residual (§2.2 post-stabilisation), so the "
+              "kinematic joints end where the servo's Newton iteration left them"),
       integer("surface_slices", 12, 3, 256, "segments around round geoms in the wind's surface triangles"),
       real("convergence_tolerance_deg", 1.0, "deg", 1e-6, 90,
            "converged frame: from it every controlled angle stays this close to its final mean"),

@@ -44,22 +44,21 @@ broken effort_no_gravity experiments/control/block_effort.toml \
   "a 10 m/s wind leans the block 38 degrees from the vertical (Eq. 2 balance, within 1 degree)" \
   params.gravity_m_per_s2=0.0
 also effort_no_gravity "a 5 m/s wind leans the block 13.9 degrees from the vertical (Eq. 2 balance, within 1 degree)"
-# The remaining effort is chatter about the optimum only once the strength-limited step has reached it: stopped
-# after 40 frames (0.67 s), before 0.5 and 1 rad/s get there, what remains is the load, falling with the
-# strength (0.70, 0.33, 0.19 of holding the block horizontal).
-broken effort_not_reached experiments/control/block_effort.toml \
-  "what effort remains is the chatter of the strength-limited step: it grows with the strength" params.frames=40
+# Without the wind the block hangs where it starts, on its optimum: every strength converges at frame 1.
 broken effort_no_wind experiments/control/block_effort.toml \
   "weaker wind, smaller lean (Fig. 4 b against a): Eq. 2's 13.9 / 38.4 = 0.36, each lean within one 0.95-degree step" \
   params.density_kg_per_m3=0.0
+also effort_no_wind "the converged frame falls as the strength grows"
 # Minimising drag instead of the effort (Eq. 1), the block turns edge-on to the wind, horizontal: off the
-# net force's line and fully loaded at every strength.
+# net force's line and fully loaded at every strength, so what effort remains is that load (1.00 of holding
+# the block horizontal at 0.5 and at 2 rad/s), not a chatter that grows with the step.
 broken effort_min_drag experiments/control/block_effort.toml \
   "1 rad/s: the block's axis lies along the net external force at steady state (within 1 degree, §2.3)" \
   params.objectives=drag
 also effort_min_drag "0.5 rad/s: the block's axis lies along the net external force at steady state (within 1 degree, §2.3)"
 also effort_min_drag "at 2 rad/s (a 1.9-degree step) the mean pose is within one step of the net force's line"
 also effort_min_drag "the sustained effort is near zero: mean torque below 2% of holding the block horizontal"
+also effort_min_drag "what effort remains is the chatter of the strength-limited step: 4 times the strength, 4 times the effort"
 
 # Figs. 4 and 6 in 3-D: no air, no drag to minimise or maximise; (c) without the controller the block
 # stays horizontal, across the net force and loaded.
@@ -107,6 +106,12 @@ broken human_no_pd experiments/control/human_gravity.toml \
 # With the forearms loose the servo misses its goals by 5.8e-4 rad before the projection (its Newton step is
 # exact only without contacts): the check resolves a servo that does not reach them.
 also human_no_pd "(c) ... reached by the servo's torques under gravity and contact (miss before the projection below 1e-5 rad)"
+# Fig. 9 (c): the kinematic legs land on their patterns exactly because the servo projects its last
+# residual away (§2.2, the post-stabilisation of Weinstein et al. 2008); without the projection (a test-only
+# switch) they end where the Newton iteration left them, up to 2.8e-11 rad off over 60 frames.
+broken human_no_projection experiments/control/human_gravity.toml \
+  "(c) walking legs: the kinematic hips and knees are on their sine patterns at every frame's end" \
+  params.servo_projection=false params.frames=60
 sed 's/conaffinity="2"/conaffinity="0"/' experiments/control/models/humanoid_upper.xml >"$scratch/no_contacts.xml"
 broken human_no_contacts experiments/control/human_gravity.toml "the arms meet the legs: contacts are on and used" \
   "params.model_file=\"$scratch/no_contacts.xml\"" params.frames=60
