@@ -17,21 +17,14 @@ const Vec3 kStream = {1, 0, 0};  // the flow angle's reference line
 FluidRunRecorder::FluidRunRecorder(const rigid::RigidModel& model, const ControllerParams& p,
                                    FluidController& controller, double origin_x_m, double origin_z_m,
                                    long field_every_frames)
-    : model_(model), field_every_(field_every_frames) {
-  time_ = &series_.add("time_s", "s");
-  residual_ = &series_.add("servo_residual_rad", "rad");
+    : model_(model), field_every_(field_every_frames), common_(series_, p.controlled) {
   flow_ = &series_.add("flow_angle_deg", "deg");
   for (const auto& j : p.controlled) {
     angle_.push_back(&series_.add("angle_deg_" + j, "deg"));
     target_.push_back(&series_.add("target_deg_" + j, "deg"));
-    objective_.push_back(&series_.add("objective_" + j, ""));
     derivative_.push_back(&series_.add("derivative_per_rad_" + j, "1/rad"));
-    drag_.push_back(&series_.add("drag_n_" + j, "N"));
-    drag_along_.push_back(&series_.add("drag_along_n_" + j, "N"));
     fx_.push_back(&series_.add("force_x_n_" + j, "N"));
     fz_.push_back(&series_.add("force_z_n_" + j, "N"));
-    torque_.push_back(&series_.add("torque_n_m_" + j, "N m"));
-    effort_.push_back(&series_.add("effort_n_m_s_" + j, "N m s"));
   }
   // §7.1: the force on all bodies, the senses followed, the PD-driven angles (the flap).
   body_fx_ = &series_.add("force_x_n_bodies", "N");
@@ -72,20 +65,13 @@ void FluidRunRecorder::recordField(FluidController& controller) {
 
 void FluidRunRecorder::record(const FrameRecord& fr, FluidController& controller) {
   max_cells_ = std::max(max_cells_, controller.coupling().markerCellsPerStep());
-  time_->push_back(fr.time_s);
-  residual_->push_back(fr.servo_residual_rad);
-  max_residual_ = std::max(max_residual_, fr.servo_residual_rad);
+  common_.record(fr);
   for (std::size_t i = 0; i < angle_.size(); ++i) {
     angle_[i]->push_back(fr.angle_rad[i] * kFluidRunDeg);
     target_[i]->push_back(fr.target_rad[i] * kFluidRunDeg);
-    objective_[i]->push_back(fr.objective[i]);
     derivative_[i]->push_back(fr.derivative[i]);
-    drag_[i]->push_back(fr.measures.drag_n[i]);
-    drag_along_[i]->push_back(fr.measures.drag_along_n[i]);
     fx_[i]->push_back(fr.measures.drag_vector_n[i][0]);
     fz_[i]->push_back(fr.measures.drag_vector_n[i][2]);
-    torque_[i]->push_back(fr.measures.torque_n_m[i]);
-    effort_[i]->push_back(fr.measures.effort_n_m_s[i]);
   }
   body_fx_->push_back(controller.frameBodiesForce_n()[0]);
   body_fz_->push_back(controller.frameBodiesForce_n()[2]);
@@ -104,17 +90,17 @@ void FluidRunRecorder::record(const FrameRecord& fr, FluidController& controller
 
 std::vector<NamedValue> FluidRunRecorder::measure(int average_frames, double tolerance_deg, int frames_per_cycle,
                                                   int force_cycles, int forcing_iterations_most) const {
-  const int tail = std::min(average_frames, int(time_->size()));
+  const int tail = std::min(average_frames, common_.frames());
   std::vector<std::vector<double>> angles;
   for (const auto* a : angle_) angles.push_back(*a);
   return {
       {"final_angle_deg", "deg", tailMean(*angle_[0], tail)},
       {"flow_angle_deg", "deg", meanLineAngleDeg({lines_.end() - tail, lines_.end()}, kStream)},
       {"converged_frame", "", convergedFrame(angles, tolerance_deg, tail)},
-      {"final_drag_n", "N", tailMean(*drag_[0], tail)},
-      {"final_drag_along_n", "N", tailMean(*drag_along_[0], tail)},
-      {"final_effort_n_m_s", "N m s", tailMean(*effort_[0], tail)},
-      {"max_servo_residual_rad", "rad", max_residual_},
+      {"final_drag_n", "N", tailMean(common_.drag(0), tail)},
+      {"final_drag_along_n", "N", tailMean(common_.dragAlong(0), tail)},
+      {"final_effort_n_m_s", "N m s", tailMean(common_.effort(0), tail)},
+      {"max_servo_residual_rad", "rad", common_.maxResidualRad()},
       {"forcing_iterations_most", "", double(forcing_iterations_most)},
       {"markers", "", double(markers_.points)},
       {"marker_cells_per_step_most", "", max_cells_},

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "control/fluid_controller.hpp"
+#include "control/frame_series.hpp"
 #include "control/run_measures.hpp"
 
 namespace creaturelab::control {
@@ -57,13 +58,13 @@ class FluidRunRecorder {
   int j0_id_ = -1, j0_body_ = -1;
   long field_every_ = 0, frame_ = 0;
   SeriesSet series_;
-  std::vector<double> *time_, *residual_, *flow_, *body_fx_, *body_fz_;
-  std::vector<std::vector<double>*> angle_, target_, objective_, derivative_, drag_, drag_along_, fx_, fz_, torque_,
-      effort_, sense_, pd_angle_;
+  FrameSeries common_;  // after series_, which holds its series
+  std::vector<double> *flow_, *body_fx_, *body_fz_;
+  std::vector<std::vector<double>*> angle_, target_, derivative_, fx_, fz_, sense_, pd_angle_;
   std::vector<Vec3> lines_;  // per frame: anchor -> centre of mass of the first joint's bodies
   MarkerFrames markers_;
   VorticityFrames vorticity_;
-  double max_residual_ = 0, max_cells_ = 0;
+  double max_cells_ = 0;
 };
 
 }  // namespace creaturelab::control

@@ -16,7 +16,7 @@ double windNorm(const Vec3& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[
 
 WindRunRecorder::WindRunRecorder(const rigid::RigidModel& model, const ControllerParams& p, const ForceModel& force,
                                  const Vec3& wind_m_per_s, double gravity_m_per_s2, Controller& controller)
-    : model_(model), p_(p), wind_(wind_m_per_s), gravity_(gravity_m_per_s2) {
+    : model_(model), p_(p), wind_(wind_m_per_s), gravity_(gravity_m_per_s2), common_(series_, p.controlled) {
   // Per controlled DOF a name: the hinge's, or the ball's with _x, _y, _z (its rotation vector).
   std::vector<std::string> dof_names;
   for (const auto& j : p.controlled) {
@@ -24,19 +24,10 @@ WindRunRecorder::WindRunRecorder(const rigid::RigidModel& model, const Controlle
     else
       for (const char* axis : {"_x", "_y", "_z"}) dof_names.push_back(j + axis);
   }
-  time_ = &series_.add("time_s", "s");
-  residual_ = &series_.add("servo_residual_rad", "rad");
   for (const auto& d : dof_names) {
     angle_.push_back(&series_.add("angle_deg_" + d, "deg"));
     target_.push_back(&series_.add("target_deg_" + d, "deg"));
     derivative_.push_back(&series_.add("derivative_per_rad_" + d, "1/rad"));
-  }
-  for (const auto& j : p.controlled) {
-    objective_.push_back(&series_.add("objective_" + j, ""));
-    effort_.push_back(&series_.add("effort_n_m_s_" + j, "N m s"));
-    torque_.push_back(&series_.add("torque_n_m_" + j, "N m"));
-    drag_.push_back(&series_.add("drag_n_" + j, "N"));
-    drag_along_.push_back(&series_.add("drag_along_n_" + j, "N"));
   }
   geoms_.points = 4 * model.geoms();
   for (int g = 0; g < model.geoms(); ++g) {
@@ -65,9 +56,7 @@ WindRunRecorder::WindRunRecorder(const rigid::RigidModel& model, const Controlle
 WindRunRecorder::~WindRunRecorder() = default;
 
 void WindRunRecorder::record(const FrameRecord& fr, Controller& controller) {
-  time_->push_back(fr.time_s);
-  residual_->push_back(fr.servo_residual_rad);
-  max_residual_ = std::max(max_residual_, fr.servo_residual_rad);
+  common_.record(fr);
   max_contacts_ = std::max(max_contacts_, controller.data().contacts());
   max_kinematic_ = std::max(max_kinematic_, fr.kinematic_error_rad);
   max_pd_ = std::max(max_pd_, fr.pd_error_rad);
@@ -75,13 +64,6 @@ void WindRunRecorder::record(const FrameRecord& fr, Controller& controller) {
     angle_[t]->push_back(fr.angle_rad[t] * kWindDeg);
     target_[t]->push_back(fr.target_rad[t] * kWindDeg);
     derivative_[t]->push_back(fr.derivative[t]);
-  }
-  for (std::size_t i = 0; i < objective_.size(); ++i) {
-    objective_[i]->push_back(fr.objective[i]);
-    effort_[i]->push_back(fr.measures.effort_n_m_s[i]);
-    torque_[i]->push_back(fr.measures.torque_n_m[i]);
-    drag_[i]->push_back(fr.measures.drag_n[i]);
-    drag_along_[i]->push_back(fr.measures.drag_along_n[i]);
   }
   recordGeoms(controller.data(), fr.time_s);
   recordLoad(controller.data());
@@ -138,16 +120,16 @@ void WindRunRecorder::recordLoad(rigid::RigidData& d) {
 
 std::vector<NamedValue> WindRunRecorder::measure(int average_frames, double tolerance_deg, int triangles) const {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const int frames = int(time_->size());
+  const int frames = common_.frames();
   const int tail = std::min(average_frames, frames);
   auto mean = [&](const std::vector<double>& v) { return tailMean(v, tail); };
   const int nd = int(angle_.size());
   std::vector<std::vector<double>> angles;
   for (int t = 0; t < nd; ++t) angles.push_back(*angle_[t]);
   const double g = gravity_;
-  const double final_effort = mean(*effort_[0]);
+  const double final_effort = mean(common_.effort(0));
   const double gravity_effort = mass_ * g * mean(*arm_length_) * p_.frame_s;
-  std::vector<double> last(torque_[0]->end() - tail, torque_[0]->end());
+  std::vector<double> last(common_.torque(0).end() - tail, common_.torque(0).end());
   for (double& x : last) x = std::abs(x);
   std::sort(last.begin(), last.end());
   const double median = tail % 2 ? last[tail / 2] : 0.5 * (last[tail / 2 - 1] + last[tail / 2]);
@@ -169,11 +151,11 @@ std::vector<NamedValue> WindRunRecorder::measure(int average_frames, double tole
       {"final_effort_n_m_s", "N m s", final_effort},
       {"gravity_effort_n_m_s", "N m s", gravity_effort},
       {"effort_ratio", "", final_effort / gravity_effort},
-      {"mean_torque_ratio", "", std::abs(mean(*torque_[0])) / (mass_ * g * mean(*arm_length_))},
+      {"mean_torque_ratio", "", std::abs(mean(common_.torque(0))) / (mass_ * g * mean(*arm_length_))},
       {"median_torque_ratio", "", median / (mass_ * g * mean(*arm_length_))},
-      {"final_drag_n", "N", mean(*drag_[0])},
+      {"final_drag_n", "N", mean(common_.drag(0))},
       {"mean_speed_deg_per_s", "deg/s", tail > 1 ? (a0.back() - a0[a0.size() - tail]) / ((tail - 1) * p_.frame_s) : 0.0},
-      {"max_servo_residual_rad", "rad", max_residual_},
+      {"max_servo_residual_rad", "rad", common_.maxResidualRad()},
       {"max_kinematic_error_rad", "rad", max_kinematic_},
       {"max_pd_error_rad", "rad", max_pd_},
       // The 3-D angle between the mean carried arm and the mean net force (a ball joint's Fig. 4).

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "control/controller.hpp"
+#include "control/frame_series.hpp"
 #include "control/run_measures.hpp"
 
 namespace creaturelab::control {
@@ -50,12 +51,12 @@ class WindRunRecorder {
   int j0_id_ = -1, j0_body_ = -1;
   std::unique_ptr<Controller> probe_;  // steady state, one thread: the net force at zero velocity
   SeriesSet series_;
+  FrameSeries common_;  // after series_, which holds its series
   GeomFrames geoms_;
-  std::vector<double> *time_, *residual_;
-  std::vector<std::vector<double>*> angle_, target_, derivative_, objective_, effort_, torque_, drag_, drag_along_;
+  std::vector<std::vector<double>*> angle_, target_, derivative_;
   std::vector<double> *flow_, *load_, *lean_, *force_lean_, *offset_, *arm_length_;
   std::vector<double> arm_x_, arm_y_, arm_z_, net_x_, net_y_, net_z_;
-  double max_residual_ = 0, max_kinematic_ = 0, max_pd_ = 0;
+  double max_kinematic_ = 0, max_pd_ = 0;
   int max_contacts_ = 0;
 };
 
