@@ -4,12 +4,13 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "fish/export.hpp"
 #include "fish/fish_measure.hpp"
 #include "fish/fish_modes.hpp"
 #include "fish/fish_run.hpp"
 #include "fish/skin.hpp"
 #include "fish/swim_mc.hpp"
+#include "render/mesh_export.hpp"
+#include "render/pov_scene.hpp"
 
 namespace creaturelab::kinds {
 namespace {
@@ -81,6 +82,28 @@ FishSetup setupOf(const ParamReader& r) {
 
 std::vector<std::int64_t> flat(const std::vector<int>& v) { return {v.begin(), v.end()}; }
 
+// The skin's mesh for the exporters (render/): our z up becomes render's y up, (x, y, z) -> (x, z, -y),
+// a rotation of -90 degrees about x, so triangles keep their orientation.
+render::TriangleMesh renderMesh(const fish::SkinMesh& skin) {
+  render::TriangleMesh out;
+  for (const auto& p : skin.positions) out.positions.push_back({p.x(), p.z(), -p.y()});
+  for (const auto& n : skin.normals) out.normals.push_back({n.x(), n.z(), -n.y()});
+  for (const auto& t : skin.triangles) out.triangles.push_back({t[0], t[1], t[2]});
+  return out;
+}
+
+// How the skin looks in its .glb.
+render::GltfLook skinLook() {
+  render::GltfLook look;
+  look.generator = "creaturelab fish (Tu 1996 NURBS skin)";
+  look.material = "fish skin";
+  look.base_colour = {0.35, 0.55, 0.7, 1.0};
+  look.metallic = 0.1;
+  look.roughness = 0.5;
+  look.double_sided = true;  // the fins are sheets
+  return look;
+}
+
 // The skin on every recorded frame (quality metrics), stored and exported on export_frames of them.
 void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& model, const fish::FishRecord& rec,
              Result& result) {
@@ -103,7 +126,11 @@ void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& mo
   for (int k = 0; k < count; ++k)
     exported.push_back(count > 1 ? first + int(std::lround(double(k) * (n - 1 - first) / (count - 1))) : n - 1);
   double creases = 0, worst = 1, gap = 0, inward = 0;
-  std::vector<fish::SkinFrame> frames;
+  struct SkinFrame {
+    double time_s;
+    render::TriangleMesh mesh;
+  };
+  std::vector<SkinFrame> frames;
   Tracks& net = result.lagrangian["skin_control_points_m"];
   Tracks& vertices = result.lagrangian["skin_vertices_m"];
   size_t next = 0;
@@ -124,7 +151,7 @@ void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& mo
       for (const auto& p : skin.controlPoints()) net.data.insert(net.data.end(), {p.x(), p.y(), p.z()});
       vertices.time_s.push_back(rec.time_s[f]);
       for (const auto& p : mesh.positions) vertices.data.insert(vertices.data.end(), {p.x(), p.y(), p.z()});
-      frames.push_back({rec.time_s[f], mesh});
+      frames.push_back({rec.time_s[f], renderMesh(mesh)});
     }
   }
   net.points = int(skin.controlPoints().size());
@@ -144,20 +171,23 @@ void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& mo
 
   // Artifacts: the animation, OBJ frames and POV-Ray scenes (rendered by analysis/plot_fish.py).
   auto bytes = [](const std::string& text) { return std::vector<std::uint8_t>(text.begin(), text.end()); };
-  result.artifacts["skin.glb"] = fish::exportGlb(frames);
+  render::GltfAnimation animation(skinLook());
+  for (const auto& frame : frames) animation.addFrame(frame.time_s, frame.mesh);
+  result.artifacts["skin.glb"] = animation.glb("fish");
   char name[64];
   for (size_t k = 0; k < frames.size(); ++k) {
     std::snprintf(name, sizeof name, "skin_%03zu.obj", k);
-    result.artifacts[name] = bytes(fish::exportObj(frames[k].mesh, "t = " + std::to_string(frames[k].time_s) + " s"));
+    result.artifacts[name] = bytes(render::objText(frames[k].mesh, "fish", "t = " + std::to_string(frames[k].time_s) + " s"));
   }
   const int pov = std::min<int>(int(r.integer("pov_frames")), int(frames.size()));
   for (int k = 0; k < pov; ++k) {
     const size_t i = pov > 1 ? size_t(std::lround(double(k) * (frames.size() - 1) / (pov - 1))) : frames.size() - 1;
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (const auto& p : frames[i].mesh.positions) centre += p / double(frames[i].mesh.positions.size());
+    render::Vec3 centre;
+    const double nv = double(frames[i].mesh.positions.size());
+    for (const auto& p : frames[i].mesh.positions) centre = {centre.x + p.x / nv, centre.y + p.y / nv, centre.z + p.z / nv};
     std::snprintf(name, sizeof name, "skin_%03d.pov", k);
     result.artifacts[name] =
-        bytes(fish::exportPov(frames[i].mesh, centre, model.body_length_m, "t = " + std::to_string(frames[i].time_s) + " s"));
+        bytes(render::povSeaScene(frames[i].mesh, centre, model.body_length_m, "t = " + std::to_string(frames[i].time_s) + " s"));
   }
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "kinds/params.hpp"
+#include "render/mesh_export.hpp"
 #include "render/pov_scene.hpp"
 #include "render/triangle_mesh.hpp"
 
@@ -52,7 +53,8 @@ class RenderHook {
   virtual ~RenderHook() = default;
   virtual std::string name() const = 0;         // the render file's kind, e.g. "jellyfish_render"
   virtual std::string title() const = 0;        // the render file's title
-  virtual std::string meshName() const = 0;     // the .glb's name and its mesh's
+  virtual std::string meshName() const = 0;     // the .glb's name and its mesh's, the OBJ's object
+  virtual render::GltfLook look() const = 0;    // the .glb's material
   virtual std::string partMeaning() const = 0;  // what each value of TriangleMesh::parts means
   // The render.* settings: name, unit, default, range, doc (`creaturelab list render`).
   virtual const std::vector<ParamSpec>& settings() const = 0;

@@ -1,8 +1,7 @@
 #pragma once
 // Building blocks of the morph-target glTF 2.0 exports (Khronos glTF 2.0 spec §3.6 buffers,
-// §3.7.2.2 morph targets, §3.11 animations), shared by the jellyfish's (render/mesh_export) and the
-// fish's (fish/export_gltf) .glb writers: one buffer, each accessor over its own 4-byte aligned
-// view. Bytes only, no files.
+// §3.7.2.2 morph targets, §3.11 animations) for render/mesh_export's .glb writer: one buffer, each
+// accessor over its own 4-byte aligned view. Bytes only, no files.
 #include <cstdint>
 #include <string>
 #include <vector>

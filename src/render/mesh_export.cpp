@@ -44,14 +44,15 @@ std::vector<std::uint8_t> GltfAnimation::glb(const std::string& name) const {
   if (times_.empty()) throw std::invalid_argument("a glTF file needs at least one frame");
   tinygltf::Model model;
   model.asset.version = "2.0";
-  model.asset.generator = "creaturelab render (Rudolf & Mould 2009 jellyfish)";
+  model.asset.generator = look_.generator;
   model.buffers.resize(1);
 
   tinygltf::Material material;
-  material.name = "mesoglea";
-  material.pbrMetallicRoughness.baseColorFactor = {0.85, 0.88, 0.95, 1.0};
-  material.pbrMetallicRoughness.metallicFactor = 0.0;
-  material.pbrMetallicRoughness.roughnessFactor = 0.55;
+  material.name = look_.material;
+  material.doubleSided = look_.double_sided;
+  material.pbrMetallicRoughness.baseColorFactor.assign(look_.base_colour.begin(), look_.base_colour.end());
+  material.pbrMetallicRoughness.metallicFactor = look_.metallic;
+  material.pbrMetallicRoughness.roughnessFactor = look_.roughness;
   model.materials.push_back(material);
 
   tinygltf::Primitive primitive;
@@ -64,18 +65,16 @@ std::vector<std::uint8_t> GltfAnimation::glb(const std::string& name) const {
 
   tinygltf::Mesh mesh;
   mesh.name = name;
-  const int frames = int(times_.size());
-  if (frames > 1) {
-    for (int k = 0; k < frames; ++k) {
-      std::map<std::string, int> target;
-      target["POSITION"] = addFloatAccessor(model, difference(positions_[k], positions_[0]), TINYGLTF_TYPE_VEC3,
-                                     TINYGLTF_TARGET_ARRAY_BUFFER, true);
-      target["NORMAL"] = addFloatAccessor(model, difference(normals_[k], normals_[0]), TINYGLTF_TYPE_VEC3,
-                                   TINYGLTF_TARGET_ARRAY_BUFFER, false);
-      primitive.targets.push_back(target);
-    }
-    mesh.weights.assign(frames, 0.0);
+  const int targets = int(times_.size()) - 1;
+  for (int k = 1; k <= targets; ++k) {
+    std::map<std::string, int> target;
+    target["POSITION"] = addFloatAccessor(model, difference(positions_[k], positions_[0]), 3,
+                                          TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    target["NORMAL"] = addFloatAccessor(model, difference(normals_[k], normals_[0]), 3,
+                                        TINYGLTF_TARGET_ARRAY_BUFFER, false);
+    primitive.targets.push_back(target);
   }
+  mesh.weights.assign(targets, 0.0);
   mesh.primitives.push_back(primitive);
   model.meshes.push_back(mesh);
 
@@ -89,21 +88,21 @@ std::vector<std::uint8_t> GltfAnimation::glb(const std::string& name) const {
   model.scenes.push_back(scene);
   model.defaultScene = 0;
 
-  if (frames > 1) {
-    // Weights: one-hot on target k at t_k, so a viewer blends neighbouring frames linearly.
-    std::vector<float> times, weights(std::size_t(frames) * frames, 0.0f);
-    for (int k = 0; k < frames; ++k) {
+  if (targets > 0) {
+    // Weights: one-hot on frame k's target at t_k, so a viewer blends neighbouring frames linearly.
+    std::vector<float> times, weights(std::size_t(targets + 1) * targets, 0.0f);
+    for (int k = 0; k <= targets; ++k) {
       times.push_back(float(times_[k] - times_[0]));
-      weights[std::size_t(k) * frames + k] = 1.0f;
+      if (k > 0) weights[std::size_t(k) * targets + (k - 1)] = 1.0f;
     }
     addMorphAnimation(model, times, weights, "swim");
   }
 
-  return glbBytes(model, "render");
+  return glbBytes(model, "glTF export");
 }
 
-std::string objText(const TriangleMesh& mesh, const std::string& comment) {
-  std::string out = "# " + comment + "\no jellyfish\n";
+std::string objText(const TriangleMesh& mesh, const std::string& object, const std::string& comment) {
+  std::string out = "# " + comment + "\no " + object + "\n";
   out.reserve(64 * (2 * mesh.positions.size() + mesh.triangles.size()));
   char line[160];
   for (const Vec3& p : mesh.positions) {

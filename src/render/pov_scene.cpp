@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace creaturelab::render {
 namespace {
@@ -174,6 +175,36 @@ std::string povSliceDiscsScene(const Slice2& slice, const std::vector<int>& ring
     for (double z : {-radius, radius}) frame.push_back(c + Vec3{0, 0, z});
   }
   return stage(frame, view, title) + objects;
+}
+
+std::string povSeaScene(const TriangleMesh& mesh, Vec3 c, double L, const std::string& comment) {
+  std::ostringstream out;
+  out.precision(9);
+  const auto vec9 = [](Vec3 v) {
+    const Vec3 p = pov(v);
+    std::ostringstream s;
+    s.precision(9);
+    s << '<' << p.x << ", " << p.y << ", " << p.z << '>';
+    return s.str();
+  };
+  out << "// " << comment << "\n#version 3.7;\nglobal_settings { assumed_gamma 1.0 }\n"
+      << "background { rgb <0.05, 0.22, 0.35> }\n"
+      << "camera { perspective location " << vec9(c + Vec3{0.2 * L, 1.0 * L, -0.55 * L}) << " look_at " << vec9(c)
+      << " angle 50 right x*image_width/image_height }\n"
+      << "light_source { " << vec9(c + Vec3{0.5 * L, 3 * L, -1.5 * L}) << " color rgb <1, 1, 0.95> }\n"
+      << "light_source { " << vec9(c + Vec3{-2 * L, 1 * L, 1 * L}) << " color rgb <0.3, 0.35, 0.45> shadowless }\n"
+      << "plane { y, " << c.y - 0.4 * L << " pigment { checker rgb <0.75, 0.7, 0.55>, rgb <0.65, 0.6, 0.45> scale "
+      << 0.25 * L << " } finish { ambient 0.15 } }\n";
+  out << "mesh2 {\n  vertex_vectors { " << mesh.positions.size();
+  for (const Vec3& p : mesh.positions) out << ",\n    " << vec9(p);
+  out << "\n  }\n  normal_vectors { " << mesh.normals.size();
+  for (const Vec3& n : mesh.normals) out << ",\n    " << vec9(n);
+  out << "\n  }\n  face_indices { " << mesh.triangles.size();
+  for (const auto& t : mesh.triangles) out << ",\n    <" << t[0] << ", " << t[1] << ", " << t[2] << '>';
+  out << "\n  }\n  pigment { gradient y color_map { [0 rgb <0.85, 0.82, 0.7>] [1 rgb <0.25, 0.45, 0.6>] } scale "
+      << 0.5 * L << " translate <0, " << c.y - 0.25 * L << ", 0> }\n"
+      << "  finish { ambient 0.2 diffuse 0.7 specular 0.4 roughness 0.02 }\n}\n";
+  return out.str();
 }
 
 }  // namespace creaturelab::render

@@ -47,6 +47,12 @@ struct PovFigure {
   std::vector<std::pair<std::string, std::string>> includes;
 };
 
+/// A mesh in the sea, as one self-contained scene: a perspective camera looking at `centre_m` from
+/// above and to one side (at centre + (0.2, 1.0, −0.55) × size_m), two lights, a sea-blue background
+/// and a sandy checker floor 0.4 × size_m below the centre; the mesh inline as a mesh2 with normals.
+/// Shaded for a look, not a paper's figure (the fish's skin frames, Tu 1996).
+std::string povSeaScene(const TriangleMesh& mesh, Vec3 centre_m, double size_m, const std::string& comment);
+
 /// Fig. 7: the 2-D slice (markers, generated exumbrellar points, resampled outline) in its plane,
 /// with the pairs of the listed rings, each pair's axis and its disc.
 std::string povSliceDiscsScene(const Slice2& slice, const std::vector<int>& rings, const PovView& view,

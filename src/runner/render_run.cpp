@@ -320,7 +320,7 @@ RenderReport renderRun(const RenderRunOptions& o) {
   fs::remove_all(tmp, ec);  // a stale one from an interrupted render
   try {
     fs::create_directories(tmp);
-    render::GltfAnimation animation;
+    render::GltfAnimation animation(recording.hook->look());
     double render_s = 0;
     {
       io::File file = io::File::create(tmp / "render.h5");
@@ -366,7 +366,7 @@ RenderReport renderRun(const RenderRunOptions& o) {
             char comment[160];
             std::snprintf(comment, sizeof comment, "creaturelab render of %s, frame %d, t = %.6f s", path.c_str(), k,
                           run.timeS(k));
-            writeFile(tmp / "obj" / name, render::objText(mesh, comment));
+            writeFile(tmp / "obj" / name, render::objText(mesh, recording.hook->meshName(), comment));
             report.files.push_back(std::string("obj/") + name);
           }
         }

@@ -60,9 +60,9 @@ TEST(RenderExport, GlbRoundTrip) {
     EXPECT_NEAR(positions.minValues[c], lo[c], 1e-8);
     EXPECT_NEAR(positions.maxValues[c], hi[c], 1e-8);
   }
-  // One morph target per frame, and frame k's bounds from its target's deltas.
-  ASSERT_EQ(primitive.targets.size(), 3u);
-  const auto& target = model.accessors.at(primitive.targets[2].at("POSITION"));
+  // One morph target per frame after the first, and frame k's bounds from its target's deltas.
+  ASSERT_EQ(primitive.targets.size(), 2u);
+  const auto& target = model.accessors.at(primitive.targets[1].at("POSITION"));
   const auto& view = model.bufferViews.at(target.bufferView);
   const float* base = reinterpret_cast<const float*>(model.buffers[0].data.data() +
                                                      model.bufferViews.at(positions.bufferView).byteOffset);
@@ -79,7 +79,7 @@ TEST(RenderExport, GlbRoundTrip) {
   const auto& input = model.accessors.at(sampler.input);
   EXPECT_EQ(input.count, 3u);
   EXPECT_NEAR(input.maxValues.at(0), 0.08, 1e-7);
-  EXPECT_EQ(model.accessors.at(sampler.output).count, 9u);
+  EXPECT_EQ(model.accessors.at(sampler.output).count, 6u);  // 3 keys x 2 targets
   EXPECT_EQ(model.animations[0].channels.at(0).target_path, "weights");
 }
 
@@ -100,9 +100,27 @@ TEST(RenderExport, GlbRefusesMismatchedFrames) {
   EXPECT_TRUE(model.animations.empty());
 }
 
+TEST(RenderExport, GlbCarriesTheLook) {
+  GltfLook look;
+  look.material = "fish skin";
+  look.base_colour = {0.35, 0.55, 0.7, 1.0};
+  look.double_sided = true;
+  GltfAnimation animation(look);
+  animation.addFrame(0, threeFrames()[0]);
+  const auto bytes = animation.glb("fish");
+  tinygltf::Model model;
+  std::string err, warn;
+  ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size())));
+  ASSERT_EQ(model.materials.size(), 1u);
+  EXPECT_EQ(model.materials[0].name, "fish skin");
+  EXPECT_TRUE(model.materials[0].doubleSided);
+  EXPECT_EQ(model.materials[0].pbrMetallicRoughness.baseColorFactor[2], 0.7);
+  EXPECT_EQ(model.nodes.at(0).name, "fish");
+}
+
 TEST(RenderExport, ObjXdmfPov) {
   const TriangleMesh mesh = threeFrames()[0];
-  const std::string obj = objText(mesh, "a test");
+  const std::string obj = objText(mesh, "jellyfish", "a test");
   std::istringstream lines(obj);
   std::size_t v = 0, vn = 0, f = 0;
   for (std::string line; std::getline(lines, line);) {
@@ -114,6 +132,7 @@ TEST(RenderExport, ObjXdmfPov) {
   EXPECT_EQ(vn, mesh.positions.size());
   EXPECT_EQ(f, mesh.triangles.size());
   EXPECT_NE(obj.find("f 1//1 "), std::string::npos);  // 1-based
+  EXPECT_EQ(obj.rfind("# a test\no jellyfish\n", 0), 0u);
 
   io::XdmfTriangleMesh x{"render.h5", "/render", {0.0, 0.04}, long(mesh.positions.size()), long(mesh.triangles.size()),
                          "positions_m", {"normals"}, {"part"}};
@@ -130,6 +149,17 @@ TEST(RenderExport, ObjXdmfPov) {
   const std::string scene = povGalleryScene({{"jf.inc", "Jf", "frame", boundsOf(mesh), {}}}, PovView{}, "test");
   EXPECT_NE(scene.find("orthographic"), std::string::npos);
   EXPECT_NE(scene.find("#include \"jf.inc\""), std::string::npos);
+
+  // The sea scene: the mesh inline, POV-Ray's left-handed frame (z changes sign), the camera above.
+  TriangleMesh one;
+  one.positions = {{0, 0, 0.5}, {1, 0, 0}, {0, 1, 0}};
+  one.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  one.triangles = {{0, 1, 2}};
+  const std::string sea = povSeaScene(one, {0, 0, 0}, 1.0, "a test");
+  EXPECT_EQ(sea.rfind("// a test\n", 0), 0u);
+  EXPECT_NE(sea.find("vertex_vectors { 3,\n    <0, 0, -0.5>,"), std::string::npos) << sea;
+  EXPECT_NE(sea.find("camera { perspective location <0.2, 1, 0.55> look_at"), std::string::npos) << sea;
+  EXPECT_NE(sea.find("face_indices { 1,\n    <0, 1, 2>"), std::string::npos) << sea;
 }
 
 }  // namespace
