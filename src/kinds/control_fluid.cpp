@@ -7,7 +7,7 @@
 #include "control/fluid_run.hpp"
 #include "kinds/control_params.hpp"
 #include "kinds/ib_params.hpp"
-#include "kinds/swimmer.hpp"
+#include "kinds/control_fluid_swimmer.hpp"
 
 namespace creaturelab::kinds {
 namespace {

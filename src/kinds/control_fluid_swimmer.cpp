@@ -1,4 +1,4 @@
-#include "kinds/swimmer.hpp"
+#include "kinds/control_fluid_swimmer.hpp"
 
 #include <cmath>
 #include <stdexcept>
