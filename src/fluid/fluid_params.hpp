@@ -1,11 +1,14 @@
 #pragma once
 // Parameters of the 2-D incompressible fluid solver (Rudolf & Mould 2009,
 // §3.2, Eq. 1: ∂u/∂t = ν ∇²u − u·∇u − ∇p/ρ + F,   ∇·u = 0).
-// Plain struct with in-class defaults; validate() says in words what is wrong.
+// Plain struct with in-class defaults; validate() says in words what is wrong. The describe*(v)
+// templates name each field for the fluid kind (kinds/describe.hpp: name, unit, range, one-line doc),
+// and the in-class defaults are that kind's.
 
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace creaturelab::fluid {
 
@@ -43,6 +46,18 @@ struct Walls {
   bool any_inflow() const {
     return left.type == WallType::inflow || right.type == WallType::inflow || bottom.type == WallType::inflow ||
            top.type == WallType::inflow;
+  }
+  /// wall_<side> and wall_<side>_velocity_m_per_s for left, right, bottom, top (inflow is not offered).
+  template <class V>
+  void describe(V& v) {
+    const std::pair<const char*, Wall*> sides[] = {{"left", &left}, {"right", &right}, {"bottom", &bottom}, {"top", &top}};
+    for (const auto& [side, wall] : sides) {
+      v.choice(std::string("wall_") + side, wall->type,
+               {WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open},
+               std::string(side) + " wall: free_slip (the paper's), no_slip, moving, open (p = 0)");
+      v.real(std::string("wall_") + side + "_velocity_m_per_s", wall->tangential_velocity_m_per_s, "m/s", -1e3, 1e3,
+             std::string("tangential velocity of the ") + side + " wall when moving");
+    }
   }
 };
 
@@ -97,11 +112,29 @@ struct FluidParams {
   double domain_height_m = 0.4;
   int cells_x = 100;  ///< paper Fig. 12: fluid grid n = 100
   int cells_y = 100;
+  /// A square box, side domain_m and `cells` per side: read into the width and cells_x, then make_square().
+  template <class V>
+  void describe_square_box(V& v) {
+    v.real("domain_m", domain_width_m, "m", 1e-6, 1e6,
+           "side of the square box; default ten 40 mm bell diameters (Rudolf & Mould Fig. 12)");
+    v.integer("cells", cells_x, 4, 4096, "cells per side (Rudolf & Mould Fig. 12: 100)");
+  }
+  void make_square() {
+    domain_height_m = domain_width_m;
+    cells_y = cells_x;
+  }
 
   // --- fluid. Paper Fig. 12 lists ν = 1.304e-3 and ρ = 1 without units; 1.304e-3 Pa·s is the
   // dynamic viscosity of water at 10 °C, i.e. ν = 1.304e-6 m²/s at ρ = 1000 kg/m³ (ρ = 1 g/cm³).
   double density_kg_per_m3 = 1000.0;
   double kinematic_viscosity_m2_per_s = 1.304e-6;
+  template <class V>
+  void describe_fluid(V& v) {
+    v.real("density_kg_per_m3", density_kg_per_m3, "kg/m^3", 1e-6, 1e6,
+           "fluid density (paper: '1' without units, read as g/cm^3)");
+    v.real("kinematic_viscosity_m2_per_s", kinematic_viscosity_m2_per_s, "m^2/s", 0, 1e3,
+           "nu (paper: 1.304e-3, read as Pa s, water at 10 C, over 1000 kg/m^3)");
+  }
 
   Walls walls{};  ///< all free-slip, as in the paper (§3.2)
 
@@ -124,6 +157,20 @@ struct FluidParams {
   double viscosity_tolerance = 1e-10;  ///< ‖b − A u‖∞ ≤ tol · ‖b‖∞
   int viscosity_max_iterations = 1000;
 
+  /// advection, pressure_solver, viscosity_solver.
+  template <class V>
+  void describe_schemes(V& v) {
+    v.choice("advection", advection,
+             {AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack, AdvectionScheme::upwind2_rk2},
+             "semi_lagrangian (Stam 1999, linear interpolation), maccormack (limited, second order) or upwind2_rk2 "
+             "(Fromm upwind + Heun, second order, CFL <= 0.5)");
+    v.choice("pressure_solver", pressure_solver, {PressureSolverType::fast_direct, PressureSolverType::pcg},
+             "exact projection: transform + tridiagonal (uniform box) or MIC(0)-PCG to 1e-10");
+    v.choice("viscosity_solver", viscosity_solver, {ViscositySolverType::iterative, ViscositySolverType::fast_direct},
+             "implicit viscosity: iterative sweeps (fast for water-like nu dt / dx^2) or the fast direct solve "
+             "(exact; faster for very viscous fluids)");
+  }
+
   // --- time step (Griebel et al. 1998, ch. 3: the CFL condition dt < dx / |u|max)
   TimeStepPolicy time_step_policy = TimeStepPolicy::cfl_adaptive;
   /// Fraction of the CFL limit. Semi-Lagrangian advection is stable beyond 1; accuracy is not.
@@ -131,11 +178,25 @@ struct FluidParams {
   double cfl_safety_factor = 0.5;
   double max_step_s = 0.01;    ///< upper bound of the adaptive step (paper §4: 0.01 s is the edge)
   double fixed_step_s = 0.01;  ///< step of the fixed policy
+  /// cfl_safety_factor, max_step_s (the adaptive policy's).
+  template <class V>
+  void describe_adaptive_step(V& v) {
+    v.real("cfl_safety_factor", cfl_safety_factor, "", 1e-6, 10,
+           "fraction of the CFL limit dx / max|u| (paper used 0.001 with the bell)");
+    v.real("max_step_s", max_step_s, "s", 1e-9, 10, "largest adaptive step (paper §4: instability near 0.01 s)");
+  }
 
   // --- uniform body force per unit mass (gravity: body_acceleration_y_m_per_s2 = -9.81).
   // In a closed box of uniform density it is balanced exactly by a hydrostatic pressure.
   double body_acceleration_x_m_per_s2 = 0.0;
   double body_acceleration_y_m_per_s2 = 0.0;
+  template <class V>
+  void describe_body_force(V& v) {
+    v.real("body_acceleration_x_m_per_s2", body_acceleration_x_m_per_s2, "m/s^2", -1e4, 1e4,
+           "uniform body force per unit mass, x");
+    v.real("body_acceleration_y_m_per_s2", body_acceleration_y_m_per_s2, "m/s^2", -1e4, 1e4,
+           "uniform body force per unit mass, y (gravity: -9.81)");
+  }
 
   /// Threads that share the work of one step, 1..16 (1: none). Results are bitwise the same for
   /// any number (the work is cut by index only; see worker_pool.hpp): this changes only the time.

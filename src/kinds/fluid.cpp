@@ -10,49 +10,17 @@
 namespace creaturelab::kinds {
 namespace {
 
-const std::vector<std::string> kWalls = {"free_slip", "no_slip", "moving", "open"};
-const char* kSides[] = {"left", "right", "bottom", "top"};
-
-fluid::FluidParams solverParams(const ParamReader& r) {
-  fluid::FluidParams f;
-  f.domain_width_m = f.domain_height_m = r.real("domain_m");
-  f.cells_x = f.cells_y = int(r.integer("cells"));
-  f.density_kg_per_m3 = r.real("density_kg_per_m3");
-  f.kinematic_viscosity_m2_per_s = r.real("kinematic_viscosity_m2_per_s");
-  fluid::Wall* walls[] = {&f.walls.left, &f.walls.right, &f.walls.bottom, &f.walls.top};
-  for (int k = 0; k < 4; ++k) {
-    const std::string side = kSides[k];
-    walls[k]->type = *fluid::parse_wall_type(r.text("wall_" + side));
-    walls[k]->tangential_velocity_m_per_s = r.real("wall_" + side + "_velocity_m_per_s");
-  }
-  f.advection = *fluid::parse_advection_scheme(r.text("advection"));
-  f.pressure_solver = *fluid::parse_pressure_solver_type(r.text("pressure_solver"));
-  f.viscosity_solver = *fluid::parse_viscosity_solver_type(r.text("viscosity_solver"));
-  if (r.isAuto("dt_s")) {
-    f.time_step_policy = fluid::TimeStepPolicy::cfl_adaptive;
-  } else {
-    f.time_step_policy = fluid::TimeStepPolicy::fixed;
-    f.fixed_step_s = r.real("dt_s");
-  }
-  f.cfl_safety_factor = r.real("cfl_safety_factor");
-  f.max_step_s = r.real("max_step_s");
-  f.body_acceleration_x_m_per_s2 = r.real("body_acceleration_x_m_per_s2");
-  f.body_acceleration_y_m_per_s2 = r.real("body_acceleration_y_m_per_s2");
-  return f;
-}
-
-void setInitial(const ParamReader& r, fluid::MacGrid2& grid) {
-  const std::string& init = r.text("initial");
-  if (init == "taylor_green") {
-    fluid::set_taylor_green(grid, {r.real("amplitude_m_per_s")});
-  } else if (init == "vortex_pair") {
+void setInitial(const FluidKindParams& q, fluid::MacGrid2& grid) {
+  if (q.initial == "taylor_green") {
+    fluid::set_taylor_green(grid, {q.amplitude_m_per_s});
+  } else if (q.initial == "vortex_pair") {
     fluid::VortexPair pair;
-    pair.circulation_m2_per_s = r.real("circulation_m2_per_s");
-    pair.centre_y_fraction = r.real("vortex_height_fraction");
+    pair.circulation_m2_per_s = q.circulation_m2_per_s;
+    pair.centre_y_fraction = q.vortex_height_fraction;
     fluid::set_vortex_pair(grid, pair);
-  } else if (init == "shear_layer") {
+  } else if (q.initial == "shear_layer") {
     fluid::ShearLayer layer;
-    layer.speed_m_per_s = r.real("amplitude_m_per_s");
+    layer.speed_m_per_s = q.amplitude_m_per_s;
     fluid::set_shear_layer(grid, layer);
   } else {
     fluid::set_rest(grid);
@@ -103,43 +71,26 @@ void taylorGreenError(const fluid::FluidSolver2& solver, double amplitude, doubl
 
 }  // namespace
 
-FluidKind::FluidKind() {
-  params_ = {
-      real("domain_m", 0.4, "m", 1e-6, 1e6, "side of the square box; default ten 40 mm bell diameters (Rudolf & Mould Fig. 12)"),
-      integer("cells", 100, 4, 4096, "cells per side (Rudolf & Mould Fig. 12: 100)"),
-      real("density_kg_per_m3", 1000.0, "kg/m^3", 1e-6, 1e6, "fluid density (paper: '1' without units, read as g/cm^3)"),
-      real("kinematic_viscosity_m2_per_s", 1.304e-6, "m^2/s", 0, 1e3,
-           "nu (paper: 1.304e-3, read as Pa s, water at 10 C, over 1000 kg/m^3)"),
-  };
-  for (const char* side : kSides) {
-    params_.push_back(choice(std::string("wall_") + side, "free_slip", kWalls,
-                             std::string(side) + " wall: free_slip (the paper's), no_slip, moving, open (p = 0)"));
-    params_.push_back(real(std::string("wall_") + side + "_velocity_m_per_s", 0.0, "m/s", -1e3, 1e3,
-                           std::string("tangential velocity of the ") + side + " wall when moving"));
+fluid::FluidParams FluidKindParams::solverParams() const {
+  fluid::FluidParams f = fluid;
+  f.make_square();
+  if (dt_s.is_auto) {
+    f.time_step_policy = fluid::TimeStepPolicy::cfl_adaptive;
+  } else {
+    f.time_step_policy = fluid::TimeStepPolicy::fixed;
+    f.fixed_step_s = dt_s.value;
   }
-  const std::vector<ParamSpec> rest = {
-      choice("advection", "semi_lagrangian", {"semi_lagrangian", "maccormack", "upwind2_rk2"},
-             "semi_lagrangian (Stam 1999, linear interpolation), maccormack (limited, second order) or upwind2_rk2 "
-             "(Fromm upwind + Heun, second order, CFL <= 0.5)"),
-      choice("pressure_solver", "fast_direct", {"fast_direct", "pcg"},
-             "exact projection: transform + tridiagonal (uniform box) or MIC(0)-PCG to 1e-10"),
-      choice("viscosity_solver", "iterative", {"iterative", "fast_direct"},
-             "implicit viscosity: iterative sweeps (fast for water-like nu dt / dx^2) or the fast direct solve "
-             "(exact; faster for very viscous fluids)"),
-      realOrAuto("dt_s", "s", 1e-9, 10, "fixed step, or \"auto\": CFL-adaptive with cfl_safety_factor and max_step_s"),
-      real("cfl_safety_factor", 0.5, "", 1e-6, 10, "fraction of the CFL limit dx / max|u| (paper used 0.001 with the bell)"),
-      real("max_step_s", 0.01, "s", 1e-9, 10, "largest adaptive step (paper §4: instability near 0.01 s)"),
-      real("end_time_s", 1.0, "s", 1e-9, 1e6, "simulated time"),
-      real("output_interval_s", 0.1, "s", 1e-9, 1e6, "interval between stored fields and series samples"),
-      choice("initial", "rest", {"rest", "taylor_green", "vortex_pair", "shear_layer"}, "initial velocity field"),
-      real("amplitude_m_per_s", 1.0, "m/s", 0, 1e3, "Taylor-Green amplitude, or the shear layer's speed"),
-      real("circulation_m2_per_s", 1e-3, "m^2/s", 0, 1e3, "circulation of each vortex of the pair"),
-      real("vortex_height_fraction", 0.6, "", 0, 1, "starting height of the pair, fraction of the box"),
-      real("body_acceleration_x_m_per_s2", 0.0, "m/s^2", -1e4, 1e4, "uniform body force per unit mass, x"),
-      real("body_acceleration_y_m_per_s2", 0.0, "m/s^2", -1e4, 1e4, "uniform body force per unit mass, y (gravity: -9.81)"),
-      integer("tracers_per_side", 0, 0, 1000, "passive tracers on an n x n lattice (paper Fig. 6), 0 = none"),
-  };
-  params_.insert(params_.end(), rest.begin(), rest.end());
+  return f;
+}
+
+std::string FluidKindParams::validate() const {
+  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
+  if (std::string err = solverParams().validate(); !err.empty()) return err;
+  if (output_interval_s > end_time_s) return "output_interval_s is longer than end_time_s";
+  return "";
+}
+
+FluidKind::FluidKind() {
   metrics_ = {
       {"max_divergence", "1/s", "largest max|div u| after any step"},
       {"max_divergence_rel", "", "largest max|div u| dx / max|u| after any step"},
@@ -159,26 +110,19 @@ std::string FluidKind::doc() const {
   return "2D incompressible Navier-Stokes on a MAC grid (Rudolf & Mould 2009 §3.2 Eq. 1; Stam 1999)";
 }
 
-std::string FluidKind::validate(const Params& p) const {
-  ParamReader r(p);
-  if (std::string err = solverParams(r).validate(); !err.empty()) return err;
-  if (r.real("output_interval_s") > r.real("end_time_s")) return "output_interval_s is longer than end_time_s";
-  return "";
-}
-
 // Memory: about 280 B per cell for the solver (its arrays, the pressure solver, the HDF5 write), 4 fields
 // x 8 B = 32 B per cell and stored frame (40 taken), and 32 MiB for the process; an upper bound on the
 // peak resident set of `creaturelab run`.
 CostEstimate FluidKind::estimateCost(const Params& p) const {
   try {
-    ParamReader r(p);
-    const double cells = double(r.integer("cells")) * double(r.integer("cells"));
-    const double frames = 1 + std::ceil(r.real("end_time_s") / r.real("output_interval_s") * (1 - 1e-12));
-    const double tracers = double(r.integer("tracers_per_side")) * double(r.integer("tracers_per_side"));
+    const FluidKindParams q = readParams<FluidKindParams>(p);
+    const double cells = double(q.fluid.cells_x) * double(q.fluid.cells_x);
+    const double frames = 1 + std::ceil(q.end_time_s / q.output_interval_s * (1 - 1e-12));
+    const double tracers = double(q.tracers_per_side) * double(q.tracers_per_side);
     CostEstimate cost;
     cost.memory_bytes = 32.0 * (1 << 20) + cells * (280 + 40 * frames) + tracers * 16 * frames;
     char detail[160];
-    std::snprintf(detail, sizeof detail, "%lld^2 cells, %.0f stored frames of 4 fields", (long long)r.integer("cells"),
+    std::snprintf(detail, sizeof detail, "%lld^2 cells, %.0f stored frames of 4 fields", (long long)q.fluid.cells_x,
                   frames);
     cost.detail = detail;
     return cost;
@@ -188,12 +132,12 @@ CostEstimate FluidKind::estimateCost(const Params& p) const {
 }
 
 Result FluidKind::run(const Params& p) const {
-  ParamReader r(p);
-  fluid::FluidSolver2 solver(solverParams(r));
-  setInitial(r, solver.grid());
+  const FluidKindParams q = readParams<FluidKindParams>(p);
+  fluid::FluidSolver2 solver(q.solverParams());
+  setInitial(q, solver.grid());
   solver.make_divergence_free();
-  if (const int n = int(r.integer("tracers_per_side")); n > 0) {
-    const double L = r.real("domain_m");
+  if (const int n = int(q.tracers_per_side); n > 0) {
+    const double L = q.fluid.domain_width_m;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) solver.tracers_m().push_back({(i + 0.5) * L / n, (j + 0.5) * L / n});
   }
@@ -221,11 +165,11 @@ Result FluidKind::run(const Params& p) const {
     appendFrame(solver, frames, u, v, w);
     if (tracers.points > 0) {
       tracers.time_s.push_back(solver.time_s());
-      for (const auto& q : solver.tracers_m()) tracers.data.insert(tracers.data.end(), {q.x, q.y});
+      for (const auto& m : solver.tracers_m()) tracers.data.insert(tracers.data.end(), {m.x, m.y});
     }
   };
 
-  const double end = r.real("end_time_s"), every = r.real("output_interval_s");
+  const double end = q.end_time_s, every = q.output_interval_s;
   const double ke0 = solver.kinetic_energy_joule_per_m();
   sample();
   int next_output = 1;
@@ -258,16 +202,16 @@ Result FluidKind::run(const Params& p) const {
   result.metrics["mean_dt_s"] = {solver.time_s() / double(std::max(1L, solver.steps_done())), "s"};
   result.metrics["max_cfl"] = {max_cfl, ""};
   double linf = nan, rms = nan, nu_eff = nan;
-  if (r.text("initial") == "taylor_green") {
-    taylorGreenError(solver, r.real("amplitude_m_per_s"), linf, rms);
+  if (q.initial == "taylor_green") {
+    taylorGreenError(solver, q.amplitude_m_per_s, linf, rms);
     // KE ~ exp(-2 nu (kx^2 + ky^2) t): twice the velocity decay rate.
-    const double k2 = 2.0 * std::pow(M_PI / r.real("domain_m"), 2);
+    const double k2 = 2.0 * std::pow(M_PI / q.fluid.domain_width_m, 2);
     nu_eff = std::log(ke0 / solver.kinetic_energy_joule_per_m()) / (2.0 * k2 * solver.time_s());
   }
   result.metrics["velocity_error_linf_m_per_s"] = {linf, "m/s"};
   result.metrics["velocity_error_rms_m_per_s"] = {rms, "m/s"};
   result.metrics["effective_viscosity_m2_per_s"] = {nu_eff, "m^2/s"};
-  result.metrics["numerical_viscosity_m2_per_s"] = {nu_eff - r.real("kinematic_viscosity_m2_per_s"), "m^2/s"};
+  result.metrics["numerical_viscosity_m2_per_s"] = {nu_eff - q.fluid.kinematic_viscosity_m2_per_s, "m^2/s"};
   return result;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "kinds/describe.hpp"
+#include "kinds/fluid.hpp"
 #include "kinds/oscillator.hpp"
 
 namespace sample {
@@ -43,6 +44,7 @@ struct Sample {
 namespace {
 
 using namespace creaturelab::kinds;
+namespace fluid = creaturelab::fluid;
 
 TEST(Describe, SchemaListsEachFieldOnceWithItsInClassDefault) {
   const std::vector<ParamSpec> specs = schemaOf<sample::Sample>();
@@ -127,6 +129,41 @@ TEST(DescribedKind, OscillatorListsItsStructsDefaultsAndValidatesThroughIt) {
   EXPECT_EQ(kind.validate(p), "dt_s (5 s) is longer than end_time_s (1 s)");
   p["mass_kg"] = -1.0;  // values the runner did not check: the ranges first
   EXPECT_EQ(kind.validate(p), "mass_kg: got -1, expected a value in [1e-12, 1e+06]");
+}
+
+TEST(DescribedKind, FluidReadsIntoTheSolversStructAndValidatesThroughIt) {
+  const FluidKind kind;
+  const fluid::FluidParams solver = readParams<FluidKindParams>(withDefaults(kind, {})).solverParams();
+  const fluid::FluidParams plain;  // the solver's in-class defaults are the kind's
+  EXPECT_EQ(solver.domain_height_m, plain.domain_height_m);
+  EXPECT_EQ(solver.cells_y, plain.cells_y);
+  EXPECT_EQ(solver.kinematic_viscosity_m2_per_s, plain.kinematic_viscosity_m2_per_s);
+  EXPECT_EQ(solver.time_step_policy, fluid::TimeStepPolicy::cfl_adaptive);
+
+  Params p = withDefaults(kind, {});
+  p["domain_m"] = 0.2;
+  p["cells"] = std::int64_t(32);
+  p["wall_top"] = std::string("moving");
+  p["wall_top_velocity_m_per_s"] = 0.5;
+  p["advection"] = std::string("maccormack");
+  p["dt_s"] = 0.001;
+  const fluid::FluidParams f = readParams<FluidKindParams>(p).solverParams();
+  EXPECT_EQ(f.domain_width_m, 0.2);
+  EXPECT_EQ(f.domain_height_m, 0.2);
+  EXPECT_EQ(f.cells_x, 32);
+  EXPECT_EQ(f.cells_y, 32);
+  EXPECT_EQ(f.walls.top.type, fluid::WallType::moving);
+  EXPECT_EQ(f.walls.top.tangential_velocity_m_per_s, 0.5);
+  EXPECT_EQ(f.walls.left.type, fluid::WallType::free_slip);
+  EXPECT_EQ(f.advection, fluid::AdvectionScheme::maccormack);
+  EXPECT_EQ(f.time_step_policy, fluid::TimeStepPolicy::fixed);
+  EXPECT_EQ(f.fixed_step_s, 0.001);
+  EXPECT_EQ(kind.validate(p), "");
+
+  p["wall_left_velocity_m_per_s"] = 0.25;  // the solver's own cross-field rule, through the kind
+  EXPECT_EQ(kind.validate(p),
+            "walls.left.tangential_velocity_m_per_s = 0.25 has no effect on a free_slip wall; set walls.left.type = "
+            "moving (or inflow) or the velocity to 0");
 }
 
 }  // namespace
