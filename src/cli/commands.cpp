@@ -16,7 +16,7 @@
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "kinds/param_toml.hpp"
-#include "kinds/render_params.hpp"
+#include "kinds/jellyfish_render_params.hpp"
 #include "runner/checks.hpp"
 #include "runner/compare.hpp"
 #include "runner/experiment.hpp"

@@ -5,7 +5,7 @@
 
 #include "kinds/jellyfish.hpp"
 #include "kinds/render_hook.hpp"
-#include "kinds/render_params.hpp"
+#include "kinds/jellyfish_render_params.hpp"
 #include "render/jellyfish_figures.hpp"
 #include "render/jellyfish_renderer.hpp"
 

@@ -2,7 +2,7 @@
 // Parameters of the jellyfish's render model (Rudolf & Mould 2009,
 // §3.4 "2D Rendering Model", §3.5 "3D Extrapolation", Fig. 12). SI units; where the paper gives no
 // value the choice and its reason are beside the field. The `render` command's schema
-// (kinds/render_params.cpp) documents each for `creaturelab list render`.
+// (kinds/jellyfish_render_params.cpp) documents each for `creaturelab list render`.
 #include <cstdint>
 #include <string>
 

@@ -1,8 +1,8 @@
 #pragma once
-// The parameter schema of `creaturelab render` (render/render_params.hpp): name, unit, default,
-// range and doc of every render.* setting, so that the command checks a `key=value` as the runner
-// checks an experiment's [params] (kinds/params.hpp), and `creaturelab list render` documents them.
-// Rendering is not a kind: it reads a recorded run rather than running a solver (runner/render_run.hpp).
+// The settings of the jellyfish's render hook (kinds/jellyfish_render.cpp; render/render_params.hpp):
+// name, unit, default, range and doc of every render.* setting, so that `creaturelab render` checks
+// a `key=value` as the runner checks an experiment's [params] (kinds/params.hpp), and
+// `creaturelab list render` documents them.
 #include <vector>
 
 #include "kinds/params.hpp"

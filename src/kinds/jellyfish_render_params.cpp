@@ -1,4 +1,4 @@
-#include "kinds/render_params.hpp"
+#include "kinds/jellyfish_render_params.hpp"
 
 namespace creaturelab::kinds {
 
