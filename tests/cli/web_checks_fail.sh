@@ -142,10 +142,12 @@ rc=0
 [[ $(status web_small "$silk") == ok ]] || { cat "$scratch/web_small.out" >&2; fail "web_small: the silk check is not ok"; }
 echo "ok   web_small: '$silk' passes at 0.6 of the size"
 
-# Wind (Figs. 5.45-5.47): with the wind off the hub stays put and the sway cannot follow WIND.
+# Wind (Figs. 5.45-5.47), over the first 2 s, on which the intact file passes both checks (52.7 mm, ratio
+# 2.009): with the wind off the hub stays put.
 study no_wind experiments/web/wind.toml <<'TOML'
 [params]
-end_time_s = 1.0
+end_time_s = 2.0
+lagrangian_interval_s = 1.0
 [[case]]
 label = "calibrated wind"
 wind_scale = 0.0
@@ -154,7 +156,21 @@ label = "twice the wind"
 wind_scale = 0.0
 TOML
 broken no_wind "$scratch/no_wind.toml" "the hub sways 50-60 mm rms under the calibrated wind"
-[[ $(status no_wind "the sway doubles with WIND") == FAIL ]] || fail "no_wind: the linearity check did not fail"
+# The sway doubles with WIND because the web answers the calibrated wind linearly, its sway small against
+# its size (53 mm of about 1 m). Ten times that wind sways it a quarter to half a metre, where its changing
+# shape makes the answer nonlinear: twice the wind sways it 1.85 times as far.
+study wind_nonlinear experiments/web/wind.toml <<'TOML'
+[params]
+end_time_s = 2.0
+lagrangian_interval_s = 1.0
+[[case]]
+label = "calibrated wind"
+wind_scale = 0.3
+[[case]]
+label = "twice the wind"
+wind_scale = 0.6
+TOML
+broken wind_nonlinear "$scratch/wind_nonlinear.toml" "the sway doubles with WIND"
 
 # Figs. 5.17-5.38: every variant's settling rests on the air drag (exp(-t / 2 s)): twenty times the drag
 # settles each in 0.45-0.53 s. As on the default web, a shape started on its statics stays there (the
