@@ -74,13 +74,8 @@ class JellyfishRenderHook : public RenderHook {
   std::string title() const override { return "3-D jellyfish from a recorded swim (Rudolf & Mould 2009 §3.4-3.5)"; }
   std::string meshName() const override { return "jellyfish"; }
   render::GltfLook look() const override {
-    render::GltfLook look;
-    look.generator = "creaturelab render (Rudolf & Mould 2009 jellyfish)";
-    look.material = "mesoglea";
-    look.base_colour = {0.85, 0.88, 0.95, 1.0};
-    look.metallic = 0.0;
-    look.roughness = 0.55;
-    return look;
+    return {.generator = "creaturelab render (Rudolf & Mould 2009 jellyfish)", .material = "mesoglea",
+            .base_colour = {0.85, 0.88, 0.95, 1.0}, .metallic = 0.0, .roughness = 0.55};
   }
   std::string partMeaning() const override { return "0 exumbrella, 1 subumbrella, 2 tentacle"; }
   const std::vector<ParamSpec>& settings() const override { return renderParamSpecs(); }
