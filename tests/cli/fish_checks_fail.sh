@@ -17,9 +17,10 @@ broken air_in_water experiments/fish/air.toml "sum m v conserved to 1e-12 relati
 also air_in_water "the centre of mass does not travel (1e-12 body lengths)"
 
 # Ch. 5, swim: on the spec's soft body (lowest sideways mode 0.15 Hz) the gait is filtered: the speed falls
-# as the rate rises, the fastest gait crawls and the slow swim wanders.
+# as the rate rises (doubling r from r_max / 8: 0.48x), the fastest gait crawls and the slow swim wanders.
+# A 30 s swim after 10 s of warm-up, on which the intact file passes every check (20 s gave it 3.1x there).
 broken swim_soft experiments/fish/swim.toml "speed rises with the rate (alpha = 1/4)" \
-  "${soft[@]}" 'params.schedule="swim 20"' params.warmup_s=10
+  "${soft[@]}" 'params.schedule="swim 30"' params.warmup_s=10
 also swim_soft "speed rises with the rate (alpha = 1/2)"
 also swim_soft "speed rises with the rate (alpha = 3/4)"
 also swim_soft "speed rises with the rate (alpha = 1)"
@@ -50,11 +51,12 @@ broken swim_mc_coarse experiments/fish/swim_mc.toml \
   params.swim_mc_levels=2 params.swim_mc_slowest_knob=0.125 'sweep.swim_speed_body_lengths_per_s=[0.1, 0.3]'
 
 # Ch. 5, turns: with no water nothing turns the fish (the heading wanders with the flailing body, no
-# order); with the tail's beat stopped through the turn the fish glides round less than 90 degrees.
-broken turn_no_water experiments/fish/turn.toml "one strong turn (alpha = 1, r = r_max / 2) turns the fish at least 90 degrees within 3 s" \
+# order). At the swim rate 0.75 r_max, where the intact file orders every row (but turns 80 degrees, so the
+# 90-degree check is left to the glide below); at r_max one windless row happens to rise. With the tail's
+# beat stopped through the turn the fish glides round less than 90 degrees.
+broken turn_no_water experiments/fish/turn.toml "a stronger turn changes the direction of travel more (r = r_max / 8)" \
   params.water_mu=0 params.swim_rate=0.05625
-for c in "a stronger turn changes the direction of travel more (r = r_max / 8)" \
-         "a stronger turn changes the direction of travel more (r = r_max / 4)" \
+for c in "a stronger turn changes the direction of travel more (r = r_max / 4)" \
          "a stronger turn changes the direction of travel more (r = r_max / 2)" \
          "a quicker turn changes the direction of travel more (alpha = 1/4)" \
          "a quicker turn changes the direction of travel more (alpha = 1/2)" \
