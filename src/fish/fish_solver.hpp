@@ -47,13 +47,28 @@ struct FishState {
 FishState restState(const FishModel& fish);
 
 struct SolverParams {
-  double dt_s = 0.055;  // [reimpl] (spec §2)
+  double dt_s = 0.002;  // ours (the [reimpl] 0.055 is for its soft units; see describe)
   Scheme scheme = Scheme::semi_implicit;
   WaterParams water;
   // Blow-up: a unit whose length leaves [1/(1 + s), 1 + s] times its undeformed length (our choice:
   // s = 2, i.e. three times longer or three times shorter), a non-finite value, or a lost positive
   // definiteness of A.
   double blowup_strain = 2.0;
+
+  template <class V>
+  void describe(V& v) {
+    water.describe(v);
+    v.real("dt_s", dt_s, "s", 1e-9, 100,
+           "time step (ours: the [reimpl] 0.055 s is for its soft units; the calibrated body's stiffest vibration "
+           "allows about 3 ms, 2 / w_max; studies/fish/convergence.toml)");
+    v.choice("scheme", scheme,
+             {{"semi_implicit", Scheme::semi_implicit}, {"explicit_euler", Scheme::explicit_euler},
+              {"symplectic_euler", Scheme::symplectic_euler}, {"tangent_implicit", Scheme::tangent_implicit}},
+             "time integrator (spec §2: semi-implicit Euler); the explicit ones and tangent_implicit (full tangent, "
+             "not the spec's) for the stability comparison");
+    v.real("blowup_strain", blowup_strain, "", 1e-3, 1e3,
+           "a unit longer than (1 + this) or shorter than 1/(1 + this) times its undeformed length counts as a blow-up");
+  }
 };
 
 // "" or what is wrong, naming the parameter.

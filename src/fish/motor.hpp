@@ -53,9 +53,25 @@ std::vector<ScheduleItem> parseSchedule(const std::string& text);
 std::string actionName(Action a);
 double scheduleDurationS(const std::vector<ScheduleItem>& schedule);
 
+// The parameter structs' in-class defaults are the fish kind's (kinds/fish.hpp); each describes its
+// fields for it (kinds/describe.hpp: name, unit, range, one-line doc).
 struct SwimCommand {
-  double amplitude_anterior = 0.7, rate_anterior = 0.004;  // the kind's defaults (kinds/fish.cpp)
-  double amplitude_posterior = 0.7, rate_posterior = 0.004;
+  double amplitude_anterior = 1.0, rate_anterior = 0.0375;  // ours: the full stroke at r_max / 2 cruises
+  double amplitude_posterior = 1.0, rate_posterior = 0.0375;
+
+  // One amplitude and one rate for both segments: read into the anterior's, then bothAsAnterior().
+  template <class V>
+  void describe(V& v) {
+    v.real("swim_amplitude", amplitude_anterior, "", 0, 1,
+           "swim-MC amplitude alpha in (0, 1]: the fraction of full contraction reached (spec §3)");
+    v.real("swim_rate", rate_anterior, "", 0, 1,
+           "swim-MC rate r in (0, r_max]: rest-length change per reference step as a fraction of the rest length "
+           "(spec §3; see rate_reading); the default r_max / 2 cruises");
+  }
+  void bothAsAnterior() {
+    amplitude_posterior = amplitude_anterior;
+    rate_posterior = rate_anterior;
+  }
 };
 
 
@@ -67,6 +83,12 @@ enum class Stroke { contract, antagonistic };
 
 struct MotorParams {
   double contracted_fraction = 0.7;  // fully contracted length / rest length (ours: thesis value not in text)
+  template <class V>
+  void describeContraction(V& v) {
+    v.real("contracted_fraction", contracted_fraction, "", 1e-6, 1 - 1e-6,
+           "fully contracted length / rest length of a muscle (ours: the thesis value is not in text; 0.7 keeps the "
+           "tail from folding at alpha = 1)");
+  }
   // contract (ours, the spec's wording "0 the fully contracted length, 1 the rest length"): each
   //   muscle moves between its rest length l0 and l0 - alpha (l0 - lc); the pair's length
   //   difference spans +-alpha (l0 - lc).
@@ -81,8 +103,8 @@ struct MotorParams {
   bool mirror = false;
   SwimCommand swim;
   double posterior_lag_rad = 1.5707963267948966;  // pi/2 (spec §3 [choose])
-  double turn_amplitude = 0.7;
-  double turn_rate = 0.016;
+  double turn_amplitude = 1.0;  // ours: a 90-degree turn in 3 s
+  double turn_rate = 0.0375;
   // A turn contracts at turn_rate and relaxes at turn_rate x this (ours: 0.25). A symmetric pulse
   // bends the body and unbends it along the same path, and the water gives back most of the turn;
   // a slow release lets the bent body glide round (the thesis's turns: a quick bend, a slow return).
@@ -93,6 +115,35 @@ struct MotorParams {
   bool swim_during_turn = true;  // ours: the tail beats on through a turn, which carries the fish round
   double r_max = 0.075;             // [reimpl]
   double reference_step_s = 0.055;  // the step r is defined per ([reimpl] dt)
+
+  // Every field but contracted_fraction and swim (describeContraction, SwimCommand::describe).
+  template <class V>
+  void describeControllers(V& v) {
+    v.real("posterior_lag_rad", posterior_lag_rad, "rad", -100, 100,
+           "phase lag of the posterior swim segment (spec §3 [choose]: pi/2)");
+    v.real("turn_amplitude", turn_amplitude, "", 0, 1, "turn-MC amplitude alpha in (0, 1]");
+    v.real("turn_rate", turn_rate, "", 0, 1, "turn-MC rate r in (0, r_max] of the contraction");
+    v.choice("muscle_stroke", stroke, {{"contract", Stroke::contract}, {"antagonistic", Stroke::antagonistic}},
+             "swim-MC stroke: contract (rest length to alpha of the way to the contracted one; ours) | antagonistic "
+             "([reimpl]: l0 -+ alpha (l0 - lc), the partner opposite)");
+    v.choice("rate_reading", rate_reading,
+             {{"full_stroke", RateReading::full_stroke}, {"rest_length", RateReading::rest_length}},
+             "what a motor controller's rate r is a fraction of (motor.hpp): full_stroke (ours: r l0 per reference step "
+             "is the alpha = 1 stroke's ramp, a weaker stroke keeps the period; r sets the frequency, alpha the "
+             "amplitude, as in the reimplementation) | rest_length (the spec's literal reading: every stroke ramps at "
+             "r l0 per step, a weaker one beats faster)");
+    v.boolean("mirror", mirror, "swap left and right in every controller (the mirror image of the run; symmetry checks)");
+    v.real("turn_relax_fraction", turn_relax_fraction, "", 0, 1,
+           "turn-MC: relaxation rate / contraction rate (ours: a quick bend, a slow return)");
+    v.choice("turn_stroke", turn_stroke, {{"contract", Stroke::contract}, {"antagonistic", Stroke::antagonistic}},
+             "turn-MC stroke: antagonistic (ours, after the [reimpl] pair: the outer side's muscles lengthen as much "
+             "as the inner side's shorten, twice the bend; a 90-degree turn needs it) | contract (the inner side only)");
+    v.boolean("swim_during_turn", swim_during_turn,
+              "the swim-MC keeps driving the middle and posterior segments through a turn item (spec §1: the middle "
+              "segment swims and turns); false: the fish glides bent");
+    v.real("r_max", r_max, "", 1e-9, 1, "the largest rate ([reimpl] 0.075)");
+    v.real("reference_step_s", reference_step_s, "s", 1e-9, 100, "the step the rates are defined per (the [reimpl] step)");
+  }
 };
 
 // The period of the swim-MC's anterior segment (seconds): 2 x its triangle's height / its slope.

@@ -45,6 +45,20 @@ struct SkinParams {
   // leading edge up > 0 (the pose an ascending fish shows), degrees.
   bool pectoral_fins = true;
   double pectoral_pitch_deg = 0.0;
+
+  // For the fish kind (kinds/describe.hpp).
+  template <class V>
+  void describe(V& v) {
+    v.integer("skin_degree_around", degree_around, 1, 15,
+              "NURBS degree around the body (9 control points; spec §4 [choose]: cubic)");
+    v.integer("skin_degree_along", degree_along, 1, 15, "NURBS degree along the body (21 control points; cubic)");
+    v.real("skin_inflate", inflate, "", 1e-3, 100, "control-net section / body section (ours: the surface lies inside its net)");
+    v.boolean("skin_fins", fins, "dorsal and ventral fin surfaces sharing the midline control points");
+    v.boolean("skin_pectoral_fins", pectoral_fins,
+              "pectoral fins (spec §4: 5-vertex polygons posed in the fish frame), display only: no force acts on them");
+    v.real("pectoral_pitch_deg", pectoral_pitch_deg, "deg", -90, 90,
+           "the pectoral fins' pose: turned about the fish's lateral axis, leading edge up > 0 (display only)");
+  }
 };
 
 // "" or what is wrong, naming the parameter (a degree not below its control-point count, ...).

@@ -15,9 +15,22 @@ namespace creaturelab::fish {
 enum class WaterLaw { linear, quadratic };
 
 struct WaterParams {
-  double mu = 100.0;  // the kind's default (kinds/fish.cpp); 0 = fish in air (spec §2)
-  WaterLaw law = WaterLaw::linear;
+  double mu = 600.0;  // the fish kind's default (see describe); 0 = fish in air (spec §2)
+  WaterLaw law = WaterLaw::quadratic;
   Eigen::Vector3d current_m_per_s = Eigen::Vector3d::Zero();  // uniform water velocity (still by default)
+
+  template <class V>
+  void describe(V& v) {
+    v.real("water_mu", mu, "", 0, 1e9,
+           "water force coefficient mu (linear: N*s/m^3; quadratic: N*s^2/m^4); ours: the pressure drag of a plate "
+           "broadside to the flow, rho C_D / 2 with rho = 1000 kg/m^3 and C_D = 1.2; 0 = in air");
+    v.choice("water_law", law, {{"linear", WaterLaw::linear}, {"quadratic", WaterLaw::quadratic}},
+             "f = min(0, -mu A (n.v)) n (linear) or min(0, -mu A |v| (n.v)) n (quadratic, [reimpl]; ours by default: "
+             "the drag of water at a fish's Reynolds numbers grows as the square of the speed); spec §2");
+    v.real("current_x_m_per_s", current_m_per_s.x(), "m/s", -1e3, 1e3, "uniform water current, x (still water by default)");
+    v.real("current_y_m_per_s", current_m_per_s.y(), "m/s", -1e3, 1e3, "uniform water current, y");
+    v.real("current_z_m_per_s", current_m_per_s.z(), "m/s", -1e3, 1e3, "uniform water current, z");
+  }
 };
 
 // Adds the water force on every face into force_n (one row per node). Returns nothing: a force

@@ -17,69 +17,6 @@ namespace {
 
 const char* kSpec = "X. Tu, Artificial Animals for Computer Animation, PhD thesis 1996; docs/fish-spec.md";
 
-struct FishSetup {
-  fish::SkinParams skin;
-  fish::FishGeometry geometry;
-  fish::UnitParams units;
-  fish::SolverParams solver;
-  fish::MotorParams motor;
-  std::vector<fish::ScheduleItem> schedule;
-};
-
-// Throws std::invalid_argument naming the key for what the per-key ranges cannot catch.
-FishSetup setupOf(const ParamReader& r) {
-  FishSetup s;
-  if (r.text("shape") == "reimplementation") s.geometry = fish::reimplementationGeometry();
-  s.geometry.body_length_m = r.real("body_length_m");
-  if (r.text("shape") == "ours") s.geometry.tail_half_height = r.real("tail_half_height");
-  s.units.mass_unit_kg = r.real("mass_unit_kg");
-  s.units.mass_units[6] = r.real("tail_mass_units");
-  s.units.stiffness_cross_n_per_m = r.real("stiffness_cross_n_per_m");
-  s.units.stiffness_other_n_per_m = r.real("stiffness_other_n_per_m");
-  s.units.stiffness_muscle_n_per_m = r.real("stiffness_muscle_n_per_m");
-  s.units.damping_ns_per_m = r.real("damping_ns_per_m");
-  s.solver.dt_s = r.real("dt_s");
-  const std::string scheme = r.text("scheme");
-  s.solver.scheme = scheme == "explicit_euler"     ? fish::Scheme::explicit_euler
-                    : scheme == "symplectic_euler" ? fish::Scheme::symplectic_euler
-                    : scheme == "tangent_implicit" ? fish::Scheme::tangent_implicit
-                                                   : fish::Scheme::semi_implicit;
-  s.solver.water.mu = r.real("water_mu");
-  s.solver.water.law = r.text("water_law") == "quadratic" ? fish::WaterLaw::quadratic : fish::WaterLaw::linear;
-  s.solver.water.current_m_per_s = {r.real("current_x_m_per_s"), r.real("current_y_m_per_s"), r.real("current_z_m_per_s")};
-  s.solver.blowup_strain = r.real("blowup_strain");
-  auto& m = s.motor;
-  m.contracted_fraction = r.real("contracted_fraction");
-  m.r_max = r.real("r_max");
-  m.reference_step_s = r.real("reference_step_s");
-  m.posterior_lag_rad = r.real("posterior_lag_rad");
-  m.turn_amplitude = r.real("turn_amplitude");
-  m.turn_rate = r.real("turn_rate");
-  m.turn_relax_fraction = r.real("turn_relax_fraction");
-  m.swim_during_turn = r.boolean("swim_during_turn");
-  m.turn_stroke = r.text("turn_stroke") == "contract" ? fish::Stroke::contract : fish::Stroke::antagonistic;
-  m.stroke = r.text("muscle_stroke") == "antagonistic" ? fish::Stroke::antagonistic : fish::Stroke::contract;
-  m.rate_reading = r.text("rate_reading") == "rest_length" ? fish::RateReading::rest_length : fish::RateReading::full_stroke;
-  m.mirror = r.boolean("mirror");
-  m.swim = {r.real("swim_amplitude"), r.real("swim_rate"), r.real("swim_amplitude"), r.real("swim_rate")};
-  if (auto e = fish::validate(m); !e.empty()) throw std::invalid_argument(e);
-  s.skin.degree_around = int(r.integer("skin_degree_around"));
-  s.skin.degree_along = int(r.integer("skin_degree_along"));
-  s.skin.inflate = r.real("skin_inflate");
-  s.skin.fins = r.boolean("skin_fins");
-  s.skin.pectoral_fins = r.boolean("skin_pectoral_fins");
-  s.skin.pectoral_pitch_deg = r.real("pectoral_pitch_deg");
-  if (auto e = fish::validate(s.skin); !e.empty()) throw std::invalid_argument(e);
-  if (auto e = fish::validate(s.geometry, s.units); !e.empty()) throw std::invalid_argument(e);
-  if (auto e = fish::validate(s.solver); !e.empty()) throw std::invalid_argument(e);
-  try {
-    s.schedule = fish::parseSchedule(r.text("schedule"));
-  } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(std::string("schedule: ") + e.what());
-  }
-  return s;
-}
-
 std::vector<std::int64_t> flat(const std::vector<int>& v) { return {v.begin(), v.end()}; }
 
 // The skin's mesh for the exporters (render/): our z up becomes render's y up, (x, y, z) -> (x, z, -y),
@@ -105,10 +42,10 @@ render::GltfLook skinLook() {
 }
 
 // The skin on every recorded frame (quality metrics), stored and exported on export_frames of them.
-void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& model, const fish::FishRecord& rec,
+void addSkin(const FishKindParams& q, const FishSetup& s, const fish::FishModel& model, const fish::FishRecord& rec,
              Result& result) {
   fish::FishSkin skin(model, s.skin);
-  const int around = int(r.integer("skin_samples_around")), along = int(r.integer("skin_samples_along"));
+  const int around = int(q.skin_samples_around), along = int(q.skin_samples_along);
   fish::SkinMesh mesh;
   skin.mesh(around, along, mesh);
   result.metrics["skin_rest_inward"] = {double(fish::checkOutward(mesh).inward), ""};
@@ -121,8 +58,8 @@ void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& mo
   // The exported frames: export_frames evenly spaced over [export_start_s, end].
   std::vector<int> exported;
   int first = 0;
-  while (first < n - 1 && rec.time_s[first] < r.real("export_start_s") - 1e-9) ++first;
-  const int count = std::min<int>(int(r.integer("export_frames")), n - first);
+  while (first < n - 1 && rec.time_s[first] < q.export_start_s - 1e-9) ++first;
+  const int count = std::min<int>(int(q.export_frames), n - first);
   for (int k = 0; k < count; ++k)
     exported.push_back(count > 1 ? first + int(std::lround(double(k) * (n - 1 - first) / (count - 1))) : n - 1);
   double creases = 0, worst = 1, gap = 0, inward = 0;
@@ -179,7 +116,7 @@ void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& mo
     std::snprintf(name, sizeof name, "skin_%03zu.obj", k);
     result.artifacts[name] = bytes(render::objText(frames[k].mesh, "fish", "t = " + std::to_string(frames[k].time_s) + " s"));
   }
-  const int pov = std::min<int>(int(r.integer("pov_frames")), int(frames.size()));
+  const int pov = std::min<int>(int(q.pov_frames), int(frames.size()));
   for (int k = 0; k < pov; ++k) {
     const size_t i = pov > 1 ? size_t(std::lround(double(k) * (frames.size() - 1) / (pov - 1))) : frames.size() - 1;
     render::Vec3 centre;
@@ -193,108 +130,43 @@ void addSkin(const ParamReader& r, const FishSetup& s, const fish::FishModel& mo
 
 }  // namespace
 
+FishSetup FishKindParams::setup() const {
+  FishSetup s;
+  if (shape == "reimplementation") {
+    s.geometry = fish::reimplementationGeometry();
+    s.geometry.body_length_m = geometry.body_length_m;
+  } else {
+    s.geometry = geometry;
+  }
+  s.units = units;
+  s.solver = solver;
+  s.motor = motor;
+  s.motor.swim.bothAsAnterior();
+  if (auto e = fish::validate(s.motor); !e.empty()) throw std::invalid_argument(e);
+  s.skin = skin_params;
+  if (auto e = fish::validate(s.skin); !e.empty()) throw std::invalid_argument(e);
+  if (auto e = fish::validate(s.geometry, s.units); !e.empty()) throw std::invalid_argument(e);
+  if (auto e = fish::validate(s.solver); !e.empty()) throw std::invalid_argument(e);
+  try {
+    s.schedule = fish::parseSchedule(schedule);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("schedule: ") + e.what());
+  }
+  return s;
+}
+
+std::string FishKindParams::validate() const {
+  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
+  try {
+    setup();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  if (!(stable_lo_s < stable_hi_s)) return "stable_lo_s must be below stable_hi_s";
+  return "";
+}
+
 FishKind::FishKind() {
-  params_ = {
-      choice("task", "simulate", {"simulate", "stable_step"},
-             "simulate (run the schedule) | stable_step (bisect the largest step that survives the schedule)"),
-      integer("school_size", 1, 1, 100000,
-              "fish simulated (independent; fish k swims at amplitude x (1 - 0.05 (k mod 5))); the first is recorded, the rest counted"),
-      text("schedule", "swim 30", "",
-           "controller schedule, \"NAME SECONDS; ...\" with NAME swim | left | right | glide (spec §3)"),
-      choice("shape", "ours", {"ours", "reimplementation"},
-             "node coordinates: ours (fish_model.hpp: fusiform, laterally compressed) | reimplementation (FishData.cs InitNodes, scaled to body_length_m)"),
-      real("body_length_m", 2.0, "m", 1e-3, 1e3,
-           "snout to tail (ours: with the [reimpl] masses, 107 kg, our shape then has about the density of water)"),
-      real("tail_half_height", 0.12, "", 1e-3, 10,
-           "height of the dorsal and ventral tail-fin tips (nodes 21, 22) above and below the axis, in body lengths (shape = ours)"),
-      real("mass_unit_kg", 1.1, "kg", 1e-9, 1e9, "mass unit m of the [reimpl] masses (snout 1, rings 6/10/6/1/1, tail 0.15 m)"),
-      real("tail_mass_units", 0.15, "", 1e-9, 1e9,
-           "mass of each tail-fin tip (nodes 21, 22) in units of mass_unit_kg ([reimpl] 0.15; the lightest nodes, they carry the body's stiffest vibration)"),
-      real("stiffness_cross_n_per_m", 15200.0, "N/m", 1e-9, 1e9,
-           "cross units: 400 x the [reimpl] 38 (spec §1; its ratios kept), so that the body's lowest sideways mode "
-           "sits just above the fastest swim stroke and the body follows every gait (the [reimpl] 38 puts it 15x "
-           "below; studies/fish/units.toml)"),
-      real("stiffness_other_n_per_m", 12000.0, "N/m", 1e-9, 1e9, "other passive units: 400 x the [reimpl] 30 (as the cross units)"),
-      real("stiffness_muscle_n_per_m", 11200.0, "N/m", 1e-9, 1e9, "muscle units: 400 x the [reimpl] 28 (as the cross units)"),
-      real("damping_ns_per_m", 0.1, "N*s/m", 0, 1e9, "Voigt damping gamma of every unit (spec §1 [reimpl])"),
-      real("contracted_fraction", 0.7, "", 1e-6, 1 - 1e-6,
-           "fully contracted length / rest length of a muscle (ours: the thesis value is not in text; 0.7 keeps the "
-           "tail from folding at alpha = 1)"),
-      real("water_mu", 600.0, "", 0, 1e9,
-           "water force coefficient mu (linear: N*s/m^3; quadratic: N*s^2/m^4); ours: the pressure drag of a plate "
-           "broadside to the flow, rho C_D / 2 with rho = 1000 kg/m^3 and C_D = 1.2; 0 = in air"),
-      choice("water_law", "quadratic", {"linear", "quadratic"},
-             "f = min(0, -mu A (n.v)) n (linear) or min(0, -mu A |v| (n.v)) n (quadratic, [reimpl]; ours by default: "
-             "the drag of water at a fish's Reynolds numbers grows as the square of the speed); spec §2"),
-      real("current_x_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, x (still water by default)"),
-      real("current_y_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, y"),
-      real("current_z_m_per_s", 0.0, "m/s", -1e3, 1e3, "uniform water current, z"),
-      real("dt_s", 0.002, "s", 1e-9, 100,
-           "time step (ours: the [reimpl] 0.055 s is for its soft units; the calibrated body's stiffest vibration "
-           "allows about 3 ms, 2 / w_max; studies/fish/convergence.toml)"),
-      choice("scheme", "semi_implicit", {"semi_implicit", "explicit_euler", "symplectic_euler", "tangent_implicit"},
-             "time integrator (spec §2: semi-implicit Euler); the explicit ones and tangent_implicit (full tangent, "
-             "not the spec's) for the stability comparison"),
-      real("blowup_strain", 2.0, "", 1e-3, 1e3,
-           "a unit longer than (1 + this) or shorter than 1/(1 + this) times its undeformed length counts as a blow-up"),
-      real("swim_amplitude", 1.0, "", 0, 1,
-           "swim-MC amplitude alpha in (0, 1]: the fraction of full contraction reached (spec §3)"),
-      real("swim_rate", 0.0375, "", 0, 1,
-           "swim-MC rate r in (0, r_max]: rest-length change per reference step as a fraction of the rest length "
-           "(spec §3; see rate_reading); the default r_max / 2 cruises"),
-      real("swim_speed_body_lengths_per_s", 0.0, "1/s", 0, 100,
-           "if > 0: the swim-MC sets alpha = s and r = s r_max for this speed from its calibrated speed map "
-           "(swim_mc.hpp), overriding swim_amplitude/rate; a speed outside the map's range fails the point"),
-      real("swim_mc_slowest_knob", 0.5, "", 1e-3, 0.999,
-           "swim-MC calibration: the slowest knob s (ours: below s = 1/2 the fish swims under 0.15 body lengths/s and, "
-           "the drag growing as the square of the speed, takes longer than a 40 s swim to settle)"),
-      integer("swim_mc_levels", 5, 2, 24, "swim-MC calibration: knobs spaced evenly in log s from the slowest to 1"),
-      real("swim_mc_swim_s", 40.0, "s", 1e-3, 1e6, "swim-MC calibration: each level swims this long from rest"),
-      real("posterior_lag_rad", M_PI / 2, "rad", -100, 100, "phase lag of the posterior swim segment (spec §3 [choose]: pi/2)"),
-      real("turn_amplitude", 1.0, "", 0, 1, "turn-MC amplitude alpha in (0, 1]"),
-      real("turn_rate", 0.0375, "", 0, 1, "turn-MC rate r in (0, r_max] of the contraction"),
-      choice("muscle_stroke", "contract", {"contract", "antagonistic"},
-             "swim-MC stroke: contract (rest length to alpha of the way to the contracted one; ours) | antagonistic "
-             "([reimpl]: l0 -+ alpha (l0 - lc), the partner opposite)"),
-      choice("rate_reading", "full_stroke", {"full_stroke", "rest_length"},
-             "what a motor controller's rate r is a fraction of (motor.hpp): full_stroke (ours: r l0 per reference step "
-             "is the alpha = 1 stroke's ramp, a weaker stroke keeps the period; r sets the frequency, alpha the "
-             "amplitude, as in the reimplementation) | rest_length (the spec's literal reading: every stroke ramps at "
-             "r l0 per step, a weaker one beats faster)"),
-      boolean("mirror", false, "swap left and right in every controller (the mirror image of the run; symmetry checks)"),
-      real("turn_relax_fraction", 0.25, "", 0, 1,
-           "turn-MC: relaxation rate / contraction rate (ours: a quick bend, a slow return)"),
-      choice("turn_stroke", "antagonistic", {"contract", "antagonistic"},
-             "turn-MC stroke: antagonistic (ours, after the [reimpl] pair: the outer side's muscles lengthen as much "
-             "as the inner side's shorten, twice the bend; a 90-degree turn needs it) | contract (the inner side only)"),
-      boolean("swim_during_turn", true,
-              "the swim-MC keeps driving the middle and posterior segments through a turn item (spec §1: the middle "
-              "segment swims and turns); false: the fish glides bent"),
-      real("r_max", 0.075, "", 1e-9, 1, "the largest rate ([reimpl] 0.075)"),
-      real("reference_step_s", 0.055, "s", 1e-9, 100, "the step the rates are defined per (the [reimpl] step)"),
-      real("warmup_s", 10.0, "s", 0, 1e6, "speed is measured from this time to the end (the gait settles first)"),
-      choice("on_blowup", "fail", {"fail", "record"},
-             "fail: a blow-up fails the point (exit 3); record: the run stops there and the step is a metric (air experiment)"),
-      integer("frame_every_steps", 10, 1, 1000000, "record a frame every this many steps (20 ms at the default step)"),
-      boolean("skin", false,
-              "NURBS skin (seed; spec §4): check it on every frame, store it on export_frames frames, write .glb/.obj/.pov artifacts"),
-      integer("skin_degree_around", 3, 1, 15, "NURBS degree around the body (9 control points; spec §4 [choose]: cubic)"),
-      integer("skin_degree_along", 3, 1, 15, "NURBS degree along the body (21 control points; cubic)"),
-      real("skin_inflate", 1.15, "", 1e-3, 100, "control-net section / body section (ours: the surface lies inside its net)"),
-      boolean("skin_fins", true, "dorsal and ventral fin surfaces sharing the midline control points"),
-      boolean("skin_pectoral_fins", true,
-              "pectoral fins (spec §4: 5-vertex polygons posed in the fish frame), display only: no force acts on them"),
-      real("pectoral_pitch_deg", 0.0, "deg", -90, 90,
-           "the pectoral fins' pose: turned about the fish's lateral axis, leading edge up > 0 (display only)"),
-      integer("skin_samples_around", 32, 2, 1024, "mesh samples around each half body"),
-      integer("skin_samples_along", 64, 2, 4096, "mesh samples along the body"),
-      integer("export_frames", 16, 1, 1000, "frames stored and exported (glb animation, OBJ), evenly spaced from export_start_s to the end"),
-      real("export_start_s", 0.0, "s", 0, 1e6, "start of the exported window"),
-      integer("pov_frames", 4, 0, 100, "POV-Ray scenes written, evenly spaced over the exported frames"),
-      real("stable_lo_s", 1e-4, "s", 1e-9, 100, "stable_step: the smallest step tried"),
-      real("stable_hi_s", 5.0, "s", 1e-9, 1000, "stable_step: the largest step tried"),
-      integer("stable_iterations", 30, 1, 200, "stable_step: bisection steps (on a log scale)"),
-  };
   metrics_ = {
       {"fish_length_m", "m", "snout to tail (= body_length_m)"},
       {"mass_kg", "kg", "total mass"},
@@ -351,27 +223,16 @@ std::string FishKind::doc() const {
          kSpec + ")";
 }
 
-std::string FishKind::validate(const Params& p) const {
-  try {
-    ParamReader r(p);
-    setupOf(r);
-    if (!(r.real("stable_lo_s") < r.real("stable_hi_s"))) return "stable_lo_s must be below stable_hi_s";
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
-
 CostEstimate FishKind::estimateCost(const Params& p) const {
   try {
-    ParamReader r(p);
-    const FishSetup s = setupOf(r);
+    const FishKindParams q = readParams<FishKindParams>(p);
+    const FishSetup s = q.setup();
     const double steps = std::ceil(fish::scheduleDurationS(s.schedule) / s.solver.dt_s);
     CostEstimate c;
     const double runs =
-        r.text("task") == "stable_step" ? double(r.integer("stable_iterations") + 2) : double(r.integer("school_size"));
+        q.task == "stable_step" ? double(q.stable_iterations + 2) : double(q.school_size);
     c.steps = steps * runs;
-    c.memory_bytes = 8.0 * (1 << 20) + steps / double(r.integer("frame_every_steps")) * 8.0 * (fish::kNodes * 3 + 30);
+    c.memory_bytes = 8.0 * (1 << 20) + steps / double(q.frame_every_steps) * 8.0 * (fish::kNodes * 3 + 30);
     c.detail = std::to_string(long(steps)) + " steps of " + std::to_string(s.solver.dt_s) + " s" +
                (runs > 1 ? " x " + std::to_string(long(runs)) + " runs (or fish)" : "");
     return c;
@@ -381,8 +242,8 @@ CostEstimate FishKind::estimateCost(const Params& p) const {
 }
 
 Result FishKind::run(const Params& p) const {
-  ParamReader r(p);
-  FishSetup s = setupOf(r);
+  const FishKindParams q = readParams<FishKindParams>(p);
+  FishSetup s = q.setup();
   const fish::FishModel model = fish::buildFish(s.geometry, s.units);
   const double L = model.body_length_m, nan = std::nan("");
   Result result;
@@ -390,10 +251,9 @@ Result FishKind::run(const Params& p) const {
   result.metrics["swim_mc_speed_ratio"] = {nan, ""};
   result.metrics["swim_mc_slowest_body_lengths_per_s"] = {nan, "1/s"};
   result.metrics["swim_mc_fastest_body_lengths_per_s"] = {nan, "1/s"};
-  if (const double want = r.real("swim_speed_body_lengths_per_s"); want > 0) {  // the swim-MC's speed map
-    const fish::SpeedMap map = fish::calibrateSwimMC(model, s.solver, s.motor, r.real("swim_mc_swim_s"),
-                                                     r.real("warmup_s"), r.real("swim_mc_slowest_knob"),
-                                                     int(r.integer("swim_mc_levels")));
+  if (const double want = q.swim_speed_body_lengths_per_s; want > 0) {  // the swim-MC's speed map
+    const fish::SpeedMap map = fish::calibrateSwimMC(model, s.solver, s.motor, q.swim_mc_swim_s, q.warmup_s,
+                                                     q.swim_mc_slowest_knob, int(q.swim_mc_levels));
     std::string error;
     const double knob = fish::knobForSpeed(map, want, error);
     result.metrics["swim_mc_slowest_body_lengths_per_s"] = {map.speed_body_lengths_per_s.front(), "1/s"};
@@ -429,9 +289,9 @@ Result FishKind::run(const Params& p) const {
     result.topology["faces"] = flat(faces);
   }
 
-  if (r.text("task") == "stable_step") {
-    const auto st = fish::largestStableStep(model, s.solver, s.motor, s.schedule, r.real("stable_lo_s"),
-                                            r.real("stable_hi_s"), int(r.integer("stable_iterations")));
+  if (q.task == "stable_step") {
+    const auto st = fish::largestStableStep(model, s.solver, s.motor, s.schedule, q.stable_lo_s, q.stable_hi_s,
+                                            int(q.stable_iterations));
     result.metrics["max_stable_dt_s"] = {st.dt_s, "s"};
     for (const char* m : {"school_count", "school_fish_steps", "school_mean_speed_body_lengths_per_s", "school_blowups"})
       result.metrics[m] = {nan, ""};
@@ -440,7 +300,7 @@ Result FishKind::run(const Params& p) const {
   }
 
   fish::RunOptions opt;
-  opt.frame_every_steps = int(r.integer("frame_every_steps"));
+  opt.frame_every_steps = int(q.frame_every_steps);
   const fish::FishRecord rec = fish::runSchedule(model, s.solver, s.motor, s.schedule, opt);
 
   result.timeseries["time_s"] = {rec.time_s, "s"};
@@ -465,12 +325,12 @@ Result FishKind::run(const Params& p) const {
   muscles.dim = 1;
 
   const double period = fish::swimPeriodS(s.motor);
-  const fish::SwimMeasures sw = fish::measureSwim(rec, L, r.real("warmup_s"), period);
+  const fish::SwimMeasures sw = fish::measureSwim(rec, L, q.warmup_s, period);
   const fish::TurnMeasures tu = fish::measureTurn(rec, s.schedule);
   result.metrics["steps"] = {double(rec.steps), ""};
   result.metrics["speed_body_lengths_per_s"] = {sw.speed_body_lengths_per_s, "1/s"};
   result.metrics["speed_m_per_s"] = {sw.speed_m_per_s, "m/s"};
-  if (const double want = r.real("swim_speed_body_lengths_per_s"); want > 0)
+  if (const double want = q.swim_speed_body_lengths_per_s; want > 0)
     result.metrics["swim_mc_speed_ratio"] = {sw.speed_body_lengths_per_s / want, ""};
   result.metrics["forward_distance_m"] = {sw.forward_distance_m, "m"};
   result.metrics["lateral_drift_m"] = {sw.lateral_drift_m, "m"};
@@ -496,7 +356,7 @@ Result FishKind::run(const Params& p) const {
   result.metrics["blowup_time_s"] = {rec.blew_up ? rec.blowup_time_s : -1.0, "s"};
   // The school: independent fish, each its own solver and controller, stepped one after the other
   // (the thesis animates up to 5; the speed goal is 1,000 in real time). Only counted, not recorded.
-  const long school = r.integer("school_size");
+  const long school = long(q.school_size);
   double speed_sum = sw.speed_body_lengths_per_s, fish_steps = double(rec.steps), school_blowups = rec.blew_up;
   fish::RunOptions quiet;
   quiet.frame_every_steps = 20;  // enough frames for measureSwim, little recording
@@ -508,14 +368,14 @@ Result FishKind::run(const Params& p) const {
     const fish::FishRecord other = fish::runSchedule(model, s.solver, mk, s.schedule, quiet);
     fish_steps += double(other.steps);
     school_blowups += other.blew_up;
-    speed_sum += fish::measureSwim(other, L, r.real("warmup_s")).speed_body_lengths_per_s;
+    speed_sum += fish::measureSwim(other, L, q.warmup_s).speed_body_lengths_per_s;
   }
   result.metrics["school_count"] = {double(school), ""};
   result.metrics["school_fish_steps"] = {fish_steps, ""};
   result.metrics["school_mean_speed_body_lengths_per_s"] = {speed_sum / double(school), "1/s"};
   result.metrics["school_blowups"] = {school_blowups, ""};
-  if (r.boolean("skin")) addSkin(r, s, model, rec, result);
-  if (rec.blew_up && r.text("on_blowup") == "fail")
+  if (q.skin) addSkin(q, s, model, rec, result);
+  if (rec.blew_up && q.on_blowup == "fail")
     throw RunFailure("fish blew up at step " + std::to_string(rec.blowup_step) + " (t = " +
                          std::to_string(rec.blowup_time_s) + " s): " + rec.blowup_cause,
                      result);

@@ -16,14 +16,40 @@
 namespace creaturelab::fish {
 namespace {
 
-// One full step of a swimming fish in water at the default 0.055 s step.
-void BM_FishStep(benchmark::State& state) {
-  const FishModel fish = buildFish({}, {});
+// The setting these figures are for: the [reimpl] soft units (c = 38, 30, 28 N/m) at its 0.055 s step
+// in linear water, alpha = 0.7 (the structs' defaults are the fish kind's calibrated body at 2 ms).
+FishModel softFish() {
+  UnitParams u;
+  u.stiffness_cross_n_per_m = 38.0;
+  u.stiffness_other_n_per_m = 30.0;
+  u.stiffness_muscle_n_per_m = 28.0;
+  FishGeometry g;
+  g.body_length_m = 1.0;
+  return buildFish(g, u);
+}
+
+SolverParams softSolver() {
   SolverParams p;
+  p.dt_s = 0.055;
   p.water.mu = 100;
   p.water.law = WaterLaw::linear;
+  return p;
+}
+
+MotorParams softMotor() {
+  MotorParams m;
+  m.swim = {0.7, 0.004, 0.7, 0.004};
+  m.turn_amplitude = 0.7;
+  m.turn_rate = 0.016;
+  return m;
+}
+
+// One full step of a swimming fish in water at the default 0.055 s step.
+void BM_FishStep(benchmark::State& state) {
+  const FishModel fish = softFish();
+  const SolverParams p = softSolver();
   FishSolver solver(fish, p);
-  MotorController motor(fish, {}, parseSchedule("swim 1000000"));
+  MotorController motor(fish, softMotor(), parseSchedule("swim 1000000"));
   FishState s = restState(fish);
   for (auto _ : state) {
     motor.apply(s.time_s, p.dt_s, s.rest_m);
@@ -38,7 +64,7 @@ BENCHMARK(BM_FishStep);
 // The skin of one fish from its node positions: control points (24 face frames, 408 bound control
 // points), then both body halves sampled 32 around x 64 along plus the two fins, with vertex normals.
 void BM_Skin32x64(benchmark::State& state) {
-  const FishModel fish = buildFish({}, {});
+  const FishModel fish = softFish();
   FishSkin skin(fish, {});
   NodeMatrix x = fish.rest_positions_m;
   x(13, 1) += 0.05;  // a bent peduncle: not the rest shape
@@ -56,10 +82,8 @@ BENCHMARK(BM_Skin32x64)->Unit(benchmark::kMicrosecond);
 // A school of N independent fish, stepped one after the other: one iteration is one step of all N.
 void BM_School(benchmark::State& state) {
   const int n = int(state.range(0));
-  const FishModel fish = buildFish({}, {});
-  SolverParams p;
-  p.water.mu = 100;
-  p.water.law = WaterLaw::linear;
+  const FishModel fish = softFish();
+  const SolverParams p = softSolver();
   std::vector<FishSolver> solvers;
   std::vector<MotorController> motors;
   std::vector<FishState> states;
@@ -67,7 +91,7 @@ void BM_School(benchmark::State& state) {
   motors.reserve(n);
   for (int k = 0; k < n; ++k) {
     solvers.emplace_back(fish, p);
-    MotorParams m;
+    MotorParams m = softMotor();
     m.swim.amplitude_anterior = m.swim.amplitude_posterior = 0.6 + 0.1 * (k % 3);  // not all in step
     motors.emplace_back(fish, m, parseSchedule("swim 1000000"));
     states.push_back(restState(fish));

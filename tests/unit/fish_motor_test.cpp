@@ -6,6 +6,8 @@
 #include "fish/motor.hpp"
 #include "fish/swim_mc.hpp"
 
+#include "fish_test_settings.hpp"
+
 namespace creaturelab::fish {
 namespace {
 
@@ -28,16 +30,16 @@ TEST(Schedule, ParsesAndRejectsWithTheItemNamed) {
 }
 
 TEST(Motor, ValidateNamesAlphaAndR) {
-  MotorParams p;
+  MotorParams p = testMotor();
   p.swim.amplitude_anterior = 0;
   EXPECT_NE(validate(p).find("swim_amplitude"), std::string::npos);
-  p = {};
+  p = testMotor();
   p.swim.amplitude_posterior = 1.2;
   EXPECT_NE(validate(p).find("swim_amplitude"), std::string::npos);
-  p = {};
+  p = testMotor();
   p.turn_rate = 0.08;  // above r_max = 0.075
   EXPECT_NE(validate(p).find("turn_rate"), std::string::npos);
-  p = {};
+  p = testMotor();
   EXPECT_EQ(validate(p), "");
 }
 
@@ -45,8 +47,8 @@ TEST(Motor, ValidateNamesAlphaAndR) {
 // the right side is still at rest then and peaks a half period later (out of phase); the posterior
 // segment lags by lag / 2 pi of a period.
 TEST(Motor, SwimWaveOutOfPhaseAndLagged) {
-  const FishModel fish = buildFish({}, {});
-  MotorParams p;
+  const FishModel fish = testFish();
+  MotorParams p = testMotor();
   p.swim = {0.5, 0.01, 0.5, 0.01};
   MotorController mc(fish, p, parseSchedule("swim 100"));
   int left_mid = -1, right_mid = -1, left_post = -1;
@@ -80,7 +82,7 @@ TEST(Motor, SwimWaveOutOfPhaseAndLagged) {
 // The two readings of the rate: the full stroke's keeps the period whatever alpha, the rest length's
 // shortens it in proportion to alpha.
 TEST(Motor, RateReadings) {
-  MotorParams p;
+  MotorParams p = testMotor();
   p.swim = {0.5, 0.01, 0.5, 0.01};
   const double full = swimPeriodS(p);
   EXPECT_NEAR(full, 2 * (1 - p.contracted_fraction) / 0.01 * p.reference_step_s, 1e-12);
@@ -93,8 +95,8 @@ TEST(Motor, RateReadings) {
 // swim_during_turn is off; rest lengths never jump by more than r_max per reference step, also when
 // the controller switches.
 TEST(Motor, TurnLeftAndRateLimit) {
-  const FishModel fish = buildFish({}, {});
-  MotorParams p;
+  const FishModel fish = testFish();
+  MotorParams p = testMotor();
   p.swim_during_turn = false;
   const auto c = MotorController(fish, p, parseSchedule("swim 4; left 4; swim 4")).targetContraction(4.5);
   for (int k = 0; k < kMuscles; ++k) {
@@ -159,8 +161,8 @@ TEST(Motor, SwimSpeedMapInverts) {
 // opposite way (their contractions sum to zero once both run), from 0 at the start; the period is
 // twice the contract stroke's at the same rate. mirror swaps the sides.
 TEST(Motor, AntagonisticStrokeAndMirror) {
-  const FishModel fish = buildFish({}, {});
-  MotorParams p;
+  const FishModel fish = testFish();
+  MotorParams p = testMotor();
   p.swim = {0.5, 0.01, 0.5, 0.01};
   const double contract_period = swimPeriodS(p);
   p.stroke = Stroke::antagonistic;

@@ -10,6 +10,8 @@
 #include "fish/fish_run.hpp"
 #include "fish/skin.hpp"
 
+#include "fish_test_settings.hpp"
+
 namespace creaturelab::fish {
 namespace {
 
@@ -55,7 +57,7 @@ TEST(Nurbs, BasisIsAPartitionOfUnityAndValidateNamesTheDegree) {
 // A rigid motion of the nodes carries every control point with it (spec §4: to round-off);
 // a uniform scaling does not (the offsets are fixed lengths).
 TEST(FishSkin, RigidMotionCarriesEveryControlPoint) {
-  const FishModel fish = buildFish({}, {});
+  const FishModel fish = testFish();
   FishSkin skin(fish, {});
   const auto rest = skin.controlPoints();
   ASSERT_EQ(rest.size(), size_t(2 * 9 * 21 + 2 * 15));
@@ -89,13 +91,13 @@ void expectClosed(const SkinMesh& m) {
 }
 
 TEST(FishSkin, ClosedAndOutwardOverASwim) {
-  const FishModel fish = buildFish({}, {});
+  const FishModel fish = testFish();
   FishSkin skin(fish, {});
-  SolverParams p;
+  SolverParams p = testSolver();
   p.dt_s = 0.02;
   RunOptions opt;
   opt.frame_every_steps = 25;
-  MotorParams strong;
+  MotorParams strong = testMotor();
   strong.swim = {1.0, 0.008, 1.0, 0.008};  // the largest bends of the swim experiment
   const FishRecord rec = runSchedule(fish, p, strong, parseSchedule("swim 30; left 10"), opt);
   ASSERT_FALSE(rec.blew_up);
@@ -131,7 +133,7 @@ TEST(FishSkin, ClosedAndOutwardOverASwim) {
 // The skin checks can fail: the rest skin with one half turned inside out (its triangles' winding
 // reversed) has inward triangles, and with one half moved 1 mm sideways its seam opens by 1 mm.
 TEST(FishSkin, OutwardAndSeamChecksSeeABrokenSkin) {
-  const FishModel fish = buildFish({}, {});
+  const FishModel fish = testFish();
   FishSkin skin(fish, {});
   SkinMesh mesh;
   skin.mesh(16, 32, mesh);
@@ -150,7 +152,7 @@ TEST(FishSkin, OutwardAndSeamChecksSeeABrokenSkin) {
 // motion of the nodes, below the body's axis beside ring 1-2, and pitched leading edge up by a
 // positive pitch; the mesh appends them (5 vertices each) after the fins.
 TEST(FishSkin, PectoralFinsPosedInTheFishFrame) {
-  const FishModel fish = buildFish({}, {});
+  const FishModel fish = testFish();
   const NodeMatrix& x0 = fish.rest_positions_m;
   FishSkin skin(fish, {});
   const auto rest = skin.pectoralFins(x0);
@@ -181,7 +183,7 @@ TEST(FishSkin, PectoralFinsPosedInTheFishFrame) {
 
 // A surface point from the grid evaluator equals the direct evaluation.
 TEST(FishSkin, GridEqualsPointwise) {
-  const FishModel fish = buildFish({}, {});
+  const FishModel fish = testFish();
   FishSkin skin(fish, {});
   SkinMesh mesh;
   skin.mesh(5, 7, mesh);

@@ -11,10 +11,12 @@
 #include "fish/fish_run.hpp"
 #include "fish/fish_solver.hpp"
 
+#include "fish_test_settings.hpp"
+
 namespace creaturelab::fish {
 namespace {
 
-FishModel defaultFish() { return buildFish({}, {}); }
+FishModel defaultFish() { return testFish(); }
 
 TEST(FishModel, CountsMatchTheThesis) {
   const FishModel f = defaultFish();
@@ -60,7 +62,7 @@ TEST(FishModel, FacesPointOutwardAndTheLeftIsLeft) {
 //   vi = n r / (mi/dt + dt n (1 + mi/mj)).
 TEST(FishSolver, OneStepMatchesTheStepByHand) {
   const FishModel f = defaultFish();
-  SolverParams p;
+  SolverParams p = testSolver();
   p.water.mu = 0;
   p.dt_s = 0.055;
   FishSolver solver(f, p);
@@ -93,7 +95,7 @@ TEST(FishSolver, OneStepMatchesTheStepByHand) {
 TEST(FishSolver, ExplicitStepsByHand) {
   const FishModel f = defaultFish();
   for (Scheme scheme : {Scheme::explicit_euler, Scheme::symplectic_euler}) {
-    SolverParams p;
+    SolverParams p = testSolver();
     p.scheme = scheme;
     FishSolver solver(f, p);
     FishState s = restState(f);
@@ -118,7 +120,7 @@ TEST(FishSolver, ExplicitStepsByHand) {
 // K's rows sum to zero, so A 1 = (M/dt) 1; A is symmetric and positive definite at rest.
 TEST(FishSolver, MatrixRowsSumToTheMassTerm) {
   const FishModel f = defaultFish();
-  FishSolver solver(f, {});
+  FishSolver solver(f, testSolver());
   FishState s = restState(f);
   for (int k = 0; k < kMuscles; k += 3) s.rest_m[f.muscles[k].unit] *= 0.85;
   s.v_m_per_s.setConstant(0.01);
@@ -139,10 +141,10 @@ TEST(FishSolver, MatrixRowsSumToTheMassTerm) {
 // muscles swimming, for 250 steps.
 TEST(FishSolver, MomentumConservedInAir) {
   const FishModel f = defaultFish();
-  SolverParams p;
+  SolverParams p = testSolver();
   p.water.mu = 0;
   FishSolver solver(f, p);
-  MotorController motor(f, {}, parseSchedule("swim 30"));
+  MotorController motor(f, testMotor(), parseSchedule("swim 30"));
   FishState s = restState(f);
   for (int k = 0; k < kNodes; ++k) s.v_m_per_s.row(k) << 0.3, 0.1 * f.rest_positions_m(k, 2), -0.05 * f.rest_positions_m(k, 1);
   auto momentum = [&] {
@@ -171,11 +173,11 @@ TEST(FishSolver, LeftAndRightTurnsMirror) {
     const int ring = (k - 1) / 4, q = (k - 1) % 4;
     return 1 + 4 * ring + (3 - q);
   };
-  SolverParams p;
+  SolverParams p = testSolver();
   p.dt_s = 0.02;
-  MotorParams mirrored;
+  MotorParams mirrored = testMotor();
   mirrored.mirror = true;
-  const FishRecord left = runSchedule(f, p, {}, parseSchedule("left 6"), {});
+  const FishRecord left = runSchedule(f, p, testMotor(), parseSchedule("left 6"), {});
   const FishRecord right = runSchedule(f, p, mirrored, parseSchedule("left 6"), {});
   ASSERT_FALSE(left.blew_up);
   ASSERT_EQ(left.frames(), right.frames());
@@ -191,7 +193,7 @@ TEST(FishSolver, LeftAndRightTurnsMirror) {
   EXPECT_GT(std::fabs(left.heading_rad[last]), 1e-3);
   EXPECT_NEAR(left.heading_rad[last], -right.heading_rad[last], 1e-12);
   // a straight swim stays in its horizontal plane: the body is also symmetric top to bottom
-  const FishRecord swim = runSchedule(f, p, {}, parseSchedule("swim 10"), {});
+  const FishRecord swim = runSchedule(f, p, testMotor(), parseSchedule("swim 10"), {});
   EXPECT_LT(std::fabs(swim.com_m[3 * (swim.frames() - 1) + 2] - swim.com_m[2]), 1e-12);
 }
 
@@ -210,11 +212,11 @@ TEST(FishSolver, SimilarityInTimeAndLength) {
     EXPECT_FALSE(r.blew_up);
     return std::vector<double>(r.nodes_m.end() - 3 * kNodes, r.nodes_m.end());
   };
-  FishGeometry g;
-  UnitParams u;
-  SolverParams sp;
+  FishGeometry g = testBody();
+  UnitParams u = testUnits();
+  SolverParams sp = testSolver();
   sp.dt_s = 0.02;
-  MotorParams mp;
+  MotorParams mp = testMotor();
   mp.swim = {1.0, 0.01, 1.0, 0.01};
   const auto base = runLast(g, u, sp, mp, "swim 6; left 3");
   double scale = 0;
@@ -268,14 +270,16 @@ TEST(FishModes, ScaleAsTheSpringMassSystem) {
   EXPECT_GT(base.lowest_lateral_hz, 0.05);
   EXPECT_LT(base.lowest_lateral_hz, 1.0);
   EXPECT_GT(base.highest_rad_per_s, 2 * M_PI * base.lowest_lateral_hz);
-  FishGeometry big;
+  FishGeometry big = testBody();
   big.body_length_m = 26;
-  UnitParams stiff;
+  UnitParams stiff = testUnits();
   stiff.stiffness_cross_n_per_m *= 4, stiff.stiffness_other_n_per_m *= 4, stiff.stiffness_muscle_n_per_m *= 4;
-  EXPECT_NEAR(restModes(buildFish(big, {})).lowest_lateral_hz, base.lowest_lateral_hz, 1e-9 * base.lowest_lateral_hz);
-  EXPECT_NEAR(restModes(buildFish({}, stiff)).lowest_lateral_hz, 2 * base.lowest_lateral_hz, 1e-9 * base.lowest_lateral_hz);
-  EXPECT_NEAR(restModes(buildFish({}, stiff)).highest_rad_per_s, 2 * base.highest_rad_per_s, 1e-9 * base.highest_rad_per_s);
-  const RestModes theirs = restModes(buildFish(reimplementationGeometry(), {}));
+  EXPECT_NEAR(restModes(buildFish(big, testUnits())).lowest_lateral_hz, base.lowest_lateral_hz, 1e-9 * base.lowest_lateral_hz);
+  EXPECT_NEAR(restModes(buildFish(testBody(), stiff)).lowest_lateral_hz, 2 * base.lowest_lateral_hz, 1e-9 * base.lowest_lateral_hz);
+  EXPECT_NEAR(restModes(buildFish(testBody(), stiff)).highest_rad_per_s, 2 * base.highest_rad_per_s, 1e-9 * base.highest_rad_per_s);
+  FishGeometry their_shape = reimplementationGeometry();
+  their_shape.body_length_m = 1.0;
+  const RestModes theirs = restModes(buildFish(their_shape, testUnits()));
   EXPECT_GT(theirs.lowest_lateral_hz, 0.5 * base.lowest_lateral_hz);
   EXPECT_LT(theirs.lowest_lateral_hz, 2.0 * base.lowest_lateral_hz);
 }
@@ -288,7 +292,7 @@ TEST(FishSolver, TangentStepConservesMomentumAndFollowsTheSpecStep) {
   FishState s0 = restState(f);
   for (int k = 0; k < kNodes; ++k) s0.v_m_per_s.row(k) << 0.3, 0.1 * f.rest_positions_m(k, 2), -0.05 * f.rest_positions_m(k, 1);
   for (int e = 0; e < kUnits; ++e) s0.rest_m[e] *= 0.9 + 0.02 * (e % 7);
-  SolverParams p;
+  SolverParams p = testSolver();
   p.water.mu = 0;
   p.scheme = Scheme::tangent_implicit;
   FishState s = s0;
@@ -329,7 +333,7 @@ TEST(WaterForce, Properties) {
     addWaterForce(f, w, x, vel, force);
     return Eigen::Vector3d(force.colwise().sum().transpose());
   };
-  WaterParams w;
+  WaterParams w = testSolver().water;
   w.mu = 50;
   w.law = WaterLaw::linear;
   w.current_m_per_s = Eigen::Vector3d(0.2, 0.1, -0.05);
@@ -354,7 +358,7 @@ TEST(WaterForce, Properties) {
 
 TEST(FishSolver, BlowUpIsDetectedAndNamed) {
   const FishModel f = defaultFish();
-  SolverParams p;
+  SolverParams p = testSolver();
   p.water.mu = 0;
   FishSolver solver(f, p);
   FishState s = restState(f);
@@ -375,7 +379,7 @@ TEST(FishSolver, BlowUpIsDetectedAndNamed) {
   EXPECT_EQ(coarse.step(c).status, StepStatus::not_positive_definite);
   // the air run of the thesis: full amplitude, fast, blows up and says when
   SolverParams air = p;
-  MotorParams flail;
+  MotorParams flail = testMotor();
   flail.swim = {1.0, 0.008, 1.0, 0.008};
   const FishRecord rec = runSchedule(f, air, flail, parseSchedule("swim 60"), {});
   EXPECT_TRUE(rec.blew_up);
@@ -384,13 +388,13 @@ TEST(FishSolver, BlowUpIsDetectedAndNamed) {
 }
 
 TEST(FishParams, BadInputNamesTheParameter) {
-  SolverParams p;
+  SolverParams p = testSolver();
   p.dt_s = 0;
   EXPECT_NE(validate(p).find("dt_s"), std::string::npos);
-  UnitParams u;
+  UnitParams u = testUnits();
   u.mass_units[2] = -1;
-  EXPECT_NE(validate(FishGeometry{}, u).find("mass"), std::string::npos);
-  EXPECT_THROW(buildFish({}, u), std::invalid_argument);
+  EXPECT_NE(validate(testBody(), u).find("mass"), std::string::npos);
+  EXPECT_THROW(buildFish(testBody(), u), std::invalid_argument);
 }
 
 }  // namespace

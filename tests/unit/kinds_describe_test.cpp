@@ -7,6 +7,7 @@
 #include <string>
 
 #include "kinds/describe.hpp"
+#include "kinds/fish.hpp"
 #include "kinds/fluid.hpp"
 #include "kinds/oscillator.hpp"
 
@@ -164,6 +165,38 @@ TEST(DescribedKind, FluidReadsIntoTheSolversStructAndValidatesThroughIt) {
   EXPECT_EQ(kind.validate(p),
             "walls.left.tangential_velocity_m_per_s = 0.25 has no effect on a free_slip wall; set walls.left.type = "
             "moving (or inflow) or the velocity to 0");
+}
+
+TEST(DescribedKind, FishBuildsItsRunFromTheFishStructsDefaults) {
+  const FishKind kind;
+  const FishSetup s = readParams<FishKindParams>(withDefaults(kind, {})).setup();
+  namespace fish = creaturelab::fish;
+  EXPECT_EQ(s.solver.dt_s, fish::SolverParams{}.dt_s);
+  EXPECT_EQ(s.solver.water.law, fish::WaterLaw::quadratic);
+  EXPECT_EQ(s.units.stiffness_cross_n_per_m, fish::UnitParams{}.stiffness_cross_n_per_m);
+  EXPECT_EQ(s.geometry.body_length_m, fish::FishGeometry{}.body_length_m);
+  EXPECT_EQ(s.motor.turn_rate, fish::MotorParams{}.turn_rate);
+  EXPECT_EQ(s.schedule.size(), 1u);
+
+  Params p = withDefaults(kind, {});
+  p["shape"] = std::string("reimplementation");
+  p["body_length_m"] = 1.5;
+  p["swim_amplitude"] = 0.5;
+  p["swim_rate"] = 0.01;
+  p["water_law"] = std::string("linear");
+  const FishSetup r = readParams<FishKindParams>(p).setup();
+  EXPECT_EQ(r.geometry.body_length_m, 1.5);
+  EXPECT_EQ(r.geometry.ring_station, fish::reimplementationGeometry().ring_station);
+  EXPECT_EQ(r.motor.swim.amplitude_posterior, 0.5);  // one command for both segments
+  EXPECT_EQ(r.motor.swim.rate_posterior, 0.01);
+  EXPECT_EQ(r.solver.water.law, fish::WaterLaw::linear);
+
+  p["schedule"] = std::string("swim 3; hover 2");
+  EXPECT_NE(kind.validate(p).find("schedule: "), std::string::npos);
+  p = withDefaults(kind, {});
+  p["stable_lo_s"] = 1.0;
+  p["stable_hi_s"] = 0.5;
+  EXPECT_EQ(kind.validate(p), "stable_lo_s must be below stable_hi_s");
 }
 
 }  // namespace
