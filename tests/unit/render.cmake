@@ -10,3 +10,9 @@ creaturelab_test(render_unit_test unit
     ${CMAKE_CURRENT_LIST_DIR}/render_export_test.cpp
   LIBS cl_render cl_io
 )
+# the render hook through the kind (kinds/render_hook.hpp): which kinds render, the jellyfish's hook
+# against its renderer. Well under 1 s.
+creaturelab_test(render_hook_test unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/render_hook_test.cpp
+  LIBS cl_kinds cl_render
+)
