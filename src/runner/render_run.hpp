@@ -3,7 +3,7 @@
 // (Kind::renderHook(), kinds/render_hook.hpp; the jellyfish's: Rudolf & Mould 2009 §3.4-3.5),
 // written as
 //   OUT/render.h5 + render.xdmf   /render/... per frame (ParaView opens the .xdmf)
-//   OUT/NAME.glb                  glTF 2.0, one mesh with a morph target per frame, animated
+//   OUT/NAME.glb                  glTF 2.0, one mesh with a morph target per later frame, animated
 //   OUT/obj/frame_NNNNNN.obj      a Wavefront OBJ per frame
 //   OUT/figures/                  with figures: the paper's figures as POV-Ray scenes and PNGs (povray, headless)
 // Everything is made in OUT.tmp and renamed to OUT when whole: a failure leaves nothing behind.
