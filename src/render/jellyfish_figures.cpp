@@ -16,7 +16,7 @@ double apertureWidth(const SliceRecording& swim, int k) {
   return std::hypot(f.markers_xy[right] - f.markers_xy[0], f.markers_xy[right + 1] - f.markers_xy[1]);
 }
 
-int contracted(const SliceRecording& swim) {
+int mostContractedFrame(const SliceRecording& swim) {
   int best = 0;
   for (int k = 1; k < swim.frames(); ++k)
     if (apertureWidth(swim, k) < apertureWidth(swim, best)) best = k;
@@ -56,7 +56,7 @@ class FigureMaker {
   // Fig. 7: the contracted frame's slice with example pairs and their discs.
   PovFigure fig07() const {
     JellyfishRenderer renderer(params_, swim_.topology, swim_.markers);
-    renderer.render(swim_.frame(contracted(swim_)));
+    renderer.render(swim_.frame(mostContractedFrame(swim_)));
     std::vector<int> rings;
     for (double f : {0.0, 0.2, 0.4, 0.6, 0.8}) rings.push_back(int(std::lround(f * (params_.rings - 2))));
     const PovView view{1200, 900, 20, 28, 0.06};
@@ -78,7 +78,7 @@ class FigureMaker {
       p.noise = noise;
       return p;
     };
-    const int expanded = 0, closed = contracted(swim_);
+    const int expanded = 0, closed = mostContractedFrame(swim_);
     const PovView view{1500, 1000, 20, 0, 0.05};
     PovFigure figure{"fig09_variation", view.width_px, view.height_px, {}, {}};
     std::vector<PovPlacement> items = {
@@ -140,7 +140,7 @@ class FigureMaker {
 std::vector<int> jellyfishFigureFrames(const SliceRecording& swim) {
   std::vector<int> out = cycleFrames(swim, 8);
   out.push_back(0);
-  out.push_back(contracted(swim));
+  out.push_back(mostContractedFrame(swim));
   return out;
 }
 
