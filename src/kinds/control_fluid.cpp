@@ -70,9 +70,11 @@ std::vector<std::pair<std::string, double>> initialRad(const ParamReader& r) {
   return a;
 }
 
-// The recorded series, the outline markers with their bodies, and the vorticity frames.
-void addFluidRun(Result& result, const control::FluidRunRecorder& recorder) {
+// The recorded series (the controller's and the swimmer's rise), the outline markers with their
+// bodies, and the vorticity frames.
+void addFluidRun(Result& result, const control::FluidRunRecorder& recorder, const control::RiseRecorder& rise) {
   addSeries(result, recorder.series());
+  addSeries(result, rise.series());
   const control::MarkerFrames& m = recorder.markers();
   result.topology["marker_body"] = m.body;
   Tracks& outline = result.lagrangian["markers_m"];
@@ -267,36 +269,33 @@ Result ControlFluidKind::run(const Params& params) const {
   const coupling::RigidFluidParams cp = rigidFluidParams(r);
   control::FluidController controller(model, p, fluidControlParams(r), initialRad(r), fluidParams(r), cp);
   control::FluidRunRecorder recorder(model, p, controller, cp.origin_x_m, cp.origin_z_m, r.integer("field_every_frames"));
+  // The swimmer (§7.2): the joints' senses follow the mouth's phases; the rise.
+  const control::SwimmerPhases phases = swimmerPhases(r, int(p.controlled.size()));
+  control::RiseRecorder rise(riseSettings(r, model));
+  const double density_ratio = control::densityRatio(model, controller.coupling(), r.real("density_kg_per_m3"));
   Result result;
-  // The swimmer (swimmer.hpp, §7.2): the joints' senses follow the mouth's phases; the rise.
-  RiseRecorder rise(r, model, result);
-  const auto phase_senses = phaseSenses(r, int(p.controlled.size()));
-  const auto phase_strengths = phaseStrengths(r);
-  const double density_ratio = densityRatio(model, controller.coupling(), r.real("density_kg_per_m3"));
   try {
     controller.hold(int(r.integer("warmup_frames") * r.integer("substeps")));
     rise.start(controller.data());
     recorder.start(controller);
     for (long f = 0; f < r.integer("frames"); ++f) {
-      const int phase = coupling::phaseAt(cp.mouth.schedule, controller.data().time_s());
-      if (!phase_senses.empty()) controller.setSenses(phase_senses[phase]);
-      if (!phase_strengths.empty()) controller.setStrength(phase_strengths[phase]);
+      phases.apply(controller);
       const control::FrameRecord fr = controller.frame();
       rise.record(controller.data());
       recorder.record(fr, controller);
     }
   } catch (const std::exception& e) {
-    addFluidRun(result, recorder);
+    addFluidRun(result, recorder, rise);
     throw RunFailure("control_fluid at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what() +
-                         (rise.active() ? stabilityHint(density_ratio) : std::string()),
+                         (rise.active() ? control::stabilityHint(density_ratio) : std::string()),
                      result);
   }
-  addFluidRun(result, recorder);
+  addFluidRun(result, recorder, rise);
   const double period_s = r.real("flap_period_s");
   addMetrics(result, recorder.measure(int(r.integer("average_frames")), r.real("convergence_tolerance_deg"),
                                       period_s > 0 ? framesPerCycle(period_s, r.real("frame_s")) : 0,
                                       int(r.integer("force_cycles")), controller.maxForcingIterations()));
-  rise.measure(result, density_ratio);
+  addMetrics(result, rise.measure(density_ratio));
   return result;
 }
 

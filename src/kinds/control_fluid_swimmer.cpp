@@ -110,67 +110,18 @@ std::string validateSwimmer(const ParamReader& r, const rigid::RigidModel& model
   return "";
 }
 
-double densityRatio(const rigid::RigidModel& model, const coupling::RigidFluidCoupling& c, double rho) {
-  // Outline areas by the shoelace formula over each geom's markers (in outline order, geom frame).
-  const auto& mk = c.markers();
-  double area = 0, mass = 0;
-  for (std::size_t k = 0; k < c.mouthBegin();) {
-    std::size_t e = k;
-    double a = 0;
-    while (e < c.mouthBegin() && mk[e].geom == mk[k].geom) ++e;
-    for (std::size_t i = k; i < e; ++i) {
-      const auto& p = mk[i].local_m;
-      const auto& q = mk[i + 1 < e ? i + 1 : k].local_m;
-      a += 0.5 * (p[0] * q[2] - q[0] * p[2]);
-    }
-    if (mk[k].body > 0) area += std::abs(a);
-    k = e;
-  }
-  for (int b = 1; b < model.bodies(); ++b) mass += model.bodyMass_kg(b);
-  return area > 0 ? mass / (rho * area * c.params().depth_m) : 0.0;
+control::SwimmerPhases swimmerPhases(const ParamReader& r, int joints) {
+  return {mouthParams(r).schedule, phaseSenses(r, joints), phaseStrengths(r)};
 }
 
-std::string stabilityHint(double ratio) {
-  return " [creature mass / displaced fluid mass = " + std::to_string(ratio) +
-         "; free bodies coupled explicitly (the staggered step) are unstable when too light for the fluid they "
-         "move (added mass): experiments/control/swimmer.toml measures the limit; make the creature denser or "
-         "hold its root]";
-}
-
-RiseRecorder::RiseRecorder(const ParamReader& r, const rigid::RigidModel& model, Result& result)
-    : mouth_(mouthParams(r)) {
-  if (r.text("rise_body").empty()) return;
-  body_ = bodyId(model, r.text("rise_body"), "rise_body");
-  frames_per_cycle_ = int(std::lround(r.real("cycle_s") / r.real("frame_s")));
-  cycles_ = int(r.integer("rise_cycles"));
-  z_ = &(result.timeseries["rise_z_m"] = {{}, "m"});
-  phase_ = &(result.timeseries["phase"] = {{}, ""});
-  flux_ = &(result.timeseries["mouth_flux_m_per_s"] = {{}, "m/s"});
-}
-
-void RiseRecorder::start(const rigid::RigidData& data) {
-  if (active()) z0_ = data.subtreeCom(body_)[2];
-}
-
-void RiseRecorder::record(const rigid::RigidData& data) {
-  if (!active()) return;
-  const double z = data.subtreeCom(body_)[2];
-  z_->values.push_back(z);
-  // The phase the frame ran in: that at its start (time_s is its end).
-  const double t = data.time_s() - data.model().timestep_s() * 0.5;
-  phase_->values.push_back(coupling::phaseAt(mouth_.schedule, t));
-  flux_->values.push_back(coupling::mouthFlux_m_per_s(mouth_, t));
-}
-
-void RiseRecorder::measure(Result& result, double density_ratio) const {
-  auto& m = result.metrics;
-  m["creature_density_ratio"] = {density_ratio, ""};
-  if (!active() || z_->values.empty()) return;
-  const auto& z = z_->values;
-  const int back = std::min<int>(cycles_ * frames_per_cycle_, int(z.size()) - 1);
-  const double rise = back > 0 ? (z.back() - z[z.size() - 1 - back]) / (double(back) / frames_per_cycle_) : 0.0;
-  m["rise_per_cycle_m"] = {rise, "m"};
-  m["rise_total_m"] = {z.back() - z0_, "m"};
+control::RiseSettings riseSettings(const ParamReader& r, const rigid::RigidModel& model) {
+  control::RiseSettings s;
+  s.mouth = mouthParams(r);
+  if (r.text("rise_body").empty()) return s;
+  s.body = bodyId(model, r.text("rise_body"), "rise_body");
+  s.frames_per_cycle = int(std::lround(r.real("cycle_s") / r.real("frame_s")));
+  s.cycles = int(r.integer("rise_cycles"));
+  return s;
 }
 
 }  // namespace creaturelab::kinds
