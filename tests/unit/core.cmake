@@ -7,3 +7,7 @@ creaturelab_test(core_test unit
     ${CMAKE_CURRENT_LIST_DIR}/core_improved_noise.cpp
   LIBS cl_core
 )
+# The sanitizer tree's probes: undefined behaviour on purpose, so only where the sanitizers stop it.
+if(CREATURELAB_SANITIZE)
+  target_sources(core_test PRIVATE ${CMAKE_CURRENT_LIST_DIR}/core_sanitizer_probe.cpp)
+endif()
