@@ -122,18 +122,27 @@ def window_distance(f):
     return speed * float(param(f, "duration_s")) if np.isfinite(speed) else metric(f, "distance_m")
 
 
+def has_tentacles(f):
+    value = param(f, "tentacles")
+    return True if value is None else bool(value)
+
+
 def settings(points, indices):
-    """The points grouped by grid, step and advection scheme, so that a run of several settings draws one
-    curve each."""
+    """The points grouped by grid, step, advection scheme and tentacles (the bell with them or alone), so that
+    a run of several settings draws one curve each."""
     groups = {}
     for k in indices:
         f = points[k]
         cell_mm = 1e3 * float(param(f, "domain_m")) / float(param(f, "cells"))
-        key = (round(cell_mm, 6), float(param(f, "dt_s")), text(param(f, "advection")))
+        key = (not has_tentacles(f), round(cell_mm, 6), float(param(f, "dt_s")), text(param(f, "advection")))
         groups.setdefault(key, []).append(k)
-    schemes = {scheme for _, _, scheme in groups}
-    def name(c, dt, scheme):
-        return f"{c:g} mm, dt {dt:g} s" + (f", {scheme}" if len(schemes) > 1 else "")
+    schemes = {key[3] for key in groups}
+    grids = {key[1:3] for key in groups}
+    bodies = {key[0] for key in groups}
+    def name(alone, c, dt, scheme):
+        parts = (["bell alone" if alone else "with tentacles"] if len(bodies) > 1 else []) + \
+            ([f"{c:g} mm, dt {dt:g} s"] if len(grids) > 1 else []) + ([scheme] if len(schemes) > 1 else [])
+        return ", ".join(parts)
     return [(name(*key) if len(groups) > 1 else None, ks) for key, ks in sorted(groups.items())]
 
 
@@ -142,6 +151,7 @@ def trajectories(sweep, points, out, axis_name):
     axis = numeric_axis(sweep, axis_name)
     cmap = plt.get_cmap("viridis")
     n = len(points)
+    mixed = len({has_tentacles(f) for f in points}) > 1
     # Colour by the swept value, with a colour bar, when a numeric axis varies; else a legend.
     values = np.asarray(sweep[axis], dtype=float) if axis else None
     norm = plt.Normalize(np.nanmin(values), np.nanmax(values)) if axis else None
@@ -151,11 +161,13 @@ def trajectories(sweep, points, out, axis_name):
         t = f["timeseries/time_s"][...]
         y = f["timeseries/centroid_y_m"][...]
         colour = cmap(norm(values[k])) if axis else cmap(k / max(1, n - 1))
-        left.plot(t, (y - y[0]) * 1e3, color=colour, lw=0.9, ls=":" if plucked(f) else "-",
+        left.plot(t, (y - y[0]) * 1e3, color=colour, lw=0.9,
+                  ls=":" if plucked(f) else "--" if mixed and not has_tentacles(f) else "-",
                   label=None if axis else label_of(sweep, k))
     left.set_xlabel("time (s)")
     left.set_ylabel("centroid displacement (mm)")
-    left.set_title("trajectories (Fig. 5 left)" + ("; dotted: pluck" if any(plucked(f) for f in points) else ""))
+    left.set_title(style.wrap("trajectories (Fig. 5 left)" + ("; dotted: pluck" if any(plucked(f) for f in points) else "") +
+                              ("; dashed: bell alone" if mixed else ""), 50))
     if axis:
         bar = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=left)
         bar.set_label(style.label(axis))
@@ -171,9 +183,12 @@ def trajectories(sweep, points, out, axis_name):
             right.plot(x[ks], dist[ks] * 1e3, "o-", color=colour, ms=3, label=name)
             best = ks[int(np.nanargmax(dist[ks]))]
             right.axvline(x[best], color=colour, lw=0.8, ls="--", label=f"largest at {style.value_label(axis, float(x[best]))}")
-        fn = [metric(f, "natural_hz") for f in points if plucked(f)]
-        if fn and axis == "contraction_hz":
-            right.axvline(np.mean(fn), color="tab:blue", lw=0.8, ls=":", label=f"natural frequency {np.mean(fn):.3g} Hz (pluck)")
+        plucks = [k for k, f in enumerate(points) if plucked(f)]
+        if plucks and axis == "contraction_hz":
+            for g, (name, ks) in enumerate(settings(points, plucks)):
+                fn = np.mean([metric(points[k], "natural_hz") for k in ks])
+                right.axvline(fn, color=f"C{g}" if name else "tab:blue", lw=0.8, ls=":",
+                              label=f"natural frequency {fn:.3g} Hz (pluck{', ' + name if name else ''})")
         right.set_xlabel(style.label(axis))
         right.legend()
     else:
