@@ -55,8 +55,8 @@ creaturelab_cli_test(fish_checks_fail) # each fish claim check FAILs with its me
 creaturelab_cli_test(control_fluid_checks_fail) # block_flow's and the swimmer's claim checks FAIL with the controller off, the flyer's is inconclusive, Fig. 10's thread checks FAIL on a one-ulp nudge
 # Fig. 4's unison check FAILs with the bell's muscles off; 12 s CPU
 creaturelab_cli_test(jellyfish_checks_fail TIMEOUT 600)
-creaturelab_cli_test(jellyfish_frequency_checks_fail TIMEOUT 600) # Fig. 5's checks FAIL with the driven bell's muscles off; 17 s CPU
+creaturelab_cli_test(jellyfish_frequency_checks_fail TIMEOUT 600) # Fig. 5's and the bell alone's driven checks FAIL with the muscles off; 17 s CPU
 # the membrane's checks FAIL with its mechanism broken (kernels of one width, slack springs, sparse markers); 18 s CPU
 creaturelab_cli_test(jellyfish_membrane_checks_fail TIMEOUT 600)
-# the bell-alone study's checks FAIL with its muscles off or its tentacles on; 20 s CPU
+# Fig. 5's file: the bell alone's one-mode check FAILs with tentacles on in its pluck; 16 s CPU
 creaturelab_cli_test(jellyfish_bell_checks_fail TIMEOUT 600)
