@@ -80,7 +80,9 @@ intact() {
 # (points 2 and 3: with the tentacles, and the bell pluck, whose tentacles BELL_PLUCK_TENTACLES sets, false unless
 # given). The plucks set their own tension, so a run that changes only the drives' can reuse them (--resume).
 frequency_coarse() {
-  study "$1" experiments/jellyfish/frequency.toml <<TOML
+  local label tentacles
+  {
+    cat <<'TOML'
 [params]
 cells = 125
 dt_s = 0.0025
@@ -96,25 +98,13 @@ label = "bell alone 0.7 Hz"
 tentacles = false
 active_cycles = 0
 contraction_hz = 0.7
-[[case]]
-label = "pluck"
-tentacles = true
-active_cycles = 1
-pulse_duration_s = 0.1
-muscle_tension_n_per_m2 = 20.0
-contraction_hz = 1.0
-warmup_cycles = 0.0
-duration_s = 4.0
-[[case]]
-label = "bell pluck"
-tentacles = ${2:-false}
-active_cycles = 1
-pulse_duration_s = 0.1
-muscle_tension_n_per_m2 = 20.0
-contraction_hz = 1.0
-warmup_cycles = 0.0
-duration_s = 4.0
 TOML
+    for label in pluck "bell pluck"; do
+      if [[ $label == pluck ]]; then tentacles=true; else tentacles=${2:-false}; fi
+      printf '[[case]]\nlabel = "%s"\ntentacles = %s\nactive_cycles = 1\npulse_duration_s = 0.1\n' "$label" "$tentacles"
+      printf 'muscle_tension_n_per_m2 = 20.0\ncontraction_hz = 1.0\nwarmup_cycles = 0.0\nduration_s = 4.0\n'
+    done
+  } | study "$1" experiments/jellyfish/frequency.toml
 }
 
 # reused NAME POINT...: the intact run's ($scratch/run_intact) point files POINT (indices) copied into run NAME's
