@@ -337,9 +337,9 @@ def resonance(sweep, points, out):
             x = [hz[k] for k in ks]
             amp = [metric(points[k], "stroke_amplitude") for k in ks]
             dpc = [metric(points[k], "distance_per_cycle_m") * 1e3 for k in ks]
-            right.plot(x, amp, "o-", color="k", alpha=1 - 0.3 * g, ms=3,
+            right.plot(x, amp, "o-" if g == 0 else "^-.", color="k", alpha=1 - 0.3 * g, ms=3,
                        label="stroke amplitude" + (f" ({name})" if name else ""))
-            twin.plot(x, dpc, "s--", color="tab:green", alpha=1 - 0.3 * g, ms=3,
+            twin.plot(x, dpc, "s--" if g == 0 else "v:", color="tab:green", alpha=1 - 0.3 * g, ms=3,
                       label="distance per cycle" + (f" ({name})" if name else ""))
         twin.set_ylabel("distance per cycle (mm)", color="tab:green")
         for k in plucks:
@@ -348,7 +348,9 @@ def resonance(sweep, points, out):
         right.set_xlabel("driving frequency (Hz)")
         right.set_ylabel("stroke amplitude (diameter ratio)")
         right.set_title("driven at fixed peak tension")
-        right.legend(fontsize=9, loc="upper left")
+        lines, labels = right.get_legend_handles_labels()
+        more, more_labels = twin.get_legend_handles_labels()
+        twin.legend(lines + more, labels + more_labels, fontsize=8, loc="best")  # the twin is drawn over right
     else:
         right.axis("off")
     style.save(fig, os.path.join(out, "resonance.png"))
