@@ -4,17 +4,16 @@
 #include <sstream>
 
 #include "kinds/spring_run.hpp"
-#include "kinds/web_wind.hpp"
 #include "springs/equilibrium.hpp"
-#include "springs/provot.hpp"
 #include "web/build.hpp"
 #include "web/measure.hpp"
+#include "web/web_run.hpp"
+#include "web/wind_gen.hpp"
 
 namespace creaturelab::kinds {
 namespace {
 
 using web::Point2;
-using web::StrandType;
 
 // A regular polygon, first corner at the top, circumradius 0.5 m (a web about 1 m across).
 std::vector<Point2> regularFrame(int corners) {
@@ -87,38 +86,6 @@ web::WebParams webParams(const ParamReader& r, std::string& error) {
   w.gravity_m_per_s2 = r.real("gravity_m_per_s2");
   w.seed = std::uint64_t(r.integer("seed"));
   return w;
-}
-
-// Mean strain (length - rest) / rest of one family of strands in state s: how elongated the
-// strands are (thesis Figs. 5.19-5.23 compare how "elongated" and "taut" each family looks).
-double meanElongation(const web::WebModel& m, const springs::State<3>& s, std::initializer_list<StrandType> types) {
-  double sum = 0;
-  int n = 0;
-  for (StrandType t : types) {
-    int count = 0;
-    for (StrandType u : m.spring_type) count += (u == t);
-    sum += web::meanStrain(m, s, t) * count;
-    n += count;
-  }
-  return n ? sum / n : std::nan("");
-}
-
-// How much of the web the spiral spans, as laid: the annulus between the spiral's innermost and
-// outermost particles (about the hub) over the disc of the inner frame's mean radius. The thesis
-// describes its spiral variants by how much of the web they cover (§5.3.4, Figs. 5.24-5.27).
-double spiralCoverage(const web::WebModel& m) {
-  const Eigen::Vector2d hub(m.hub_centre_m.x(), m.hub_centre_m.y());
-  auto radius = [&](int i) { return (m.state.x_m.col(i).head<2>() - hub).norm(); };
-  double r_min = HUGE_VAL, r_max = 0, frame = 0;
-  for (int s = 0; s < m.network.springCount(); ++s) {
-    if (m.spring_type[s] != StrandType::spiral) continue;
-    for (int i : {m.network.spring_a[s], m.network.spring_b[s]}) {
-      r_min = std::min(r_min, radius(i));
-      r_max = std::max(r_max, radius(i));
-    }
-  }
-  for (int i : m.inner_frame_particles) frame += radius(i) / double(m.inner_frame_particles.size());
-  return r_max > 0 ? (r_max * r_max - r_min * r_min) / (frame * frame) : 0.0;
 }
 
 }  // namespace
@@ -241,110 +208,82 @@ CostEstimate WebKind::estimateCost(const Params& p) const {
   }
 }
 
+namespace {
+
+// The recorded hub sag and positions.
+void addWebRun(Result& result, const web::WebRunRecorder& recorder) {
+  result.timeseries["hub_sag_m"] = {recorder.hubSag_m(), "m"};
+  Tracks& tracks = result.lagrangian["positions_m"];
+  tracks.points = recorder.positions().points;
+  tracks.dim = 3;
+  tracks.time_s = recorder.positions().time_s;
+  tracks.data = recorder.positions().data;
+}
+
+void addWebMeasures(Result& result, const std::vector<web::WebMeasure>& measures) {
+  for (const auto& m : measures) result.metrics[m.name] = {m.value, m.unit};
+}
+
+// The thesis's wind (web/wind_gen.hpp): WIND = m g 10 x wind_scale.
+web::WindGen windGen(const ParamReader& r) {
+  return {r.real("particle_mass_kg") * r.real("gravity_m_per_s2") * 10.0 * r.real("wind_scale"),
+          std::uint64_t(r.integer("seed"))};
+}
+
+// The run's frames from `state`, recorded by `record`; with no time to run, the static shape alone
+// (one frame at t = 0, dt_used_s NaN). A divergence fails the point with the frames recorded so far.
+template <class Record>
+springs::SimulationSummary settle(const springs::System<3>& system, springs::State<3>& state,
+                                  const springs::State<3>& statics, const springs::SimulationOptions& opt,
+                                  Record&& record, const web::WebRunRecorder& recorder) {
+  springs::SimulationSummary summary{};
+  if (opt.end_time_s <= 0) {
+    state = statics;
+    record(0, 0.0, state);
+    summary.time_s = {0.0};
+    summary.dt_used_s = std::nan("");
+    return summary;
+  }
+  try {
+    return springs::simulate<3>(system, state, opt, record);
+  } catch (const springs::DivergenceError& e) {
+    Result partial;
+    addWebRun(partial, recorder);
+    throw RunFailure(e.what(), partial);
+  }
+}
+
+}  // namespace
+
 Result WebKind::run(const Params& p) const {
   ParamReader r(p);
   std::string err;
   const web::WebModel model = web::build(webParams(r, err));
-  const auto& c = model.counts;
-
   // The inward frame force is constant (Fig. 5.8), so it belongs to the potential: the static solve
   // includes it and the dynamic settle ends in the same shape. The wind (time-dependent) is external.
   springs::System<3> system(model.network);
   system.setConstantForce(model.external_force_n);
-  springs::State<3> state = model.state;
   springs::State<3> statics = model.state;
   const auto eq = springs::solveStaticEquilibrium(system, statics);
-  if (r.text("start") == "static") state = statics;
-  const Eigen::Vector3d hub0 = web::hubPositionM(model, state);
-
-  const double wind_scale = r.real("wind_scale");
-  WindGen wind{r.real("particle_mass_kg") * r.real("gravity_m_per_s2") * 10.0 * wind_scale,
-               std::uint64_t(r.integer("seed"))};
-  // exp(distance to the hub / alpha), alpha = web radius * 50 (Fig. 5.45), per particle.
-  Eigen::VectorXd wind_weight = Eigen::VectorXd::Ones(state.x_m.cols());
-  springs::Points<3> wind_force = springs::Points<3>::Zero(3, state.x_m.cols());  // held for a frame
-  if (wind_scale > 0) {
-    double radius = 0;
-    for (int a : model.attachment_particles)
-      radius = std::max(radius, (model.state.x_m.col(a) - web::hubPositionM(model, model.state)).norm());
-    for (int i = 0; i < state.x_m.cols(); ++i) wind_weight[i] = std::exp((state.x_m.col(i) - hub0).norm() / (radius * 50));
-    system.setExternalForce([&wind_force](double, const springs::State<3>&, springs::Points<3>& f) { f += wind_force; });
-  }
-
-  Result result;
-  auto& hub_sag = result.timeseries["hub_sag_m"] = {{}, "m"};
-  Tracks& tracks = result.lagrangian["positions_m"];
-  tracks.points = int(state.x_m.cols());
-  tracks.dim = 3;
-  const double frame_s = r.real("frame_interval_s");
-  const int frames_per_track = std::max(1, int(std::lround(r.real("lagrangian_interval_s") / frame_s)));
-  double sum_d2 = 0;
-  int frames = 0;
+  springs::State<3> state = r.text("start") == "static" ? statics : model.state;
+  const bool windy = r.real("wind_scale") > 0;
+  web::WebWind wind(model, state, windGen(r));
+  if (windy) system.setExternalForce([&wind](double, const springs::State<3>&, springs::Points<3>& f) { f += wind.force_n(); });
+  web::WebRunRecorder recorder(model, web::hubPositionM(model, state),
+                               std::max(1, int(std::lround(r.real("lagrangian_interval_s") / r.real("frame_interval_s")))));
   auto record = [&](int frame, double t, const springs::State<3>& s) {
-    hub_sag.values.push_back(web::hubSagM(model, s));
-    const double d = (web::hubPositionM(model, s) - hub0).norm();
-    sum_d2 += d * d;
-    ++frames;
-    if (frame % frames_per_track == 0) {
-      tracks.time_s.push_back(t);
-      tracks.data.insert(tracks.data.end(), s.x_m.data(), s.x_m.data() + s.x_m.size());
-    }
-    if (wind_scale > 0) {  // windgen once per frame (Fig. 5.45), held until the next
-      wind.next();
-      for (int i = 0; i < wind_force.cols(); ++i) wind_force.col(i) = wind_weight[i] * Eigen::Vector3d(wind.x, wind.y, wind.z);
-    }
+    recorder.record(frame, t, s);
+    if (windy) wind.next();  // windgen once per frame (Fig. 5.45), held until the next
   };
-
   const springs::SimulationOptions opt = simulationOptions(r);
-  const double nan = std::nan("");
-  std::optional<double> settling;
-  double dt_used = nan;
-  if (opt.end_time_s > 0) {
-    const auto summary = runOrFail(system, state, opt, record, result);
-    result.timeseries["time_s"] = {summary.time_s, "s"};
-    result.timeseries["kinetic_energy_j"] = {summary.kinetic_energy_j, "J"};
-    settling = summary.settling_time_s;
-    dt_used = summary.dt_used_s;
-  } else {
-    state = statics;
-    record(0, 0.0, state);
-    result.timeseries["time_s"] = {{0.0}, "s"};
-  }
-
-  result.metrics["particles"] = {double(c.particles), ""};
-  result.metrics["springs"] = {double(c.springs), ""};
-  result.metrics["spokes"] = {double(c.spokes), ""};
-  result.metrics["spiral_segments"] = {double(c.spiral_segments), ""};
-  result.metrics["spiral_coverage"] = {spiralCoverage(model), ""};
-  result.metrics["silk_length_m"] = {c.silk_length_m, "m"};
-  result.metrics["web_mass_kg"] = {c.web_mass_kg, "kg"};
-  result.metrics["hub_sag_m"] = {web::hubSagM(model, state), "m"};
-  result.metrics["static_hub_sag_m"] = {eq.converged ? web::hubSagM(model, statics) : nan, "m"};
-  result.metrics["static_sag_rel_diff"] = {
-      std::fabs(result.metrics["hub_sag_m"].value - result.metrics["static_hub_sag_m"].value) /
-          result.metrics["static_hub_sag_m"].value,
-      ""};
-  result.metrics["static_iterations"] = {eq.converged ? double(eq.iterations) : nan, ""};
-  result.metrics["max_strain"] = {springs::maxStrain(system.network(), state), ""};
-  result.metrics["settling_time_s"] = {settling.value_or(nan), "s"};
-  result.metrics["elongation_outer_frame"] = {meanElongation(model, state, {StrandType::outer_frame}), ""};
-  result.metrics["elongation_inner_frame"] = {meanElongation(model, state, {StrandType::inner_frame}), ""};
-  result.metrics["elongation_radial"] = {
-      meanElongation(model, state, {StrandType::primary_spoke, StrandType::secondary_spoke}), ""};
-  result.metrics["elongation_spiral"] = {meanElongation(model, state, {StrandType::spiral}), ""};
-  result.metrics["hub_rms_displacement_m"] = {frames ? std::sqrt(sum_d2 / frames) : nan, "m"};
-  result.metrics["dt_used_s"] = {dt_used, "s"};
-
-  // Which particles each spring joins and its strand type (web::StrandType order: outer_frame,
-  // inner_frame, primary_spoke, hub, secondary_spoke, spiral), so figures can draw and colour it.
-  auto& topo = result.topology;
-  for (int s = 0; s < model.network.springCount(); ++s) {
-    topo["spring_a"].push_back(model.network.spring_a[s]);
-    topo["spring_b"].push_back(model.network.spring_b[s]);
-    topo["spring_type"].push_back(static_cast<int>(model.spring_type[s]));
-  }
-  for (int a : model.attachment_particles) topo["attachment_particles"].push_back(a);
-  for (int h : model.hub_particles) topo["hub_particles"].push_back(h);
+  const springs::SimulationSummary summary = settle(system, state, statics, opt, record, recorder);
+  Result result;
+  addWebRun(result, recorder);
+  result.timeseries["time_s"] = {summary.time_s, "s"};
+  if (opt.end_time_s > 0) result.timeseries["kinetic_energy_j"] = {summary.kinetic_energy_j, "J"};
+  addWebMeasures(result, web::webMeasures(model, system.network(), {state, statics, eq, summary.settling_time_s,
+                                                                    summary.dt_used_s, recorder.hubRmsDisplacement_m()}));
+  result.topology = web::webTopology(model);
   return result;
 }
 

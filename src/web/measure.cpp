@@ -1,5 +1,8 @@
 #include "web/measure.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace creaturelab::web {
 
 Eigen::Vector3d hubPositionM(const WebModel& model, const springs::State<3>& s) {
@@ -23,6 +26,33 @@ double meanStrain(const WebModel& model, const springs::State<3>& s, StrandType 
     ++count;
   }
   return count ? sum / count : 0.0;
+}
+
+double meanElongation(const WebModel& m, const springs::State<3>& s, std::initializer_list<StrandType> types) {
+  double sum = 0;
+  int n = 0;
+  for (StrandType t : types) {
+    int count = 0;
+    for (StrandType u : m.spring_type) count += (u == t);
+    sum += meanStrain(m, s, t) * count;
+    n += count;
+  }
+  return n ? sum / n : std::nan("");
+}
+
+double spiralCoverage(const WebModel& m) {
+  const Eigen::Vector2d hub(m.hub_centre_m.x(), m.hub_centre_m.y());
+  auto radius = [&](int i) { return (m.state.x_m.col(i).head<2>() - hub).norm(); };
+  double r_min = HUGE_VAL, r_max = 0, frame = 0;
+  for (int s = 0; s < m.network.springCount(); ++s) {
+    if (m.spring_type[s] != StrandType::spiral) continue;
+    for (int i : {m.network.spring_a[s], m.network.spring_b[s]}) {
+      r_min = std::min(r_min, radius(i));
+      r_max = std::max(r_max, radius(i));
+    }
+  }
+  for (int i : m.inner_frame_particles) frame += radius(i) / double(m.inner_frame_particles.size());
+  return r_max > 0 ? (r_max * r_max - r_min * r_min) / (frame * frame) : 0.0;
 }
 
 }  // namespace creaturelab::web

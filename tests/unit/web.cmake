@@ -5,5 +5,6 @@ creaturelab_test(web_unit_test unit
     ${CMAKE_CURRENT_LIST_DIR}/web_params_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/web_build_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/web_sweeps_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/web_run_test.cpp
   LIBS cl_web
 )

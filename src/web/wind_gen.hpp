@@ -7,12 +7,13 @@
 // thesis's 20 s animation); sin takes degrees (an integer count read as radians would jump
 // pseudo-randomly, against the text's "predictable pattern"); the force is held between frames;
 // `scale` multiplies WIND (1 = the thesis's). The random factor comes from core::rng.
-#include <cmath>
 #include <cstdint>
 
-#include "core/rng.hpp"
+#include <Eigen/Core>
 
-namespace creaturelab::kinds {
+#include "web/web_model.hpp"
+
+namespace creaturelab::web {
 
 struct WindGen {
   double wind_n;  // MASS * GRAVITY * 10 * scale
@@ -21,14 +22,23 @@ struct WindGen {
   double random = 1.0;
   double x = 0, y = 0, z = 0;  // the wind vector, newtons
 
-  void next() {
-    if (degree % 50 == 0) random = -3.0 + 6.0 * core::uniform01(seed, core::purposeId("web.wind"), std::uint64_t(degree / 50));
-    const double s = std::sin(double(degree) * M_PI / 180.0);
-    x = random * wind_n * s;
-    y = random * wind_n * s;
-    z = -wind_n * s;
-    ++degree;
-  }
+  void next();
 };
 
-}  // namespace creaturelab::kinds
+// Windgen's force on every particle of a web, held from one call of next() to the next (zero
+// before the first).
+class WebWind {
+ public:
+  // Weights exp(|x_i - hub| / alpha) from the particles' positions in `start`, alpha = 50 x the
+  // laid web's radius (largest distance from the hub to an attachment particle).
+  WebWind(const WebModel& model, const springs::State<3>& start, WindGen gen);
+  void next();  // windgen once (once per frame, Fig. 5.45)
+  const springs::Points<3>& force_n() const { return force_n_; }
+
+ private:
+  WindGen gen_;
+  Eigen::VectorXd weight_;
+  springs::Points<3> force_n_;
+};
+
+}  // namespace creaturelab::web
