@@ -14,13 +14,12 @@
 #include <Eigen/Dense>
 
 #include "ib/banded_lu.hpp"
+#include "test_random.hpp"
 
 namespace creaturelab::ib {
 namespace {
 
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return lo + (hi - lo) * (static_cast<double>(rng() >> 11) * 0x1.0p-53);
-}
+using test::uniform;
 
 // Fills both the banded and a dense copy of one random band matrix; the diagonal is small, so
 // partial pivoting has to swap rows.

@@ -22,15 +22,14 @@
 #include "fluid/fluid_solver2.hpp"
 #include "ib/coupling.hpp"
 #include "ib/membrane_body.hpp"
+#include "test_random.hpp"
 
 namespace creaturelab::ib {
 namespace {
 
-using fluid::Vec2;
+using test::uniform;
 
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return lo + (hi - lo) * (static_cast<double>(rng() >> 11) * 0x1.0p-53);
-}
+using fluid::Vec2;
 
 // A membrane of n markers near a circle of radius 0.05 m about (0.08, 0.08), jittered so no
 // symmetry hides an index error.

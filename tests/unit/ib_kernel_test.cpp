@@ -12,14 +12,14 @@
 #include <string>
 
 #include "ib/kernel.hpp"
+#include "test_random.hpp"
 
 namespace creaturelab::ib {
 namespace {
 
-constexpr int kSamples = 20000;
+using test::uniform01;
 
-// Uniform in [0, 1) from the top 53 bits: the same numbers with every standard library.
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+constexpr int kSamples = 20000;
 
 // The formula exactly as printed in Peskin 2002 §6, independent of the library's rewriting.
 double peskin4_as_printed(double r) {

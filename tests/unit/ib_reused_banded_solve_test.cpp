@@ -12,15 +12,14 @@
 
 #include "ib/banded_lu.hpp"
 #include "ib/reused_banded_solve.hpp"
+#include "test_random.hpp"
 
 namespace creaturelab::ib {
 namespace {
 
-constexpr int kN = 200, kBand = 12;
+using test::uniform;
 
-double uniform(std::mt19937_64& rng, double lo, double hi) {
-  return lo + (hi - lo) * (static_cast<double>(rng() >> 11) * 0x1.0p-53);
-}
+constexpr int kN = 200, kBand = 12;
 
 // A fixed random band B (entries in [-1, 1]) and the system I − s_k B with s_k drifting by `drift`
 // per step: eigenvalues far from zero when the diagonal dominates, as in the coupling.

@@ -18,9 +18,13 @@
 #include "fluid/mac_grid2.hpp"
 #include "ib/kernel.hpp"
 #include "ib/transfer.hpp"
+#include "test_random.hpp"
 
 namespace creaturelab::ib {
 namespace {
+
+using test::uniform01;
+using test::uniform;
 
 using fluid::FaceVectorField2;
 using fluid::MacGrid2;
@@ -30,10 +34,7 @@ using fluid::Vec2;
 constexpr int kNx = 24;
 constexpr int kNy = 19;
 constexpr double kDx = 0.01;
-constexpr int kMarkers = 300;
-
-double uniform01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-double uniform(std::mt19937_64& rng, double lo, double hi) { return lo + (hi - lo) * uniform01(rng); }
+constexpr int kTransferMarkers = 300;
 
 // Neumaier's compensated sum: a reference total that the check's own round-off does not blur.
 struct CompensatedSum {
@@ -49,7 +50,7 @@ struct CompensatedSum {
 // Random markers where the kernel's stencil fits (see transfer.hpp: [s/2 dx, (n − s/2) dx) per
 // axis), plus the corner of that region and markers exactly on faces and cell centres, where a
 // stencil weight is exactly 0 or the fraction t is exactly 0.
-std::vector<Vec2> markers(Kernel kernel, std::uint64_t seed, int count = kMarkers) {
+std::vector<Vec2> markers(Kernel kernel, std::uint64_t seed, int count = kTransferMarkers) {
   const double margin = 0.5 * kernel_support_cells(kernel) * kDx;
   const double inset = 1e-9 * kDx;
   std::mt19937_64 rng(seed);
@@ -92,10 +93,10 @@ TEST_P(TransferTest, StencilWeightsAreTheKernelAtEachFaceAndSumToOne) {
   const std::vector<Vec2> p = markers(kernel(), 21);
   Transfer transfer;
   transfer.locate(grid_, kernel(), p);
-  ASSERT_EQ(transfer.marker_count(), kMarkers);
+  ASSERT_EQ(transfer.marker_count(), kTransferMarkers);
   EXPECT_EQ(transfer.kernel(), kernel());
   const int s = support();
-  for (int k = 0; k < kMarkers; ++k) {
+  for (int k = 0; k < kTransferMarkers; ++k) {
     for (bool on_u : {true, false}) {
       const FaceStencil& st = on_u ? transfer.u_stencil(k) : transfer.v_stencil(k);
       double sum = 0.0, squares = 0.0;
@@ -152,7 +153,7 @@ TEST_P(TransferTest, MarkerOnAFaceSpreadsTheAnalyticDensity) {
 TEST_P(TransferTest, SpreadingConservesTheTotalForce) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const std::vector<Vec2> p = markers(kernel(), 100 + seed);
-    const std::vector<Vec2> f = random_vectors(200 + seed, kMarkers, 3.0);
+    const std::vector<Vec2> f = random_vectors(200 + seed, kTransferMarkers, 3.0);
     Transfer transfer;
     transfer.locate(grid_, kernel(), p);
     FaceVectorField2 density(kNx, kNy);
@@ -209,7 +210,7 @@ TEST_P(TransferTest, WallFacesReceiveNothing) {
 // spread() adds to what the field holds.
 TEST_P(TransferTest, SpreadAddsToTheField) {
   const std::vector<Vec2> p = markers(kernel(), 41);
-  const std::vector<Vec2> f = random_vectors(42, kMarkers, 1.0);
+  const std::vector<Vec2> f = random_vectors(42, kTransferMarkers, 1.0);
   Transfer transfer;
   transfer.locate(grid_, kernel(), p);
   FaceVectorField2 alone(kNx, kNy), on_top(kNx, kNy);
@@ -384,7 +385,7 @@ TEST_P(TransferTest, SpreadIsTheAdjointOfInterpolation) {
   std::mt19937_64 rng(61);
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const std::vector<Vec2> p = markers(kernel(), 62 + seed);
-    const std::vector<Vec2> f = random_vectors(70 + seed, kMarkers, 2.0);
+    const std::vector<Vec2> f = random_vectors(70 + seed, kTransferMarkers, 2.0);
     fill_random(grid_.u_m_per_s, rng, 0.3);
     fill_random(grid_.v_m_per_s, rng, 0.3);
     Transfer transfer;
@@ -414,7 +415,7 @@ TEST_P(TransferTest, SpreadIsTheAdjointOfInterpolation) {
 TEST_P(TransferTest, ReusedTransferIsBitwiseDeterministic) {
   const std::vector<Vec2> p = markers(kernel(), 81);
   const std::vector<Vec2> fewer = markers(kernel(), 82, 40);
-  const std::vector<Vec2> f = random_vectors(83, kMarkers, 1.0);
+  const std::vector<Vec2> f = random_vectors(83, kTransferMarkers, 1.0);
   std::mt19937_64 rng(84);
   fill_random(grid_.u_m_per_s, rng, 1.0);
   fill_random(grid_.v_m_per_s, rng, 1.0);

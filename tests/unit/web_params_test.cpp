@@ -8,10 +8,12 @@
 
 #include "web/build.hpp"
 #include "web/web_params.hpp"
+#include "web_test_shapes.hpp"
 
 namespace web = creaturelab::web;
 using ::testing::HasSubstr;
 using web::Point2;
+using creaturelab::test::regularPolygon;
 
 namespace {
 
@@ -21,15 +23,6 @@ web::WebParams withPoints(std::vector<Point2> pts) {
   return p;
 }
 
-// A regular polygon of n points, radius r metres.
-std::vector<Point2> regular(int n, double r) {
-  std::vector<Point2> pts;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * i / n + 0.3;
-    pts.emplace_back(r * std::cos(a), r * std::sin(a));
-  }
-  return pts;
-}
 
 }  // namespace
 
@@ -49,20 +42,20 @@ TEST(WebParams, DefaultsAreValidAndNaturalFrame) {
 TEST(WebParams, PointCount) {
   EXPECT_EQ(withPoints({{0, 0}, {1, 0}}).validate(),
             "there are 2 attachment points; an orb web needs 3 to 10 (thesis §5.2)");
-  EXPECT_EQ(withPoints(regular(11, 0.5)).validate(),
+  EXPECT_EQ(withPoints(regularPolygon(11, 0.5)).validate(),
             "there are 11 attachment points; an orb web needs 3 to 10 (thesis §5.2)");
-  EXPECT_EQ(withPoints(regular(3, 0.5)).validate(), "");
-  EXPECT_EQ(withPoints(regular(10, 0.5)).validate(), "");
+  EXPECT_EQ(withPoints(regularPolygon(3, 0.5)).validate(), "");
+  EXPECT_EQ(withPoints(regularPolygon(10, 0.5)).validate(), "");
 }
 
 TEST(WebParams, NonFinitePoint) {
-  auto pts = regular(5, 0.5);
+  auto pts = regularPolygon(5, 0.5);
   pts[2].y() = NAN;
   EXPECT_EQ(withPoints(pts).validate(), "attachment point 2 has a coordinate that is not a finite number");
 }
 
 TEST(WebParams, DuplicatePoints) {
-  auto pts = regular(6, 0.5);
+  auto pts = regularPolygon(6, 0.5);
   pts[4] = pts[1] + Point2(0.0002, 0);
   EXPECT_EQ(withPoints(pts).validate(), "attachment points 1 and 4 are the same point (closer than 1 mm); remove one");
 }
@@ -88,7 +81,7 @@ TEST(WebParams, CentreOutsideFrame) {
 }
 
 TEST(WebParams, FrameTooSmallForItsSpacing) {
-  web::WebParams p = withPoints(regular(10, 0.11));
+  web::WebParams p = withPoints(regularPolygon(10, 0.11));
   EXPECT_THAT(p.validate(), HasSubstr("shorter than two frame placements"));
   p = web::WebParams{};
   p.move_outer_m = 0.4;

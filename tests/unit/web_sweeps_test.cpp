@@ -7,21 +7,11 @@
 #include <cmath>
 
 #include "web/build.hpp"
+#include "web_test_shapes.hpp"
 
 namespace web = creaturelab::web;
 
-namespace {
-
-std::vector<web::Point2> regular(int n, double r) {
-  std::vector<web::Point2> pts;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * i / n + 0.3;
-    pts.emplace_back(r * std::cos(a), r * std::sin(a));
-  }
-  return pts;
-}
-
-}  // namespace
+using creaturelab::test::regularPolygon;
 
 TEST(WebSweeps, BiggerFrameHasMoreParticles) {
   int previous = 0;
@@ -39,7 +29,7 @@ TEST(WebSweeps, MoreAttachmentPointsHaveMoreParticles) {
   int previous = 0;
   for (int n : {3, 4, 6, 10}) {
     web::WebParams p;
-    p.attachment_points_m = regular(n, 0.5);
+    p.attachment_points_m = regularPolygon(n, 0.5);
     const auto c = web::build(p).counts;
     EXPECT_GT(c.particles, previous) << n << " points";
     previous = c.particles;
