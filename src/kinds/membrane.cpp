@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <span>
 #include <sstream>
 #include <string>
 
 #include "fluid/fluid_solver2.hpp"
 #include "ib/coupling.hpp"
 #include "ib/membrane_body.hpp"
+#include "ib/membrane_run.hpp"
 #include "kinds/ib_params.hpp"
 
 namespace creaturelab::kinds {
@@ -25,75 +25,24 @@ ib::MembraneParams membraneParams(const ParamReader& r) {
   return m;
 }
 
-// Laplace's law across the membrane: mean pressure of the cells whose centres lie within R/2 of
-// the centroid minus that of the cells farther than 3R/2, over T / R, with R = sqrt(A / π) and T
-// the mean segment tension. 1 for a circle at rest; the band between is left out, where the
-// kernel smears the jump over its support.
-double laplacePressureRatio(const fluid::MacGrid2& g, const ib::PolygonShape& shape, double tension_n_per_m) {
-  const double radius = std::sqrt(std::fabs(shape.area_m2) / M_PI);
-  double inside = 0, outside = 0;
-  long n_in = 0, n_out = 0;
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < g.nx; ++i) {
-      const fluid::Vec2 c = g.cell_centre_m(i, j);
-      const double d = std::hypot(c.x - shape.centroid_m.x, c.y - shape.centroid_m.y);
-      if (d < 0.5 * radius) {
-        inside += g.pressure_pa(i, j);
-        ++n_in;
-      } else if (d > 1.5 * radius) {
-        outside += g.pressure_pa(i, j);
-        ++n_out;
-      }
-    }
-  if (n_in == 0 || n_out == 0) return std::nan("");
-  return (inside / double(n_in) - outside / double(n_out)) / (tension_n_per_m / radius);
+// The recorded series and marker frames.
+void addMembraneRun(Result& result, const ib::MembraneRunRecorder& recorder, int markers) {
+  for (const auto& s : recorder.series()) result.timeseries[s.name] = {s.values, s.unit};
+  Tracks& tracks = result.lagrangian["markers_m"];
+  tracks.points = markers;
+  tracks.dim = 2;
+  tracks.time_s = recorder.markerTimes();
+  tracks.data = recorder.markerData();
 }
 
-// Elastic energy over the least any N-gon of the same area can have, minus 1. For zero-rest springs
-// E = ½ k Σ s_i² ≥ ½ k P² / N (Cauchy-Schwarz) and P² ≥ 4 N tan(π/N) A (the isoperimetric
-// inequality for N-gons), so E ≥ 2 k A tan(π/N), with equality only for the regular N-gon: 0 when
-// the membrane is round AND its markers equally spaced. An ellipse of aspect ratio 1 + 2δ with
-// equally spaced markers has an excess of about 3δ²/2 (its perimeter is about 2πR (1 + δ²/4) for
-// R = sqrt(ab)): aspect 1.05 ↔ about 9.4e-4.
-double energyExcess(const ib::MembraneBody& body, std::span<const fluid::Vec2> x, double area_m2) {
-  const double least = 2.0 * body.stiffness_n_per_m() * std::fabs(area_m2) * std::tan(M_PI / body.markerCount());
-  return body.elasticEnergy(x) / least - 1.0;
+// Why the coupled step failed, with the coupling and a hint for the stiff explicit one.
+std::string failure(const ParamReader& r, double t_s, const std::exception& e) {
+  std::ostringstream message;
+  message << "membrane at t = " << t_s << " s (dt_s = " << r.real("dt_s") << ", "
+          << (r.boolean("semi_implicit") ? "semi-implicit" : "explicit") << " coupling): " << e.what();
+  if (!r.boolean("semi_implicit")) message << " The explicit coupling is stiff: try semi_implicit = true or a smaller dt_s.";
+  return message.str();
 }
-
-// Series and marker frames; plain data the runner writes.
-class Recorder {
- public:
-  Recorder(Result& result, int markers, double area0_m2) : area0_m2_(area0_m2) {
-    time_ = &(result.timeseries["time_s"] = {{}, "s"});
-    area_ = &(result.timeseries["area_m2"] = {{}, "m^2"});
-    loss_ = &(result.timeseries["area_loss_fraction"] = {{}, ""});
-    aspect_ = &(result.timeseries["aspect_ratio"] = {{}, ""});
-    elastic_ = &(result.timeseries["elastic_energy_j_per_m"] = {{}, "J/m"});
-    excess_ = &(result.timeseries["energy_excess"] = {{}, ""});
-    kinetic_ = &(result.timeseries["kinetic_energy_j_per_m"] = {{}, "J/m"});
-    markers_ = &result.lagrangian["markers_m"];
-    markers_->points = markers;
-    markers_->dim = 2;
-  }
-  void frame(double t_s, const std::vector<fluid::Vec2>& x, const ib::MembraneBody& body,
-             const fluid::FluidSolver2& fluid) {
-    const ib::PolygonShape shape = ib::polygonShape(x);
-    time_->values.push_back(t_s);
-    area_->values.push_back(shape.area_m2);
-    loss_->values.push_back(1.0 - shape.area_m2 / area0_m2_);
-    aspect_->values.push_back(shape.aspect_ratio);
-    elastic_->values.push_back(body.elasticEnergy(x));
-    excess_->values.push_back(energyExcess(body, x, shape.area_m2));
-    kinetic_->values.push_back(fluid.kinetic_energy_joule_per_m());
-    markers_->time_s.push_back(t_s);
-    for (const auto& p : x) markers_->data.insert(markers_->data.end(), {p.x, p.y});
-  }
-
- private:
-  double area0_m2_;
-  Series *time_, *area_, *loss_, *aspect_, *elastic_, *excess_, *kinetic_;
-  Tracks* markers_;
-};
 
 }  // namespace
 
@@ -182,62 +131,25 @@ Result MembraneKind::run(const Params& p) const {
   const ib::MembraneParams mp = membraneParams(r);
   const ib::MembraneBody body(mp.markers, mp.stiffness_n_per_m);
   ib::ImmersedBoundary2 coupling(fluid, body, ib::ellipseMarkers(mp), couplingParams(r));
-
   const double dt = r.real("dt_s");
   const long steps = std::max(1L, std::lround(r.real("duration_s") / dt));
   const long steps_per_frame = std::max(1L, std::lround(1.0 / (r.real("frame_rate_hz") * dt)));
-  const long half_step = steps / 2;
-
   const auto& x = coupling.markers_m();
-  const ib::PolygonShape start = ib::polygonShape(x);
-  double max_spacing = 0;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    const auto& q = x[(k + 1) % x.size()];
-    max_spacing = std::max(max_spacing, std::hypot(q.x - x[k].x, q.y - x[k].y));
-  }
-
-  Result result;
-  Recorder recorder(result, mp.markers, start.area_m2);
-  recorder.frame(0.0, x, body, fluid);
-
-  double max_div = 0, max_div_rel = 0, max_cfl = 0, max_speed = 0, area_half = start.area_m2;
+  ib::MembraneRunRecorder recorder(body, x, steps);
+  recorder.frame(0.0, x, fluid);
   try {
     for (long step = 1; step <= steps; ++step) {
-      const ib::CouplingStepReport report = coupling.step(dt);
-      max_cfl = std::max(max_cfl, report.fluid.cfl_number);
-      max_speed = std::max(max_speed, report.max_marker_speed_m_per_s);
-      max_div = std::max(max_div, report.fluid.max_divergence_per_s);
-      if (report.fluid.max_velocity_component_m_per_s > 0)
-        max_div_rel = std::max(max_div_rel, report.fluid.max_divergence_per_s * fluid.grid().dx_m /
-                                                report.fluid.max_velocity_component_m_per_s);
-      if (step == half_step) area_half = ib::polygonShape(x).area_m2;
-      if (step % steps_per_frame == 0 || step == steps) recorder.frame(fluid.time_s(), x, body, fluid);
+      recorder.step(step, coupling.step(dt), x, fluid.grid().dx_m);
+      if (step % steps_per_frame == 0 || step == steps) recorder.frame(fluid.time_s(), x, fluid);
     }
   } catch (const std::exception& e) {
-    std::ostringstream message;
-    message << "membrane at t = " << fluid.time_s() << " s (dt_s = " << dt << ", "
-            << (r.boolean("semi_implicit") ? "semi-implicit" : "explicit") << " coupling): " << e.what();
-    if (!r.boolean("semi_implicit"))
-      message << " The explicit coupling is stiff: try semi_implicit = true or a smaller dt_s.";
-    throw RunFailure(message.str(), result);
+    Result partial;
+    addMembraneRun(partial, recorder, mp.markers);
+    throw RunFailure(failure(r, fluid.time_s(), e), partial);
   }
-
-  const ib::PolygonShape end = ib::polygonShape(x);
-  const double late_time = fluid.time_s() - half_step * dt;
-  auto& m = result.metrics;
-  m["area_loss_fraction"] = {1.0 - end.area_m2 / start.area_m2, ""};
-  const double late_rate = late_time > 0 ? (area_half - end.area_m2) / (start.area_m2 * late_time) : std::nan("");
-  m["late_area_loss_rate_per_s"] = {late_rate, "1/s"};
-  m["aspect_ratio_initial"] = {start.aspect_ratio, ""};
-  m["aspect_ratio_final"] = {end.aspect_ratio, ""};
-  m["energy_excess_final"] = {energyExcess(body, x, end.area_m2), ""};
-  m["laplace_pressure_ratio"] = {laplacePressureRatio(fluid.grid(), end, body.meanTension(x)), ""};
-  m["max_marker_spacing_cells"] = {max_spacing / fluid.grid().dx_m, ""};
-  m["max_divergence"] = {max_div, "1/s"};
-  m["max_divergence_rel"] = {max_div_rel, ""};
-  m["max_cfl"] = {max_cfl, ""};
-  m["max_marker_speed_m_per_s"] = {max_speed, "m/s"};
-  m["steps"] = {double(steps), ""};
+  Result result;
+  addMembraneRun(result, recorder, mp.markers);
+  for (const auto& m : recorder.measure(x, fluid, dt)) result.metrics[m.name] = {m.value, m.unit};
   return result;
 }
 

@@ -6,5 +6,6 @@ creaturelab_test(ib_unit_test unit
     ${CMAKE_CURRENT_LIST_DIR}/ib_coupling_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/ib_banded_lu_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/ib_reused_banded_solve_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/ib_membrane_run_test.cpp
   LIBS cl_ib
 )
