@@ -16,6 +16,7 @@
 #include "fluid/fluid_solver2.hpp"
 #include "ib/coupling.hpp"
 #include "ib/membrane_body.hpp"
+#include "ib/membrane_run.hpp"
 
 namespace creaturelab::ib {
 namespace {
@@ -69,11 +70,8 @@ class MembraneRun {
   const std::vector<fluid::Vec2>& markers() const { return coupling_->markers_m(); }
   double areaLoss() const { return 1.0 - polygonShape(markers()).area_m2 / area0_m2_; }
   double totalEnergy() const { return body_->elasticEnergy(markers()) + fluid_->kinetic_energy_joule_per_m(); }
-  // Elastic energy over the least of any 256-gon of the same area, minus 1 (kinds/membrane.cpp).
-  double energyExcess() const {
-    const double area = polygonShape(markers()).area_m2;
-    return body_->elasticEnergy(markers()) / (2 * body_->stiffness_n_per_m() * area * std::tan(M_PI / 256)) - 1;
-  }
+  // Elastic energy over the least of any N-gon of the same area, minus 1 (ib/membrane_run.hpp).
+  double energyExcess() const { return ib::energyExcess(*body_, markers(), polygonShape(markers()).area_m2); }
   double dx() const { return fluid_->grid().dx_m; }
 
  private:
@@ -95,7 +93,7 @@ class MembraneRelaxation : public ::testing::TestWithParam<Kernel> {};
 // 10 s (the oscillation about the circle has a period of about 3 s and is damped by then). The
 // area bound: the leak may move the membrane by at most 1/20 of a cell, |dA/A| <= dx / (10 R) =
 // 1.03% at 50 cells with R = sqrt(ab) = 0.194 m (membrane.toml). The energy bound 1e-3 is what an
-// equally spaced ellipse of aspect ratio 1.05 has (kinds/membrane.cpp); the bilinear kernel's
+// equally spaced ellipse of aspect ratio 1.05 has (ib/membrane_run.hpp); the bilinear kernel's
 // markers stay unevenly spaced by a few percent, which the bound allows.
 TEST_P(MembraneRelaxation, BecomesACircleOfNearlyTheSameAreaWithoutGainingEnergy) {
   MembraneSetup s;
