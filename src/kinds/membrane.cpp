@@ -36,7 +36,7 @@ void addMembraneRun(Result& result, const ib::MembraneRunRecorder& recorder, int
 }
 
 // Why the coupled step failed, with the coupling and a hint for the stiff explicit one.
-std::string failure(const ParamReader& r, double t_s, const std::exception& e) {
+std::string membraneFailure(const ParamReader& r, double t_s, const std::exception& e) {
   std::ostringstream message;
   message << "membrane at t = " << t_s << " s (dt_s = " << r.real("dt_s") << ", "
           << (r.boolean("semi_implicit") ? "semi-implicit" : "explicit") << " coupling): " << e.what();
@@ -145,7 +145,7 @@ Result MembraneKind::run(const Params& p) const {
   } catch (const std::exception& e) {
     Result partial;
     addMembraneRun(partial, recorder, mp.markers);
-    throw RunFailure(failure(r, fluid.time_s(), e), partial);
+    throw RunFailure(membraneFailure(r, fluid.time_s(), e), partial);
   }
   Result result;
   addMembraneRun(result, recorder, mp.markers);
