@@ -10,8 +10,9 @@ creaturelab_test(control_unit_test unit
     ${CMAKE_CURRENT_LIST_DIR}/control_joints_test.cpp
   LIBS cl_control
 )
-# What a controller run measures in wind and fluid (control/run_measures.hpp).
+# What a controller run measures in wind and fluid (control/run_measures.hpp, control/swimmer_run.hpp).
 creaturelab_test(control_params_unit_test unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/control_run_measures_test.cpp
+          ${CMAKE_CURRENT_LIST_DIR}/control_swimmer_run_test.cpp
   LIBS cl_control
 )
