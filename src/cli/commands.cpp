@@ -16,7 +16,7 @@
 #include "io/atomic_file.hpp"
 #include "io/hdf5.hpp"
 #include "kinds/param_toml.hpp"
-#include "kinds/jellyfish_render_params.hpp"
+#include "kinds/render_hook.hpp"
 #include "runner/checks.hpp"
 #include "runner/compare.hpp"
 #include "runner/experiment.hpp"
@@ -146,8 +146,12 @@ void printSpecs(const std::vector<kinds::ParamSpec>& specs) {
 
 int Commands::list(const std::string& kind_name) const {
   if (kind_name == "render") {
-    std::printf("render: settings of `creaturelab render` (key=value; Rudolf & Mould 2009 §3.4-3.5, Fig. 12)\n");
-    printSpecs(kinds::renderParamSpecs());
+    for (const auto& kind : registry_.all())
+      if (const kinds::RenderHook* hook = kind->renderHook()) {
+        std::printf("render: settings of `creaturelab render` on %s runs (key=value): %s\n", kind->name().c_str(),
+                    hook->title().c_str());
+        printSpecs(hook->settings());
+      }
     return 0;
   }
   if (!kind_name.empty() && !registry_.find(kind_name))
