@@ -8,22 +8,12 @@
 #include <vector>
 
 #include "control/controller_params.hpp"
+#include "core/named_measure.hpp"
 
 namespace creaturelab::control {
 
-// One per-frame series with its unit.
-struct NamedSeries {
-  std::string name;
-  std::string unit;
-  std::vector<double> values;
-};
-
-// One scalar measure with its unit.
-struct NamedValue {
-  std::string name;
-  std::string unit;
-  double value = 0;
-};
+using core::NamedSeries;
+using core::NamedValue;
 
 // Named series whose values stay where they are while more are added (a deque).
 class SeriesSet {

@@ -69,7 +69,7 @@ void MembraneRunRecorder::step(long step, const CouplingStepReport& report, std:
   if (step == half_step_) area_half_ = polygonShape(x).area_m2;
 }
 
-std::vector<MembraneMeasure> MembraneRunRecorder::measure(std::span<const fluid::Vec2> x,
+std::vector<core::NamedValue> MembraneRunRecorder::measure(std::span<const fluid::Vec2> x,
                                                           const fluid::FluidSolver2& fluid, double dt_s) const {
   const PolygonShape end = polygonShape(x);
   const double late_time = fluid.time_s() - half_step_ * dt_s;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/named_measure.hpp"
 #include "fluid/fluid_solver2.hpp"
 #include "ib/coupling.hpp"
 #include "ib/membrane_body.hpp"
@@ -28,18 +29,6 @@ double laplacePressureRatio(const fluid::MacGrid2& g, const PolygonShape& shape,
 // R = sqrt(ab)): aspect 1.05 ↔ about 9.4e-4.
 double energyExcess(const MembraneBody& body, std::span<const fluid::Vec2> x, double area_m2);
 
-// One per-frame series or scalar measure with its unit.
-struct MembraneSeries {
-  std::string name;
-  std::string unit;
-  std::vector<double> values;
-};
-struct MembraneMeasure {
-  std::string name;
-  std::string unit;
-  double value = 0;
-};
-
 class MembraneRunRecorder {
  public:
   // `x0`: the markers at the start (m); `steps`: the steps the run will take (the late leak rate is
@@ -53,13 +42,13 @@ class MembraneRunRecorder {
 
   // time_s, area_m2, area_loss_fraction, aspect_ratio, elastic_energy_j_per_m, energy_excess,
   // kinetic_energy_j_per_m, one value per frame.
-  const std::vector<MembraneSeries>& series() const { return series_; }
+  const std::vector<core::NamedSeries>& series() const { return series_; }
   // The markers at the frames: frames x markers x 2, and the frames' times.
   const std::vector<double>& markerData() const { return marker_data_; }
   const std::vector<double>& markerTimes() const { return series_[0].values; }
 
   // The metrics at the end, from the markers x and the fluid after the last step of dt_s.
-  std::vector<MembraneMeasure> measure(std::span<const fluid::Vec2> x, const fluid::FluidSolver2& fluid,
+  std::vector<core::NamedValue> measure(std::span<const fluid::Vec2> x, const fluid::FluidSolver2& fluid,
                                        double dt_s) const;
 
  private:
@@ -67,7 +56,7 @@ class MembraneRunRecorder {
   PolygonShape start_;
   double max_spacing_m_ = 0;
   long steps_, half_step_;
-  std::vector<MembraneSeries> series_;
+  std::vector<core::NamedSeries> series_;
   std::vector<double> marker_data_;
   double max_div_ = 0, max_div_rel_ = 0, max_cfl_ = 0, max_speed_ = 0, area_half_;
 };

@@ -220,7 +220,7 @@ void addWebRun(Result& result, const web::WebRunRecorder& recorder) {
   tracks.data = recorder.positions().data;
 }
 
-void addWebMeasures(Result& result, const std::vector<web::WebMeasure>& measures) {
+void addWebMeasures(Result& result, const std::vector<core::NamedValue>& measures) {
   for (const auto& m : measures) result.metrics[m.name] = {m.value, m.unit};
 }
 

@@ -25,7 +25,7 @@ void WebRunRecorder::record(int frame, double t_s, const springs::State<3>& s) {
 
 double WebRunRecorder::hubRmsDisplacement_m() const { return frames_ ? std::sqrt(sum_d2_ / frames_) : std::nan(""); }
 
-std::vector<WebMeasure> webMeasures(const WebModel& model, const springs::Network<3>& net, const WebRunEnd& end) {
+std::vector<core::NamedValue> webMeasures(const WebModel& model, const springs::Network<3>& net, const WebRunEnd& end) {
   const double nan = std::nan("");
   const auto& c = model.counts;
   const double sag = hubSagM(model, end.state);

@@ -11,17 +11,11 @@
 
 #include <Eigen/Core>
 
+#include "core/named_measure.hpp"
 #include "springs/equilibrium.hpp"
 #include "web/web_model.hpp"
 
 namespace creaturelab::web {
-
-// One scalar measure with its unit.
-struct WebMeasure {
-  std::string name;
-  std::string unit;
-  double value = 0;
-};
 
 // All particles' positions (m) at the recorded frames: frames x particles x 3.
 struct PositionFrames {
@@ -65,7 +59,7 @@ struct WebRunEnd {
 // The web's counts, silk and mass, the hub's sag at the end and in statics, their relative
 // difference, the largest strain, the settling time, the strand families' elongations and the hub's
 // rms displacement (the web kind's metrics). `net` is the network the run stepped.
-std::vector<WebMeasure> webMeasures(const WebModel& model, const springs::Network<3>& net, const WebRunEnd& end);
+std::vector<core::NamedValue> webMeasures(const WebModel& model, const springs::Network<3>& net, const WebRunEnd& end);
 
 // Which particles each spring joins and its strand type (StrandType order), the attachment and hub
 // particles: tables for figures to draw and colour the web.
