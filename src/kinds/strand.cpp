@@ -20,11 +20,11 @@ struct Layout {
   double span_m;       // anchor to anchor
 };
 
-Layout layoutOf(const ParamReader& r) {
-  const double rest = r.real("rest_length_m");
-  const double nominal = r.text("layout") == "overextended" ? rest * (1.0 + r.real("overextension")) : rest;
-  const auto n = r.integer("n_springs");
-  const double span = r.real("span_m");
+Layout layoutOf(const StrandParams& q) {
+  const double rest = q.rest_length_m;
+  const double nominal = q.layout == "overextended" ? rest * (1.0 + q.overextension) : rest;
+  const auto n = q.n_springs;
+  const double span = q.span_m;
   if (span > 0) {
     const int count = std::max(2, int(std::lround(span / nominal)));
     return {count, span / count, span};
@@ -36,37 +36,6 @@ Layout layoutOf(const ParamReader& r) {
 }  // namespace
 
 StrandKind::StrandKind() {
-  params_ = {
-      real("span_m", 0.0, "m", 0, 100,
-           "anchor separation; 0 = n_springs x placement length. When set, n_springs is derived from it"),
-      integer("n_springs", 0, 0, 100000, "springs in the chain; 0 = 50, or derived from span_m when span_m > 0"),
-      real("mass_kg", 1e-8, "kg", 1e-15, 1, "particle mass: 10 ug (thesis §5.1 and §5.2.1 table)"),
-      real("spring_k_n_per_m", 0.01, "N/m", 1e-9, 1e6, "spring constant (thesis §5.2.1: 0.01 N/m)"),
-      real("spring_damping_ns_per_m", 0.0, "N*s/m", 0, 1, "spring damping k_d of Eq. 4.14 (thesis gives none: 0)"),
-      real("rest_length_m", 0.003, "m", 1e-6, 10, "spring rest length (thesis §5.2.1: 3 mm)"),
-      choice("layout", "overextended", {"rest", "overextended"},
-             "lay springs at rest length (Fig. 5.1) or over-extended (§5.1)"),
-      real("overextension", 1.5, "", 0, 5,
-           "over-extension of the layout: placement = rest x (1 + this); thesis §5.1 uses 0.75-2.5"),
-      boolean("provot", false, "apply Provot's strain constraint after every step (thesis §5.1, Fig. 5.2)"),
-      real("provot_max_strain", 0.1, "", 1e-6, 10, "Provot's maximum strain (Provot 1995 used 10%; thesis gives none)"),
-      integer("provot_passes", 10, 1, 1000000,
-              "most Provot sweeps over the springs per step, repeated until no spring is over the limit (thesis: "
-              "'run multiple times')"),
-      boolean("provot_exact", false,
-              "finish a step whose Provot sweeps leave a spring over the limit with an exact projection "
-              "(Goldenthal et al. 2007; not in the thesis)"),
-      real("drag_ns_per_m", 1e-8, "N*s/m", 0, 1, "air friction (thesis §5.2.1: 0.00000001 Ns/m)"),
-      real("gravity_m_per_s2", 9.81, "m/s^2", 0, 1000, "gravity, pulling along -y (thesis Eq. 4.6)"),
-      choice("integrator", "rk4", {"euler", "symplectic_euler", "rk4", "implicit_euler"},
-             "time integrator (thesis uses rk4, Eq. 4.16-4.19)"),
-      realOrAuto("dt_s", "s", 1e-9, 1, "substep; \"auto\" = half the stability limit from the springs' omega_max"),
-      real("frame_interval_s", 0.02, "s", 1e-6, 10, "output frame (the thesis's 0.02 s 'time step', §5.2.1)"),
-      real("end_time_s", 15.0, "s", 1e-3, 1e5, "simulated time"),
-      real("settling_fraction", 1e-4, "", 1e-12, 1,
-           "settled when kinetic energy stays below this fraction of its peak (1e-4 = 1% amplitude)"),
-      real("lagrangian_interval_s", 0.5, "s", 1e-6, 1e5, "interval between stored particle positions"),
-  };
   metrics_ = {
       {"particles", "", "particles in the strand, anchors included"},
       {"anchor_span_m", "m", "anchor separation, as set or derived"},
@@ -87,11 +56,11 @@ std::string StrandKind::doc() const {
   return std::string("a web strand between two anchors under gravity and drag (") + kThesis + " §5.1)";
 }
 
-std::string StrandKind::validate(const Params& p) const {
-  ParamReader r(p);
-  if (r.real("span_m") > 0 && r.integer("n_springs") > 0)
+std::string StrandParams::validate() const {
+  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
+  if (span_m > 0 && n_springs > 0)
     return "set span_m or n_springs, not both (the other follows from the placement length)";
-  if (!r.isAuto("dt_s") && r.real("dt_s") > r.real("frame_interval_s"))
+  if (!dt_s.is_auto && dt_s.value > frame_interval_s)
     return "dt_s is longer than frame_interval_s; the frame is split into whole substeps";
   return "";
 }
@@ -105,29 +74,28 @@ struct StrandSetup {
   springs::SimulationOptions opt;
 };
 
-StrandSetup setupOf(const ParamReader& r) {
-  const Layout lay = layoutOf(r);
-  const double rest = r.real("rest_length_m"), mass = r.real("mass_kg");
+StrandSetup setupOf(const StrandParams& q) {
+  const Layout lay = layoutOf(q);
+  const double rest = q.rest_length_m, mass = q.mass_kg;
 
   springs::Network<2> net;
   for (int i = 0; i <= lay.n_springs; ++i) net.addParticle(mass, i == 0 || i == lay.n_springs);
   for (int i = 0; i < lay.n_springs; ++i)
-    net.addSpring(i, i + 1, rest, r.real("spring_k_n_per_m"), r.real("spring_damping_ns_per_m"));
-  net.gravity_m_per_s2 = springs::Vec<2>(0.0, -r.real("gravity_m_per_s2"));
-  net.drag_ns_per_m = r.real("drag_ns_per_m");
+    net.addSpring(i, i + 1, rest, q.spring_k_n_per_m, q.spring_damping_ns_per_m);
+  net.gravity_m_per_s2 = springs::Vec<2>(0.0, -q.gravity_m_per_s2);
+  net.drag_ns_per_m = q.drag_ns_per_m;
 
   const int n = lay.n_springs + 1;
   springs::State<2> state{springs::Points<2>::Zero(2, n), springs::Points<2>::Zero(2, n)};
   for (int i = 0; i < n; ++i) state.x_m(0, i) = lay.placement_m * i;
 
   springs::SimulationOptions opt;
-  opt.integrator = parseIntegratorOrThrow(r.text("integrator"));
-  opt.frame_interval_s = r.real("frame_interval_s");
-  opt.dt_s = r.isAuto("dt_s") ? 0.0 : r.real("dt_s");
-  opt.end_time_s = r.real("end_time_s");
-  opt.settling_fraction = r.real("settling_fraction");
-  opt.provot = {r.boolean("provot"), r.real("provot_max_strain"), int(r.integer("provot_passes"))};
-  opt.provot.exact_finish = r.boolean("provot_exact");
+  opt.integrator = parseIntegratorOrThrow(q.integrator);
+  opt.frame_interval_s = q.frame_interval_s;
+  opt.dt_s = q.dt_s.is_auto ? 0.0 : q.dt_s.value;
+  opt.end_time_s = q.end_time_s;
+  opt.settling_fraction = q.settling_fraction;
+  opt.provot = q.provot;
   return {std::move(net), std::move(state), opt};
 }
 
@@ -135,18 +103,18 @@ StrandSetup setupOf(const ParamReader& r) {
 
 CostEstimate StrandKind::estimateCost(const Params& p) const {
   try {
-    ParamReader r(p);
-    const StrandSetup setup = setupOf(r);
-    return springRunCost(setup.net, setup.state, setup.opt, r.text("integrator"));
+    const StrandParams q = readParams<StrandParams>(p);
+    const StrandSetup setup = setupOf(q);
+    return springRunCost(setup.net, setup.state, setup.opt, q.integrator);
   } catch (const std::exception&) {
     return {};  // the point itself will say what is wrong
   }
 }
 
 Result StrandKind::run(const Params& p) const {
-  ParamReader r(p);
-  const Layout lay = layoutOf(r);
-  StrandSetup setup = setupOf(r);
+  const StrandParams q = readParams<StrandParams>(p);
+  const Layout lay = layoutOf(q);
+  StrandSetup setup = setupOf(q);
   springs::Network<2>& net = setup.net;
   springs::State<2>& state = setup.state;
   const springs::SimulationOptions& opt = setup.opt;
@@ -163,7 +131,7 @@ Result StrandKind::run(const Params& p) const {
   Tracks& tracks = result.lagrangian["positions_m"];
   tracks.points = n;
   tracks.dim = 2;
-  const int frames_per_track = std::max(1, int(std::lround(r.real("lagrangian_interval_s") / opt.frame_interval_s)));
+  const int frames_per_track = std::max(1, int(std::lround(q.lagrangian_interval_s / opt.frame_interval_s)));
   auto record = [&](int frame, double t, const springs::State<2>& s) {
     sag.values.push_back(midSag(s));
     if (frame % frames_per_track == 0) {

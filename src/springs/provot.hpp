@@ -25,6 +25,19 @@ struct ProvotOptions {
   // leaving it: the limit then holds to the tolerance. Not Provot's method (the thesis's Fig. 5.2 has none).
   bool exact_finish = false;
   std::string validate() const;
+
+  // For the strand kind (kinds/describe.hpp), whose defaults these are; tolerance stays internal.
+  template <class V>
+  void describe(V& v) {
+    v.boolean("provot", enabled, "apply Provot's strain constraint after every step (thesis §5.1, Fig. 5.2)");
+    v.real("provot_max_strain", max_strain, "", 1e-6, 10, "Provot's maximum strain (Provot 1995 used 10%; thesis gives none)");
+    v.integer("provot_passes", passes, 1, 1000000,
+              "most Provot sweeps over the springs per step, repeated until no spring is over the limit (thesis: "
+              "'run multiple times')");
+    v.boolean("provot_exact", exact_finish,
+              "finish a step whose Provot sweeps leave a spring over the limit with an exact projection "
+              "(Goldenthal et al. 2007; not in the thesis)");
+  }
 };
 
 struct ProvotResult {

@@ -10,6 +10,7 @@
 #include "kinds/fish.hpp"
 #include "kinds/fluid.hpp"
 #include "kinds/oscillator.hpp"
+#include "kinds/strand.hpp"
 
 namespace sample {
 
@@ -197,6 +198,22 @@ TEST(DescribedKind, FishBuildsItsRunFromTheFishStructsDefaults) {
   p["stable_lo_s"] = 1.0;
   p["stable_hi_s"] = 0.5;
   EXPECT_EQ(kind.validate(p), "stable_lo_s must be below stable_hi_s");
+}
+
+TEST(DescribedKind, StrandReadsProvotsOwnStructAndValidatesThroughIt) {
+  const StrandKind kind;
+  Params p = withDefaults(kind, {});
+  EXPECT_EQ(p, paramsOf(StrandParams{}));
+  p["provot"] = true;
+  p["provot_passes"] = std::int64_t(3);
+  const StrandParams q = readParams<StrandParams>(p);
+  EXPECT_TRUE(q.provot.enabled);
+  EXPECT_EQ(q.provot.passes, 3);
+  EXPECT_EQ(q.provot.tolerance, creaturelab::springs::ProvotOptions{}.tolerance);  // not described: stays
+  EXPECT_EQ(kind.validate(p), "");
+  p["span_m"] = 0.1;
+  p["n_springs"] = std::int64_t(10);
+  EXPECT_EQ(kind.validate(p), "set span_m or n_springs, not both (the other follows from the placement length)");
 }
 
 }  // namespace
