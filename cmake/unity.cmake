@@ -7,6 +7,11 @@ option(CREATURELAB_UNITY "Compile each target's sources in batches (unity build)
 if(CREATURELAB_UNITY)
   set(CMAKE_UNITY_BUILD ON)
   set(CMAKE_UNITY_BUILD_BATCH_SIZE 8)
+  # gcc takes a batch's included .cpp files for headers and then warns that a class uses a type of
+  # their anonymous namespace (-Wsubobject-linkage), which is right in a source file.
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    add_compile_options(-Wno-subobject-linkage)
+  endif()
 endif()
 
 # creaturelab_unity_alone(DIRECTORY dir FILES ...): files compiled on their own, each for the reason

@@ -17,7 +17,7 @@ const Vec3 kStream = {1, 0, 0};  // the flow angle's reference line
 FluidRunRecorder::FluidRunRecorder(const rigid::RigidModel& model, const ControllerParams& p,
                                    FluidController& controller, double origin_x_m, double origin_z_m,
                                    long field_every_frames)
-    : model_(model), field_every_(field_every_frames), common_(series_, p.controlled) {
+    : field_every_(field_every_frames), common_(series_, p.controlled) {
   flow_ = &series_.add("flow_angle_deg", "deg");
   for (const auto& j : p.controlled) {
     angle_.push_back(&series_.add("angle_deg_" + j, "deg"));

@@ -53,7 +53,6 @@ class FluidRunRecorder {
  private:
   void recordField(FluidController& controller);
 
-  const rigid::RigidModel& model_;
   std::vector<int> pd_qpos_;
   int j0_id_ = -1, j0_body_ = -1;
   long field_every_ = 0, frame_ = 0;

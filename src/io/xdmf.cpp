@@ -43,8 +43,8 @@ std::string xdmfText(const XdmfGrid& g) {
       << "</DataItem>\n"
       << "    </Geometry>\n";
     // Frame k of (frames, ny, nx): start k 0 0, stride 1 1 1, count 1 ny nx, then the dataset's shape.
-    const std::string slab = "|" + std::to_string(k) + " 0 0:1 1 1:1 " + cells + ":" +
-                             std::to_string(g.time_s.size()) + " " + cells;
+    std::string slab = "|";  // appended piece by piece: gcc 12 misreads "|" + std::to_string(k) (-Wstringop-overflow)
+    slab += std::to_string(k) + " 0 0:1 1 1:1 " + cells + ":" + std::to_string(g.time_s.size()) + " " + cells;
     for (const auto& f : g.fields) {
       s << "    <Attribute Name=\"" << f << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
       floatItem(s, cells, g.h5_file + ":/fields/" + f + slab);

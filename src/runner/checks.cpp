@@ -4,11 +4,22 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
 
 #include "core/text.hpp"
 
 namespace creaturelab::runner {
 namespace {
+
+// A check's outcome before it is measured: its name, type and what it expects.
+CheckOutcome outcome(const CheckSpec& c, std::string expected, bool passed = false) {
+  CheckOutcome out;
+  out.name = c.name;
+  out.type = c.type;
+  out.expected = std::move(expected);
+  out.passed = passed;
+  return out;
+}
 
 // Six significant digits: enough to read a check, short enough for a table.
 std::string formatNumber(double x) {
@@ -58,7 +69,7 @@ std::vector<const Row*> select(const Table& table, const Where& where, const std
 }
 
 CheckOutcome extremum(const CheckSpec& c, const Table& table, const std::vector<const Row*>& rows, bool is_max) {
-  CheckOutcome out{c.name, c.type, "", "", false};
+  CheckOutcome out = outcome(c, "");
   const Row* best = rows.front();
   for (const Row* r : rows) {
     double v = r->metrics.at(c.metric), b = best->metrics.at(c.metric);
@@ -113,7 +124,7 @@ CheckOutcome inRange(const CheckSpec& c, const std::vector<const Row*>& rows) {
     lo = std::min(lo, r->metrics.at(c.metric));
     hi = std::max(hi, r->metrics.at(c.metric));
   }
-  CheckOutcome out{c.name, c.type, c.metric + " in " + range(c.expect_lo, c.expect_hi), "", false};
+  CheckOutcome out = outcome(c, c.metric + " in " + range(c.expect_lo, c.expect_hi));
   out.got = rows.size() == 1 ? formatNumber(lo) : range(lo, hi) + " over " + std::to_string(rows.size()) + " points";
   out.passed = lo >= c.expect_lo && hi <= c.expect_hi;
   if (c.uncertainty.empty()) return out;
@@ -141,7 +152,7 @@ CheckOutcome monotonic(const CheckSpec& c, std::vector<const Row*> rows) {
   std::stable_sort(rows.begin(), rows.end(), [&](const Row* a, const Row* b) {
     return numericValue(a->columns.at(c.axis)) < numericValue(b->columns.at(c.axis));
   });
-  CheckOutcome out{c.name, c.type, c.metric + (c.strict ? " strictly " : " ") + c.direction + " in " + c.axis, "", true};
+  CheckOutcome out = outcome(c, c.metric + (c.strict ? " strictly " : " ") + c.direction + " in " + c.axis, true);
   std::ostringstream got;
   for (size_t i = 0; i < rows.size(); ++i) {
     const double v = rows[i]->metrics.at(c.metric);
@@ -162,8 +173,7 @@ CheckOutcome monotonic(const CheckSpec& c, std::vector<const Row*> rows) {
 // Observed order of convergence: p in metric ~ C * axis^-p (e.g. an error against cells per
 // side), the least-squares slope of log(metric) against log(axis), negated.
 CheckOutcome order(const CheckSpec& c, const std::vector<const Row*>& rows) {
-  CheckOutcome out{c.name, c.type, "order of " + c.metric + " in " + c.axis + " in " + range(c.expect_lo, c.expect_hi),
-                   "", false};
+  CheckOutcome out = outcome(c, "order of " + c.metric + " in " + c.axis + " in " + range(c.expect_lo, c.expect_hi));
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   const double n = double(rows.size());
   for (const Row* r : rows) {
@@ -208,7 +218,7 @@ CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
     const std::string what = (num_metric == den_metric ? c.metric + (ratio ? " ratio" : " difference")
                                                        : num_metric + op + den_metric) +
                              (c.numerator_base.empty() && c.denominator_base.empty() ? "" : " (each relative to its base)");
-    CheckOutcome out{c.name, c.type, what + " in " + range(c.expect_lo, c.expect_hi), "", false};
+    CheckOutcome out = outcome(c, what + " in " + range(c.expect_lo, c.expect_hi));
     auto num = select(table, c.numerator, num_metric, problem);
     auto den = problem.empty() ? select(table, c.denominator, den_metric, problem) : std::vector<const Row*>{};
     if (!problem.empty()) {
@@ -248,7 +258,11 @@ CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
     return out;
   }
   auto rows = select(table, c.where, c.metric, problem);
-  if (!problem.empty()) return CheckOutcome{c.name, c.type, "", problem, false};
+  if (!problem.empty()) {
+    CheckOutcome out = outcome(c, "");
+    out.got = problem;
+    return out;
+  }
   if (c.type == "argmax") return extremum(c, table, rows, true);
   if (c.type == "argmin") return extremum(c, table, rows, false);
   if (c.type == "range") return inRange(c, rows);

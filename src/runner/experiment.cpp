@@ -48,7 +48,6 @@ void applyOverride(toml::table& root, const std::string& text) {
   if (eq == std::string::npos || eq == 0)
     throw ExperimentError("override '" + text + "': expected dotted.key=value, e.g. params.dt_s=0.001");
   const std::string path = text.substr(0, eq), rhs = text.substr(eq + 1);
-  toml::node_view<toml::node> parsed;
   toml::table holder;
   try {
     holder = toml::parse("v = " + rhs);

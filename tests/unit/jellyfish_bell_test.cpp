@@ -158,7 +158,9 @@ TEST(JellyfishBell, SpringConstantsFollowModulusThicknessOverLength) {
     const double expected = p.bending_rigidity_n_m * (tentacle ? p.tentacle_area_factor : 1.0);
     EXPECT_NEAR(net.bend_stiffness_nm_per_rad[e] * joint_m, expected, 1e-14 * expected) << "bend " << e;
     // Chords of the arc-equal markers differ from 1.983 mm by up to 0.16%.
-    if (!tentacle) EXPECT_NEAR(net.bend_stiffness_nm_per_rad[e], 1.186, 1.186 * 2e-3) << "Fig. 12 at 32 segments";
+    if (!tentacle) {
+      EXPECT_NEAR(net.bend_stiffness_nm_per_rad[e], 1.186, 1.186 * 2e-3) << "Fig. 12 at 32 segments";
+    }
   }
 
   // The band covers 0.875 of the half-arc: elements at markers 0..14 of 16, half weight at the ends.
