@@ -41,7 +41,7 @@ run charlotte web/charlotte.toml params.resettle_time_s=0.05 params.canvas_px=12
 run taylor_green fluid/taylor_green.toml "sweep.cells=[32,64,128]" params.end_time_s=0.1 params.output_interval_s=0.05 \
   --points 0/2
 run stagger jellyfish/stagger.toml $jelly params.duration_s=2
-# Every third drive frequency and the pluck (point 11).
+# Every third point: drives of the bell with and without tentacles, and both plucks.
 run frequency jellyfish/frequency.toml $jelly params.duration_s=1.5 --points 2/3
 run morphology jellyfish/morphology.toml $jelly params.warmup_cycles=1 params.tracers_per_side=10
 run membrane jellyfish/membrane.toml params.duration_s=0.5 params.markers=64
