@@ -350,7 +350,7 @@ def resonance(sweep, points, out):
         right.set_title("driven at fixed peak tension")
         lines, labels = right.get_legend_handles_labels()
         more, more_labels = twin.get_legend_handles_labels()
-        twin.legend(lines + more, labels + more_labels, fontsize=8, loc="best")  # the twin is drawn over right
+        twin.legend(lines + more, labels + more_labels, fontsize=9, loc="best")  # the twin is drawn over right
     else:
         right.axis("off")
     style.save(fig, os.path.join(out, "resonance.png"))
