@@ -290,7 +290,7 @@ TEST_F(Hdf5Test, ThreadsMayWriteDifferentFilesConcurrently) {
   }
   for (auto& thread : threads) thread.join();
   const std::string first = io::contentDigest(file("t0.h5"), {});
-  for (int t = 1; t < 4; ++t) EXPECT_EQ(io::contentDigest(file("t" + std::to_string(t) + ".h5"), {}), first);
+  for (int t = 1; t < 4; ++t) EXPECT_EQ(io::contentDigest(file(std::string("t") + std::to_string(t) + ".h5"), {}), first);
 }
 
 TEST(Hdf5Handle, IsMoveOnlyAndClosesOnce) {
