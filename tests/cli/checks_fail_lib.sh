@@ -115,3 +115,17 @@ reused() {
   mkdir -p "$scratch/run_$name"
   for p in "$@"; do cp "$scratch/run_intact/$(printf 'point_%06d.h5' "$p")" "$scratch/run_$name/"; done
 }
+
+# got NAME CHECK: the got column of CHECK in run NAME's table (what the check measured).
+got() {
+  awk -v c="$2" '/^check +pass +expected +got$/ && !p { p = index($0, " got") + 1 } p && index($0, c) == 1 { print substr($0, p); exit }' \
+    "$scratch/$1.out"
+}
+
+# argmax_at NAME CHECK AXIS VALUE: CHECK (an argmax or argmin) in run NAME found its extremum at AXIS=VALUE.
+argmax_at() {
+  local text
+  text=$(got "$1" "$2")
+  [[ $text == "$3=$4 ("* ]] || { cat "$scratch/$1.out" >&2; fail "$1: '$2' got '$text', expected it at $3=$4"; }
+  echo "ok   $1: '$2' at $3=$4"
+}
