@@ -60,3 +60,5 @@ creaturelab_cli_test(jellyfish_frequency_checks_fail TIMEOUT 600) # Fig. 5's and
 creaturelab_cli_test(jellyfish_membrane_checks_fail TIMEOUT 600)
 # Fig. 5's file: the bell alone's one-mode check FAILs with tentacles on in its pluck; 16 s CPU
 creaturelab_cli_test(jellyfish_bell_checks_fail TIMEOUT 600)
+# Fig. 5's speed-peak and stroke-peak checks FAIL with the resonance broken (a softer bell, a viscous fluid); 19 s CPU
+creaturelab_cli_test(jellyfish_resonance_checks_fail TIMEOUT 600 COST 1000)
