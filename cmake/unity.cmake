@@ -13,10 +13,3 @@ if(CREATURELAB_UNITY)
     add_compile_options(-Wno-subobject-linkage)
   endif()
 endif()
-
-# creaturelab_unity_alone(DIRECTORY dir FILES ...): files compiled on their own, each for the reason
-# written beside its call (a name its anonymous namespace shares with another file of its target).
-function(creaturelab_unity_alone)
-  cmake_parse_arguments(U "" "DIRECTORY" "FILES" ${ARGN})
-  set_source_files_properties(${U_FILES} DIRECTORY "${U_DIRECTORY}" PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
-endfunction()
