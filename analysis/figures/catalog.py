@@ -73,10 +73,16 @@ FIGURES = [
            "The spring network of a bell slice and its staggered contraction curves; staggered expansion travels "
            "1.68 times as far per cycle as unison, and unison still swims (§3.3).",
            "stagger", "rm_fig4", None),
-    Figure("rm", "Fig. 5",
+    Figure("rm", "Fig. 5 (the default model)",
            "Distance travelled against contraction frequency has a large maximum at 0.7 Hz, the resonant gait "
-           "(§3.3).",
+           "(§3.3). Drawn on the kind's default model: its muscles pull with a tension pulse that the elastic bell "
+           "re-expands against, so the stroke comes from the bell, the water and the frequency and can resonate.",
            "frequency", "rm_fig5", None),
+    Figure("rm", "Fig. 5 (the paper's model)",
+           "The same claim on the paper's own model: muscle springs whose rest length follows §3.3's Hermite curve, "
+           "with Fig. 12's joint stiffness. It is not the default because the curve prescribes the stroke at every "
+           "frequency, so the bell cannot resonate.",
+           "paper_model", "rm_fig5", None),
     Figure("rm", "Fig. 6", "Trace particles show the fluid flow around the jellyfish through a contraction cycle.",
            "morphology", "rm_fig6", []),
     # The 3-D render model (§3.4-3.5), drawn by POV-Ray from a recorded swim (`creaturelab render`).
@@ -91,10 +97,14 @@ FIGURES = [
     Figure("rm", "Fig. 10",
            "One contraction-expansion cycle of the rendered jellyfish (§3.5).",
            "render_swim", "fig10", None, _RENDER),
-    Figure("rm", "Fig. 11",
+    Figure("rm", "Fig. 11 (the default model)",
            "The morphology of a 4 cm bell through a cycle at 0.7 Hz; it contracts to about 56% of its diameter "
-           "(Fig. 3).",
+           "(Fig. 3). Drawn on the kind's default model (tension-pulse muscles, whose stroke can resonate).",
            "morphology", "rm_fig11", None),
+    Figure("rm", "Fig. 11 (the paper's model)",
+           "The same cycle on the paper's own model (rest-length Hermite muscles, Fig. 12's joint stiffness), "
+           "whose curve prescribes the stroke; not the default, which can resonate.",
+           "paper_model_morphology", "rm_fig11", None),
     # The fluid solver, the coupling and the fit of §3.2-3.3.
     Figure("rm", "§3.2 (Taylor-Green)",
            "The solver converges to the analytic decaying Taylor-Green vortex as the grid is refined.",
