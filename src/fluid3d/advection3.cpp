@@ -1,0 +1,95 @@
+#include "fluid3d/advection3.hpp"
+
+namespace creaturelab::fluid3d {
+namespace advection3_detail {
+
+using Point = std::array<double, 3>;
+
+// Velocity in cells per second at p (cell units).
+Point cellVelocity(const std::array<PaddedComponent3, 3>& v, const Point& p, double per_dx) {
+  return {v[0].sample(p) * per_dx, v[1].sample(p) * per_dx, v[2].sample(p) * per_dx};
+}
+
+// The midpoint (RK2) trace from p over `dt` (negative: backwards).
+Point trace(const std::array<PaddedComponent3, 3>& v, const Point& p, double dt, double per_dx) {
+  const Point u0 = cellVelocity(v, p, per_dx);
+  const Point mid{p[0] + 0.5 * dt * u0[0], p[1] + 0.5 * dt * u0[1], p[2] + 0.5 * dt * u0[2]};
+  const Point u1 = cellVelocity(v, mid, per_dx);
+  return {p[0] + dt * u1[0], p[1] + dt * u1[1], p[2] + dt * u1[2]};
+}
+
+// True for a solid wall's normal face of component a at index m (kept zero).
+bool knownFace(const MacGrid3& grid, int a, int m) {
+  if (grid.periodic(a)) return false;
+  const AxisBoundary3& b = grid.boundaries.axis[a];
+  return (m == 0 && b.low != BoundaryType3::open) || (m == grid.n[a] && b.high != BoundaryType3::open);
+}
+
+// Calls f(a, i, j, k, position in cell units, output slot) for every sample, slab-parallel.
+template <class F>
+void forEachSample(const MacGrid3& grid, FaceField3& out, WorkerPool* pool, F f) {
+  for (int a = 0; a < 3; ++a) {
+    const std::array<int, 3> e = grid.faceExtents(a);
+    out[a].resize(e[0], e[1], e[2]);
+    forSlabs(pool, e[2], [&](int k0, int k1) {
+      for (int k = k0; k < k1; ++k)
+        for (int j = 0; j < e[1]; ++j)
+          for (int i = 0; i < e[0]; ++i) {
+            const int m[3] = {i, j, k};
+            double& slot = out[a](i, j, k);
+            if (knownFace(grid, a, m[a])) {
+              slot = 0.0;
+              continue;
+            }
+            Point p{i + 0.5, j + 0.5, k + 0.5};
+            p[a] -= 0.5;
+            f(a, i, j, k, p, slot);
+          }
+    });
+  }
+}
+
+}  // namespace advection3_detail
+
+void AdvectionSolver3::padAll(const MacGrid3& grid, const FaceField3& field, std::array<PaddedComponent3, 3>& padded) {
+  for (int a = 0; a < 3; ++a) padded[a].fill(a, grid, field[a], workers_);
+}
+
+void SemiLagrangianAdvection3::advect(const MacGrid3& grid, double dt_s, FaceField3& out) {
+  using namespace advection3_detail;
+  padAll(grid, grid.velocity_m_per_s, velocity_);
+  const double per_dx = 1.0 / grid.dx_m;
+  forEachSample(grid, out, workers_, [&](int a, int, int, int, const Point& p, double& slot) {
+    slot = velocity_[a].sample(trace(velocity_, p, -dt_s, per_dx));
+  });
+}
+
+void MacCormackAdvection3::advect(const MacGrid3& grid, double dt_s, FaceField3& out) {
+  using namespace advection3_detail;
+  padAll(grid, grid.velocity_m_per_s, velocity_);
+  const double per_dx = 1.0 / grid.dx_m;
+  for (int a = 0; a < 3; ++a) {
+    const std::array<int, 3> e = grid.faceExtents(a);
+    lo_[a].resize(e[0], e[1], e[2]);
+    hi_[a].resize(e[0], e[1], e[2]);
+  }
+  // Forward: φ̂ and the range of its stencil.
+  forEachSample(grid, out, workers_, [&](int a, int i, int j, int k, const Point& p, double& slot) {
+    slot = velocity_[a].sample(trace(velocity_, p, -dt_s, per_dx), lo_[a](i, j, k), hi_[a](i, j, k));
+  });
+  padAll(grid, out, forward_);
+  // Backward: φ̃ = φ̂ at the forward trace; correct and clamp.
+  forEachSample(grid, out, workers_, [&](int a, int i, int j, int k, const Point& p, double& slot) {
+    const double back = forward_[a].sample(trace(velocity_, p, dt_s, per_dx));
+    const double corrected = slot + 0.5 * (grid.velocity_m_per_s[a](i, j, k) - back);
+    const double lo = lo_[a](i, j, k), hi = hi_[a](i, j, k);
+    slot = corrected < lo ? lo : corrected > hi ? hi : corrected;
+  });
+}
+
+std::unique_ptr<AdvectionSolver3> makeAdvectionSolver(AdvectionScheme3 scheme) {
+  if (scheme == AdvectionScheme3::semi_lagrangian) return std::make_unique<SemiLagrangianAdvection3>();
+  return std::make_unique<MacCormackAdvection3>();
+}
+
+}  // namespace creaturelab::fluid3d

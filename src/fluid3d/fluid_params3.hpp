@@ -1,0 +1,118 @@
+#pragma once
+// Parameters of the 3-D incompressible fluid solver, for Eqs. 5–6 of Lentine, Gräfe & Fedkiw 2010
+// (§4.1, "Navier–Stokes equations") with a viscous term:
+//   ∂u/∂t + u·∇u = −∇p/ρ + ν ∇²u + f,   ∇·u = 0.
+// Plain struct with in-class defaults; validate() says in words what is wrong.
+
+#include <array>
+#include <string>
+#include <string_view>
+
+namespace creaturelab::fluid3d {
+
+/// Condition on one side of the box (ghost values as in the 2-D solver, fluid/boundary2.hpp).
+enum class BoundaryType3 {
+  periodic,   ///< the box repeats along this axis (both sides of the axis must be periodic)
+  free_slip,  ///< solid: u·n = 0, ∂u_t/∂n = 0
+  no_slip,    ///< solid: u = 0
+  open        ///< p = 0 on the side, ∂u/∂n = 0: fluid may leave or enter
+};
+
+/// The two sides of one axis.
+struct AxisBoundary3 {
+  BoundaryType3 low = BoundaryType3::free_slip;
+  BoundaryType3 high = BoundaryType3::free_slip;
+  bool periodic() const { return low == BoundaryType3::periodic; }
+};
+
+/// Sides of the box [0, Lx] × [0, Ly] × [0, Lz], by axis: x, y, z (z is up).
+struct Boundaries3 {
+  std::array<AxisBoundary3, 3> axis{};
+  /// True when no side is open: the pressure is then defined up to a constant only.
+  bool closed() const {
+    for (const AxisBoundary3& a : axis)
+      if (a.low == BoundaryType3::open || a.high == BoundaryType3::open) return false;
+    return true;
+  }
+  static Boundaries3 allPeriodic() {
+    Boundaries3 b;
+    for (AxisBoundary3& a : b.axis) a = {BoundaryType3::periodic, BoundaryType3::periodic};
+    return b;
+  }
+  static Boundaries3 allWalls(BoundaryType3 type) {
+    Boundaries3 b;
+    for (AxisBoundary3& a : b.axis) a = {type, type};
+    return b;
+  }
+};
+
+/// Velocity advection scheme (the 2-D solver's semi-Lagrangian ones, fluid/advection2.hpp).
+enum class AdvectionScheme3 {
+  semi_lagrangian,  ///< Stam 1999 §2.2: RK2 backtrace, trilinear interpolation (first order, diffusive)
+  maccormack        ///< Selle et al. 2008: forward + backward semi-Lagrangian, clamped (second order in space)
+};
+
+/// Pressure (projection) solver.
+enum class PressureSolverType3 {
+  spectral,  ///< exact: 1-D eigenbases along each axis (periodic, solid or open ends), any box
+  mg_pcg     ///< conjugate gradients preconditioned by a multigrid V-cycle, to pressure_tolerance
+};
+
+/// Time integration of the viscous term ν∇²u.
+enum class ViscosityScheme3 {
+  backward_euler,  ///< (I − ν dt ∇²) u_new = u (Stam 1999 §2.2, first order in dt)
+  crank_nicolson,  ///< (I − ½ν dt ∇²) u_new = (I + ½ν dt ∇²) u (second order in dt)
+  explicit_euler   ///< u_new = (I + ν dt ∇²) u, stable for ν dt / dx² ≤ 1/6
+};
+
+enum class TimeStepPolicy3 {
+  cfl_adaptive,  ///< dt = min(max_step_s, cfl_safety_factor · dx / max|u_component|)
+  fixed          ///< dt = fixed_step_s
+};
+
+struct FluidParams3 {
+  // --- domain: cubic cells of side domain_x_m / cells_x (= domain_y_m / cells_y = domain_z_m / cells_z)
+  double domain_x_m = 0.4;
+  double domain_y_m = 0.4;
+  double domain_z_m = 0.4;
+  int cells_x = 32;
+  int cells_y = 32;
+  int cells_z = 32;
+
+  double density_kg_per_m3 = 1000.0;
+  double kinematic_viscosity_m2_per_s = 1.0e-6;  ///< water at 20 °C
+
+  Boundaries3 boundaries{};  ///< all free-slip
+  AdvectionScheme3 advection = AdvectionScheme3::maccormack;
+  ViscosityScheme3 viscosity_scheme = ViscosityScheme3::backward_euler;
+  double viscosity_tolerance = 1e-10;  ///< CG stops at ‖b − A u‖∞ ≤ tol · ‖b‖∞
+  int viscosity_max_iterations = 500;
+
+  PressureSolverType3 pressure_solver = PressureSolverType3::mg_pcg;
+  /// MG-PCG stops at ‖b − A q‖∞ ≤ pressure_tolerance · ‖b‖∞ (= dx² max|∇·u| after the update).
+  double pressure_tolerance = 1e-10;
+  int pressure_max_iterations = 500;
+
+  TimeStepPolicy3 time_step_policy = TimeStepPolicy3::cfl_adaptive;
+  double cfl_safety_factor = 0.5;
+  double max_step_s = 0.01;
+  double fixed_step_s = 0.01;
+
+  std::array<double, 3> body_acceleration_m_per_s2{0.0, 0.0, 0.0};  ///< gravity: {0, 0, −9.81}
+
+  /// Threads that share a step, 1..16: bitwise the same results for any number.
+  int threads = 1;
+  /// A step whose velocity is not finite or exceeds this speed throws FluidBlowUpError3.
+  double blowup_speed_m_per_s = 100.0;
+
+  double cellSize_m() const { return domain_x_m / cells_x; }
+  /// Empty when usable; otherwise one sentence per problem, joined by "; ".
+  std::string validate() const;
+};
+
+std::string_view toString(BoundaryType3 type);
+std::string_view toString(AdvectionScheme3 scheme);
+std::string_view toString(PressureSolverType3 type);
+std::string_view toString(ViscosityScheme3 scheme);
+
+}  // namespace creaturelab::fluid3d

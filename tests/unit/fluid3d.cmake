@@ -1,0 +1,7 @@
+# tests for unit/fluid3d (label unit: fast, also run under ASan/UBSan)
+creaturelab_test(fluid3d_unit_tests unit
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/fluid3d_pressure_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/fluid3d_stages_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/fluid3d_threads_test.cpp
+  LIBS cl_fluid3d)
