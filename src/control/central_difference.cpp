@@ -9,13 +9,13 @@ std::vector<double> centralDifferences(fluid::WorkerPool* pool, int n, double d,
                                        const std::function<double(int, int, double)>& evaluate,
                                        const std::string& context) {
   std::vector<double> value(2 * n, 0.0);
-  std::vector<std::string> error(fluid::thread_piece_count(pool));
+  std::vector<std::string> error(fluid::threadPieceCount(pool));
   // One contiguous block of evaluations per thread (joint i's two on one thread when the threads
   // divide the joints), each in that thread's own copy of the state: as many copies as threads,
   // not kPartsPerThread times more (the 2-joint chain on 128^2, 2 threads: 25.5 MB resident against
   // 53.1). The evaluations cost about the same, so for_pieces' finer claimed pieces bought little
   // balance: the frame time did not change measurably (tests/bench/bench_control_fluid.cpp).
-  fluid::for_thread_pieces(pool, 0, 2 * n, 1, [&](int lo, int hi, int part) {
+  fluid::forThreadPieces(pool, 0, 2 * n, 1, [&](int lo, int hi, int part) {
     try {
       for (int t = lo; t < hi; ++t) value[t] = evaluate(part, t / 2, t % 2 == 0 ? d : (one_sided ? 0.0 : -d));
     } catch (const std::exception& e) {

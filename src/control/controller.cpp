@@ -33,7 +33,7 @@ Controller::Controller(const rigid::RigidModel& model, ControllerParams p, const
   direction_.assign(controlledDofs(), 0.0);
   derivative_.assign(controlledDofs(), 0.0);
   pool_ = std::make_unique<fluid::WorkerPool>(p_.threads);
-  for (int k = 0; k < fluid::thread_piece_count(pool_.get()); ++k) workers_.push_back(std::make_unique<Worker>(model));
+  for (int k = 0; k < fluid::threadPieceCount(pool_.get()); ++k) workers_.push_back(std::make_unique<Worker>(model));
   captureHolds(pres_, main_.qpos());
 }
 

@@ -112,7 +112,7 @@ FluidController::FluidController(const rigid::RigidModel& model, ControllerParam
   pool_ = std::make_unique<fluid::WorkerPool>(p_.threads);
   fluid::FluidParams evaluation_fluid = fluid;
   if (p_.threads > 1) evaluation_fluid.threads = 1;
-  for (int k = 0; k < fluid::thread_piece_count(pool_.get()); ++k)
+  for (int k = 0; k < fluid::threadPieceCount(pool_.get()); ++k)
     workers_.push_back(std::make_unique<World>(model, initial, evaluation_fluid, cp, armature));
   const int n = int(p_.controlled.size());
   direction_.assign(n, 0.0);

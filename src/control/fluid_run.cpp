@@ -58,7 +58,7 @@ void FluidRunRecorder::recordField(FluidController& controller) {
     markers_.data.insert(markers_.data.end(), {x.x + vorticity_.origin_x_m, x.y + vorticity_.origin_z_m});
   const auto& c = controller.coupling().fluid();
   fluid::Array2 w;
-  fluid::vorticity_at_centres(c.grid(), c.walls(), w);
+  fluid::vorticityAtCentres(c.grid(), c.walls(), w);
   vorticity_.time_s.push_back(controller.data().time_s());
   vorticity_.data.insert(vorticity_.data.end(), w.data(), w.data() + w.size());
 }

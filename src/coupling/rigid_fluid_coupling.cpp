@@ -87,12 +87,12 @@ void RigidFluidCoupling::locate(const std::vector<fluid::Vec2>& x) {
 }
 
 void RigidFluidCoupling::advanceFluid(double dt) {
-  const fluid::StepContext c{fluid_.steps_done(), time_s_, dt};
-  fluid_.force_density_n_per_m3().fill(0.0);  // the bodies force by velocity, in forceFluid
-  fluid_.apply_external_forces(c);
+  const fluid::StepContext c{fluid_.stepsDone(), time_s_, dt};
+  fluid_.forceDensity_n_per_m3().fill(0.0);  // the bodies force by velocity, in forceFluid
+  fluid_.applyExternalForces(c);
   applyInflow(fluid_.grid(), p_.inflow);
-  fluid_.advect_velocity(c);
-  fluid_.apply_viscosity(c);
+  fluid_.advectVelocity(c);
+  fluid_.applyViscosity(c);
   applyInflow(fluid_.grid(), p_.inflow);
 }
 
@@ -150,7 +150,7 @@ void RigidFluidCoupling::projectedForcing(double dt) {
   fluid::MacGrid2& g = fluid_.grid();
   const double dx = g.dx_m, rho = fluid_.params().density_kg_per_m3;
   const std::size_t n = markers_.size();
-  const fluid::StepContext c{fluid_.steps_done(), time_s_, dt};
+  const fluid::StepContext c{fluid_.stepsDone(), time_s_, dt};
   // Warm start: the last step's forces (a steady flow needs the same ones again), spread before
   // the first projection, which therefore costs nothing extra.
   force_.resize(n);
@@ -178,7 +178,7 @@ void RigidFluidCoupling::projectedForcing(double dt) {
     r[k] = {velocity_[k].x - r[k].x - d * force_[k].x, velocity_[k].y - r[k].y - d * force_[k].y};
     scale = std::max({scale, std::abs(velocity_[k].x), std::abs(velocity_[k].y)});
   }
-  for (double u : {fluid::max_abs(g.u_m_per_s), fluid::max_abs(g.v_m_per_s)}) scale = std::max(scale, u);
+  for (double u : {fluid::maxAbs(g.u_m_per_s), fluid::maxAbs(g.v_m_per_s)}) scale = std::max(scale, u);
   z_.resize(n);
   direction_.resize(n);
   applied_.resize(n);
@@ -283,8 +283,8 @@ void RigidFluidCoupling::sweeps(double dt) {
   sampled_.resize(n);
   sweep_.resize(n);
   const fluid::Walls& walls = fluid_.walls();
-  const fluid::FaceRange u_cols = fluid::unknown_u_columns(g, walls);
-  const fluid::FaceRange v_rows = fluid::unknown_v_rows(g, walls);
+  const fluid::FaceRange u_cols = fluid::unknownUColumns(g, walls);
+  const fluid::FaceRange v_rows = fluid::unknownVRows(g, walls);
   for (int it = 0; it < p_.forcing_iterations; ++it) {
     transfer_.interpolate(g, sampled_);
     for (std::size_t k = 0; k < n; ++k) {
@@ -328,7 +328,7 @@ void RigidFluidCoupling::sumReaction() {
 }
 
 fluid::LinearSolveReport RigidFluidCoupling::project(double dt) {
-  const fluid::StepContext c{fluid_.steps_done(), time_s_, dt};
+  const fluid::StepContext c{fluid_.stepsDone(), time_s_, dt};
   fluid::LinearSolveReport r{};
   if (p_.forcing == Forcing::sweeps) {
     r = fluid_.project(c);
@@ -343,9 +343,9 @@ fluid::LinearSolveReport RigidFluidCoupling::project(double dt) {
   }
   if (p_.forcing == Forcing::sweeps && p_.projection_rounds > 1) sumReaction();
   time_s_ += dt;
-  const double speed = std::max(fluid::max_abs(fluid_.grid().u_m_per_s), fluid::max_abs(fluid_.grid().v_m_per_s));
+  const double speed = std::max(fluid::maxAbs(fluid_.grid().u_m_per_s), fluid::maxAbs(fluid_.grid().v_m_per_s));
   if (!(speed <= fluid_.params().blowup_speed_m_per_s))
-    throw fluid::FluidBlowUpError(fluid_.steps_done(), time_s_, dt, speed, fluid_.params().blowup_speed_m_per_s,
+    throw fluid::FluidBlowUpError(fluid_.stepsDone(), time_s_, dt, speed, fluid_.params().blowup_speed_m_per_s,
                                   speed * dt / fluid_.grid().dx_m);
   return r;
 }

@@ -19,7 +19,7 @@ namespace {
 // the sampling loop no faster, the foot's sample there too slower), and splitting further (u and v
 // at the midpoint sampled in two passes, slower).
 template <FaceAxis kAxis>
-void trace_row(const SampleView& U, const SampleView& V, double c, int j, int i_begin, int i_end,
+void traceRow(const SampleView& U, const SampleView& V, double c, int j, int i_begin, int i_end,
                double* __restrict__ xs, double* __restrict__ ys) {
   const double half_c = 0.5 * c;
   // Padded rows holding the face's own component and the four surrounding other ones.
@@ -61,8 +61,8 @@ void trace_row(const SampleView& U, const SampleView& V, double c, int j, int i_
       const __m512d X8 = _mm512_add_pd(_mm512_set1_pd(x0), lane);  // exact: small whole numbers and halves
       const __m512d xm = _mm512_min_pd(_mm512_max_pd(_mm512_loadu_pd(xs + i), zero), x_max);
       const __m512d ym = _mm512_min_pd(_mm512_max_pd(_mm512_loadu_pd(ys + i), zero), y_max);
-      const __m512d u_mid = U.sample8_clamped_on<FaceAxis::x>(xm, ym);
-      const __m512d v_mid = V.sample8_clamped_on<FaceAxis::y>(xm, ym);
+      const __m512d u_mid = U.sample8ClampedOn<FaceAxis::x>(xm, ym);
+      const __m512d v_mid = V.sample8ClampedOn<FaceAxis::y>(xm, ym);
       _mm512_storeu_pd(xs + i, _mm512_sub_pd(X8, _mm512_mul_pd(c8, u_mid)));
       _mm512_storeu_pd(ys + i, _mm512_sub_pd(Y8, _mm512_mul_pd(c8, v_mid)));
     }
@@ -81,8 +81,8 @@ void trace_row(const SampleView& U, const SampleView& V, double c, int j, int i_
       const __m256d X4 = _mm256_set_pd(x0 + 3.0, x0 + 2.0, x0 + 1.0, x0);
       const __m256d xm = _mm256_min_pd(_mm256_max_pd(_mm256_loadu_pd(xs + i), zero), x_max);
       const __m256d ym = _mm256_min_pd(_mm256_max_pd(_mm256_loadu_pd(ys + i), zero), y_max);
-      const __m256d u_mid = U.sample4_clamped_on<FaceAxis::x>(xm, ym);
-      const __m256d v_mid = V.sample4_clamped_on<FaceAxis::y>(xm, ym);
+      const __m256d u_mid = U.sample4ClampedOn<FaceAxis::x>(xm, ym);
+      const __m256d v_mid = V.sample4ClampedOn<FaceAxis::y>(xm, ym);
       _mm256_storeu_pd(xs + i, _mm256_sub_pd(X4, _mm256_mul_pd(c4, u_mid)));
       _mm256_storeu_pd(ys + i, _mm256_sub_pd(Y4, _mm256_mul_pd(c4, v_mid)));
     }
@@ -101,8 +101,8 @@ void trace_row(const SampleView& U, const SampleView& V, double c, int j, int i_
     const __m128d X2 = _mm_set_pd(x0 + 1.0, x0);
     const __m128d xm = _mm_min_pd(_mm_max_pd(_mm_loadu_pd(xs + i), zero), x_max);  // maxpd: NaN → 0
     const __m128d ym = _mm_min_pd(_mm_max_pd(_mm_loadu_pd(ys + i), zero), y_max);
-    const __m128d u_mid = U.sample2_clamped_on<FaceAxis::x>(xm, ym);
-    const __m128d v_mid = V.sample2_clamped_on<FaceAxis::y>(xm, ym);
+    const __m128d u_mid = U.sample2ClampedOn<FaceAxis::x>(xm, ym);
+    const __m128d v_mid = V.sample2ClampedOn<FaceAxis::y>(xm, ym);
     _mm_storeu_pd(xs + i, _mm_sub_pd(X2, _mm_mul_pd(c2, u_mid)));  // foot of the trajectory
     _mm_storeu_pd(ys + i, _mm_sub_pd(Y2, _mm_mul_pd(c2, v_mid)));
   }
@@ -119,18 +119,18 @@ void trace_row(const SampleView& U, const SampleView& V, double c, int j, int i_
 // out[i] = q(xs[i], ys[i]) for i in [i_begin, i_end); with lo and hi, also the range of the
 // four values each sample interpolated.
 template <FaceAxis kAxis, bool kBounds>
-void sample_row(const SampleView& q, const double* __restrict__ xs, const double* __restrict__ ys, int i_begin,
+void sampleRow(const SampleView& q, const double* __restrict__ xs, const double* __restrict__ ys, int i_begin,
                 int i_end, double* __restrict__ out, double* __restrict__ lo, double* __restrict__ hi) {
   int k = i_begin;
 #if defined(__AVX512F__)
   for (; k + 8 <= i_end; k += 8) {
     if constexpr (kBounds) {
       __m512d lo8, hi8;
-      _mm512_storeu_pd(out + k, q.sample8_on<kAxis>(_mm512_loadu_pd(xs + k), _mm512_loadu_pd(ys + k), &lo8, &hi8));
+      _mm512_storeu_pd(out + k, q.sample8On<kAxis>(_mm512_loadu_pd(xs + k), _mm512_loadu_pd(ys + k), &lo8, &hi8));
       _mm512_storeu_pd(lo + k, lo8);
       _mm512_storeu_pd(hi + k, hi8);
     } else {
-      _mm512_storeu_pd(out + k, q.sample8_on<kAxis>(_mm512_loadu_pd(xs + k), _mm512_loadu_pd(ys + k)));
+      _mm512_storeu_pd(out + k, q.sample8On<kAxis>(_mm512_loadu_pd(xs + k), _mm512_loadu_pd(ys + k)));
     }
   }
 #endif
@@ -138,11 +138,11 @@ void sample_row(const SampleView& q, const double* __restrict__ xs, const double
   for (; k + 4 <= i_end; k += 4) {
     if constexpr (kBounds) {
       __m256d lo4, hi4;
-      _mm256_storeu_pd(out + k, q.sample4_on<kAxis>(_mm256_loadu_pd(xs + k), _mm256_loadu_pd(ys + k), &lo4, &hi4));
+      _mm256_storeu_pd(out + k, q.sample4On<kAxis>(_mm256_loadu_pd(xs + k), _mm256_loadu_pd(ys + k), &lo4, &hi4));
       _mm256_storeu_pd(lo + k, lo4);
       _mm256_storeu_pd(hi + k, hi4);
     } else {
-      _mm256_storeu_pd(out + k, q.sample4_on<kAxis>(_mm256_loadu_pd(xs + k), _mm256_loadu_pd(ys + k)));
+      _mm256_storeu_pd(out + k, q.sample4On<kAxis>(_mm256_loadu_pd(xs + k), _mm256_loadu_pd(ys + k)));
     }
   }
 #endif
@@ -150,11 +150,11 @@ void sample_row(const SampleView& q, const double* __restrict__ xs, const double
   for (; k + 2 <= i_end; k += 2) {
     if constexpr (kBounds) {
       __m128d lo2, hi2;
-      _mm_storeu_pd(out + k, q.sample2_on<kAxis>(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k), &lo2, &hi2));
+      _mm_storeu_pd(out + k, q.sample2On<kAxis>(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k), &lo2, &hi2));
       _mm_storeu_pd(lo + k, lo2);
       _mm_storeu_pd(hi + k, hi2);
     } else {
-      _mm_storeu_pd(out + k, q.sample2_on<kAxis>(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k)));
+      _mm_storeu_pd(out + k, q.sample2On<kAxis>(_mm_loadu_pd(xs + k), _mm_loadu_pd(ys + k)));
     }
   }
 #endif
@@ -170,23 +170,23 @@ void sample_row(const SampleView& q, const double* __restrict__ xs, const double
 // Semi-Lagrangian transport of the component `q` (on kAxis faces) along (U, V), rows
 // [j_begin, j_end) of the block: out(face) = q(x_face − trajectory).
 template <FaceAxis kAxis>
-void semi_lagrangian_rows(const SampleView& U, const SampleView& V, const SampleView& q, double c, FaceBlock b,
+void semiLagrangianRows(const SampleView& U, const SampleView& V, const SampleView& q, double c, FaceBlock b,
                           int j_begin, int j_end, Array2& out, double* xs, double* ys) {
   for (int j = j_begin; j < j_end; ++j) {
-    trace_row<kAxis>(U, V, c, j, b.i_begin, b.i_end, xs, ys);
-    sample_row<kAxis, false>(q, xs, ys, b.i_begin, b.i_end, out.row(j), nullptr, nullptr);
+    traceRow<kAxis>(U, V, c, j, b.i_begin, b.i_end, xs, ys);
+    sampleRow<kAxis, false>(q, xs, ys, b.i_begin, b.i_end, out.row(j), nullptr, nullptr);
   }
 }
 
 // MacCormack's forward step φ̂ = A(φ) on rows [j_begin, j_end), written into φ̂'s padded
 // storage, with the interpolation bounds.
 template <FaceAxis kAxis>
-void maccormack_forward_rows(const SampleView& U, const SampleView& V, const SampleView& q, double c, FaceBlock b,
+void maccormackForwardRows(const SampleView& U, const SampleView& V, const SampleView& q, double c, FaceBlock b,
                              int j_begin, int j_end, StaggeredComponent2& hat, Array2& lo, Array2& hi, double* xs,
                              double* ys) {
   for (int j = j_begin; j < j_end; ++j) {
-    trace_row<kAxis>(U, V, c, j, b.i_begin, b.i_end, xs, ys);
-    sample_row<kAxis, true>(q, xs, ys, b.i_begin, b.i_end, hat.interior_row(j), lo.row(j), hi.row(j));
+    traceRow<kAxis>(U, V, c, j, b.i_begin, b.i_end, xs, ys);
+    sampleRow<kAxis, true>(q, xs, ys, b.i_begin, b.i_end, hat.interiorRow(j), lo.row(j), hi.row(j));
   }
 }
 
@@ -194,14 +194,14 @@ void maccormack_forward_rows(const SampleView& U, const SampleView& V, const Sam
 // φ^{n+1} = clamp(φ̂ + ½ (φ − φ̃), lo, hi) (Selle et al. 2008), on rows [j_begin, j_end):
 // φ̃ of a row is used while it is in cache and never stored.
 template <FaceAxis kAxis>
-void maccormack_backward_rows(const SampleView& U, const SampleView& V, const StaggeredComponent2& hat,
+void maccormackBackwardRows(const SampleView& U, const SampleView& V, const StaggeredComponent2& hat,
                               const Array2& phi, const Array2& lo, const Array2& hi, double c, FaceBlock b,
                               int j_begin, int j_end, Array2& out, double* xs, double* ys, double* __restrict__ rev) {
   for (int j = j_begin; j < j_end; ++j) {
-    trace_row<kAxis>(U, V, -c, j, b.i_begin, b.i_end, xs, ys);
-    sample_row<kAxis, false>(hat.view(), xs, ys, b.i_begin, b.i_end, rev, nullptr, nullptr);
+    traceRow<kAxis>(U, V, -c, j, b.i_begin, b.i_end, xs, ys);
+    sampleRow<kAxis, false>(hat.view(), xs, ys, b.i_begin, b.i_end, rev, nullptr, nullptr);
     const double* __restrict__ p = phi.row(j);
-    const double* __restrict__ f = hat.interior_row(j);
+    const double* __restrict__ f = hat.interiorRow(j);
     const double* __restrict__ l = lo.row(j);
     const double* __restrict__ h = hi.row(j);
     double* __restrict__ o = out.row(j);
@@ -218,39 +218,39 @@ struct RowScratch {
   double* ys;
   double* extra;
 };
-RowScratch row_scratch(std::vector<double>& scratch, int part, int row) {
+RowScratch rowScratch(std::vector<double>& scratch, int part, int row) {
   double* base = scratch.data() + static_cast<std::size_t>(part) * 3 * static_cast<std::size_t>(row);
   return {base, base + row, base + 2 * row};
 }
 
 }  // namespace
 
-void SemiLagrangianAdvection2::advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out,
+void SemiLagrangianAdvection2::advectVelocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out,
                                                Array2& v_out) {
   u_out.resize(grid.nx + 1, grid.ny);
   v_out.resize(grid.nx, grid.ny + 1);
-  assign_velocity(workers_, grid, walls, u_, v_);
+  assignVelocity(workers_, grid, walls, u_, v_);
   const double c = dt_s / grid.dx_m;
-  const FaceBlock ub = face_block<FaceAxis::x>(grid, unknown_u_columns(grid, walls));
-  const FaceBlock vb = face_block<FaceAxis::y>(grid, unknown_v_rows(grid, walls));
+  const FaceBlock ub = faceBlock<FaceAxis::x>(grid, unknownUColumns(grid, walls));
+  const FaceBlock vb = faceBlock<FaceAxis::y>(grid, unknownVRows(grid, walls));
   const int row = grid.nx + 1;
-  scratch_.resize(3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(piece_count(workers_)));
+  scratch_.resize(3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(pieceCount(workers_)));
   const SampleView& U = u_.view();
   const SampleView& V = v_.view();
-  for_row_pieces(
+  forRowPieces(
       workers_, ub, vb,
       [&](int j0, int j1, int part) {
-        const RowScratch s = row_scratch(scratch_, part, row);
-        semi_lagrangian_rows<FaceAxis::x>(U, V, U, c, ub, j0, j1, u_out, s.xs, s.ys);
+        const RowScratch s = rowScratch(scratch_, part, row);
+        semiLagrangianRows<FaceAxis::x>(U, V, U, c, ub, j0, j1, u_out, s.xs, s.ys);
       },
       [&](int j0, int j1, int part) {
-        const RowScratch s = row_scratch(scratch_, part, row);
-        semi_lagrangian_rows<FaceAxis::y>(U, V, V, c, vb, j0, j1, v_out, s.xs, s.ys);
+        const RowScratch s = rowScratch(scratch_, part, row);
+        semiLagrangianRows<FaceAxis::y>(U, V, V, c, vb, j0, j1, v_out, s.xs, s.ys);
       });
-  set_solid_normal_faces(walls, u_out, v_out);
+  setSolidNormalFaces(walls, u_out, v_out);
 }
 
-void MacCormackAdvection2::advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out,
+void MacCormackAdvection2::advectVelocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out,
                                            Array2& v_out) {
   const int nx = grid.nx;
   const int ny = grid.ny;
@@ -258,49 +258,49 @@ void MacCormackAdvection2::advect_velocity(const MacGrid2& grid, const Walls& wa
   v_out.resize(nx, ny + 1);
   for (Array2* a : {&u_lo_, &u_hi_}) a->resize(nx + 1, ny);
   for (Array2* a : {&v_lo_, &v_hi_}) a->resize(nx, ny + 1);
-  assign_velocity(workers_, grid, walls, u_, v_);
+  assignVelocity(workers_, grid, walls, u_, v_);
   u_hat_.prepare(FaceAxis::x, nx, ny);
   v_hat_.prepare(FaceAxis::y, nx, ny);
   const double c = dt_s / grid.dx_m;
-  const FaceBlock ub = face_block<FaceAxis::x>(grid, unknown_u_columns(grid, walls));
-  const FaceBlock vb = face_block<FaceAxis::y>(grid, unknown_v_rows(grid, walls));
+  const FaceBlock ub = faceBlock<FaceAxis::x>(grid, unknownUColumns(grid, walls));
+  const FaceBlock vb = faceBlock<FaceAxis::y>(grid, unknownVRows(grid, walls));
   const int row = nx + 1;
-  scratch_.resize(3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(piece_count(workers_)));
+  scratch_.resize(3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(pieceCount(workers_)));
   const SampleView& U = u_.view();
   const SampleView& V = v_.view();
 
   // Forward semi-Lagrangian step φ̂ = A(φ), remembering the interpolation bounds; solid walls'
   // normal faces zero and ghosts filled as for the velocity.
-  for_row_pieces(
+  forRowPieces(
       workers_, ub, vb,
       [&](int j0, int j1, int part) {
-        const RowScratch s = row_scratch(scratch_, part, row);
-        maccormack_forward_rows<FaceAxis::x>(U, V, U, c, ub, j0, j1, u_hat_, u_lo_, u_hi_, s.xs, s.ys);
+        const RowScratch s = rowScratch(scratch_, part, row);
+        maccormackForwardRows<FaceAxis::x>(U, V, U, c, ub, j0, j1, u_hat_, u_lo_, u_hi_, s.xs, s.ys);
       },
       [&](int j0, int j1, int part) {
-        const RowScratch s = row_scratch(scratch_, part, row);
-        maccormack_forward_rows<FaceAxis::y>(U, V, V, c, vb, j0, j1, v_hat_, v_lo_, v_hi_, s.xs, s.ys);
+        const RowScratch s = rowScratch(scratch_, part, row);
+        maccormackForwardRows<FaceAxis::y>(U, V, V, c, vb, j0, j1, v_hat_, v_lo_, v_hi_, s.xs, s.ys);
       });
   u_hat_.finish(walls);
   v_hat_.finish(walls);
 
   // Backward step φ̃ = A_reversed(φ̂) along the same velocity u^n, and the clamped correction.
-  for_row_pieces(
+  forRowPieces(
       workers_, ub, vb,
       [&](int j0, int j1, int part) {
-        const RowScratch s = row_scratch(scratch_, part, row);
-        maccormack_backward_rows<FaceAxis::x>(U, V, u_hat_, grid.u_m_per_s, u_lo_, u_hi_, c, ub, j0, j1, u_out, s.xs,
+        const RowScratch s = rowScratch(scratch_, part, row);
+        maccormackBackwardRows<FaceAxis::x>(U, V, u_hat_, grid.u_m_per_s, u_lo_, u_hi_, c, ub, j0, j1, u_out, s.xs,
                                               s.ys, s.extra);
       },
       [&](int j0, int j1, int part) {
-        const RowScratch s = row_scratch(scratch_, part, row);
-        maccormack_backward_rows<FaceAxis::y>(U, V, v_hat_, grid.v_m_per_s, v_lo_, v_hi_, c, vb, j0, j1, v_out, s.xs,
+        const RowScratch s = rowScratch(scratch_, part, row);
+        maccormackBackwardRows<FaceAxis::y>(U, V, v_hat_, grid.v_m_per_s, v_lo_, v_hi_, c, vb, j0, j1, v_out, s.xs,
                                               s.ys, s.extra);
       });
-  set_solid_normal_faces(walls, u_out, v_out);
+  setSolidNormalFaces(walls, u_out, v_out);
 }
 
-std::unique_ptr<AdvectionSolver2> make_advection_solver(AdvectionScheme scheme) {
+std::unique_ptr<AdvectionSolver2> makeAdvectionSolver(AdvectionScheme scheme) {
   switch (scheme) {
     case AdvectionScheme::semi_lagrangian:
       return std::make_unique<SemiLagrangianAdvection2>();

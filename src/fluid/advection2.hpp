@@ -19,11 +19,11 @@ class AdvectionSolver2 {
   virtual ~AdvectionSolver2() = default;
   /// Transports the grid's velocity along itself for dt_s. Writes u_out ((nx+1) × ny) and
   /// v_out (nx × (ny+1)); normal velocity on solid walls is zero. The grid is not modified.
-  virtual void advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out, Array2& v_out) = 0;
+  virtual void advectVelocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out, Array2& v_out) = 0;
   /// Largest CFL number (max velocity component · dt / dx) the scheme is stable at.
-  virtual double max_stable_cfl() const { return std::numeric_limits<double>::infinity(); }
+  virtual double maxStableCfl() const { return std::numeric_limits<double>::infinity(); }
   /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
-  void set_workers(WorkerPool* workers) { workers_ = workers; }
+  void setWorkers(WorkerPool* workers) { workers_ = workers; }
 
  protected:
   WorkerPool* workers_ = nullptr;
@@ -36,7 +36,7 @@ class AdvectionSolver2 {
 /// numerical viscosity of order |u| dx (measured in tests/physics/fluid_taylor_green_test.cpp).
 class SemiLagrangianAdvection2 final : public AdvectionSolver2 {
  public:
-  void advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out, Array2& v_out) override;
+  void advectVelocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out, Array2& v_out) override;
 
  private:
   StaggeredComponent2 u_;
@@ -53,7 +53,7 @@ class SemiLagrangianAdvection2 final : public AdvectionSolver2 {
 /// 2005) needs three semi-Lagrangian passes instead of two for the same order.
 class MacCormackAdvection2 final : public AdvectionSolver2 {
  public:
-  void advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out, Array2& v_out) override;
+  void advectVelocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out, Array2& v_out) override;
 
  private:
   StaggeredComponent2 u_, v_;          // the advecting velocity u^n
@@ -62,6 +62,6 @@ class MacCormackAdvection2 final : public AdvectionSolver2 {
   std::vector<double> scratch_;
 };
 
-std::unique_ptr<AdvectionSolver2> make_advection_solver(AdvectionScheme scheme);
+std::unique_ptr<AdvectionSolver2> makeAdvectionSolver(AdvectionScheme scheme);
 
 }  // namespace creaturelab::fluid

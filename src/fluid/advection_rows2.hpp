@@ -16,18 +16,18 @@ struct FaceBlock {
   int i_begin = 0, i_end = 0, j_begin = 0, j_end = 0;
 };
 template <FaceAxis kAxis>
-FaceBlock face_block(const MacGrid2& grid, FaceRange unknown) {
+FaceBlock faceBlock(const MacGrid2& grid, FaceRange unknown) {
   if constexpr (kAxis == FaceAxis::x) return {unknown.begin, unknown.end, 0, grid.ny};
   return {0, grid.nx, unknown.begin, unknown.end};
 }
 
 // The rows of the u block and those of the v block, each cut into the pool's pieces: piece p calls
 // u_rows(rows, p) on its share of the u rows and v_rows(rows, p) on its share of the v rows. The
-// cut is the one for_pieces() makes of each block alone (viscosity, forces), so that a thread
+// cut is the one forPieces() makes of each block alone (viscosity, forces), so that a thread
 // owning piece p finds those rows in its cache in the next stage (worker_pool.hpp).
 template <class UBody, class VBody>
-void for_row_pieces(WorkerPool* workers, const FaceBlock& ub, const FaceBlock& vb, UBody&& u_rows, VBody&& v_rows) {
-  const int parts = piece_count(workers);
+void forRowPieces(WorkerPool* workers, const FaceBlock& ub, const FaceBlock& vb, UBody&& u_rows, VBody&& v_rows) {
+  const int parts = pieceCount(workers);
   auto piece_rows = [&](int part) {
     const auto [u0, u1] = WorkerPool::piece(ub.j_begin, ub.j_end, part, parts);
     const auto [v0, v1] = WorkerPool::piece(vb.j_begin, vb.j_end, part, parts);
@@ -42,18 +42,18 @@ void for_row_pieces(WorkerPool* workers, const FaceBlock& ub, const FaceBlock& v
 }
 
 // u.assign() and v.assign() of the grid's velocity, the copies shared among threads by
-// for_row_pieces (the rows each thread then reads first).
-inline void assign_velocity(WorkerPool* workers, const MacGrid2& grid, const Walls& walls, StaggeredComponent2& u,
+// forRowPieces (the rows each thread then reads first).
+inline void assignVelocity(WorkerPool* workers, const MacGrid2& grid, const Walls& walls, StaggeredComponent2& u,
                             StaggeredComponent2& v) {
   u.prepare(FaceAxis::x, grid.nx, grid.ny);
   v.prepare(FaceAxis::y, grid.nx, grid.ny);
   const FaceBlock u_rows{0, grid.nx + 1, 0, grid.ny};
   const FaceBlock v_rows{0, grid.nx, 0, grid.ny + 1};
-  for_row_pieces(
-      workers, u_rows, v_rows, [&](int j0, int j1, int) { u.copy_rows(grid.u_m_per_s, j0, j1); },
-      [&](int j0, int j1, int) { v.copy_rows(grid.v_m_per_s, j0, j1); });
-  u.fill_ghosts(walls);
-  v.fill_ghosts(walls);
+  forRowPieces(
+      workers, u_rows, v_rows, [&](int j0, int j1, int) { u.copyRows(grid.u_m_per_s, j0, j1); },
+      [&](int j0, int j1, int) { v.copyRows(grid.v_m_per_s, j0, j1); });
+  u.fillGhosts(walls);
+  v.fillGhosts(walls);
 }
 
 }  // namespace creaturelab::fluid

@@ -201,7 +201,7 @@ struct MaxAbsAccumulator {
 #endif
 
 /// The accumulator of |p[k]|, k < n (to merge partial results).
-inline MaxAbsAccumulator partial_max_abs(const double* p, std::size_t n) {
+inline MaxAbsAccumulator partialMaxAbs(const double* p, std::size_t n) {
   MaxAbsAccumulator acc;
   std::size_t k = 0;
   for (; k + 4 <= n; k += 4) acc.add4(p + k);
@@ -210,10 +210,10 @@ inline MaxAbsAccumulator partial_max_abs(const double* p, std::size_t n) {
 }
 
 /// max |p[k]| (0 when n = 0); NaN if a value is NaN (unless an infinity is also present).
-inline double max_abs(const double* p, std::size_t n) { return partial_max_abs(p, n).result(); }
+inline double maxAbs(const double* p, std::size_t n) { return partialMaxAbs(p, n).result(); }
 
 /// max |a[k] − b[k]|, with the NaN rule of max_abs.
-inline double max_abs_difference(const double* a, const double* b, std::size_t n) {
+inline double maxAbsDifference(const double* a, const double* b, std::size_t n) {
   MaxAbsAccumulator acc;
   std::size_t k = 0;
 #if defined(__SSE2__)
@@ -228,11 +228,11 @@ inline double max_abs_difference(const double* a, const double* b, std::size_t n
   return acc.result();
 }
 
-inline double max_abs(const Array2& a) { return max_abs(a.data(), a.size()); }
+inline double maxAbs(const Array2& a) { return maxAbs(a.data(), a.size()); }
 inline double dot(const Array2& a, const Array2& b) { return dot(a.data(), b.data(), a.size()); }
 
 /// Subtracts the mean value.
-inline void remove_mean(Array2& a) {
+inline void removeMean(Array2& a) {
   double* p = a.data();
   const std::size_t n = a.size();
   const double mean = sum(p, n) / static_cast<double>(n);

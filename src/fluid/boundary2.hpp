@@ -19,10 +19,10 @@
 
 namespace creaturelab::fluid {
 
-inline bool is_solid(const Wall& wall) { return wall.type != WallType::open; }
+inline bool isSolid(const Wall& wall) { return wall.type != WallType::open; }
 
 /// Ghost value of a tangential velocity component half a cell outside `wall`.
-inline double tangential_ghost(const Wall& wall, double interior) {
+inline double tangentialGhost(const Wall& wall, double interior) {
   switch (wall.type) {
     case WallType::free_slip:
     case WallType::open:
@@ -39,7 +39,7 @@ inline double tangential_ghost(const Wall& wall, double interior) {
 /// The velocity component normal to a solid wall on its faces, along +x (left and right walls) or
 /// +y (bottom and top): zero, or an inflow wall's speed pointed into the domain. `high_wall` is
 /// true for the right and top walls.
-inline double solid_wall_normal_velocity(const Wall& wall, bool high_wall) {
+inline double solidWallNormalVelocity(const Wall& wall, bool high_wall) {
   if (wall.type != WallType::inflow) return 0.0;
   return high_wall ? -wall.inflow_m_per_s : wall.inflow_m_per_s;
 }
@@ -50,23 +50,23 @@ struct FaceRange {
   int begin = 0;
   int end = 0;
 };
-inline FaceRange unknown_faces(const Wall& low_wall, const Wall& high_wall, int cells) {
-  return {is_solid(low_wall) ? 1 : 0, is_solid(high_wall) ? cells : cells + 1};
+inline FaceRange unknownFaces(const Wall& low_wall, const Wall& high_wall, int cells) {
+  return {isSolid(low_wall) ? 1 : 0, isSolid(high_wall) ? cells : cells + 1};
 }
-inline FaceRange unknown_u_columns(const MacGrid2& grid, const Walls& walls) {
-  return unknown_faces(walls.left, walls.right, grid.nx);
+inline FaceRange unknownUColumns(const MacGrid2& grid, const Walls& walls) {
+  return unknownFaces(walls.left, walls.right, grid.nx);
 }
-inline FaceRange unknown_v_rows(const MacGrid2& grid, const Walls& walls) {
-  return unknown_faces(walls.bottom, walls.top, grid.ny);
+inline FaceRange unknownVRows(const MacGrid2& grid, const Walls& walls) {
+  return unknownFaces(walls.bottom, walls.top, grid.ny);
 }
 
 /// Sets the normal velocity on solid walls' faces of u ((nx + 1) × ny) and v (nx × (ny + 1)):
 /// zero (u·n = 0), or an inflow wall's speed.
-void set_solid_normal_faces(const Walls& walls, Array2& u, Array2& v);
+void setSolidNormalFaces(const Walls& walls, Array2& u, Array2& v);
 
 /// The same on the grid's velocity.
-inline void enforce_wall_normal_velocity(MacGrid2& grid, const Walls& walls) {
-  set_solid_normal_faces(walls, grid.u_m_per_s, grid.v_m_per_s);
+inline void enforceWallNormalVelocity(MacGrid2& grid, const Walls& walls) {
+  setSolidNormalFaces(walls, grid.u_m_per_s, grid.v_m_per_s);
 }
 
 }  // namespace creaturelab::fluid

@@ -12,7 +12,7 @@ namespace creaturelab::fluid {
 namespace {
 
 // acc.add over i < nx of the flux sums (u[i+1] − u[i]) + (v_n[i] − v_s[i]) of one row of cells.
-void add_flux_row(MaxAbsAccumulator& acc, const double* u, const double* v_s, const double* v_n, int nx) {
+void addFluxRow(MaxAbsAccumulator& acc, const double* u, const double* v_s, const double* v_n, int nx) {
   auto flux = [&](int i) { return (u[i + 1] - u[i]) + (v_n[i] - v_s[i]); };
   int i = 0;
 #if defined(__SSE2__)
@@ -29,22 +29,22 @@ void add_flux_row(MaxAbsAccumulator& acc, const double* u, const double* v_s, co
 
 }  // namespace
 
-double max_divergence_per_s(const MacGrid2& grid) { return max_abs_flux_sum_m_per_s(grid) / grid.dx_m; }
+double maxDivergence_per_s(const MacGrid2& grid) { return maxAbsFluxSum_m_per_s(grid) / grid.dx_m; }
 
-double max_abs_flux_sum_m_per_s(const MacGrid2& grid, WorkerPool* workers) {
+double maxAbsFluxSum_m_per_s(const MacGrid2& grid, WorkerPool* workers) {
   // A maximum does not depend on the order in which the values meet: one accumulator per piece.
   std::array<MaxAbsAccumulator, kMaxParts> acc{};
-  for_pieces(workers, 0, grid.ny, [&](int j0, int j1, int part) {
+  forPieces(workers, 0, grid.ny, [&](int j0, int j1, int part) {
     for (int j = j0; j < j1; ++j) {
-      add_flux_row(acc[part], grid.u_m_per_s.row(j), grid.v_m_per_s.row(j), grid.v_m_per_s.row(j + 1), grid.nx);
+      addFluxRow(acc[part], grid.u_m_per_s.row(j), grid.v_m_per_s.row(j), grid.v_m_per_s.row(j + 1), grid.nx);
     }
   });
-  for (int part = 1; part < piece_count(workers); ++part) acc[0].merge(acc[part]);
+  for (int part = 1; part < pieceCount(workers); ++part) acc[0].merge(acc[part]);
   const double m = acc[0].result();
   return m == m ? m : std::numeric_limits<double>::infinity();
 }
 
-double kinetic_energy_joule_per_m(const MacGrid2& grid, double density_kg_per_m3) {
+double kineticEnergy_joule_per_m(const MacGrid2& grid, double density_kg_per_m3) {
   // Trapezoidal weights: ½ on the faces lying on walls.
   double sum_u = 0.0;
   for (int j = 0; j < grid.ny; ++j) {
@@ -60,31 +60,31 @@ double kinetic_energy_joule_per_m(const MacGrid2& grid, double density_kg_per_m3
   return 0.5 * density_kg_per_m3 * grid.dx_m * grid.dx_m * (sum_u + sum_v);
 }
 
-double max_velocity_component_m_per_s(const MacGrid2& grid, WorkerPool* workers) {
+double maxVelocityComponent_m_per_s(const MacGrid2& grid, WorkerPool* workers) {
   std::array<MaxAbsAccumulator, kMaxParts> u{}, v{};
-  for_pieces(workers, 0, grid.ny + 1, [&](int j0, int j1, int part) {
+  forPieces(workers, 0, grid.ny + 1, [&](int j0, int j1, int part) {
     if (j1 > grid.ny) {  // u has ny rows, v ny + 1
       j1 = grid.ny;
-      v[part].merge(partial_max_abs(grid.v_m_per_s.row(grid.ny), static_cast<std::size_t>(grid.nx)));
+      v[part].merge(partialMaxAbs(grid.v_m_per_s.row(grid.ny), static_cast<std::size_t>(grid.nx)));
     }
     for (int j = j0; j < j1; ++j) {
-      u[part].merge(partial_max_abs(grid.u_m_per_s.row(j), static_cast<std::size_t>(grid.nx) + 1));
-      v[part].merge(partial_max_abs(grid.v_m_per_s.row(j), static_cast<std::size_t>(grid.nx)));
+      u[part].merge(partialMaxAbs(grid.u_m_per_s.row(j), static_cast<std::size_t>(grid.nx) + 1));
+      v[part].merge(partialMaxAbs(grid.v_m_per_s.row(j), static_cast<std::size_t>(grid.nx)));
     }
   });
-  for (int part = 1; part < piece_count(workers); ++part) u[0].merge(u[part]), v[0].merge(v[part]);
+  for (int part = 1; part < pieceCount(workers); ++part) u[0].merge(u[part]), v[0].merge(v[part]);
   const double mu = u[0].result();
   const double mv = v[0].result();
   const double big = std::numeric_limits<double>::max();
   return (mu <= big && mv <= big) ? std::max(mu, mv) : std::numeric_limits<double>::infinity();
 }
 
-FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3, WorkerPool* workers) {
+FlowSummary summarizeFlow(const MacGrid2& grid, double density_kg_per_m3, WorkerPool* workers) {
   std::vector<double> row_energies;
-  return summarize_flow(grid, density_kg_per_m3, workers, row_energies);
+  return summarizeFlow(grid, density_kg_per_m3, workers, row_energies);
 }
 
-FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3, WorkerPool* workers,
+FlowSummary summarizeFlow(const MacGrid2& grid, double density_kg_per_m3, WorkerPool* workers,
                            std::vector<double>& row_energies) {
   const int nx = grid.nx;
   const int ny = grid.ny;
@@ -99,7 +99,7 @@ FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3, Worke
   row_energies.resize(2 * static_cast<std::size_t>(ny) + 1);
   double* e_u = row_energies.data();  // e_u[j]: row j of u
   double* e_v = e_u + ny;             // e_v[j]: row j of v, j = 0..ny
-  for_pieces(workers, 0, ny, [&](int j0, int j1, int part) {
+  forPieces(workers, 0, ny, [&](int j0, int j1, int part) {
     if (j0 == 0) {
       const double* v = grid.v_m_per_s.row(0);
       add_row(speed[part], v, nx);
@@ -113,10 +113,10 @@ FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3, Worke
       add_row(speed[part], v_n, nx);
       e_u[j] = dot(u, u, nx + 1) - 0.5 * (u[0] * u[0] + u[nx] * u[nx]);
       e_v[j + 1] = (j + 1 == ny ? 0.5 : 1.0) * dot(v_n, v_n, nx);
-      add_flux_row(flux[part], u, v_s, v_n, nx);
+      addFluxRow(flux[part], u, v_s, v_n, nx);
     }
   });
-  for (int part = 1; part < piece_count(workers); ++part) speed[0].merge(speed[part]), flux[0].merge(flux[part]);
+  for (int part = 1; part < pieceCount(workers); ++part) speed[0].merge(speed[part]), flux[0].merge(flux[part]);
   double sum_u = 0.0, sum_v = e_v[0];
   for (int j = 0; j < ny; ++j) {
     sum_u += e_u[j];
@@ -133,9 +133,9 @@ FlowSummary summarize_flow(const MacGrid2& grid, double density_kg_per_m3, Worke
   return summary;
 }
 
-double cfl_number(const MacGrid2& grid, double dt_s) { return max_velocity_component_m_per_s(grid) * dt_s / grid.dx_m; }
+double cflNumber(const MacGrid2& grid, double dt_s) { return maxVelocityComponent_m_per_s(grid) * dt_s / grid.dx_m; }
 
-void vorticity_at_corners(const MacGrid2& grid, const Walls& walls, Array2& omega_per_s) {
+void vorticityAtCorners(const MacGrid2& grid, const Walls& walls, Array2& omega_per_s) {
   const int nx = grid.nx;
   const int ny = grid.ny;
   const Array2& u = grid.u_m_per_s;
@@ -144,18 +144,18 @@ void vorticity_at_corners(const MacGrid2& grid, const Walls& walls, Array2& omeg
   omega_per_s.resize(nx + 1, ny + 1);
   for (int j = 0; j <= ny; ++j) {
     for (int i = 0; i <= nx; ++i) {
-      const double v_right = i < nx ? v(i, j) : tangential_ghost(walls.right, v(nx - 1, j));
-      const double v_left = i > 0 ? v(i - 1, j) : tangential_ghost(walls.left, v(0, j));
-      const double u_above = j < ny ? u(i, j) : tangential_ghost(walls.top, u(i, ny - 1));
-      const double u_below = j > 0 ? u(i, j - 1) : tangential_ghost(walls.bottom, u(i, 0));
+      const double v_right = i < nx ? v(i, j) : tangentialGhost(walls.right, v(nx - 1, j));
+      const double v_left = i > 0 ? v(i - 1, j) : tangentialGhost(walls.left, v(0, j));
+      const double u_above = j < ny ? u(i, j) : tangentialGhost(walls.top, u(i, ny - 1));
+      const double u_below = j > 0 ? u(i, j - 1) : tangentialGhost(walls.bottom, u(i, 0));
       omega_per_s(i, j) = ((v_right - v_left) - (u_above - u_below)) * inv_dx;
     }
   }
 }
 
-void vorticity_at_centres(const MacGrid2& grid, const Walls& walls, Array2& omega_per_s) {
+void vorticityAtCentres(const MacGrid2& grid, const Walls& walls, Array2& omega_per_s) {
   Array2 corners;
-  vorticity_at_corners(grid, walls, corners);
+  vorticityAtCorners(grid, walls, corners);
   omega_per_s.resize(grid.nx, grid.ny);
   for (int j = 0; j < grid.ny; ++j) {
     for (int i = 0; i < grid.nx; ++i) {
@@ -164,7 +164,7 @@ void vorticity_at_centres(const MacGrid2& grid, const Walls& walls, Array2& omeg
   }
 }
 
-void velocity_at_centres(const MacGrid2& grid, Array2& u_m_per_s, Array2& v_m_per_s) {
+void velocityAtCentres(const MacGrid2& grid, Array2& u_m_per_s, Array2& v_m_per_s) {
   u_m_per_s.resize(grid.nx, grid.ny);
   v_m_per_s.resize(grid.nx, grid.ny);
   for (int j = 0; j < grid.ny; ++j) {

@@ -22,7 +22,7 @@ struct SweepWeights {
 // The new value of one face from its value c, Jacobi value jac and the output's old value;
 // returns its residual r = jac − c (a Richardson sweep's change x_new − x).
 template <SweepRule kRule>
-inline double sweep_face(double c, double jac, double& out, SweepWeights w) {
+inline double sweepFace(double c, double jac, double& out, SweepWeights w) {
   const double r = jac - c;
   if constexpr (kRule == SweepRule::richardson) {
     out = jac;
@@ -35,7 +35,7 @@ inline double sweep_face(double c, double jac, double& out, SweepWeights w) {
 }
 #if defined(__AVX2__)
 template <SweepRule kRule>
-inline __m256d sweep_face4(__m256d c, __m256d jac, double* out, SweepWeights w) {
+inline __m256d sweepFace4(__m256d c, __m256d jac, double* out, SweepWeights w) {
   const __m256d r = _mm256_sub_pd(jac, c);
   if constexpr (kRule == SweepRule::richardson) {
     _mm256_storeu_pd(out, jac);
@@ -51,7 +51,7 @@ inline __m256d sweep_face4(__m256d c, __m256d jac, double* out, SweepWeights w) 
 #endif
 #if defined(__SSE2__)
 template <SweepRule kRule>
-inline __m128d sweep_face2(__m128d c, __m128d jac, double* out, SweepWeights w) {
+inline __m128d sweepFace2(__m128d c, __m128d jac, double* out, SweepWeights w) {
   const __m128d r = _mm_sub_pd(jac, c);
   if constexpr (kRule == SweepRule::richardson) {
     _mm_storeu_pd(out, jac);
@@ -71,7 +71,7 @@ inline __m128d sweep_face2(__m128d c, __m128d jac, double* out, SweepWeights w) 
 // by at least 10 α; Chebyshev's weights make the sweeps of a solve the optimal polynomial on
 // the matrix's spectrum (ImplicitDiffusion2::chebyshev).
 template <SweepRule kRule>
-double sweep_rows(int ib, int ie, int jb, int je, const Array2& count, double alpha, const Array2& b,
+double sweepRows(int ib, int ie, int jb, int je, const Array2& count, double alpha, const Array2& b,
                   const Array2& x, Array2& x_new, SweepWeights w = {}) {
   const int nx = x.nx();
   const int ny = x.ny();
@@ -100,7 +100,7 @@ double sweep_rows(int ib, int ie, int jb, int je, const Array2& count, double al
                                           _mm256_add_pd(_mm256_loadu_pd(s + i), _mm256_loadu_pd(n + i)));
         const __m256d jac = _mm256_add_pd(_mm256_loadu_pd(br + i),
                                           _mm256_mul_pd(alpha4, _mm256_sub_pd(sum, _mm256_mul_pd(four4, ci))));
-        const __m256d r = sweep_face4<kRule>(ci, jac, out + i, w);
+        const __m256d r = sweepFace4<kRule>(ci, jac, out + i, w);
         row_max.add2x2(_mm256_castpd256_pd128(r), _mm256_extractf128_pd(r, 1));
       }
 #endif
@@ -111,18 +111,18 @@ double sweep_rows(int ib, int ie, int jb, int je, const Array2& count, double al
         const __m128d sum = _mm_add_pd(_mm_add_pd(_mm_loadu_pd(c + i - 1), _mm_loadu_pd(c + i + 1)),
                                        _mm_add_pd(_mm_loadu_pd(s + i), _mm_loadu_pd(n + i)));
         const __m128d jac = _mm_add_pd(_mm_loadu_pd(br + i), _mm_mul_pd(alpha2, _mm_sub_pd(sum, _mm_mul_pd(four, ci))));
-        row_max.add2(sweep_face2<kRule>(ci, jac, out + i, w));
+        row_max.add2(sweepFace2<kRule>(ci, jac, out + i, w));
       }
 #endif
       for (; i < hi; ++i) {
         const double jac = br[i] + alpha * (((c[i - 1] + c[i + 1]) + (s[i] + n[i])) - 4.0 * c[i]);  // d = 4 here
-        row_max.add(sweep_face<kRule>(c[i], jac, out[i], w));
+        row_max.add(sweepFace<kRule>(c[i], jac, out[i], w));
       }
     } else {
       for (; i < hi; ++i) {
         const double vertical = (s != nullptr ? s[i] : 0.0) + (n != nullptr ? n[i] : 0.0);
         const double jac = br[i] + alpha * (((c[i - 1] + c[i + 1]) + vertical) - d[i] * c[i]);
-        row_max.add(sweep_face<kRule>(c[i], jac, out[i], w));
+        row_max.add(sweepFace<kRule>(c[i], jac, out[i], w));
       }
     }
     for (int e : {ib, ie - 1}) {
@@ -132,7 +132,7 @@ double sweep_rows(int ib, int ie, int jb, int je, const Array2& count, double al
       if (e < nx - 1) sum += c[e + 1];
       if (s != nullptr) sum += s[e];
       if (n != nullptr) sum += n[e];
-      row_max.add(sweep_face<kRule>(c[e], br[e] + alpha * (sum - d[e] * c[e]), out[e], w));
+      row_max.add(sweepFace<kRule>(c[e], br[e] + alpha * (sum - d[e] * c[e]), out[e], w));
     }
     const double row_change = row_max.result();
     change = row_change > change || row_change != row_change ? row_change : change;  // NaN sticks
@@ -188,7 +188,7 @@ double update(std::size_t k0, std::size_t k1, double a, double* __restrict__ x, 
 }
 
 // Σ_j row_values[j] for j in [0, rows), in row order.
-double sum_rows(const std::vector<double>& row_values) {
+double sumRows(const std::vector<double>& row_values) {
   double total = 0.0;
   for (double value : row_values) total += value;
   return total;
@@ -196,30 +196,30 @@ double sum_rows(const std::vector<double>& row_values) {
 
 // Per-thread maxima combined by the rule of sweep_rows's row loop (NaN sticks): the
 // serial result, whatever the pieces.
-double max_of_parts(const double* parts, int count) {
+double maxOfParts(const double* parts, int count) {
   double m = parts[0];
   for (int k = 1; k < count; ++k) m = parts[k] > m || parts[k] != parts[k] ? parts[k] : m;
   return m;
 }
 
 // The walls with every inflow speed set to zero (their faces then read u·n = 0).
-Walls without_inflow_speeds(Walls walls) {
+Walls withoutInflowSpeeds(Walls walls) {
   for (Wall* wall : {&walls.left, &walls.right, &walls.bottom, &walls.top}) wall->inflow_m_per_s = 0.0;
   return walls;
 }
 
 }  // namespace
 
-void DiffusionSolver2::explicit_half(FaceAxis axis, Array2& x, const Walls& walls, double beta) {
+void DiffusionSolver2::explicitHalf(FaceAxis axis, Array2& x, const Walls& walls, double beta) {
   DiffusionBlock2& block = axis == FaceAxis::x ? explicit_u_ : explicit_v_;
   block.prepare(axis, x.nx(), x.ny(), walls);
   explicit_ax_.resize(x.nx(), x.ny());
   explicit_dots_.resize(static_cast<std::size_t>(x.ny()));
   // A x reads the neighbouring rows of x, so all of it is formed before x is overwritten.
-  for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int) {
-    apply_diffusion_rows(block, j0, j1, beta, x, explicit_ax_, explicit_dots_.data());
+  forPieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int) {
+    applyDiffusionRows(block, j0, j1, beta, x, explicit_ax_, explicit_dots_.data());
   });
-  for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int) {
+  forPieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int) {
     for (int j = j0; j < j1; ++j) {
       double* __restrict__ xr = x.row(j);
       const double* __restrict__ ax = explicit_ax_.row(j);
@@ -229,7 +229,7 @@ void DiffusionSolver2::explicit_half(FaceAxis axis, Array2& x, const Walls& wall
   });
 }
 
-LinearSolveReport DiffusionSolver2::diffuse_velocity(MacGrid2& grid, const Walls& walls,
+LinearSolveReport DiffusionSolver2::diffuseVelocity(MacGrid2& grid, const Walls& walls,
                                                      double kinematic_viscosity_m2_per_s, double dt_s,
                                                      ViscosityScheme scheme) {
   double alpha = kinematic_viscosity_m2_per_s * dt_s / (grid.dx_m * grid.dx_m);
@@ -237,21 +237,21 @@ LinearSolveReport DiffusionSolver2::diffuse_velocity(MacGrid2& grid, const Walls
   // The solvers take every face off the unknown block as zero; an inflow wall's speed enters
   // through the block's wall terms instead (diffusion_operator2.hpp). So its faces are cleared
   // for the solve and set again after it.
-  const bool any_inflow = walls.any_inflow();
-  if (any_inflow) enforce_wall_normal_velocity(grid, without_inflow_speeds(walls));
+  const bool any_inflow = walls.anyInflow();
+  if (any_inflow) enforceWallNormalVelocity(grid, withoutInflowSpeeds(walls));
   if (scheme == ViscosityScheme::crank_nicolson) {
     alpha *= 0.5;
-    explicit_half(FaceAxis::x, grid.u_m_per_s, walls, alpha);
-    explicit_half(FaceAxis::y, grid.v_m_per_s, walls, alpha);
+    explicitHalf(FaceAxis::x, grid.u_m_per_s, walls, alpha);
+    explicitHalf(FaceAxis::y, grid.v_m_per_s, walls, alpha);
   }
-  const LinearSolveReport ru = diffuse_component(FaceAxis::x, grid.u_m_per_s, walls, alpha);
-  const LinearSolveReport rv = diffuse_component(FaceAxis::y, grid.v_m_per_s, walls, alpha);
-  if (any_inflow) enforce_wall_normal_velocity(grid, walls);
+  const LinearSolveReport ru = diffuseComponent(FaceAxis::x, grid.u_m_per_s, walls, alpha);
+  const LinearSolveReport rv = diffuseComponent(FaceAxis::y, grid.v_m_per_s, walls, alpha);
+  if (any_inflow) enforceWallNormalVelocity(grid, walls);
   return {std::max(ru.iterations, rv.iterations), std::max(ru.relative_residual, rv.relative_residual),
           ru.converged && rv.converged};
 }
 
-LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha,
+LinearSolveReport ImplicitDiffusion2::solveComponent(FaceAxis axis, Array2& x, const Walls& walls, double alpha,
                                                       Workspace& w) {
   const int nx = x.nx();
   const int ny = x.ny();
@@ -265,7 +265,7 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
 
   // Threads share rows everywhere below; every element gets the serial arithmetic, maxima merge
   // per thread (order-free) and sums are kept per row and added in row order (worker_pool.hpp).
-  const int parts = piece_count(workers_);
+  const int parts = pieceCount(workers_);
   const std::size_t row = static_cast<std::size_t>(nx);
   w.row_dots.resize(static_cast<std::size_t>(ny));
   w.row_rr.resize(static_cast<std::size_t>(ny));
@@ -276,14 +276,14 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
     const double* __restrict__ xv = x.data();
     const double* __restrict__ wall = block.wall_rhs.data();
     double* __restrict__ b = w.b.data();
-    for_pieces(workers_, 0, ny, [&](int j0, int j1, int part) {
+    forPieces(workers_, 0, ny, [&](int j0, int j1, int part) {
       const std::size_t k0 = j0 * row, k1 = j1 * row;
       if (block.has_wall_rhs) {
         for (std::size_t k = k0; k < k1; ++k) b[k] = xv[k] + alpha * wall[k];
       } else {
         std::copy(xv + k0, xv + k1, b + k0);
       }
-      acc[part].merge(partial_max_abs(b + k0, k1 - k0));
+      acc[part].merge(partialMaxAbs(b + k0, k1 - k0));
     });
   }
   for (int part = 1; part < parts; ++part) acc[0].merge(acc[part]);
@@ -303,10 +303,10 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
   if (10.0 * alpha <= kSweepContraction) {
     while (sweeps < kMaxSweeps) {
       std::array<double, kMaxParts> change{};
-      for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int part) {
-        change[part] = sweep_rows<SweepRule::richardson>(block.i_begin, block.i_end, j0, j1, block.count, alpha, w.b, x, w.p);
+      forPieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int part) {
+        change[part] = sweepRows<SweepRule::richardson>(block.i_begin, block.i_end, j0, j1, block.count, alpha, w.b, x, w.p);
       });
-      const double residual = max_of_parts(change.data(), parts);
+      const double residual = maxOfParts(change.data(), parts);
       std::swap(x, w.p);  // O(1): the newest iterate is in x; w.p keeps zeros off the block
       ++sweeps;
       // `residual` belongs to the previous iterate; the new one's is r_new = (I − A) r with
@@ -322,7 +322,7 @@ LinearSolveReport ImplicitDiffusion2::solve_component(FaceAxis axis, Array2& x, 
   const bool chebyshev_range = block.max_row_sum > 0.0 && alpha * block.max_row_sum <= kChebyshevSpread;
   const LinearSolveReport rest = chebyshev_range
                                      ? chebyshev(x, alpha, target, b_norm, budget, w)
-                                     : conjugate_gradients(x, alpha, target, b_norm, budget, w);
+                                     : conjugateGradients(x, alpha, target, b_norm, budget, w);
   return {sweeps + rest.iterations, rest.relative_residual, rest.converged};
 }
 
@@ -340,7 +340,7 @@ LinearSolveReport ImplicitDiffusion2::chebyshev(Array2& x, double alpha, double 
   // are bound by their arithmetic more than by memory, while the spare array takes the pass beyond
   // L2 and a pass computes one sweep past the accepted iterate half the time.
   const DiffusionBlock2& block = w.block;
-  const int parts = piece_count(workers_);
+  const int parts = pieceCount(workers_);
   const double delta = 0.5 * alpha * block.max_row_sum;
   const double theta = 1.0 + delta;
   const double sigma = theta / delta;
@@ -353,20 +353,20 @@ LinearSolveReport ImplicitDiffusion2::chebyshev(Array2& x, double alpha, double 
     std::array<double, kMaxParts> part_residual{};
     if (sweeps == 0) {
       const SweepWeights first{1.0 / theta, 0.0};
-      for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int part) {
-        part_residual[part] = sweep_rows<SweepRule::chebyshev_first>(block.i_begin, block.i_end, j0, j1, block.count,
+      forPieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int part) {
+        part_residual[part] = sweepRows<SweepRule::chebyshev_first>(block.i_begin, block.i_end, j0, j1, block.count,
                                                                       alpha, w.b, *current, *other, first);
       });
     } else {
       const double rho_next = 1.0 / (2.0 * sigma - rho);
       const SweepWeights later{2.0 * rho_next / delta, rho_next * rho};
       rho = rho_next;
-      for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int part) {
-        part_residual[part] = sweep_rows<SweepRule::chebyshev>(block.i_begin, block.i_end, j0, j1, block.count,
+      forPieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int part) {
+        part_residual[part] = sweepRows<SweepRule::chebyshev>(block.i_begin, block.i_end, j0, j1, block.count,
                                                                 alpha, w.b, *current, *other, later);
       });
     }
-    residual = max_of_parts(part_residual.data(), parts);  // that of *current
+    residual = maxOfParts(part_residual.data(), parts);  // that of *current
     ++sweeps;
     if (residual <= target || !(residual == residual) || sweeps >= budget) break;
     std::swap(current, other);
@@ -375,10 +375,10 @@ LinearSolveReport ImplicitDiffusion2::chebyshev(Array2& x, double alpha, double 
   return {sweeps, residual / b_norm, residual <= target};
 }
 
-LinearSolveReport ImplicitDiffusion2::conjugate_gradients(Array2& x, double alpha, double target, double b_norm,
+LinearSolveReport ImplicitDiffusion2::conjugateGradients(Array2& x, double alpha, double target, double b_norm,
                                                           int budget, Workspace& w) {
   const DiffusionBlock2& block = w.block;
-  const int parts = piece_count(workers_);
+  const int parts = pieceCount(workers_);
   const int nx = x.nx();
   const int ny = x.ny();
   const std::size_t row = static_cast<std::size_t>(nx);
@@ -394,8 +394,8 @@ LinearSolveReport ImplicitDiffusion2::conjugate_gradients(Array2& x, double alph
   const double* __restrict__ ap = w.ap.data();
   const double* __restrict__ b = w.b.data();
   auto apply_rows = [&](const Array2& in) {
-    for_pieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int) {
-      apply_diffusion_rows(block, j0, j1, alpha, in, w.ap, w.row_dots.data());
+    forPieces(workers_, block.j_begin, block.j_end, [&](int j0, int j1, int) {
+      applyDiffusionRows(block, j0, j1, alpha, in, w.ap, w.row_dots.data());
     });
     double in_dot_ap = 0.0;
     for (int j = block.j_begin; j < block.j_end; ++j) in_dot_ap += w.row_dots[static_cast<std::size_t>(j)];
@@ -408,7 +408,7 @@ LinearSolveReport ImplicitDiffusion2::conjugate_gradients(Array2& x, double alph
   apply_rows(x);
   // r = p = b − A x (zero off the block), with ‖r‖∞ and r·r in the same pass.
   acc.fill(MaxAbsAccumulator{});
-  for_pieces(workers_, 0, ny, [&](int j0, int j1, int part) {
+  forPieces(workers_, 0, ny, [&](int j0, int j1, int part) {
     for (int j = j0; j < j1; ++j) {
       const std::size_t k0 = j * row, k1 = k0 + row;
       for (std::size_t k = k0; k < k1; ++k) {
@@ -416,10 +416,10 @@ LinearSolveReport ImplicitDiffusion2::conjugate_gradients(Array2& x, double alph
         p[k] = r[k];
       }
       w.row_rr[static_cast<std::size_t>(j)] = dot(r + k0, r + k0, row);
-      acc[part].merge(partial_max_abs(r + k0, row));
+      acc[part].merge(partialMaxAbs(r + k0, row));
     }
   });
-  double rr = sum_rows(w.row_rr);
+  double rr = sumRows(w.row_rr);
   double r_norm = rr == rr ? merged_max() : rr;
   int iteration = 0;
   if (r_norm > target) {
@@ -428,17 +428,17 @@ LinearSolveReport ImplicitDiffusion2::conjugate_gradients(Array2& x, double alph
       const double p_ap = apply_rows(w.p);
       const double a = rr / p_ap;
       acc.fill(MaxAbsAccumulator{});
-      for_pieces(workers_, 0, ny, [&](int j0, int j1, int part) {
+      forPieces(workers_, 0, ny, [&](int j0, int j1, int part) {
         for (int j = j0; j < j1; ++j) {
           w.row_rr[static_cast<std::size_t>(j)] = update(j * row, (j + 1) * row, a, xv, p, r, ap, acc[part]);
         }
       });
       r_norm = merged_max();
       if (r_norm <= target || !(r_norm == r_norm)) break;
-      const double r_squared = sum_rows(w.row_rr);
+      const double r_squared = sumRows(w.row_rr);
       const double beta = r_squared / rr;
       rr = r_squared;
-      for_pieces(workers_, 0, ny, [&](int j0, int j1, int) {
+      forPieces(workers_, 0, ny, [&](int j0, int j1, int) {
         for (std::size_t k = j0 * row; k < j1 * row; ++k) p[k] = r[k] + beta * p[k];
       });
     }

@@ -22,20 +22,20 @@ class DiffusionSolver2 {
   /// conditions; solid-wall normal velocity stays zero. Reports the worse of the two components.
   /// With ViscosityScheme::crank_nicolson, u is first replaced by (I + ½ν dt ∇²) u (with the
   /// walls' terms) and the system solved is (I − ½ν dt ∇²) u_new = that.
-  LinearSolveReport diffuse_velocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
+  LinearSolveReport diffuseVelocity(MacGrid2& grid, const Walls& walls, double kinematic_viscosity_m2_per_s,
                                      double dt_s, ViscosityScheme scheme = ViscosityScheme::backward_euler);
   /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
-  void set_workers(WorkerPool* workers) { workers_ = workers; }
+  void setWorkers(WorkerPool* workers) { workers_ = workers; }
 
  protected:
   /// One component (u: FaceAxis::x, v: FaceAxis::y) with α = ν dt / dx² > 0.
-  virtual LinearSolveReport diffuse_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha) = 0;
+  virtual LinearSolveReport diffuseComponent(FaceAxis axis, Array2& x, const Walls& walls, double alpha) = 0;
   WorkerPool* workers_ = nullptr;
 
  private:
   // x ← (I + β ∇²) x + β · wall terms = 2x − A_β x + β · wall terms on the unknown block, so that
   // the solve's right-hand side x + β · wall terms is Crank–Nicolson's.
-  void explicit_half(FaceAxis axis, Array2& x, const Walls& walls, double beta);
+  void explicitHalf(FaceAxis axis, Array2& x, const Walls& walls, double beta);
   DiffusionBlock2 explicit_u_, explicit_v_;
   Array2 explicit_ax_;
   std::vector<double> explicit_dots_;
@@ -66,8 +66,8 @@ class ImplicitDiffusion2 final : public DiffusionSolver2 {
   static constexpr double kChebyshevSpread = 64.0;
 
  private:
-  LinearSolveReport diffuse_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha) override {
-    return solve_component(axis, x, walls, alpha, axis == FaceAxis::x ? u_work_ : v_work_);
+  LinearSolveReport diffuseComponent(FaceAxis axis, Array2& x, const Walls& walls, double alpha) override {
+    return solveComponent(axis, x, walls, alpha, axis == FaceAxis::x ? u_work_ : v_work_);
   }
   // Scratch of one component, kept between steps (allocated once per shape and walls).
   struct Workspace {
@@ -75,11 +75,11 @@ class ImplicitDiffusion2 final : public DiffusionSolver2 {
     Array2 b, r, p, ap;
     std::vector<double> row_dots, row_rr;  // per-row partial inner products
   };
-  LinearSolveReport solve_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha, Workspace& work);
+  LinearSolveReport solveComponent(FaceAxis axis, Array2& x, const Walls& walls, double alpha, Workspace& work);
   // A x = w.b from x to ‖b − A x‖∞ ≤ target in at most `budget` iterations; the report's
   // residual is relative to b_norm.
   LinearSolveReport chebyshev(Array2& x, double alpha, double target, double b_norm, int budget, Workspace& w);
-  LinearSolveReport conjugate_gradients(Array2& x, double alpha, double target, double b_norm, int budget,
+  LinearSolveReport conjugateGradients(Array2& x, double alpha, double target, double b_norm, int budget,
                                         Workspace& w);
   double tolerance_;
   int max_iterations_;

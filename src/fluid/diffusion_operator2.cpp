@@ -7,12 +7,12 @@
 namespace creaturelab::fluid {
 namespace {
 
-double ghost_rhs(const Wall& wall) {
+double ghostRhs(const Wall& wall) {
   return (wall.type == WallType::moving || wall.type == WallType::inflow) ? 2.0 * wall.tangential_velocity_m_per_s
                                                                           : 0.0;
 }
 
-bool same_walls(const Walls& a, const Walls& b) {
+bool sameWalls(const Walls& a, const Walls& b) {
   auto same = [](const Wall& p, const Wall& q) {
     return p.type == q.type && p.tangential_velocity_m_per_s == q.tangential_velocity_m_per_s &&
            p.inflow_m_per_s == q.inflow_m_per_s;
@@ -22,13 +22,13 @@ bool same_walls(const Walls& a, const Walls& b) {
 
 }  // namespace
 
-double diffusion_ghost_count(const Wall& wall) {
+double diffusionGhostCount(const Wall& wall) {
   return (wall.type == WallType::no_slip || wall.type == WallType::moving || wall.type == WallType::inflow) ? 2.0
                                                                                                          : 0.0;
 }
 
 bool DiffusionBlock2::prepare(FaceAxis face_axis, int nx, int ny, const Walls& new_walls) {
-  if (ready && axis == face_axis && same_walls(walls, new_walls) && count.nx() == nx && count.ny() == ny) return false;
+  if (ready && axis == face_axis && sameWalls(walls, new_walls) && count.nx() == nx && count.ny() == ny) return false;
   ready = true;
   axis = face_axis;
   walls = new_walls;
@@ -37,10 +37,10 @@ bool DiffusionBlock2::prepare(FaceAxis face_axis, int nx, int ny, const Walls& n
     a->resize(nx, ny);
   }
   if (axis == FaceAxis::x) {
-    const FaceRange r = unknown_faces(walls.left, walls.right, nx - 1);
+    const FaceRange r = unknownFaces(walls.left, walls.right, nx - 1);
     i_begin = r.begin, i_end = r.end, j_begin = 0, j_end = ny;
   } else {
-    const FaceRange r = unknown_faces(walls.bottom, walls.top, ny - 1);
+    const FaceRange r = unknownFaces(walls.bottom, walls.top, ny - 1);
     i_begin = 0, i_end = nx, j_begin = r.begin, j_end = r.end;
   }
   // Neighbour counts d and wall right-hand sides (see the header).
@@ -56,8 +56,8 @@ bool DiffusionBlock2::prepare(FaceAxis face_axis, int nx, int ny, const Walls& n
         if (inside) {
           d += 1.0;
         } else {
-          d += diffusion_ghost_count(wall);
-          rhs += ghost_rhs(wall);
+          d += diffusionGhostCount(wall);
+          rhs += ghostRhs(wall);
         }
       };
       // A neighbour along the component: an unknown face, a solid wall's face (known: zero or an
@@ -65,16 +65,16 @@ bool DiffusionBlock2::prepare(FaceAxis face_axis, int nx, int ny, const Walls& n
       auto along = [&](bool exists, bool is_wall_face, const Wall& wall, bool high_wall) {
         if (!exists) return;
         d += 1.0;
-        if (is_wall_face) rhs += solid_wall_normal_velocity(wall, high_wall);
+        if (is_wall_face) rhs += solidWallNormalVelocity(wall, high_wall);
       };
       if (axis == FaceAxis::x) {
-        along(i > 0, i - 1 == 0 && is_solid(walls.left), walls.left, false);
-        along(i < nx - 1, i + 1 == nx - 1 && is_solid(walls.right), walls.right, true);
+        along(i > 0, i - 1 == 0 && isSolid(walls.left), walls.left, false);
+        along(i < nx - 1, i + 1 == nx - 1 && isSolid(walls.right), walls.right, true);
         tangential(j > 0, walls.bottom);
         tangential(j < ny - 1, walls.top);
       } else {
-        along(j > 0, j - 1 == 0 && is_solid(walls.bottom), walls.bottom, false);
-        along(j < ny - 1, j + 1 == ny - 1 && is_solid(walls.top), walls.top, true);
+        along(j > 0, j - 1 == 0 && isSolid(walls.bottom), walls.bottom, false);
+        along(j < ny - 1, j + 1 == ny - 1 && isSolid(walls.top), walls.top, true);
         tangential(i > 0, walls.left);
         tangential(i < nx - 1, walls.right);
       }
@@ -88,7 +88,7 @@ bool DiffusionBlock2::prepare(FaceAxis face_axis, int nx, int ny, const Walls& n
   return true;
 }
 
-void apply_diffusion_rows(const DiffusionBlock2& block, int jb, int je, double alpha, const Array2& x, Array2& y,
+void applyDiffusionRows(const DiffusionBlock2& block, int jb, int je, double alpha, const Array2& x, Array2& y,
                           double* row_dots) {
   const int ib = block.i_begin;
   const int ie = block.i_end;

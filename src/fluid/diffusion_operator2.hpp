@@ -35,10 +35,10 @@ struct DiffusionBlock2 {
 /// outside the block are never written. Neighbours outside the block are solid-wall normal
 /// faces (zero in x; an inflow wall's value is in wall_rhs) or lie beyond the array (ghosts,
 /// accounted for in `count`).
-void apply_diffusion_rows(const DiffusionBlock2& block, int jb, int je, double alpha, const Array2& x, Array2& y,
+void applyDiffusionRows(const DiffusionBlock2& block, int jb, int je, double alpha, const Array2& x, Array2& y,
                           double* row_dots);
 
 /// Ghost factor of a tangential component across `wall`: 0 (ghost = x) or 2 (ghost = 2U − x).
-double diffusion_ghost_count(const Wall& wall);
+double diffusionGhostCount(const Wall& wall);
 
 }  // namespace creaturelab::fluid

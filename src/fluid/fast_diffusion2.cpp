@@ -5,12 +5,12 @@
 
 namespace creaturelab::fluid {
 
-KroneckerOperator2 diffusion_operator(const DiffusionBlock2& block, int nx, int ny, double alpha) {
+KroneckerOperator2 diffusionOperator(const DiffusionBlock2& block, int nx, int ny, double alpha) {
   using E = OperatorEnd;
   // Along the component's axis: a known zero face beyond the block (solid wall) or none (open).
   auto own = [](bool zero_beyond) { return zero_beyond ? E::dirichlet_node : E::neumann; };
   // Across: the ghost count of diffusion_operator2.hpp, 0 (ghost = x) or 2 (ghost = 2U − x).
-  auto across = [](const Wall& wall) { return diffusion_ghost_count(wall) == 0.0 ? E::neumann : E::dirichlet_half; };
+  auto across = [](const Wall& wall) { return diffusionGhostCount(wall) == 0.0 ? E::neumann : E::dirichlet_half; };
   KroneckerOperator2 op;
   if (block.axis == FaceAxis::x) {
     op.x_low = own(block.i_begin > 0);
@@ -27,7 +27,7 @@ KroneckerOperator2 diffusion_operator(const DiffusionBlock2& block, int nx, int 
   return op;
 }
 
-LinearSolveReport FastDiffusion2::solve_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha,
+LinearSolveReport FastDiffusion2::solveComponent(FaceAxis axis, Array2& x, const Walls& walls, double alpha,
                                                   Workspace& w) {
   const int nx = x.nx();
   const int ny = x.ny();
@@ -38,13 +38,13 @@ LinearSolveReport FastDiffusion2::solve_component(FaceAxis axis, Array2& x, cons
   w.ap.resize(nx, ny);
   w.b.resize(width, block.j_end - jb);
   w.row_dots.resize(static_cast<std::size_t>(ny));
-  w.solver.set_workers(workers_);
+  w.solver.setWorkers(workers_);
 
   // b = x^n + α · (wall terms) on the block, with ‖b‖∞. Threads share rows; maxima merge
   // per piece (order-free), so any thread count gives the same bits (worker_pool.hpp).
-  const int parts = piece_count(workers_);
+  const int parts = pieceCount(workers_);
   std::array<MaxAbsAccumulator, kMaxParts> acc{};
-  for_pieces(workers_, jb, block.j_end, [&](int j0, int j1, int part) {
+  forPieces(workers_, jb, block.j_end, [&](int j0, int j1, int part) {
     for (int j = j0; j < j1; ++j) {
       const double* xr = x.row(j) + ib;
       const double* wall = block.wall_rhs.row(j) + ib;
@@ -54,7 +54,7 @@ LinearSolveReport FastDiffusion2::solve_component(FaceAxis axis, Array2& x, cons
       } else {
         std::copy(xr, xr + width, br);
       }
-      acc[part].merge(partial_max_abs(br, static_cast<std::size_t>(width)));
+      acc[part].merge(partialMaxAbs(br, static_cast<std::size_t>(width)));
     }
   });
   for (int part = 1; part < parts; ++part) acc[0].merge(acc[part]);
@@ -65,21 +65,21 @@ LinearSolveReport FastDiffusion2::solve_component(FaceAxis axis, Array2& x, cons
   }
 
   // (σ I + K) x = b / α.
-  w.solver.solve(diffusion_operator(block, nx, ny, alpha), w.b, w.q, false, 1.0 / alpha);
+  w.solver.solve(diffusionOperator(block, nx, ny, alpha), w.b, w.q, false, 1.0 / alpha);
 
   // x ← q on the block, then ‖b − A x‖∞ with the iterative solver's operator (w.ap is scratch:
   // it is never read before it is written).
-  for_pieces(workers_, jb, block.j_end, [&](int j0, int j1, int) {
+  forPieces(workers_, jb, block.j_end, [&](int j0, int j1, int) {
     for (int j = j0; j < j1; ++j) std::copy_n(w.q.row(j - jb), width, x.row(j) + ib);
   });
   acc.fill(MaxAbsAccumulator{});
-  for_pieces(workers_, jb, block.j_end, [&](int j0, int j1, int part) {
-    apply_diffusion_rows(block, j0, j1, alpha, x, w.ap, w.row_dots.data());
+  forPieces(workers_, jb, block.j_end, [&](int j0, int j1, int part) {
+    applyDiffusionRows(block, j0, j1, alpha, x, w.ap, w.row_dots.data());
     for (int j = j0; j < j1; ++j) {
       const double* __restrict__ br = w.b.row(j - jb);
       double* __restrict__ r = w.ap.row(j) + ib;
       for (int i = 0; i < width; ++i) r[i] = br[i] - r[i];  // r = b − A x, then its maximum
-      acc[part].merge(partial_max_abs(r, static_cast<std::size_t>(width)));
+      acc[part].merge(partialMaxAbs(r, static_cast<std::size_t>(width)));
     }
   });
   for (int part = 1; part < parts; ++part) acc[0].merge(acc[part]);

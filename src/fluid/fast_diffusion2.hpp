@@ -30,13 +30,13 @@ class FastDiffusion2 final : public DiffusionSolver2 {
   explicit FastDiffusion2(double tolerance) : tolerance_(tolerance) {}
 
   /// The transform method of the last solve of each component (tests).
-  FastPressureSolver2::Method u_method() const { return u_work_.solver.method(); }
-  FastPressureSolver2::Method v_method() const { return v_work_.solver.method(); }
+  FastPressureSolver2::Method uMethod() const { return u_work_.solver.method(); }
+  FastPressureSolver2::Method vMethod() const { return v_work_.solver.method(); }
 
  private:
   /// Reports 0 iterations and the residual ‖b − A x‖∞ / ‖b‖∞ (round-off).
-  LinearSolveReport diffuse_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha) override {
-    return solve_component(axis, x, walls, alpha, axis == FaceAxis::x ? u_work_ : v_work_);
+  LinearSolveReport diffuseComponent(FaceAxis axis, Array2& x, const Walls& walls, double alpha) override {
+    return solveComponent(axis, x, walls, alpha, axis == FaceAxis::x ? u_work_ : v_work_);
   }
   struct Workspace {
     DiffusionBlock2 block;
@@ -44,12 +44,12 @@ class FastDiffusion2 final : public DiffusionSolver2 {
     std::vector<double> row_dots;
     FastPressureSolver2 solver;
   };
-  LinearSolveReport solve_component(FaceAxis axis, Array2& x, const Walls& walls, double alpha, Workspace& work);
+  LinearSolveReport solveComponent(FaceAxis axis, Array2& x, const Walls& walls, double alpha, Workspace& work);
   double tolerance_;
   Workspace u_work_, v_work_;
 };
 
 /// The operator σ I + T_x ⊗ I + I ⊗ T_y of a component's block (see above), σ = 1/α.
-KroneckerOperator2 diffusion_operator(const DiffusionBlock2& block, int nx, int ny, double alpha);
+KroneckerOperator2 diffusionOperator(const DiffusionBlock2& block, int nx, int ny, double alpha);
 
 }  // namespace creaturelab::fluid

@@ -23,7 +23,7 @@ constexpr int kLanesPerCacheLine = static_cast<int>(kCacheLineBytes / sizeof(dou
 // h has a prime factor above 7 (the dense transform is used then). (A radix-4 butterfly was
 // rejected: with SSE2's sixteen registers it spills. Two radix-2 stages fused into one pass,
 // radix2_twice, keep the radix-2 arithmetic and use AVX-512's 32 registers.)
-std::vector<int> fft_radices(int n) {
+std::vector<int> fftRadices(int n) {
   if (n < 2 || n % 2 != 0) return {};
   int h = n / 2;
   std::vector<int> radices;
@@ -33,16 +33,16 @@ std::vector<int> fft_radices(int n) {
   if (h != 1) return {};
   return radices;
 }
-bool fft_applies(int n) { return n == 2 || !fft_radices(n).empty(); }
+bool fftApplies(int n) { return n == 2 || !fftRadices(n).empty(); }
 
 // Whether stages `stage` and `stage` + 1 are both radix 2, and so run as one pass (radix2_twice).
-bool two_radix2_at(const std::vector<int>& radices, std::size_t stage) {
+bool twoRadix2At(const std::vector<int>& radices, std::size_t stage) {
   return radices[stage] == 2 && stage + 1 < radices.size() && radices[stage + 1] == 2;
 }
 
 // What the end of a lane changes in the diagonal 2 + λ + σ: −1 (Neumann), +1 (zero half a
 // cell beyond), 0 (zero one cell beyond).
-double end_offset(OperatorEnd end) {
+double endOffset(OperatorEnd end) {
   switch (end) {
     case OperatorEnd::neumann:
       return 1.0;
@@ -95,7 +95,7 @@ void radix2(long block, const double* __restrict__ a0r, const double* __restrict
 // w1b (p + L/4), then the second's (length L/2, twice the stride) on those, twiddled by w2 (p),
 // into rows 4p .. 4p + 3. The operations of radix2() twice, without storing the stage between:
 // bitwise the same, half the passes over the panel.
-void radix2_twice(long block, const double* __restrict__ a0r, const double* __restrict__ a0i,
+void radix2Twice(long block, const double* __restrict__ a0r, const double* __restrict__ a0i,
                   const double* __restrict__ a1r, const double* __restrict__ a1i, const double* __restrict__ a2r,
                   const double* __restrict__ a2i, const double* __restrict__ a3r, const double* __restrict__ a3i,
                   double* __restrict__ b0r, double* __restrict__ b0i, double* __restrict__ b1r,
@@ -128,7 +128,7 @@ void radix2_twice(long block, const double* __restrict__ a0r, const double* __re
 // R known at compile time, so the coefficients stay in registers and the loop over l
 // vectorises; the sums run in the order t = 0 .. R − 1 as before (bitwise the same).
 template <int R>
-void odd_radix(long block, const double* const* ar, const double* const* ai, double* const* br, double* const* bi,
+void oddRadix(long block, const double* const* ar, const double* const* ai, double* const* br, double* const* bi,
                const double (&dft_cos)[7][7], const double (&dft_sin)[7][7], const double* wc, const double* ws) {
   for (int u = 0; u < R; ++u) {
     double cu[R], su[R];
@@ -188,7 +188,7 @@ namespace {
 constexpr int kTile = 8;
 // out(j, i) = f(in(i, j)) for the rows j in [j0, j1) of `in`.
 template <class F>
-void transpose_rows(const Array2& in, int j0, int j1, F f, Array2& out) {
+void transposeRows(const Array2& in, int j0, int j1, F f, Array2& out) {
   const int nx = in.nx();
   for (int i0 = 0; i0 < nx; i0 += kTile) {
     const int i1 = std::min(nx, i0 + kTile);
@@ -199,7 +199,7 @@ void transpose_rows(const Array2& in, int j0, int j1, F f, Array2& out) {
   }
 }
 // out(i, j) = in(j, i) for the rows j in [j0, j1) of `out`.
-void transpose_columns(const Array2& in, int j0, int j1, Array2& out) {
+void transposeColumns(const Array2& in, int j0, int j1, Array2& out) {
   const int nx = out.nx();
   for (int i0 = 0; i0 < nx; i0 += kTile) {
     const int i1 = std::min(nx, i0 + kTile);
@@ -212,8 +212,8 @@ void transpose_columns(const Array2& in, int j0, int j1, Array2& out) {
 
 }  // namespace
 
-KroneckerOperator2 pressure_operator(const Walls& walls) {
-  auto end = [](const Wall& wall) { return is_solid(wall) ? OperatorEnd::neumann : OperatorEnd::dirichlet_half; };
+KroneckerOperator2 pressureOperator(const Walls& walls) {
+  auto end = [](const Wall& wall) { return isSolid(wall) ? OperatorEnd::neumann : OperatorEnd::dirichlet_half; };
   return {end(walls.left), end(walls.right), end(walls.bottom), end(walls.top), 0.0};
 }
 
@@ -230,9 +230,9 @@ void FastPressureSolver2::setup(const KroneckerOperator2& op, int nx, int ny, bo
   const bool y_neumann = op.y_low == E::neumann && op.y_high == E::neumann;
   const bool y_node = op.y_low == E::dirichlet_node || op.y_high == E::dirichlet_node;
   const bool x_node = op.x_low == E::dirichlet_node || op.x_high == E::dirichlet_node;
-  if (!prefer_dense && y_neumann && fft_applies(ny))
+  if (!prefer_dense && y_neumann && fftApplies(ny))
     method_ = Method::fft_along_y;
-  else if (!prefer_dense && x_neumann && fft_applies(nx))
+  else if (!prefer_dense && x_neumann && fftApplies(nx))
     method_ = Method::fft_along_x;
   else if (!y_node)
     method_ = Method::dense_along_y;
@@ -263,8 +263,8 @@ void FastPressureSolver2::setup(const KroneckerOperator2& op, int nx, int ny, bo
     double* inv = pivots_.row(k);
     for (int l = 0; l < m; ++l) {
       double d = 2.0 + lambda + op.shift;  // σ = 0 adds exactly nothing
-      if (l == 0) d -= end_offset(lane_low);
-      if (l == m - 1) d -= end_offset(lane_high);
+      if (l == 0) d -= endOffset(lane_low);
+      if (l == m - 1) d -= endOffset(lane_high);
       const double pivot = l == 0 ? d : d - inv[l - 1];
       inv[l] = 1.0 / pivot;  // the singular mode's last pivot is 0: never used (see solve_modes)
     }
@@ -293,7 +293,7 @@ void FastPressureSolver2::setup(const KroneckerOperator2& op, int nx, int ny, bo
     }
   } else {
     const int h = n / 2;  // the real transforms run as complex FFTs of half length
-    radices_ = fft_radices(n);
+    radices_ = fftRadices(n);
     fft_cos_.assign(h, 0.0);
     fft_sin_.assign(h, 0.0);
     for (int t = 0; t < h; ++t) {
@@ -319,9 +319,9 @@ void FastPressureSolver2::setup(const KroneckerOperator2& op, int nx, int ny, bo
 }
 
 // Passes over a panel: one per stage, but one for each two radix-2 stages in a row.
-int FastPressureSolver2::fft_passes(const std::vector<int>& radices) {
+int FastPressureSolver2::fftPasses(const std::vector<int>& radices) {
   int passes = 0;
-  for (std::size_t stage = 0; stage < radices.size(); ++passes) stage += two_radix2_at(radices, stage) ? 2 : 1;
+  for (std::size_t stage = 0; stage < radices.size(); ++passes) stage += twoRadix2At(radices, stage) ? 2 : 1;
   return passes;
 }
 
@@ -333,7 +333,7 @@ int FastPressureSolver2::fft_passes(const std::vector<int>& radices) {
 // so every (p, t) is one contiguous vector of s·w values (w lanes) and the inner loops
 // vectorise. Each lane gets the same arithmetic whatever the panel's width. Two radix-2 stages
 // in a row run as one pass (radix2_twice). The passes alternate between (re, im) and (re2, im2):
-// the result is in the second pair when their number is odd (result_in_second_buffers()).
+// the result is in the second pair when their number is odd (resultInSecondBuffers()).
 void FastPressureSolver2::fft(bool inverse, FftPanel& panel) {
   const int h = lines_ / 2;
   const long m = panel.re.nx();
@@ -345,7 +345,7 @@ void FastPressureSolver2::fft(bool inverse, FftPanel& panel) {
   double* yr = panel.re2.data();
   double* yi = panel.im2.data();
   for (std::size_t stage = 0; stage < radices_.size();) {
-    const bool fused = two_radix2_at(radices_, stage);
+    const bool fused = twoRadix2At(radices_, stage);
     const int r = fused ? 4 : radices_[stage];  // the pass divides the length by r
     const int mm = length / r;
     const long block = stride * m;  // one contiguous vector per (p, t)
@@ -355,7 +355,7 @@ void FastPressureSolver2::fft(bool inverse, FftPanel& panel) {
       for (int p = 0; p < mm; ++p) {
         const int ia = (p * twiddle_scale) % h, ib = ((p + mm) * twiddle_scale) % h, i2 = (2 * p * twiddle_scale) % h;
         const long in = p * block, out = 4L * p * block, q = mm * block;
-        radix2_twice(block, xr + in, xi + in, xr + in + q, xi + in + q, xr + in + 2 * q, xi + in + 2 * q,
+        radix2Twice(block, xr + in, xi + in, xr + in + q, xi + in + q, xr + in + 2 * q, xi + in + 2 * q,
                      xr + in + 3 * q, xi + in + 3 * q, yr + out, yi + out, yr + out + block, yi + out + block,
                      yr + out + 2 * block, yi + out + 2 * block, yr + out + 3 * block, yi + out + 3 * block,
                      fft_cos_[ia], sgn * fft_sin_[ia], fft_cos_[ib], sgn * fft_sin_[ib], fft_cos_[i2],
@@ -390,11 +390,11 @@ void FastPressureSolver2::fft(bool inverse, FftPanel& panel) {
         if (r == 2) {
           radix2(block, ar[0], ai[0], ar[1], ai[1], br[0], bi[0], br[1], bi[1], wc[1], ws[1]);
         } else if (r == 3) {
-          odd_radix<3>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
+          oddRadix<3>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
         } else if (r == 5) {
-          odd_radix<5>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
+          oddRadix<5>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
         } else {
-          odd_radix<7>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
+          oddRadix<7>(block, ar, ai, br, bi, dft_cos, dft_sin, wc, ws);
         }
       }
     }
@@ -414,7 +414,7 @@ void FastPressureSolver2::fft(bool inverse, FftPanel& panel) {
 // Forward transform along lines of the lanes [l0, l1): work_ (lines × lanes) ← its transform,
 // reading line t of the input from source.row(t) × scale (scale 1: a copy). The FFT runs in
 // `panel`, lane l at column l − l0 (the dense path writes dense_out_).
-void FastPressureSolver2::forward_transform(const Array2& source, double scale, int l0, int l1, FftPanel& panel) {
+void FastPressureSolver2::forwardTransform(const Array2& source, double scale, int l0, int l1, FftPanel& panel) {
   const int n = lines_;
   if (dense_) {
     // out_k = Σ_j φ_k(j) in_j, four modes at a time; j ascending for every output.
@@ -452,7 +452,7 @@ void FastPressureSolver2::forward_transform(const Array2& source, double scale, 
     load(2 * j + 1, panel.im.row(j));
   }
   fft(false, panel);
-  const bool second = result_in_second_buffers();
+  const bool second = resultInSecondBuffers();
   const Array2& z_re = second ? panel.re2 : panel.re;
   const Array2& z_im = second ? panel.im2 : panel.im;
   for (int k = 0; k <= h / 2; ++k) {
@@ -496,7 +496,7 @@ void FastPressureSolver2::forward_transform(const Array2& source, double scale, 
 
 // Inverse transform along lines of the lanes [l0, l1) of work_, into `target` (lines × lanes),
 // the FFT in `panel` as in forward_transform: the dense path writes dense_out_.
-void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1, FftPanel& panel) {
+void FastPressureSolver2::inverseTransform(Array2& target, int l0, int l1, FftPanel& panel) {
   const int n = lines_;
   if (dense_) {
     // out_j = Σ_k φ_k(j) in_k, k ascending.
@@ -545,7 +545,7 @@ void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1, FftP
     }
   }
   fft(true, panel);
-  const bool second = result_in_second_buffers();
+  const bool second = resultInSecondBuffers();
   const Array2& z_re = second ? panel.re2 : panel.re;
   const Array2& z_im = second ? panel.im2 : panel.im;
   const double inv_h = 1.0 / h;
@@ -564,7 +564,7 @@ void FastPressureSolver2::inverse_transform(Array2& target, int l0, int l1, FftP
 
 // For each mode k in [k0, k1) (row k of work_), solves (T_lanes + λ_k I) x = f in place. Eight
 // modes are swept together so that their independent recurrences overlap in the pipeline.
-void FastPressureSolver2::solve_modes(int k0_begin, int k1) {
+void FastPressureSolver2::solveModes(int k0_begin, int k1) {
   const int m = lanes_;
   constexpr int kBlock = 8;
   const bool has_singular = singular_ && k0_begin == 0;
@@ -610,7 +610,7 @@ void FastPressureSolver2::solve_modes(int k0_begin, int k1) {
 
 void FastPressureSolver2::solve(const Walls& walls, const Array2& b, Array2& q, bool prefer_dense,
                                 double output_scale) {
-  solve(pressure_operator(walls), b, q, prefer_dense, output_scale);
+  solve(pressureOperator(walls), b, q, prefer_dense, output_scale);
 }
 
 void FastPressureSolver2::solve(const KroneckerOperator2& op, const Array2& b, Array2& q, bool prefer_dense,
@@ -636,11 +636,11 @@ void FastPressureSolver2::solve(const KroneckerOperator2& op, const Array2& b, A
   // b (round-off only, the fluxes telescope) is ignored by the singular mode's recurrence.
   // Threads share the lanes of the transforms and the modes of the tridiagonal solves; every
   // value gets the serial arithmetic (worker_pool.hpp).
-  for_thread_pieces(workers_, 0, lanes_, kLanesPerCacheLine, [&](int l0, int l1, int part) {
+  forThreadPieces(workers_, 0, lanes_, kLanesPerCacheLine, [&](int l0, int l1, int part) {
     FftPanel& panel = panel_for(part, l0, l1);
     if (transposed) {
-      transpose_rows(b, l0, l1, [output_scale](double value) { return value * output_scale; }, work_);
-      forward_transform(work_, 1.0, l0, l1, panel);
+      transposeRows(b, l0, l1, [output_scale](double value) { return value * output_scale; }, work_);
+      forwardTransform(work_, 1.0, l0, l1, panel);
     } else if (dense) {
       for (int j = 0; j < ny; ++j) {
         const double* src = b.row(j);
@@ -651,21 +651,21 @@ void FastPressureSolver2::solve(const KroneckerOperator2& op, const Array2& b, A
           for (int l = l0; l < l1; ++l) dst[l] = src[l] * output_scale;
         }
       }
-      forward_transform(work_, 1.0, l0, l1, panel);
+      forwardTransform(work_, 1.0, l0, l1, panel);
     } else {
-      forward_transform(b, output_scale, l0, l1, panel);
+      forwardTransform(b, output_scale, l0, l1, panel);
     }
   });
   if (dense) std::swap(work_, dense_out_);
-  for_pieces(workers_, 0, lines_, [&](int k0, int k1, int) { solve_modes(k0, k1); });
-  for_thread_pieces(workers_, 0, lanes_, kLanesPerCacheLine, [&](int l0, int l1, int part) {
+  forPieces(workers_, 0, lines_, [&](int k0, int k1, int) { solveModes(k0, k1); });
+  forThreadPieces(workers_, 0, lanes_, kLanesPerCacheLine, [&](int l0, int l1, int part) {
     FftPanel& panel = panel_for(part, l0, l1);
     if (transposed) {
-      inverse_transform(work_, l0, l1, panel);  // the dense path writes dense_out_
+      inverseTransform(work_, l0, l1, panel);  // the dense path writes dense_out_
       const Array2& result = dense ? dense_out_ : work_;
-      transpose_columns(result, l0, l1, q);
+      transposeColumns(result, l0, l1, q);
     } else {
-      inverse_transform(q, l0, l1, panel);  // the dense path writes dense_out_
+      inverseTransform(q, l0, l1, panel);  // the dense path writes dense_out_
     }
   });
   if (dense && !transposed) std::swap(q, dense_out_);
@@ -673,8 +673,8 @@ void FastPressureSolver2::solve(const KroneckerOperator2& op, const Array2& b, A
 
 namespace {
 
-// projection_rhs (pressure_solver2.hpp) on rows [j0, j1), with max |b| of those rows.
-void projection_rhs_rows(const MacGrid2& grid, Array2& b, int j0, int j1, MaxAbsAccumulator& b_max) {
+// projectionRhs (pressure_solver2.hpp) on rows [j0, j1), with max |b| of those rows.
+void projectionRhsRows(const MacGrid2& grid, Array2& b, int j0, int j1, MaxAbsAccumulator& b_max) {
   const double dx = grid.dx_m;
   for (int j = j0; j < j1; ++j) {
     const double* u = grid.u_m_per_s.row(j);
@@ -693,18 +693,18 @@ void projection_rhs_rows(const MacGrid2& grid, Array2& b, int j0, int j1, MaxAbs
 LinearSolveReport FastPressureSolver2::project(MacGrid2& grid, const Walls& walls, double density_kg_per_m3,
                                                double dt_s) {
   rhs_.resize(grid.nx, grid.ny);
-  const int parts = piece_count(workers_);
+  const int parts = pieceCount(workers_);
   std::vector<MaxAbsAccumulator>& acc = accumulators_;
   acc.assign(static_cast<std::size_t>(parts), MaxAbsAccumulator{});
   // Maxima do not depend on the order in which values meet: per-piece accumulators, merged.
-  for_pieces(workers_, 0, grid.ny, [&](int j0, int j1, int part) { projection_rhs_rows(grid, rhs_, j0, j1, acc[part]); });
+  forPieces(workers_, 0, grid.ny, [&](int j0, int j1, int part) { projectionRhsRows(grid, rhs_, j0, j1, acc[part]); });
   for (int part = 1; part < parts; ++part) acc[0].merge(acc[part]);
   const double b_norm = acc[0].result();
   // Solve for p = q ρ / dt directly and subtract (dt/ρ) ∇p.
   solve(walls, rhs_, grid.pressure_pa, false, density_kg_per_m3 / dt_s);
-  subtract_gradient(grid, walls, grid.pressure_pa, dt_s / (density_kg_per_m3 * grid.dx_m), workers_);
+  subtractGradient(grid, walls, grid.pressure_pa, dt_s / (density_kg_per_m3 * grid.dx_m), workers_);
   LinearSolveReport report;
-  report.relative_residual = b_norm > 0.0 ? max_abs_cell_flux_m2_per_s(grid, workers_) / b_norm : 0.0;
+  report.relative_residual = b_norm > 0.0 ? maxAbsCellFlux_m2_per_s(grid, workers_) / b_norm : 0.0;
   return report;
 }
 

@@ -46,7 +46,7 @@ struct KroneckerOperator2 {
 
 /// The pressure operator of pressure_solver2.hpp: Neumann at solid walls, Dirichlet half a
 /// cell beyond open ones, σ = 0.
-KroneckerOperator2 pressure_operator(const Walls& walls);
+KroneckerOperator2 pressureOperator(const Walls& walls);
 
 class FastPressureSolver2 final : public PressureSolver2 {
  public:
@@ -82,12 +82,12 @@ class FastPressureSolver2 final : public PressureSolver2 {
   struct FftPanel {
     Array2 re, im, re2, im2;
   };
-  void forward_transform(const Array2& source, double scale, int l0, int l1, FftPanel& panel);
-  void inverse_transform(Array2& target, int l0, int l1, FftPanel& panel);
+  void forwardTransform(const Array2& source, double scale, int l0, int l1, FftPanel& panel);
+  void inverseTransform(Array2& target, int l0, int l1, FftPanel& panel);
   void fft(bool inverse, FftPanel& panel);
-  bool result_in_second_buffers() const { return fft_passes(radices_) % 2 == 1; }
-  static int fft_passes(const std::vector<int>& radices);
-  void solve_modes(int k0, int k1);
+  bool resultInSecondBuffers() const { return fftPasses(radices_) % 2 == 1; }
+  static int fftPasses(const std::vector<int>& radices);
+  void solveModes(int k0, int k1);
 
   bool ready_ = false;
   bool prefer_dense_ = false;

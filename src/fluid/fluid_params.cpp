@@ -22,12 +22,12 @@ std::string show(double value) {
 class Problems {
  public:
   void add(std::string sentence) { list_.push_back(std::move(sentence)); }
-  void require_positive(double value, std::string_view name, std::string_view unit) {
+  void requirePositive(double value, std::string_view name, std::string_view unit) {
     if (!(std::isfinite(value) && value > 0.0)) {
       add(std::string(name) + " must be a positive number of " + std::string(unit) + " (got " + show(value) + ")");
     }
   }
-  void require_finite(double value, std::string_view name, std::string_view unit) {
+  void requireFinite(double value, std::string_view name, std::string_view unit) {
     if (!std::isfinite(value)) {
       add(std::string(name) + " must be a finite number of " + std::string(unit) + " (got " + show(value) + ")");
     }
@@ -57,8 +57,8 @@ std::optional<Enum> parse(std::string_view name, const std::array<Enum, N>& valu
 
 std::string FluidParams::validate() const {
   Problems problems;
-  problems.require_positive(domain_width_m, "domain_width_m", "metres");
-  problems.require_positive(domain_height_m, "domain_height_m", "metres");
+  problems.requirePositive(domain_width_m, "domain_width_m", "metres");
+  problems.requirePositive(domain_height_m, "domain_height_m", "metres");
   const bool cells_ok = cells_x >= 2 && cells_y >= 2 && cells_x <= kMaxCellsPerSide && cells_y <= kMaxCellsPerSide;
   if (cells_x < 2 || cells_x > kMaxCellsPerSide) {
     problems.add("cells_x must be between 2 and " + std::to_string(kMaxCellsPerSide) + " (got " +
@@ -79,7 +79,7 @@ std::string FluidParams::validate() const {
                    std::to_string(suggested_cells_y) + " or domain_height_m = " + show(dx * cells_y));
     }
   }
-  problems.require_positive(density_kg_per_m3, "density_kg_per_m3", "kg/m^3");
+  problems.requirePositive(density_kg_per_m3, "density_kg_per_m3", "kg/m^3");
   if (!(std::isfinite(kinematic_viscosity_m2_per_s) && kinematic_viscosity_m2_per_s >= 0.0)) {
     problems.add("kinematic_viscosity_m2_per_s must be zero or a positive number of m^2/s (got " +
                  show(kinematic_viscosity_m2_per_s) + "; water at 20 °C is 1.0e-6)");
@@ -88,7 +88,7 @@ std::string FluidParams::validate() const {
       {{&walls.left, "left"}, {&walls.right, "right"}, {&walls.bottom, "bottom"}, {&walls.top, "top"}}};
   for (const auto& [wall, name] : walls_named) {
     const std::string key = "walls." + std::string(name) + ".tangential_velocity_m_per_s";
-    problems.require_finite(wall->tangential_velocity_m_per_s, key, "m/s");
+    problems.requireFinite(wall->tangential_velocity_m_per_s, key, "m/s");
     if (wall->type != WallType::moving && wall->type != WallType::inflow && wall->tangential_velocity_m_per_s != 0.0 &&
         std::isfinite(wall->tangential_velocity_m_per_s)) {
       problems.add(key + " = " + show(wall->tangential_velocity_m_per_s) + " has no effect on a " +
@@ -96,14 +96,14 @@ std::string FluidParams::validate() const {
                    ".type = moving (or inflow) or the velocity to 0");
     }
     const std::string inflow_key = "walls." + std::string(name) + ".inflow_m_per_s";
-    problems.require_finite(wall->inflow_m_per_s, inflow_key, "m/s");
+    problems.requireFinite(wall->inflow_m_per_s, inflow_key, "m/s");
     if (wall->type != WallType::inflow && wall->inflow_m_per_s != 0.0 && std::isfinite(wall->inflow_m_per_s)) {
       problems.add(inflow_key + " = " + show(wall->inflow_m_per_s) + " has no effect on a " +
                    std::string(to_string(wall->type)) + " wall; set walls." + std::string(name) +
                    ".type = inflow or the speed to 0");
     }
   }
-  if (walls.any_inflow() && walls.closed()) {
+  if (walls.anyInflow() && walls.closed()) {
     problems.add("an inflow wall needs an open wall for the fluid to leave (with every other wall closed the "
                  "projection has no solution)");
   }
@@ -127,19 +127,19 @@ std::string FluidParams::validate() const {
     problems.add("cfl_safety_factor must be above 0 and at most 10 (got " + show(cfl_safety_factor) +
                  "; 0.5 is a good default, the paper used 0.001 with the elastic body)");
   }
-  if (time_step_policy == TimeStepPolicy::cfl_adaptive && cfl_safety_factor > max_stable_cfl_number(advection)) {
+  if (time_step_policy == TimeStepPolicy::cfl_adaptive && cfl_safety_factor > maxStableCflNumber(advection)) {
     problems.add("cfl_safety_factor " + show(cfl_safety_factor) + " is above the stability bound " +
-                 show(max_stable_cfl_number(advection)) + " of advection = " + std::string(to_string(advection)));
+                 show(maxStableCflNumber(advection)) + " of advection = " + std::string(to_string(advection)));
   }
-  problems.require_positive(max_step_s, "max_step_s", "seconds");
-  problems.require_positive(fixed_step_s, "fixed_step_s", "seconds");
-  problems.require_finite(body_acceleration_x_m_per_s2, "body_acceleration_x_m_per_s2", "m/s^2");
-  problems.require_finite(body_acceleration_y_m_per_s2, "body_acceleration_y_m_per_s2", "m/s^2");
-  problems.require_positive(blowup_speed_m_per_s, "blowup_speed_m_per_s", "m/s");
+  problems.requirePositive(max_step_s, "max_step_s", "seconds");
+  problems.requirePositive(fixed_step_s, "fixed_step_s", "seconds");
+  problems.requireFinite(body_acceleration_x_m_per_s2, "body_acceleration_x_m_per_s2", "m/s^2");
+  problems.requireFinite(body_acceleration_y_m_per_s2, "body_acceleration_y_m_per_s2", "m/s^2");
+  problems.requirePositive(blowup_speed_m_per_s, "blowup_speed_m_per_s", "m/s");
   return problems.joined();
 }
 
-double max_stable_cfl_number(AdvectionScheme scheme) {
+double maxStableCflNumber(AdvectionScheme scheme) {
   if (scheme == AdvectionScheme::upwind2_rk2) return 0.5;
   return std::numeric_limits<double>::infinity();
 }
@@ -222,28 +222,28 @@ std::string_view to_string(ForceStage stage) {
   return "unknown";
 }
 
-std::optional<WallType> parse_wall_type(std::string_view name) {
+std::optional<WallType> parseWallType(std::string_view name) {
   return parse(name,
                std::array{WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open, WallType::inflow});
 }
-std::optional<AdvectionScheme> parse_advection_scheme(std::string_view name) {
+std::optional<AdvectionScheme> parseAdvectionScheme(std::string_view name) {
   return parse(name, std::array{AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack, AdvectionScheme::upwind2_rk2});
 }
-std::optional<PressureSolverType> parse_pressure_solver_type(std::string_view name) {
+std::optional<PressureSolverType> parsePressureSolverType(std::string_view name) {
   return parse(name, std::array{PressureSolverType::fast_direct, PressureSolverType::pcg});
 }
-std::optional<TimeStepPolicy> parse_time_step_policy(std::string_view name) {
+std::optional<TimeStepPolicy> parseTimeStepPolicy(std::string_view name) {
   return parse(name, std::array{TimeStepPolicy::cfl_adaptive, TimeStepPolicy::fixed});
 }
-std::optional<ViscositySolverType> parse_viscosity_solver_type(std::string_view name) {
+std::optional<ViscositySolverType> parseViscositySolverType(std::string_view name) {
   return parse(name, std::array{ViscositySolverType::iterative, ViscositySolverType::fast_direct});
 }
 
-std::optional<ViscosityScheme> parse_viscosity_scheme(std::string_view name) {
+std::optional<ViscosityScheme> parseViscosityScheme(std::string_view name) {
   return parse(name, std::array{ViscosityScheme::backward_euler, ViscosityScheme::crank_nicolson});
 }
 
-std::optional<ForceStage> parse_force_stage(std::string_view name) {
+std::optional<ForceStage> parseForceStage(std::string_view name) {
   return parse(name, std::array{ForceStage::before_advection, ForceStage::after_advection});
 }
 

@@ -43,7 +43,7 @@ struct Walls {
     return left.type != WallType::open && right.type != WallType::open && bottom.type != WallType::open &&
            top.type != WallType::open;
   }
-  bool any_inflow() const {
+  bool anyInflow() const {
     return left.type == WallType::inflow || right.type == WallType::inflow || bottom.type == WallType::inflow ||
            top.type == WallType::inflow;
   }
@@ -71,7 +71,7 @@ enum class AdvectionScheme {
 /// Largest CFL number (max velocity component · dt / dx) at which the scheme is stable:
 /// infinite for the semi-Lagrangian ones; ½ for upwind2_rk2 (linear von Neumann bound in 2-D,
 /// upwind_advection2.hpp). FluidSolver2 refuses a step above it.
-double max_stable_cfl_number(AdvectionScheme scheme);
+double maxStableCflNumber(AdvectionScheme scheme);
 
 /// Pressure (projection) solver. Both give the same answer to round-off / tolerance.
 enum class PressureSolverType {
@@ -112,14 +112,14 @@ struct FluidParams {
   double domain_height_m = 0.4;
   int cells_x = 100;  ///< paper Fig. 12: fluid grid n = 100
   int cells_y = 100;
-  /// A square box, side domain_m and `cells` per side: read into the width and cells_x, then make_square().
+  /// A square box, side domain_m and `cells` per side: read into the width and cells_x, then makeSquare().
   template <class V>
-  void describe_square_box(V& v) {
+  void describeSquareBox(V& v) {
     v.real("domain_m", domain_width_m, "m", 1e-6, 1e6,
            "side of the square box; default ten 40 mm bell diameters (Rudolf & Mould Fig. 12)");
     v.integer("cells", cells_x, 4, 4096, "cells per side (Rudolf & Mould Fig. 12: 100)");
   }
-  void make_square() {
+  void makeSquare() {
     domain_height_m = domain_width_m;
     cells_y = cells_x;
   }
@@ -129,7 +129,7 @@ struct FluidParams {
   double density_kg_per_m3 = 1000.0;
   double kinematic_viscosity_m2_per_s = 1.304e-6;
   template <class V>
-  void describe_fluid(V& v) {
+  void describeFluid(V& v) {
     v.real("density_kg_per_m3", density_kg_per_m3, "kg/m^3", 1e-6, 1e6,
            "fluid density (paper: '1' without units, read as g/cm^3)");
     v.real("kinematic_viscosity_m2_per_s", kinematic_viscosity_m2_per_s, "m^2/s", 0, 1e3,
@@ -159,7 +159,7 @@ struct FluidParams {
 
   /// advection, pressure_solver, viscosity_solver.
   template <class V>
-  void describe_schemes(V& v) {
+  void describeSchemes(V& v) {
     v.choice("advection", advection,
              {AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack, AdvectionScheme::upwind2_rk2},
              "semi_lagrangian (Stam 1999, linear interpolation), maccormack (limited, second order) or upwind2_rk2 "
@@ -180,7 +180,7 @@ struct FluidParams {
   double fixed_step_s = 0.01;  ///< step of the fixed policy
   /// cfl_safety_factor, max_step_s (the adaptive policy's).
   template <class V>
-  void describe_adaptive_step(V& v) {
+  void describeAdaptiveStep(V& v) {
     v.real("cfl_safety_factor", cfl_safety_factor, "", 1e-6, 10,
            "fraction of the CFL limit dx / max|u| (paper used 0.001 with the bell)");
     v.real("max_step_s", max_step_s, "s", 1e-9, 10, "largest adaptive step (paper §4: instability near 0.01 s)");
@@ -191,7 +191,7 @@ struct FluidParams {
   double body_acceleration_x_m_per_s2 = 0.0;
   double body_acceleration_y_m_per_s2 = 0.0;
   template <class V>
-  void describe_body_force(V& v) {
+  void describeBodyForce(V& v) {
     v.real("body_acceleration_x_m_per_s2", body_acceleration_x_m_per_s2, "m/s^2", -1e4, 1e4,
            "uniform body force per unit mass, x");
     v.real("body_acceleration_y_m_per_s2", body_acceleration_y_m_per_s2, "m/s^2", -1e4, 1e4,
@@ -205,7 +205,7 @@ struct FluidParams {
   /// A step whose velocity is not finite or exceeds this speed throws FluidBlowUpError.
   double blowup_speed_m_per_s = 100.0;
 
-  double cell_size_m() const { return domain_width_m / cells_x; }
+  double cellSize_m() const { return domain_width_m / cells_x; }
 
   /// Empty when the parameters are usable; otherwise one sentence per problem, joined by "; ".
   std::string validate() const;
@@ -219,12 +219,12 @@ std::string_view to_string(ViscositySolverType type);
 std::string_view to_string(ViscosityScheme scheme);
 std::string_view to_string(ForceStage stage);
 /// Inverses of to_string (the names are the enumerator names); std::nullopt for unknown names.
-std::optional<WallType> parse_wall_type(std::string_view name);
-std::optional<AdvectionScheme> parse_advection_scheme(std::string_view name);
-std::optional<PressureSolverType> parse_pressure_solver_type(std::string_view name);
-std::optional<TimeStepPolicy> parse_time_step_policy(std::string_view name);
-std::optional<ViscositySolverType> parse_viscosity_solver_type(std::string_view name);
-std::optional<ViscosityScheme> parse_viscosity_scheme(std::string_view name);
-std::optional<ForceStage> parse_force_stage(std::string_view name);
+std::optional<WallType> parseWallType(std::string_view name);
+std::optional<AdvectionScheme> parseAdvectionScheme(std::string_view name);
+std::optional<PressureSolverType> parsePressureSolverType(std::string_view name);
+std::optional<TimeStepPolicy> parseTimeStepPolicy(std::string_view name);
+std::optional<ViscositySolverType> parseViscositySolverType(std::string_view name);
+std::optional<ViscosityScheme> parseViscosityScheme(std::string_view name);
+std::optional<ForceStage> parseForceStage(std::string_view name);
 
 }  // namespace creaturelab::fluid

@@ -13,7 +13,7 @@
 namespace creaturelab::fluid {
 namespace {
 
-std::string blow_up_message(long step, double time_s, double dt_s, double max_speed, double limit, double cfl) {
+std::string blowUpMessage(long step, double time_s, double dt_s, double max_speed, double limit, double cfl) {
   std::ostringstream out;
   out << "fluid solver blew up at step " << step << " (t = " << time_s << " s, dt = " << dt_s
       << " s): the largest velocity component is " << max_speed << " m/s";
@@ -23,7 +23,7 @@ std::string blow_up_message(long step, double time_s, double dt_s, double max_sp
   return out.str();
 }
 
-std::string cfl_message(long step, double time_s, double dt_s, double cfl, double bound) {
+std::string cflMessage(long step, double time_s, double dt_s, double cfl, double bound) {
   std::ostringstream out;
   out << "fluid step " << step << " (t = " << time_s << " s, dt = " << dt_s << " s) has CFL number " << cfl
       << ", above the stability bound " << bound
@@ -32,7 +32,7 @@ std::string cfl_message(long step, double time_s, double dt_s, double cfl, doubl
   return out.str();
 }
 
-std::unique_ptr<DiffusionSolver2> make_diffusion_solver(const FluidParams& params) {
+std::unique_ptr<DiffusionSolver2> makeDiffusionSolver(const FluidParams& params) {
   if (params.viscosity_solver == ViscositySolverType::fast_direct) {
     return std::make_unique<FastDiffusion2>(params.viscosity_tolerance);
   }
@@ -49,48 +49,48 @@ FluidParams checked(const FluidParams& params) {
 
 FluidBlowUpError::FluidBlowUpError(long step, double time_s, double dt_s, double max_speed_m_per_s,
                                    double limit_m_per_s, double cfl_number)
-    : std::runtime_error(blow_up_message(step, time_s, dt_s, max_speed_m_per_s, limit_m_per_s, cfl_number)),
+    : std::runtime_error(blowUpMessage(step, time_s, dt_s, max_speed_m_per_s, limit_m_per_s, cfl_number)),
       step_(step),
       time_s_(time_s),
       cfl_number_(cfl_number) {}
 
 FluidCflError::FluidCflError(long step, double time_s, double dt_s, double cfl_number, double bound)
-    : FluidBlowUpError(cfl_message(step, time_s, dt_s, cfl_number, bound), step, time_s, cfl_number), bound_(bound) {}
+    : FluidBlowUpError(cflMessage(step, time_s, dt_s, cfl_number, bound), step, time_s, cfl_number), bound_(bound) {}
 
 FluidSolver2::FluidSolver2(const FluidParams& params)
     : params_(checked(params)),
       workers_(params_.threads > 1 ? std::make_unique<WorkerPool>(params_.threads) : nullptr),
-      grid_(params_.cells_x, params_.cells_y, params_.cell_size_m()),
+      grid_(params_.cells_x, params_.cells_y, params_.cellSize_m()),
       force_density_(params_.cells_x, params_.cells_y),
-      advection_(make_advection_solver(params_.advection)),
-      diffusion_(make_diffusion_solver(params_)),
-      pressure_(make_pressure_solver(params_)) {
-  advection_->set_workers(workers_.get());
-  diffusion_->set_workers(workers_.get());
-  pressure_->set_workers(workers_.get());
-  enforce_wall_normal_velocity(grid_, walls());  // an inflow wall's faces carry its speed from the start
+      advection_(makeAdvectionSolver(params_.advection)),
+      diffusion_(makeDiffusionSolver(params_)),
+      pressure_(makePressureSolver(params_)) {
+  advection_->setWorkers(workers_.get());
+  diffusion_->setWorkers(workers_.get());
+  pressure_->setWorkers(workers_.get());
+  enforceWallNormalVelocity(grid_, walls());  // an inflow wall's faces carry its speed from the start
 }
 
-double FluidSolver2::next_time_step_s() const {
-  return time_step_for(max_velocity_component_m_per_s(grid_, workers_.get()));
+double FluidSolver2::nextTimeStep_s() const {
+  return timeStepFor(maxVelocityComponent_m_per_s(grid_, workers_.get()));
 }
 
-double FluidSolver2::time_step_for(double max_velocity_component_m_per_s) const {
+double FluidSolver2::timeStepFor(double max_velocity_component_m_per_s) const {
   if (params_.time_step_policy == TimeStepPolicy::fixed) return params_.fixed_step_s;
   if (!(max_velocity_component_m_per_s > 0.0)) return params_.max_step_s;
   return std::min(params_.max_step_s, params_.cfl_safety_factor * grid_.dx_m / max_velocity_component_m_per_s);
 }
 
 FluidStepReport FluidSolver2::step() {
-  const double speed = max_velocity_component_m_per_s(grid_, workers_.get());
-  return run_step(time_step_for(speed), speed);
+  const double speed = maxVelocityComponent_m_per_s(grid_, workers_.get());
+  return runStep(timeStepFor(speed), speed);
 }
 
 FluidStepReport FluidSolver2::step(double dt_s) {
-  return run_step(dt_s, max_velocity_component_m_per_s(grid_, workers_.get()));
+  return runStep(dt_s, maxVelocityComponent_m_per_s(grid_, workers_.get()));
 }
 
-FluidStepReport FluidSolver2::run_step(double dt_s, double start_speed_m_per_s) {
+FluidStepReport FluidSolver2::runStep(double dt_s, double start_speed_m_per_s) {
   if (!(std::isfinite(dt_s) && dt_s > 0.0)) {
     throw std::invalid_argument("fluid time step must be a positive number of seconds (got " + std::to_string(dt_s) +
                                 ")");
@@ -101,24 +101,24 @@ FluidStepReport FluidSolver2::run_step(double dt_s, double start_speed_m_per_s) 
   report.cfl_number = start_speed_m_per_s * dt_s / grid_.dx_m;
   // An explicit scheme's bound, on the step's starting velocity (the CFL number reported). The
   // relative slack lets the adaptive step at cfl_safety_factor = bound through despite rounding.
-  const double bound = advection_->max_stable_cfl();
+  const double bound = advection_->maxStableCfl();
   if (stages_.advection && report.cfl_number > bound * (1.0 + 1e-12)) {
     throw FluidCflError(steps_done_, time_s_, dt_s, report.cfl_number, bound);
   }
 
   const bool force_first = params_.force_stage == ForceStage::before_advection;
-  if (force_first && stages_.external_forces) apply_external_forces(context);
-  if (stages_.advection) advect_velocity(context);
-  if (!force_first && stages_.external_forces) apply_external_forces(context);
-  if (stages_.viscosity) report.viscosity = apply_viscosity(context);
+  if (force_first && stages_.external_forces) applyExternalForces(context);
+  if (stages_.advection) advectVelocity(context);
+  if (!force_first && stages_.external_forces) applyExternalForces(context);
+  if (stages_.viscosity) report.viscosity = applyViscosity(context);
   if (stages_.pressure) report.pressure = project(context);
-  if (stages_.tracers) advect_tracers(context);
+  if (stages_.tracers) advectTracers(context);
 
   time_s_ += dt_s;
   ++steps_done_;
   report.steps_done = steps_done_;
   report.time_s = time_s_;
-  const FlowSummary summary = summarize_flow(grid_, params_.density_kg_per_m3, workers_.get(), row_energies_);
+  const FlowSummary summary = summarizeFlow(grid_, params_.density_kg_per_m3, workers_.get(), row_energies_);
   report.max_velocity_component_m_per_s = summary.max_velocity_component_m_per_s;
   report.max_divergence_per_s = summary.max_divergence_per_s;
   report.kinetic_energy_joule_per_m = summary.kinetic_energy_joule_per_m;
@@ -129,15 +129,15 @@ FluidStepReport FluidSolver2::run_step(double dt_s, double start_speed_m_per_s) 
   return report;
 }
 
-void FluidSolver2::apply_external_forces(const StepContext& context) {
+void FluidSolver2::applyExternalForces(const StepContext& context) {
   const double dt = context.dt_s;
   const double inv_rho = 1.0 / params_.density_kg_per_m3;
   const double gx = params_.body_acceleration_x_m_per_s2;
   const double gy = params_.body_acceleration_y_m_per_s2;
-  const FaceRange u_cols = unknown_u_columns(grid_, walls());
-  const FaceRange v_rows = unknown_v_rows(grid_, walls());
+  const FaceRange u_cols = unknownUColumns(grid_, walls());
+  const FaceRange v_rows = unknownVRows(grid_, walls());
   // Rows of u and of v, cut among threads (each face independent).
-  for_pieces(workers_.get(), 0, grid_.ny + 1, [&](int j0, int j1, int) {
+  forPieces(workers_.get(), 0, grid_.ny + 1, [&](int j0, int j1, int) {
     for (int j = j0; j < std::min(j1, grid_.ny); ++j) {
       double* u = grid_.u_m_per_s.row(j);
       const double* f = force_density_.x.row(j);
@@ -151,15 +151,15 @@ void FluidSolver2::apply_external_forces(const StepContext& context) {
   });
 }
 
-void FluidSolver2::advect_velocity(const StepContext& context) {
-  advection_->advect_velocity(grid_, walls(), context.dt_s, u_scratch_, v_scratch_);
+void FluidSolver2::advectVelocity(const StepContext& context) {
+  advection_->advectVelocity(grid_, walls(), context.dt_s, u_scratch_, v_scratch_);
   std::swap(grid_.u_m_per_s, u_scratch_);
   std::swap(grid_.v_m_per_s, v_scratch_);
 }
 
-LinearSolveReport FluidSolver2::apply_viscosity(const StepContext& context) {
+LinearSolveReport FluidSolver2::applyViscosity(const StepContext& context) {
   if (params_.kinematic_viscosity_m2_per_s == 0.0) return {};
-  return diffusion_->diffuse_velocity(grid_, walls(), params_.kinematic_viscosity_m2_per_s, context.dt_s,
+  return diffusion_->diffuseVelocity(grid_, walls(), params_.kinematic_viscosity_m2_per_s, context.dt_s,
                                       params_.viscosity_scheme);
 }
 
@@ -167,14 +167,14 @@ LinearSolveReport FluidSolver2::project(const StepContext& context) {
   return pressure_->project(grid_, walls(), params_.density_kg_per_m3, context.dt_s);
 }
 
-void FluidSolver2::advect_tracers(const StepContext& context) {
+void FluidSolver2::advectTracers(const StepContext& context) {
   if (tracers_.empty()) return;
   sampler_.assign(grid_, walls());
-  advect_tracers_rk2(tracers_, sampler_, context.dt_s, grid_.width_m(), grid_.height_m());
+  advectTracersRk2(tracers_, sampler_, context.dt_s, grid_.width_m(), grid_.height_m());
 }
 
-LinearSolveReport FluidSolver2::make_divergence_free() {
-  enforce_wall_normal_velocity(grid_, walls());
+LinearSolveReport FluidSolver2::makeDivergenceFree() {
+  enforceWallNormalVelocity(grid_, walls());
   grid_.pressure_pa.fill(0.0);
   // The projected velocity does not depend on dt or ρ; only the pressure does, and it is reset.
   const LinearSolveReport report = pressure_->project(grid_, walls(), 1.0, 1.0);
@@ -182,12 +182,12 @@ LinearSolveReport FluidSolver2::make_divergence_free() {
   return report;
 }
 
-double FluidSolver2::kinetic_energy_joule_per_m() const {
-  return fluid::kinetic_energy_joule_per_m(grid_, params_.density_kg_per_m3);
+double FluidSolver2::kineticEnergy_joule_per_m() const {
+  return fluid::kineticEnergy_joule_per_m(grid_, params_.density_kg_per_m3);
 }
 
-double FluidSolver2::max_divergence_per_s() const { return fluid::max_divergence_per_s(grid_); }
+double FluidSolver2::maxDivergence_per_s() const { return fluid::maxDivergence_per_s(grid_); }
 
-double FluidSolver2::cfl_number(double dt_s) const { return fluid::cfl_number(grid_, dt_s); }
+double FluidSolver2::cflNumber(double dt_s) const { return fluid::cflNumber(grid_, dt_s); }
 
 }  // namespace creaturelab::fluid

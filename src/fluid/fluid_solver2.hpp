@@ -44,7 +44,7 @@ class FluidBlowUpError : public std::runtime_error {
       : std::runtime_error(message), step_(step), time_s_(time_s), cfl_number_(cfl_number) {}
   long step() const { return step_; }
   double time_s() const { return time_s_; }
-  double cfl_number() const { return cfl_number_; }
+  double cflNumber() const { return cfl_number_; }
 
  private:
   long step_;
@@ -104,23 +104,23 @@ class FluidSolver2 {
   /// One time step of dt_s (> 0). Throws FluidBlowUpError if the velocity blows up.
   FluidStepReport step(double dt_s);
   /// The policy's next step: fixed_step_s, or min(max_step_s, cfl_safety_factor dx / max(|u|, |v|)).
-  double next_time_step_s() const;
+  double nextTimeStep_s() const;
 
   // --- the stages (Stam 1999 §2.2), each callable alone -------------------------------
-  /// u += dt (g + f/ρ) on every face that is not a solid wall's (f: force_density_n_per_m3()).
-  void apply_external_forces(const StepContext& context);
+  /// u += dt (g + f/ρ) on every face that is not a solid wall's (f: forceDensity_n_per_m3()).
+  void applyExternalForces(const StepContext& context);
   /// −u·∇u by the advection sub-solver (semi-Lagrangian, MacCormack or Eulerian upwind2_rk2).
-  void advect_velocity(const StepContext& context);
+  void advectVelocity(const StepContext& context);
   /// ν∇²u implicitly by the diffusion sub-solver; does nothing when ν = 0.
-  LinearSolveReport apply_viscosity(const StepContext& context);
+  LinearSolveReport applyViscosity(const StepContext& context);
   /// Pressure projection by the pressure sub-solver; leaves the pressure in grid().pressure_pa.
   LinearSolveReport project(const StepContext& context);
   /// Moves the tracers with the current velocity.
-  void advect_tracers(const StepContext& context);
+  void advectTracers(const StepContext& context);
 
   /// For initial conditions: zero normal velocity on solid walls, project onto divergence-free
   /// fields, and reset the pressure to zero.
-  LinearSolveReport make_divergence_free();
+  LinearSolveReport makeDivergenceFree();
 
   // --- state ------------------------------------------------------------------------------
   const FluidParams& params() const { return params_; }
@@ -130,36 +130,36 @@ class FluidSolver2 {
   /// External force density on the faces, N/m³ (force per unit volume; per unit area in 2-D
   /// per metre of depth). The immersed boundary spreads its forces here before each step;
   /// it stays until changed. Values on solid walls' normal faces are ignored.
-  FaceVectorField2& force_density_n_per_m3() { return force_density_; }
-  const FaceVectorField2& force_density_n_per_m3() const { return force_density_; }
+  FaceVectorField2& forceDensity_n_per_m3() { return force_density_; }
+  const FaceVectorField2& forceDensity_n_per_m3() const { return force_density_; }
   std::vector<Vec2>& tracers_m() { return tracers_; }
   const std::vector<Vec2>& tracers_m() const { return tracers_; }
   double time_s() const { return time_s_; }
-  long steps_done() const { return steps_done_; }
+  long stepsDone() const { return steps_done_; }
   FluidStages& stages() { return stages_; }
 
   /// The new sub-solver shares the solver's threads (FluidParams::threads).
-  void set_advection_solver(std::unique_ptr<AdvectionSolver2> solver) {
+  void setAdvectionSolver(std::unique_ptr<AdvectionSolver2> solver) {
     advection_ = std::move(solver);
-    advection_->set_workers(workers_.get());
+    advection_->setWorkers(workers_.get());
   }
-  void set_diffusion_solver(std::unique_ptr<DiffusionSolver2> solver) {
+  void setDiffusionSolver(std::unique_ptr<DiffusionSolver2> solver) {
     diffusion_ = std::move(solver);
-    diffusion_->set_workers(workers_.get());
+    diffusion_->setWorkers(workers_.get());
   }
-  void set_pressure_solver(std::unique_ptr<PressureSolver2> solver) {
+  void setPressureSolver(std::unique_ptr<PressureSolver2> solver) {
     pressure_ = std::move(solver);
-    pressure_->set_workers(workers_.get());
+    pressure_->setWorkers(workers_.get());
   }
 
   // --- observables of the current state -------------------------------------------------
-  double kinetic_energy_joule_per_m() const;
-  double max_divergence_per_s() const;
-  double cfl_number(double dt_s) const;
+  double kineticEnergy_joule_per_m() const;
+  double maxDivergence_per_s() const;
+  double cflNumber(double dt_s) const;
 
  private:
-  double time_step_for(double max_velocity_component_m_per_s) const;
-  FluidStepReport run_step(double dt_s, double start_speed_m_per_s);
+  double timeStepFor(double max_velocity_component_m_per_s) const;
+  FluidStepReport runStep(double dt_s, double start_speed_m_per_s);
 
   FluidParams params_;
   std::unique_ptr<WorkerPool> workers_;  // null with one thread

@@ -7,7 +7,7 @@ namespace {
 
 // Fills u, v from a stream function sampled at the (nx + 1) × (ny + 1) corners.
 template <typename Psi>
-void set_from_stream_function(MacGrid2& grid, Psi psi) {
+void setFromStreamFunction(MacGrid2& grid, Psi psi) {
   Array2 corner(grid.nx + 1, grid.ny + 1);
   for (int j = 0; j <= grid.ny; ++j) {
     for (int i = 0; i <= grid.nx; ++i) corner(i, j) = psi(i * grid.dx_m, j * grid.dx_m);
@@ -22,48 +22,48 @@ void set_from_stream_function(MacGrid2& grid, Psi psi) {
 }
 
 // ln cosh z without overflow.
-double log_cosh(double z) {
+double logCosh(double z) {
   const double a = std::abs(z);
   return a + std::log1p(std::exp(-2.0 * a)) - std::numbers::ln2;
 }
 
 }  // namespace
 
-Vec2 taylor_green_velocity_m_per_s(Vec2 position_m, double time_s, double width_m, double height_m,
+Vec2 taylorGreenVelocity_m_per_s(Vec2 position_m, double time_s, double width_m, double height_m,
                                    double amplitude_m_per_s, double kinematic_viscosity_m2_per_s) {
   const double kx = std::numbers::pi / width_m;
   const double ky = std::numbers::pi / height_m;
   const double decay =
-      std::exp(-taylor_green_decay_rate_per_s(width_m, height_m, kinematic_viscosity_m2_per_s) * time_s);
+      std::exp(-taylorGreenDecayRate_per_s(width_m, height_m, kinematic_viscosity_m2_per_s) * time_s);
   const double a = amplitude_m_per_s * decay;
   return {a * std::sin(kx * position_m.x) * std::cos(ky * position_m.y),
           -a * (kx / ky) * std::cos(kx * position_m.x) * std::sin(ky * position_m.y)};
 }
 
-double taylor_green_decay_rate_per_s(double width_m, double height_m, double kinematic_viscosity_m2_per_s) {
+double taylorGreenDecayRate_per_s(double width_m, double height_m, double kinematic_viscosity_m2_per_s) {
   const double kx = std::numbers::pi / width_m;
   const double ky = std::numbers::pi / height_m;
   return kinematic_viscosity_m2_per_s * (kx * kx + ky * ky);
 }
 
-void set_taylor_green(MacGrid2& grid, const TaylorGreenVortex& vortex) {
+void setTaylorGreen(MacGrid2& grid, const TaylorGreenVortex& vortex) {
   const double w = grid.width_m();
   const double h = grid.height_m();
   for (int j = 0; j < grid.ny; ++j) {
     for (int i = 0; i <= grid.nx; ++i) {
       grid.u_m_per_s(i, j) =
-          taylor_green_velocity_m_per_s(grid.u_position_m(i, j), 0.0, w, h, vortex.amplitude_m_per_s, 0.0).x;
+          taylorGreenVelocity_m_per_s(grid.uPosition_m(i, j), 0.0, w, h, vortex.amplitude_m_per_s, 0.0).x;
     }
   }
   for (int j = 0; j <= grid.ny; ++j) {
     for (int i = 0; i < grid.nx; ++i) {
       grid.v_m_per_s(i, j) =
-          taylor_green_velocity_m_per_s(grid.v_position_m(i, j), 0.0, w, h, vortex.amplitude_m_per_s, 0.0).y;
+          taylorGreenVelocity_m_per_s(grid.vPosition_m(i, j), 0.0, w, h, vortex.amplitude_m_per_s, 0.0).y;
     }
   }
 }
 
-void set_vortex_pair(MacGrid2& grid, const VortexPair& pair) {
+void setVortexPair(MacGrid2& grid, const VortexPair& pair) {
   const double w = grid.width_m();
   const double h = grid.height_m();
   const double cx = pair.centre_x_fraction * w;
@@ -78,14 +78,14 @@ void set_vortex_pair(MacGrid2& grid, const VortexPair& pair) {
   const double ax = cx + nx_dir * half, ay = cy + ny_dir * half;  // +Γ
   const double bx = cx - nx_dir * half, by = cy - ny_dir * half;  // −Γ
   const double k = pair.circulation_m2_per_s / (4.0 * std::numbers::pi);
-  set_from_stream_function(grid, [&](double x, double y) {
+  setFromStreamFunction(grid, [&](double x, double y) {
     const double ra2 = (x - ax) * (x - ax) + (y - ay) * (y - ay);
     const double rb2 = (x - bx) * (x - bx) + (y - by) * (y - by);
     return -k * std::log(ra2 + rc2) + k * std::log(rb2 + rc2);
   });
 }
 
-void set_shear_layer(MacGrid2& grid, const ShearLayer& layer) {
+void setShearLayer(MacGrid2& grid, const ShearLayer& layer) {
   const double w = grid.width_m();
   const double h = grid.height_m();
   const double delta = layer.thickness_fraction * h;
@@ -93,16 +93,16 @@ void set_shear_layer(MacGrid2& grid, const ShearLayer& layer) {
   const double wave = 2.0 * std::numbers::pi * layer.perturbation_waves / w;
   const double eps_u = layer.perturbation_fraction * layer.speed_m_per_s;
   const double u_speed = layer.speed_m_per_s;
-  set_from_stream_function(grid, [&](double x, double y) {
+  setFromStreamFunction(grid, [&](double x, double y) {
     const double s = (y - y0) / delta;
-    const double base = u_speed * delta * log_cosh(s);  // ∂/∂y gives U tanh(s)
+    const double base = u_speed * delta * logCosh(s);  // ∂/∂y gives U tanh(s)
     const double g = std::exp(-0.25 * s * s);
     const double perturbation = layer.perturbation_waves > 0 ? eps_u / wave * std::cos(wave * x) * g : 0.0;
     return base + perturbation;
   });
 }
 
-void set_rest(MacGrid2& grid) {
+void setRest(MacGrid2& grid) {
   grid.u_m_per_s.fill(0.0);
   grid.v_m_per_s.fill(0.0);
   grid.pressure_pa.fill(0.0);

@@ -1,6 +1,6 @@
 #pragma once
 // Initial velocity fields. These functions only write face velocities; call
-// FluidSolver2::make_divergence_free() afterwards so that the walls hold and ∇·u = 0 exactly.
+// FluidSolver2::makeDivergenceFree() afterwards so that the walls hold and ∇·u = 0 exactly.
 // Fields built from a stream function ψ at cell corners, u = ∂ψ/∂y, v = −∂ψ/∂x by differences,
 // are discretely divergence-free by construction.
 
@@ -19,11 +19,11 @@ namespace creaturelab::fluid {
 struct TaylorGreenVortex {
   double amplitude_m_per_s = 1.0;
 };
-Vec2 taylor_green_velocity_m_per_s(Vec2 position_m, double time_s, double width_m, double height_m,
+Vec2 taylorGreenVelocity_m_per_s(Vec2 position_m, double time_s, double width_m, double height_m,
                                    double amplitude_m_per_s, double kinematic_viscosity_m2_per_s);
 /// Velocity decay rate ν (k_x² + k_y²), 1/s.
-double taylor_green_decay_rate_per_s(double width_m, double height_m, double kinematic_viscosity_m2_per_s);
-void set_taylor_green(MacGrid2& grid, const TaylorGreenVortex& vortex);
+double taylorGreenDecayRate_per_s(double width_m, double height_m, double kinematic_viscosity_m2_per_s);
+void setTaylorGreen(MacGrid2& grid, const TaylorGreenVortex& vortex);
 
 /// Two counter-rotating smooth vortices (Kaufmann–Scully profile, u_θ = Γ r / (2π (r² + r_c²)),
 /// stream function ψ = −Γ/(4π) ln(r² + r_c²)) that propel each other along heading_rad.
@@ -37,7 +37,7 @@ struct VortexPair {
   double circulation_m2_per_s = 1e-3;            ///< |Γ| of each vortex
   double heading_rad = -0.5 * std::numbers::pi;  ///< direction of travel (default: downwards)
 };
-void set_vortex_pair(MacGrid2& grid, const VortexPair& pair);
+void setVortexPair(MacGrid2& grid, const VortexPair& pair);
 
 /// A shear layer u = U tanh((y − y0)/δ), perturbed by a stream function
 /// ψ' = ε U (W / 2πk) cos(2πk x / W) exp(−((y − y0)/2δ)²) that seeds k Kelvin–Helmholtz waves.
@@ -48,9 +48,9 @@ struct ShearLayer {
   double perturbation_fraction = 0.05;  ///< ε
   int perturbation_waves = 2;           ///< k
 };
-void set_shear_layer(MacGrid2& grid, const ShearLayer& layer);
+void setShearLayer(MacGrid2& grid, const ShearLayer& layer);
 
 /// Fluid at rest.
-void set_rest(MacGrid2& grid);
+void setRest(MacGrid2& grid);
 
 }  // namespace creaturelab::fluid

@@ -41,12 +41,12 @@ struct MacGrid2 {
 
   double width_m() const { return nx * dx_m; }
   double height_m() const { return ny * dx_m; }
-  long cell_count() const { return static_cast<long>(nx) * static_cast<long>(ny); }
+  long cellCount() const { return static_cast<long>(nx) * static_cast<long>(ny); }
 
   /// Positions (metres) of the samples, see the sketch above.
-  Vec2 u_position_m(int i, int j) const { return {i * dx_m, (j + 0.5) * dx_m}; }
-  Vec2 v_position_m(int i, int j) const { return {(i + 0.5) * dx_m, j * dx_m}; }
-  Vec2 cell_centre_m(int i, int j) const { return {(i + 0.5) * dx_m, (j + 0.5) * dx_m}; }
+  Vec2 uPosition_m(int i, int j) const { return {i * dx_m, (j + 0.5) * dx_m}; }
+  Vec2 vPosition_m(int i, int j) const { return {(i + 0.5) * dx_m, j * dx_m}; }
+  Vec2 cellCentre_m(int i, int j) const { return {(i + 0.5) * dx_m, (j + 0.5) * dx_m}; }
 };
 
 /// A vector field stored like the velocity: x component on u faces, y component on v faces.

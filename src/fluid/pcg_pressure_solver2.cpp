@@ -8,18 +8,18 @@
 namespace creaturelab::fluid {
 namespace {
 
-bool same_walls(const Walls& a, const Walls& b) {
+bool sameWalls(const Walls& a, const Walls& b) {
   return a.left.type == b.left.type && a.right.type == b.right.type && a.bottom.type == b.bottom.type &&
          a.top.type == b.top.type;
 }
 
-double max_abs_velocity(const MacGrid2& grid) { return std::max(max_abs(grid.u_m_per_s), max_abs(grid.v_m_per_s)); }
+double maxAbsVelocity(const MacGrid2& grid) { return std::max(maxAbs(grid.u_m_per_s), maxAbs(grid.v_m_per_s)); }
 
 }  // namespace
 
 void PcgPressureSolver2::factor(const Walls& walls, int nx, int ny) {
-  if (factored_ && same_walls(walls, factored_walls_) && precon_.nx() == nx && precon_.ny() == ny) return;
-  pressure_matrix_diagonal(walls, nx, ny, diagonal_);
+  if (factored_ && sameWalls(walls, factored_walls_) && precon_.nx() == nx && precon_.ny() == ny) return;
+  pressureMatrixDiagonal(walls, nx, ny, diagonal_);
   precon_.resize(nx, ny);
   // Off-diagonals are −1 between neighbouring cells. With A(i−1,j)_{+x} = −1 when cell i−1
   // exists, Bridson's recurrence becomes
@@ -52,7 +52,7 @@ void PcgPressureSolver2::factor(const Walls& walls, int nx, int ny) {
 // west and south (north, going back) neighbours are done one step earlier, the group's chains
 // are independent, and each cell still computes exactly the same expression as the plain
 // row-by-row sweep (bitwise identical results).
-void PcgPressureSolver2::apply_preconditioner(const Array2& r, Array2& z) const {
+void PcgPressureSolver2::applyPreconditioner(const Array2& r, Array2& z) const {
   const int nx = r.nx();
   const int ny = r.ny();
   constexpr int kWave = 4;
@@ -98,8 +98,8 @@ LinearSolveReport PcgPressureSolver2::solve(const Walls& walls, const Array2& b_
   q.resize(nx, ny);
   b_ = b_in;
   const bool closed = walls.closed();
-  if (closed) remove_mean(b_);  // b must be orthogonal to the null space (constants)
-  const double b_norm = max_abs(b_);
+  if (closed) removeMean(b_);  // b must be orthogonal to the null space (constants)
+  const double b_norm = maxAbs(b_);
   if (b_norm == 0.0) {
     q.fill(0.0);
     return {};
@@ -109,7 +109,7 @@ LinearSolveReport PcgPressureSolver2::solve(const Walls& walls, const Array2& b_
       scale > 0.0 ? std::max(tolerance_ * std::min(b_norm, scale), 1e-14 * scale) : tolerance_ * b_norm;
 
   // Warm start from q unless zero is the better guess.
-  apply_pressure_matrix(walls, q, as_);
+  applyPressureMatrix(walls, q, as_);
   const std::size_t n = b_.size();
   double* r = r_.data();
   double* z = z_.data();
@@ -118,7 +118,7 @@ LinearSolveReport PcgPressureSolver2::solve(const Walls& walls, const Array2& b_
   double* x = q.data();
   const double* b = b_.data();
   for (std::size_t k = 0; k < n; ++k) r[k] = b[k] - as[k];
-  double r_norm = max_abs(r_);
+  double r_norm = maxAbs(r_);
   if (!(r_norm < b_norm)) {
     q.fill(0.0);
     r_ = b_;
@@ -126,35 +126,35 @@ LinearSolveReport PcgPressureSolver2::solve(const Walls& walls, const Array2& b_
   }
   int iteration = 0;
   if (r_norm > target) {
-    apply_preconditioner(r_, z_);
-    if (closed) remove_mean(z_);
+    applyPreconditioner(r_, z_);
+    if (closed) removeMean(z_);
     std::copy(z, z + n, s);
     double rz = dot(r_, z_);
     while (iteration < max_iterations_) {
       ++iteration;
-      apply_pressure_matrix(walls, s_, as_);
+      applyPressureMatrix(walls, s_, as_);
       const double alpha = rz / dot(s_, as_);
       for (std::size_t k = 0; k < n; ++k) {
         x[k] += alpha * s[k];
         r[k] -= alpha * as[k];
       }
-      r_norm = max_abs(r_);
+      r_norm = maxAbs(r_);
       if (r_norm <= target) break;
-      apply_preconditioner(r_, z_);
-      if (closed) remove_mean(z_);
+      applyPreconditioner(r_, z_);
+      if (closed) removeMean(z_);
       const double rz_new = dot(r_, z_);
       const double beta = rz_new / rz;
       rz = rz_new;
       for (std::size_t k = 0; k < n; ++k) s[k] = z[k] + beta * s[k];
     }
   }
-  if (closed) remove_mean(q);
+  if (closed) removeMean(q);
   return {iteration, r_norm / b_norm, r_norm <= target};
 }
 
 LinearSolveReport PcgPressureSolver2::project(MacGrid2& grid, const Walls& walls, double density_kg_per_m3,
                                               double dt_s) {
-  projection_rhs(grid, rhs_);
+  projectionRhs(grid, rhs_);
   const double scale = dt_s / density_kg_per_m3;  // q = p dt / ρ
   q_.resize(grid.nx, grid.ny);
   {
@@ -162,16 +162,16 @@ LinearSolveReport PcgPressureSolver2::project(MacGrid2& grid, const Walls& walls
     double* q = q_.data();
     for (std::size_t k = 0; k < q_.size(); ++k) q[k] = p[k] * scale;
   }
-  LinearSolveReport report = solve(walls, rhs_, q_, grid.dx_m * max_abs_velocity(grid));
-  subtract_gradient(grid, walls, q_);
+  LinearSolveReport report = solve(walls, rhs_, q_, grid.dx_m * maxAbsVelocity(grid));
+  subtractGradient(grid, walls, q_);
   const double inv_scale = density_kg_per_m3 / dt_s;
   {
     const double* q = q_.data();
     double* p = grid.pressure_pa.data();
     for (std::size_t k = 0; k < q_.size(); ++k) p[k] = q[k] * inv_scale;
   }
-  const double b_norm = max_abs(rhs_);
-  report.relative_residual = b_norm > 0.0 ? max_abs_cell_flux_m2_per_s(grid) / b_norm : 0.0;
+  const double b_norm = maxAbs(rhs_);
+  report.relative_residual = b_norm > 0.0 ? maxAbsCellFlux_m2_per_s(grid) / b_norm : 0.0;
   return report;
 }
 

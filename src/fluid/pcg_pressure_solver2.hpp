@@ -33,7 +33,7 @@ class PcgPressureSolver2 final : public PressureSolver2 {
 
  private:
   void factor(const Walls& walls, int nx, int ny);
-  void apply_preconditioner(const Array2& r, Array2& z) const;
+  void applyPreconditioner(const Array2& r, Array2& z) const;
 
   double tolerance_;
   int max_iterations_;

@@ -10,7 +10,7 @@
 
 namespace creaturelab::fluid {
 
-std::unique_ptr<PressureSolver2> make_pressure_solver(const FluidParams& params) {
+std::unique_ptr<PressureSolver2> makePressureSolver(const FluidParams& params) {
   switch (params.pressure_solver) {
     case PressureSolverType::fast_direct:
       return std::make_unique<FastPressureSolver2>();
@@ -20,7 +20,7 @@ std::unique_ptr<PressureSolver2> make_pressure_solver(const FluidParams& params)
   return std::make_unique<FastPressureSolver2>();
 }
 
-void projection_rhs(const MacGrid2& grid, Array2& b) {
+void projectionRhs(const MacGrid2& grid, Array2& b) {
   b.resize(grid.nx, grid.ny);
   const double dx = grid.dx_m;
   for (int j = 0; j < grid.ny; ++j) {
@@ -32,24 +32,24 @@ void projection_rhs(const MacGrid2& grid, Array2& b) {
   }
 }
 
-double max_abs_cell_flux_m2_per_s(const MacGrid2& grid, WorkerPool* workers) {
-  return grid.dx_m * max_abs_flux_sum_m_per_s(grid, workers);
+double maxAbsCellFlux_m2_per_s(const MacGrid2& grid, WorkerPool* workers) {
+  return grid.dx_m * maxAbsFluxSum_m_per_s(grid, workers);
 }
 
-void subtract_gradient(MacGrid2& grid, const Walls& walls, const Array2& q, double factor_per_m,
+void subtractGradient(MacGrid2& grid, const Walls& walls, const Array2& q, double factor_per_m,
                        WorkerPool* workers) {
   const int nx = grid.nx;
   const int ny = grid.ny;
   const double inv_dx = factor_per_m;
   // Rows of u and the interior rows of v, cut among threads; each face's update is independent.
-  for_pieces(workers, 0, ny, [&](int j0, int j1, int) {
+  forPieces(workers, 0, ny, [&](int j0, int j1, int) {
     for (int j = j0; j < j1; ++j) {
       const double* qr = q.row(j);
       double* u = grid.u_m_per_s.row(j);
       for (int i = 1; i < nx; ++i) u[i] -= (qr[i] - qr[i - 1]) * inv_dx;
       // Open walls: ghost q = −q_interior half a cell beyond the wall (p = 0 on the wall).
-      if (!is_solid(walls.left)) u[0] -= (qr[0] + qr[0]) * inv_dx;
-      if (!is_solid(walls.right)) u[nx] += (qr[nx - 1] + qr[nx - 1]) * inv_dx;
+      if (!isSolid(walls.left)) u[0] -= (qr[0] + qr[0]) * inv_dx;
+      if (!isSolid(walls.right)) u[nx] += (qr[nx - 1] + qr[nx - 1]) * inv_dx;
     }
     for (int j = std::max(j0, 1); j < j1; ++j) {
       const double* q_s = q.row(j - 1);
@@ -58,40 +58,40 @@ void subtract_gradient(MacGrid2& grid, const Walls& walls, const Array2& q, doub
       for (int i = 0; i < nx; ++i) v[i] -= (q_n[i] - q_s[i]) * inv_dx;
     }
   });
-  if (!is_solid(walls.bottom)) {
+  if (!isSolid(walls.bottom)) {
     double* v = grid.v_m_per_s.row(0);
     const double* qr = q.row(0);
     for (int i = 0; i < nx; ++i) v[i] -= (qr[i] + qr[i]) * inv_dx;
   }
-  if (!is_solid(walls.top)) {
+  if (!isSolid(walls.top)) {
     double* v = grid.v_m_per_s.row(ny);
     const double* qr = q.row(ny - 1);
     for (int i = 0; i < nx; ++i) v[i] += (qr[i] + qr[i]) * inv_dx;
   }
 }
 
-void pressure_matrix_diagonal(const Walls& walls, int nx, int ny, Array2& diagonal) {
+void pressureMatrixDiagonal(const Walls& walls, int nx, int ny, Array2& diagonal) {
   diagonal.resize(nx, ny);
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) {
       double d = 0.0;
-      d += i > 0 ? 1.0 : (is_solid(walls.left) ? 0.0 : 2.0);
-      d += i < nx - 1 ? 1.0 : (is_solid(walls.right) ? 0.0 : 2.0);
-      d += j > 0 ? 1.0 : (is_solid(walls.bottom) ? 0.0 : 2.0);
-      d += j < ny - 1 ? 1.0 : (is_solid(walls.top) ? 0.0 : 2.0);
+      d += i > 0 ? 1.0 : (isSolid(walls.left) ? 0.0 : 2.0);
+      d += i < nx - 1 ? 1.0 : (isSolid(walls.right) ? 0.0 : 2.0);
+      d += j > 0 ? 1.0 : (isSolid(walls.bottom) ? 0.0 : 2.0);
+      d += j < ny - 1 ? 1.0 : (isSolid(walls.top) ? 0.0 : 2.0);
       diagonal(i, j) = d;
     }
   }
 }
 
-void apply_pressure_matrix(const Walls& walls, const Array2& x, Array2& y) {
+void applyPressureMatrix(const Walls& walls, const Array2& x, Array2& y) {
   const int nx = x.nx();
   const int ny = x.ny();
   y.resize(nx, ny);
-  const double left = is_solid(walls.left) ? 0.0 : 2.0;
-  const double right = is_solid(walls.right) ? 0.0 : 2.0;
-  const double bottom = is_solid(walls.bottom) ? 0.0 : 2.0;
-  const double top = is_solid(walls.top) ? 0.0 : 2.0;
+  const double left = isSolid(walls.left) ? 0.0 : 2.0;
+  const double right = isSolid(walls.right) ? 0.0 : 2.0;
+  const double bottom = isSolid(walls.bottom) ? 0.0 : 2.0;
+  const double top = isSolid(walls.top) ? 0.0 : 2.0;
   // Σ over neighbours of (x_c − x_nb), written as differences so constants give exactly 0;
   // a wall adds (0 or 2) x_c instead.
   auto cell = [&](const double* c, const double* s, const double* n, int i) {

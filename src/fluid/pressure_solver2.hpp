@@ -31,31 +31,31 @@ class PressureSolver2 {
   /// iterative solvers. The report's residual is measured on the updated velocity.
   virtual LinearSolveReport project(MacGrid2& grid, const Walls& walls, double density_kg_per_m3, double dt_s) = 0;
   /// Threads for the stage (null: serial). Results are bitwise the same for any thread count.
-  void set_workers(WorkerPool* workers) { workers_ = workers; }
+  void setWorkers(WorkerPool* workers) { workers_ = workers; }
 
  protected:
   WorkerPool* workers_ = nullptr;
 };
 
-std::unique_ptr<PressureSolver2> make_pressure_solver(const FluidParams& params);
+std::unique_ptr<PressureSolver2> makePressureSolver(const FluidParams& params);
 
 // --- building blocks shared by the pressure solvers (and their tests) -------------------
 
 /// b = −dx · (flux sum) per cell, nx × ny (units m²/s).
-void projection_rhs(const MacGrid2& grid, Array2& b);
+void projectionRhs(const MacGrid2& grid, Array2& b);
 /// u ← u − factor · Δφ across every unknown face (interior faces and open-wall faces, with
 /// ghost φ = −φ beyond an open wall): factor = 1/dx for φ = q, dt/(ρ dx) for φ = p.
 /// With workers, threads share the rows (bitwise the same result).
-void subtract_gradient(MacGrid2& grid, const Walls& walls, const Array2& phi, double factor_per_m,
+void subtractGradient(MacGrid2& grid, const Walls& walls, const Array2& phi, double factor_per_m,
                        WorkerPool* workers = nullptr);
-inline void subtract_gradient(MacGrid2& grid, const Walls& walls, const Array2& q) {
-  subtract_gradient(grid, walls, q, 1.0 / grid.dx_m);
+inline void subtractGradient(MacGrid2& grid, const Walls& walls, const Array2& q) {
+  subtractGradient(grid, walls, q, 1.0 / grid.dx_m);
 }
 /// y = A x for the matrix above.
-void apply_pressure_matrix(const Walls& walls, const Array2& x, Array2& y);
+void applyPressureMatrix(const Walls& walls, const Array2& x, Array2& y);
 /// Diagonal of A: number of neighbour cells + 2 per adjacent open wall.
-void pressure_matrix_diagonal(const Walls& walls, int nx, int ny, Array2& diagonal);
+void pressureMatrixDiagonal(const Walls& walls, int nx, int ny, Array2& diagonal);
 /// max over cells of |dx · flux sum| = ‖A q − b‖∞ after the update.
-double max_abs_cell_flux_m2_per_s(const MacGrid2& grid, WorkerPool* workers = nullptr);
+double maxAbsCellFlux_m2_per_s(const MacGrid2& grid, WorkerPool* workers = nullptr);
 
 }  // namespace creaturelab::fluid

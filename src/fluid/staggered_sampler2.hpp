@@ -76,34 +76,34 @@ struct SampleView {
     const __m128d zero = _mm_setzero_pd();
     X = _mm_min_pd(_mm_max_pd(X, zero), _mm_set1_pd(x_max));  // maxpd returns 0 for NaN
     Y = _mm_min_pd(_mm_max_pd(Y, zero), _mm_set1_pd(y_max));
-    return sample2_clamped(X, Y, lo, hi);
+    return sample2Clamped(X, Y, lo, hi);
   }
 
   /// sample2() for positions already clamped to [0, x_max] × [0, y_max] (the u and v views of
   /// one grid share the domain, so a caller sampling both clamps once).
-  __m128d sample2_clamped(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
-    return sample2_shifted(_mm_add_pd(X, _mm_set1_pd(offset_x)), _mm_add_pd(Y, _mm_set1_pd(offset_y)), lo, hi);
+  __m128d sample2Clamped(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
+    return sample2Shifted(_mm_add_pd(X, _mm_set1_pd(offset_x)), _mm_add_pd(Y, _mm_set1_pd(offset_y)), lo, hi);
   }
 
-  /// sample2_clamped() of a component on kAxis faces, whose offset along kAxis is 0
+  /// sample2Clamped() of a component on kAxis faces, whose offset along kAxis is 0
   /// (StaggeredComponent2: u (0, ½), v (½, 0)). A clamped coordinate is ≥ +0 (maxpd(−0, 0) = +0),
   /// so adding the zero offset is exact and is skipped: the same bits, one addition fewer.
   template <FaceAxis kAxis>
-  __m128d sample2_clamped_on(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
-    if constexpr (kAxis == FaceAxis::x) return sample2_shifted(X, _mm_add_pd(Y, _mm_set1_pd(offset_y)), lo, hi);
-    return sample2_shifted(_mm_add_pd(X, _mm_set1_pd(offset_x)), Y, lo, hi);
+  __m128d sample2ClampedOn(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
+    if constexpr (kAxis == FaceAxis::x) return sample2Shifted(X, _mm_add_pd(Y, _mm_set1_pd(offset_y)), lo, hi);
+    return sample2Shifted(_mm_add_pd(X, _mm_set1_pd(offset_x)), Y, lo, hi);
   }
   /// sample2() of a component on kAxis faces (see sample2_clamped_on).
   template <FaceAxis kAxis>
-  __m128d sample2_on(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
+  __m128d sample2On(__m128d X, __m128d Y, __m128d* lo = nullptr, __m128d* hi = nullptr) const {
     const __m128d zero = _mm_setzero_pd();
     X = _mm_min_pd(_mm_max_pd(X, zero), _mm_set1_pd(x_max));  // maxpd returns 0 for NaN
     Y = _mm_min_pd(_mm_max_pd(Y, zero), _mm_set1_pd(y_max));
-    return sample2_clamped_on<kAxis>(X, Y, lo, hi);
+    return sample2ClampedOn<kAxis>(X, Y, lo, hi);
   }
 
   /// The interpolation at padded-index coordinates (fx, fy) = clamped position + offset.
-  __m128d sample2_shifted(__m128d fx, __m128d fy, __m128d* lo, __m128d* hi) const {
+  __m128d sample2Shifted(__m128d fx, __m128d fy, __m128d* lo, __m128d* hi) const {
     // Truncation of non-negative values, then the upper index limit, all in doubles.
     const __m128d i0 = _mm_min_pd(_mm_cvtepi32_pd(_mm_cvttpd_epi32(fx)), _mm_set1_pd(i_max));
     const __m128d j0 = _mm_min_pd(_mm_cvtepi32_pd(_mm_cvttpd_epi32(fy)), _mm_set1_pd(j_max));
@@ -133,11 +133,11 @@ struct SampleView {
 
 #if defined(__AVX2__)
   /// Four samples at once (the fluid library is built with AVX2 where the build machine runs it,
-  /// CMakeLists.txt): exactly sample2_shifted()'s arithmetic in each lane, so that results do not
+  /// CMakeLists.txt): exactly sample2Shifted()'s arithmetic in each lane, so that results do not
   /// depend on how faces are grouped. The four stencils' rows are loaded in pairs and transposed.
-  __m256d sample4_shifted(__m256d fx, __m256d fy, __m256d* lo, __m256d* hi) const {
+  __m256d sample4Shifted(__m256d fx, __m256d fy, __m256d* lo, __m256d* hi) const {
     // Truncation of the non-negative fx, fy in place (one rounding instead of a conversion to
-    // integers and back): the same whole numbers as sample2_shifted()'s.
+    // integers and back): the same whole numbers as sample2Shifted()'s.
     constexpr int kTruncate = _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC;
     const __m256d i0 = _mm256_min_pd(_mm256_round_pd(fx, kTruncate), _mm256_set1_pd(i_max));
     const __m256d j0 = _mm256_min_pd(_mm256_round_pd(fy, kTruncate), _mm256_set1_pd(j_max));
@@ -179,28 +179,28 @@ struct SampleView {
     }
     return _mm256_add_pd(left, _mm256_mul_pd(tx, _mm256_sub_pd(right, left)));
   }
-  /// sample2_clamped_on() four lanes wide.
+  /// sample2ClampedOn() four lanes wide.
   template <FaceAxis kAxis>
-  __m256d sample4_clamped_on(__m256d X, __m256d Y, __m256d* lo = nullptr, __m256d* hi = nullptr) const {
-    if constexpr (kAxis == FaceAxis::x) return sample4_shifted(X, _mm256_add_pd(Y, _mm256_set1_pd(offset_y)), lo, hi);
-    return sample4_shifted(_mm256_add_pd(X, _mm256_set1_pd(offset_x)), Y, lo, hi);
+  __m256d sample4ClampedOn(__m256d X, __m256d Y, __m256d* lo = nullptr, __m256d* hi = nullptr) const {
+    if constexpr (kAxis == FaceAxis::x) return sample4Shifted(X, _mm256_add_pd(Y, _mm256_set1_pd(offset_y)), lo, hi);
+    return sample4Shifted(_mm256_add_pd(X, _mm256_set1_pd(offset_x)), Y, lo, hi);
   }
-  /// sample2_on() four lanes wide.
+  /// sample2On() four lanes wide.
   template <FaceAxis kAxis>
-  __m256d sample4_on(__m256d X, __m256d Y, __m256d* lo = nullptr, __m256d* hi = nullptr) const {
+  __m256d sample4On(__m256d X, __m256d Y, __m256d* lo = nullptr, __m256d* hi = nullptr) const {
     const __m256d zero = _mm256_setzero_pd();
     X = _mm256_min_pd(_mm256_max_pd(X, zero), _mm256_set1_pd(x_max));  // maxpd returns 0 for NaN
     Y = _mm256_min_pd(_mm256_max_pd(Y, zero), _mm256_set1_pd(y_max));
-    return sample4_clamped_on<kAxis>(X, Y, lo, hi);
+    return sample4ClampedOn<kAxis>(X, Y, lo, hi);
   }
 #endif
 
 #if defined(__AVX512F__)
   /// Eight samples at once (the fluid library is built with AVX-512 where the build machine runs
-  /// it, CMakeLists.txt): exactly sample4_shifted()'s arithmetic in each lane, so that results do
+  /// it, CMakeLists.txt): exactly sample4Shifted()'s arithmetic in each lane, so that results do
   /// not depend on how faces are grouped. Eight neighbouring stencils in a row are read with four
   /// loads; any others are gathered.
-  __m512d sample8_shifted(__m512d fx, __m512d fy, __m512d* lo, __m512d* hi) const {
+  __m512d sample8Shifted(__m512d fx, __m512d fy, __m512d* lo, __m512d* hi) const {
     constexpr int kTruncate = _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC;  // vrndscalepd: as vroundpd
     const __m512d i0 = _mm512_min_pd(_mm512_roundscale_pd(fx, kTruncate), _mm512_set1_pd(i_max));
     const __m512d j0 = _mm512_min_pd(_mm512_roundscale_pd(fy, kTruncate), _mm512_set1_pd(j_max));
@@ -231,19 +231,19 @@ struct SampleView {
     }
     return _mm512_add_pd(left, _mm512_mul_pd(tx, _mm512_sub_pd(right, left)));
   }
-  /// sample4_clamped_on() eight lanes wide.
+  /// sample4ClampedOn() eight lanes wide.
   template <FaceAxis kAxis>
-  __m512d sample8_clamped_on(__m512d X, __m512d Y, __m512d* lo = nullptr, __m512d* hi = nullptr) const {
-    if constexpr (kAxis == FaceAxis::x) return sample8_shifted(X, _mm512_add_pd(Y, _mm512_set1_pd(offset_y)), lo, hi);
-    return sample8_shifted(_mm512_add_pd(X, _mm512_set1_pd(offset_x)), Y, lo, hi);
+  __m512d sample8ClampedOn(__m512d X, __m512d Y, __m512d* lo = nullptr, __m512d* hi = nullptr) const {
+    if constexpr (kAxis == FaceAxis::x) return sample8Shifted(X, _mm512_add_pd(Y, _mm512_set1_pd(offset_y)), lo, hi);
+    return sample8Shifted(_mm512_add_pd(X, _mm512_set1_pd(offset_x)), Y, lo, hi);
   }
-  /// sample4_on() eight lanes wide.
+  /// sample4On() eight lanes wide.
   template <FaceAxis kAxis>
-  __m512d sample8_on(__m512d X, __m512d Y, __m512d* lo = nullptr, __m512d* hi = nullptr) const {
+  __m512d sample8On(__m512d X, __m512d Y, __m512d* lo = nullptr, __m512d* hi = nullptr) const {
     const __m512d zero = _mm512_setzero_pd();
     X = _mm512_min_pd(_mm512_max_pd(X, zero), _mm512_set1_pd(x_max));  // maxpd returns 0 for NaN
     Y = _mm512_min_pd(_mm512_max_pd(Y, zero), _mm512_set1_pd(y_max));
-    return sample8_clamped_on<kAxis>(X, Y, lo, hi);
+    return sample8ClampedOn<kAxis>(X, Y, lo, hi);
   }
 #endif
 
@@ -268,17 +268,17 @@ class StaggeredComponent2 {
   /// ghost layer from the walls. Reuses its storage between calls.
   void assign(FaceAxis axis, const Array2& values, const Walls& walls);
   /// assign() in three parts, so that threads can share the copy: prepare() for the values'
-  /// grid, copy_rows() of every row j in [0, values.ny()), then fill_ghosts().
-  void copy_rows(const Array2& values, int j0, int j1);
-  void fill_ghosts(const Walls& walls);
+  /// grid, copyRows() of every row j in [0, values.ny()), then fillGhosts().
+  void copyRows(const Array2& values, int j0, int j1);
+  void fillGhosts(const Walls& walls);
 
   /// For writing a component straight into the padded storage (no copy): shapes it for a grid of
-  /// nx × ny cells and returns it. Element (i, j) of the component is interior_row(j)[i]. Write
+  /// nx × ny cells and returns it. Element (i, j) of the component is interiorRow(j)[i]. Write
   /// every unknown face, then call finish(), which zeroes the solid walls' normal faces and
   /// fills the ghosts: the same state as assign() of those values.
   Array2& prepare(FaceAxis axis, int nx, int ny);
-  double* interior_row(int j) { return axis_ == FaceAxis::x ? padded_.row(j + 1) : padded_.row(j) + 1; }
-  const double* interior_row(int j) const { return axis_ == FaceAxis::x ? padded_.row(j + 1) : padded_.row(j) + 1; }
+  double* interiorRow(int j) { return axis_ == FaceAxis::x ? padded_.row(j + 1) : padded_.row(j) + 1; }
+  const double* interiorRow(int j) const { return axis_ == FaceAxis::x ? padded_.row(j + 1) : padded_.row(j) + 1; }
   void finish(const Walls& walls);
 
   /// Bilinear interpolation at (X, Y) in cell units, clamped to [0, nx] × [0, ny].
@@ -305,7 +305,7 @@ class VelocitySampler2 {
     v_.assign(FaceAxis::y, grid.v_m_per_s, walls);
     inv_dx_per_m_ = 1.0 / grid.dx_m;
   }
-  Vec2 velocity_at_m_per_s(Vec2 position_m) const {
+  Vec2 velocityAt_m_per_s(Vec2 position_m) const {
     const double X = position_m.x * inv_dx_per_m_;
     const double Y = position_m.y * inv_dx_per_m_;
     return {u_.sample(X, Y), v_.sample(X, Y)};

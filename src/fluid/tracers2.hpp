@@ -11,7 +11,7 @@ namespace creaturelab::fluid {
 ///   x_mid = x + ½ dt u(x),   x_new = x + dt u(x_mid),
 /// with bilinear interpolation of the staggered velocity. Tracers stay in the closed domain
 /// [0, width] × [0, height] (clamped), also at open walls.
-void advect_tracers_rk2(std::vector<Vec2>& positions_m, const VelocitySampler2& velocity, double dt_s, double width_m,
+void advectTracersRk2(std::vector<Vec2>& positions_m, const VelocitySampler2& velocity, double dt_s, double width_m,
                         double height_m);
 
 }  // namespace creaturelab::fluid

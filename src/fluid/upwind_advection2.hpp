@@ -53,8 +53,8 @@ class GhostedComponent2 {
 /// Fromm-upwind fluxes in conservative form with Heun (SSP-RK2) time stepping; see above.
 class Upwind2Rk2Advection2 final : public AdvectionSolver2 {
  public:
-  void advect_velocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out, Array2& v_out) override;
-  double max_stable_cfl() const override;
+  void advectVelocity(const MacGrid2& grid, const Walls& walls, double dt_s, Array2& u_out, Array2& v_out) override;
+  double maxStableCfl() const override;
 
  private:
   GhostedComponent2 u0_, v0_;  // uⁿ

@@ -10,7 +10,7 @@
 namespace creaturelab::fluid {
 namespace {
 
-void cpu_relax() {
+void cpuRelax() {
 #if defined(__SSE2__)
   _mm_pause();
 #endif
@@ -54,17 +54,17 @@ void WorkerPool::dispatch(void (*function)(void*, int), void* task) {
     generation_.fetch_add(1, std::memory_order_release);
   }
   wake_.notify_all();
-  run_parts(0);
+  runParts(0);
   for (int spins = 0; done_.load(std::memory_order_acquire) != parts_; ++spins) {
     if (spins < 4096) {
-      cpu_relax();
+      cpuRelax();
     } else {
       std::this_thread::yield();  // a worker is still running its part
     }
   }
 }
 
-void WorkerPool::run_parts(int thread) {
+void WorkerPool::runParts(int thread) {
   for (int k = 0; k < threads_; ++k) {
     const int owner = (thread + k) % threads_;
     const int end = (owner + 1) * kPartsPerThread;
@@ -89,13 +89,13 @@ void WorkerPool::work(int thread) {
           std::unique_lock<std::mutex> lock(mutex_);
           wake_.wait(lock, [&] { return generation_.load(std::memory_order_acquire) != seen; });
         } else {
-          cpu_relax();
+          cpuRelax();
         }
       }
     }
     seen = now;
     if (stop_.load(std::memory_order_relaxed)) return;  // ordered by the generation's acquire
-    run_parts(thread);
+    runParts(thread);
   }
 }
 

@@ -70,7 +70,7 @@ class WorkerPool {
 
  private:
   void dispatch(void (*function)(void*, int), void* task);
-  void run_parts(int thread);
+  void runParts(int thread);
   void work(int thread);
 
   int threads_ = 1;
@@ -95,7 +95,7 @@ class WorkerPool {
 /// as one piece, when pool is null). body must give each index the same result whatever piece
 /// it falls in.
 template <class Body>
-void for_pieces(WorkerPool* pool, int begin, int end, Body&& body) {
+void forPieces(WorkerPool* pool, int begin, int end, Body&& body) {
   if (pool == nullptr || pool->parts() == 1) {
     if (begin < end) body(begin, end, 0);
     return;
@@ -107,14 +107,14 @@ void for_pieces(WorkerPool* pool, int begin, int end, Body&& body) {
   });
 }
 
-/// for_pieces() with one piece per thread (the rest of the pool's parts idle): for loops whose
+/// forPieces() with one piece per thread (the rest of the pool's parts idle): for loops whose
 /// inner vectors shorten with the piece, such as the fast pressure solver's lane-split FFT, where
 /// kPartsPerThread pieces of a few lanes each cost more in loop overhead than they gain in balance.
 /// Inner boundaries fall on multiples of `quantum` from begin: with quantum = one cache line of
 /// doubles and cache-aligned rows (Array2), no two threads write into one line of a row.
 /// Any split gives the same values (each lane gets the serial arithmetic).
 template <class Body>
-void for_thread_pieces(WorkerPool* pool, int begin, int end, int quantum, Body&& body) {
+void forThreadPieces(WorkerPool* pool, int begin, int end, int quantum, Body&& body) {
   if (pool == nullptr || pool->parts() == 1) {
     if (begin < end) body(begin, end, 0);
     return;
@@ -131,10 +131,10 @@ void for_thread_pieces(WorkerPool* pool, int begin, int end, int quantum, Body&&
   });
 }
 
-/// Number of pieces for_thread_pieces() uses: one per thread, so per-piece scratch is indexed by part.
-inline int thread_piece_count(const WorkerPool* pool) { return pool == nullptr ? 1 : pool->threads(); }
+/// Number of pieces forThreadPieces() uses: one per thread, so per-piece scratch is indexed by part.
+inline int threadPieceCount(const WorkerPool* pool) { return pool == nullptr ? 1 : pool->threads(); }
 
-/// Number of pieces for_pieces() uses (≤ kMaxParts): per-piece scratch is indexed by part.
-inline int piece_count(const WorkerPool* pool) { return pool == nullptr ? 1 : pool->parts(); }
+/// Number of pieces forPieces() uses (≤ kMaxParts): per-piece scratch is indexed by part.
+inline int pieceCount(const WorkerPool* pool) { return pool == nullptr ? 1 : pool->parts(); }
 
 }  // namespace creaturelab::fluid

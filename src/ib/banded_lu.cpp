@@ -11,7 +11,7 @@ namespace creaturelab::ib {
 void BandedLU::reset(int n, int kl, int ku) {
   if (n < 0 || kl < 0 || ku < 0) throw std::invalid_argument("banded LU: negative size or bandwidth");
   if (reach_known_)
-    zero_reach();  // the whole storage is then zero, whatever shape it takes next
+    zeroReach();  // the whole storage is then zero, whatever shape it takes next
   else
     std::fill(band_.begin(), band_.end(), 0.0);
   reach_known_ = false;
@@ -26,13 +26,13 @@ void BandedLU::reset(int n, int kl, int ku) {
 }
 
 // Every entry outside a column's reach is zero (set_reach), so zeroing the reach zeroes the column.
-void BandedLU::zero_reach() {
+void BandedLU::zeroReach() {
   for (int j = 0; j < n_; ++j)
     if (first_row_[j] <= last_row_[j])
       std::fill(&ab(kl_ + ku_ + first_row_[j] - j, j), &ab(kl_ + ku_ + last_row_[j] - j, j) + 1, 0.0);
 }
 
-void BandedLU::set_reach(const std::vector<int>& first, const std::vector<int>& last) {
+void BandedLU::setReach(const std::vector<int>& first, const std::vector<int>& last) {
   if (static_cast<int>(first.size()) != n_ || static_cast<int>(last.size()) != n_)
     throw std::invalid_argument("banded LU: a reach of the wrong size");
   for (int j = 0; j < n_; ++j)
@@ -71,7 +71,7 @@ bool BandedLU::factor() {
       for (int r = 0; r < km; ++r) column[r + 1] -= l[r] * f;
     }
   }
-  find_factor_extents();
+  findFactorExtents();
   return true;
 }
 
@@ -80,7 +80,7 @@ bool BandedLU::factor() {
 // on average. solve() runs each column's loops over its nonzero reach only; a zero entry skipped
 // subtracts nothing (for finite right-hand sides: b − 0·x = b except for b = −0), and the others
 // are met in the same order.
-void BandedLU::find_factor_extents() {
+void BandedLU::findFactorExtents() {
   const int kv = kl_ + ku_;
   lower_rows_.assign(n_, 0);
   upper_rows_.assign(n_, 0);

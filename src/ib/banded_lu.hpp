@@ -12,7 +12,7 @@
 // on top hold the fill of the row interchanges, so U has kl + ku superdiagonals. Deterministic:
 // the same matrix gives the same factors bit for bit (no threads, a fixed order of operations).
 //
-// Reach: set_reach() takes, from the code that assembled the matrix, the rows of each column that
+// Reach: setReach() takes, from the code that assembled the matrix, the rows of each column that
 // it may have made nonzero, for multiply() and for the next reset() to zero only those: a bell's
 // band is mostly zero rows, which would otherwise be zeroed and multiplied every step. (Scanning the
 // band for the reach instead was rejected: it cost about as much as it saved.)
@@ -35,7 +35,7 @@ class BandedLU {
     return band_[static_cast<std::size_t>(j) * rows_ + (kl_ + ku_ + i - j)];
   }
   /// Column j of the band by row: column(j)[i] is at(i, j), for i in the band. Forgets the reach;
-  /// the pointer is for writing before the next set_reach().
+  /// the pointer is for writing before the next setReach().
   double* column(int j) {
     reach_known_ = false;
     return band_.data() + static_cast<std::ptrdiff_t>(j) * (rows_ - 1) + (kl_ + ku_);
@@ -43,7 +43,7 @@ class BandedLU {
   /// Column j's nonzeros lie in rows first[j] .. last[j] (first[j] > last[j]: none); zero entries
   /// may lie there too. Given after the last write; the next write through at() or column(),
   /// factor() or reset() forgets it. Throws std::invalid_argument for rows outside the band.
-  void set_reach(const std::vector<int>& first, const std::vector<int>& last);
+  void setReach(const std::vector<int>& first, const std::vector<int>& last);
   /// Factors in place. False if a pivot is exactly zero (a singular matrix); the factors are then
   /// not usable.
   bool factor();
@@ -61,11 +61,11 @@ class BandedLU {
   std::vector<int> pivot_;
   // Per column of the factors, the farthest nonzero below the diagonal in L and above it in U.
   std::vector<int> lower_rows_, upper_rows_;
-  void find_factor_extents();
+  void findFactorExtents();
   // Per column of the matrix, the rows that may be nonzero (set_reach), valid while reach_known_.
   std::vector<int> first_row_, last_row_;
   bool reach_known_ = false;
-  void zero_reach();
+  void zeroReach();
 };
 
 }  // namespace creaturelab::ib

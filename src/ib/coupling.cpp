@@ -15,7 +15,7 @@ std::string_view to_string(ImplicitMobility mobility) {
   return mobility == ImplicitMobility::stencil ? "stencil" : "local_mass";
 }
 
-std::optional<ImplicitMobility> parse_implicit_mobility(std::string_view name) {
+std::optional<ImplicitMobility> parseImplicitMobility(std::string_view name) {
   if (name == "stencil") return ImplicitMobility::stencil;
   if (name == "local_mass") return ImplicitMobility::local_mass;
   return std::nullopt;
@@ -53,14 +53,14 @@ ImmersedBoundary2::ImmersedBoundary2(fluid::FluidSolver2& fluid, const ElasticBo
 namespace {
 
 // Unknown 2 k + axis → its place in the banded solve, 2 slot[k] + axis.
-int banded_index(const std::vector<int>& slot, int unknown) { return 2 * slot[unknown / 2] + unknown % 2; }
+int bandedIndex(const std::vector<int>& slot, int unknown) { return 2 * slot[unknown / 2] + unknown % 2; }
 
 // The largest |row − column| among the nonzeros of `a`, in the banded solve's numbering.
 int bandwidth(const Eigen::SparseMatrix<double>& a, const std::vector<int>& slot) {
   int width = 0;
   for (int j = 0; j < a.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator k(a, j); k; ++k)
-      width = std::max(width, std::abs(banded_index(slot, static_cast<int>(k.row())) - banded_index(slot, j)));
+      width = std::max(width, std::abs(bandedIndex(slot, static_cast<int>(k.row())) - bandedIndex(slot, j)));
   return width;
 }
 
@@ -69,7 +69,7 @@ int bandwidth(const Eigen::SparseMatrix<double>& a, const std::vector<int>& slot
 // entry(i, j) −= dt (M K)(i, j) over the nonzeros of the product, in one fixed order whatever the
 // storage (dense or banded), so that both solves see the same sums.
 template <class Entry>
-void ImmersedBoundary2::subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffness, double dt_s, Entry entry) const {
+void ImmersedBoundary2::subtractDtMk(const Eigen::SparseMatrix<double>& stiffness, double dt_s, Entry entry) const {
   for (int j = 0; j < stiffness.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k)
       for (Eigen::SparseMatrix<double>::InnerIterator i(mobility_, k.row()); i; ++i)
@@ -81,14 +81,14 @@ void ImmersedBoundary2::subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffn
 // the column's storage found once per column of K (the lookups were most of this stage's time), and
 // θ dt M(i, k) formed once per entry of M (mobility_dt_), as the product's left-to-right order forms it.
 // Each column's reach, the diagonal and the rows of M's columns met, goes to the band (set_reach).
-void ImmersedBoundary2::subtract_dt_mk_banded(const Eigen::SparseMatrix<double>& stiffness) {
+void ImmersedBoundary2::subtractDtMkBanded(const Eigen::SparseMatrix<double>& stiffness) {
   const int* m_outer = mobility_.outerIndexPtr();
   const double* m_dt = mobility_dt_.data();
   const int* m_row = mobility_rows_.data();
   reach_first_.resize(static_cast<std::size_t>(stiffness.outerSize()));
   reach_last_.resize(static_cast<std::size_t>(stiffness.outerSize()));
   for (int j = 0; j < stiffness.outerSize(); ++j) {
-    const int jb = banded_index(slot_, j);
+    const int jb = bandedIndex(slot_, j);
     double* column = banded_.column(jb);
     int first = jb, last = jb;
     for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness, j); k; ++k) {
@@ -100,12 +100,12 @@ void ImmersedBoundary2::subtract_dt_mk_banded(const Eigen::SparseMatrix<double>&
     reach_first_[jb] = first;
     reach_last_[jb] = last;
   }
-  banded_.set_reach(reach_first_, reach_last_);
+  banded_.setReach(reach_first_, reach_last_);
 }
 
 // mobility_rows_ and mobility_dt_, and per column of M the least and greatest of its banded rows
 // (mobility_first_, _last_). Returns M's bandwidth in the banded numbering (as bandwidth() does).
-int ImmersedBoundary2::index_mobility_rows(double theta_dt_s) {
+int ImmersedBoundary2::indexMobilityRows(double theta_dt_s) {
   const int* m_outer = mobility_.outerIndexPtr();
   const int* m_inner = mobility_.innerIndexPtr();
   const double* m_value = mobility_.valuePtr();
@@ -115,7 +115,7 @@ int ImmersedBoundary2::index_mobility_rows(double theta_dt_s) {
   mobility_last_.assign(static_cast<std::size_t>(mobility_.outerSize()), std::numeric_limits<int>::min());
   for (int k = 0; k < mobility_.outerSize(); ++k)
     for (int p = m_outer[k]; p < m_outer[k + 1]; ++p) {
-      const int row = banded_index(slot_, m_inner[p]);
+      const int row = bandedIndex(slot_, m_inner[p]);
       mobility_rows_[static_cast<std::size_t>(p)] = row;
       mobility_dt_[static_cast<std::size_t>(p)] = theta_dt_s * m_value[p];
       mobility_first_[k] = std::min(mobility_first_[k], row);
@@ -124,14 +124,14 @@ int ImmersedBoundary2::index_mobility_rows(double theta_dt_s) {
   int width = 0;
   for (int k = 0; k < mobility_.outerSize(); ++k)
     if (m_outer[k] < m_outer[k + 1]) {
-      const int column = banded_index(slot_, k);
+      const int column = bandedIndex(slot_, k);
       width = std::max({width, column - mobility_first_[k], mobility_last_[k] - column});
     }
   return width;
 }
 
 namespace {
-std::runtime_error singular_system(double t_s) {
+std::runtime_error singularSystem(double t_s) {
   return std::runtime_error("immersed boundary: the semi-implicit force system is singular at t = " +
                             std::to_string(t_s) + " s");
 }
@@ -144,17 +144,17 @@ std::runtime_error singular_system(double t_s) {
 void ImmersedBoundary2::assembleBanded(const Eigen::SparseMatrix<double>& stiffness, double theta_dt_s) {
   const int n = static_cast<int>(stiffness.rows());
   mobility_.makeCompressed();
-  const int width = index_mobility_rows(theta_dt_s) + bandwidth(stiffness, slot_);
+  const int width = indexMobilityRows(theta_dt_s) + bandwidth(stiffness, slot_);
   banded_.reset(n, width, width);
   for (int i = 0; i < n; ++i) banded_.at(i, i) = 1.0;
-  subtract_dt_mk_banded(stiffness);
+  subtractDtMkBanded(stiffness);
 }
 
 // G v through the stencils (Transfer::apply_gram), G not formed, into natural_y_ (numbering 2 marker + axis).
 const std::vector<double>& ImmersedBoundary2::applyGram(const Eigen::VectorXd& v) {
   natural_x_.assign(v.data(), v.data() + v.size());
   natural_y_.resize(natural_x_.size());
-  transfer_.apply_gram(natural_x_, natural_y_, gram_patch_);
+  transfer_.applyGram(natural_x_, natural_y_, gram_patch_);
   return natural_y_;
 }
 
@@ -172,17 +172,17 @@ Eigen::VectorXd ImmersedBoundary2::solveWithoutAssembly(const Eigen::SparseMatri
   banded_rhs_.resize(n);
   Eigen::VectorXd porous_force = Eigen::VectorXd::Zero(n);
   addPorous(force, porous_force, 1.0);  // P F
-  for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = free[i] + scale * g_force[i] + porous_force[i];
+  for (int i = 0; i < n; ++i) banded_rhs_[bandedIndex(slot_, i)] = free[i] + scale * g_force[i] + porous_force[i];
   const double dt_s = theta_dt_s / params_.implicit_theta;
   Eigen::VectorXd xn(n), predicted(n), kx(n), porous_kx(n);
   const auto apply = [&](const std::vector<double>& x, std::vector<double>& ax) {  // (I − dt (θ M + P) K) x
-    for (int i = 0; i < n; ++i) xn[i] = x[banded_index(slot_, i)];
+    for (int i = 0; i < n; ++i) xn[i] = x[bandedIndex(slot_, i)];
     kx = stiffness * xn;
     const std::vector<double>& g_kx = applyGram(kx);
     porous_kx.setZero();
     addPorous(kx, porous_kx, dt_s);
     ax.resize(n);
-    for (int i = 0; i < n; ++i) ax[banded_index(slot_, i)] = xn[i] - theta_dt_scale * g_kx[i] - porous_kx[i];
+    for (int i = 0; i < n; ++i) ax[bandedIndex(slot_, i)] = xn[i] - theta_dt_scale * g_kx[i] - porous_kx[i];
   };
   const auto assemble = [&]() -> const BandedLU& {
     transfer_.gram(scale, mobility_);
@@ -190,8 +190,8 @@ Eigen::VectorXd ImmersedBoundary2::solveWithoutAssembly(const Eigen::SparseMatri
     assembleBanded(stiffness, theta_dt_s);
     return banded_;
   };
-  if (!banded_solver_.solve(n, apply, assemble, banded_rhs_)) throw singular_system(t1_s);
-  for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[banded_index(slot_, i)];
+  if (!banded_solver_.solve(n, apply, assemble, banded_rhs_)) throw singularSystem(t1_s);
+  for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[bandedIndex(slot_, i)];
   return predicted;
 }
 
@@ -244,13 +244,13 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
       if (!order_.empty()) {
         assembleBanded(stiffness, theta_dt_s);
         banded_rhs_.resize(n);
-        for (int i = 0; i < n; ++i) banded_rhs_[banded_index(slot_, i)] = rhs[i];
-        if (!banded_solver_.solve(banded_, banded_rhs_)) throw singular_system(t1_s);
+        for (int i = 0; i < n; ++i) banded_rhs_[bandedIndex(slot_, i)] = rhs[i];
+        if (!banded_solver_.solve(banded_, banded_rhs_)) throw singularSystem(t1_s);
         predicted.resize(n);
-        for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[banded_index(slot_, i)];
+        for (int i = 0; i < n; ++i) predicted[i] = banded_rhs_[bandedIndex(slot_, i)];
       } else {
         system_.setIdentity(n, n);
-        subtract_dt_mk(stiffness, theta_dt_s, [&](int i, int j) -> double& { return system_(i, j); });
+        subtractDtMk(stiffness, theta_dt_s, [&](int i, int j) -> double& { return system_(i, j); });
         lu_.compute(system_);
         predicted = lu_.solve(rhs);
       }
@@ -314,7 +314,7 @@ CouplingStepReport ImmersedBoundary2::step(double dt_s) {
   if (params_.semi_implicit && !implicit_slip)
     for (const PorousSlip& p : porous_) slip_force_[p.marker] = force_[p.marker];
 
-  auto& density = fluid_.force_density_n_per_m3();
+  auto& density = fluid_.forceDensity_n_per_m3();
   density.fill(0.0);
   transfer_.spread(force_, density);
 

@@ -116,7 +116,7 @@ class ElasticBody {
 
 enum class ImplicitMobility { stencil, local_mass };
 std::string_view to_string(ImplicitMobility mobility);
-std::optional<ImplicitMobility> parse_implicit_mobility(std::string_view name);
+std::optional<ImplicitMobility> parseImplicitMobility(std::string_view name);
 
 struct CouplingParams {
   // Not the paper's bilinear (§3.2; selectable): with the semi-implicit step at the 0.01 s the
@@ -163,10 +163,10 @@ class ImmersedBoundary2 {
 
   const std::vector<fluid::Vec2>& markers_m() const { return markers_; }
   /// The force spread in the last step (after the semi-implicit correction), N/m.
-  const std::vector<fluid::Vec2>& applied_force_n_per_m() const { return force_; }
+  const std::vector<fluid::Vec2>& appliedForce_n_per_m() const { return force_; }
   const CouplingParams& params() const { return params_; }
   /// The banded solve's counts so far: systems solved, factorisations, refinement sweeps.
-  const ReusedBandedSolve& banded_solver() const { return banded_solver_; }
+  const ReusedBandedSolve& bandedSolver() const { return banded_solver_; }
 
  private:
   void semiImplicitForce(double t1_s, double dt_s);
@@ -188,9 +188,9 @@ class ImmersedBoundary2 {
   // The stencil mobility's M, the system I − θ dt M K and its LU (kept to reuse their storage).
   Eigen::SparseMatrix<double> mobility_;
   template <class Entry>
-  void subtract_dt_mk(const Eigen::SparseMatrix<double>& stiffness, double dt_s, Entry entry) const;
-  void subtract_dt_mk_banded(const Eigen::SparseMatrix<double>& stiffness);
-  int index_mobility_rows(double theta_dt_s);
+  void subtractDtMk(const Eigen::SparseMatrix<double>& stiffness, double dt_s, Entry entry) const;
+  void subtractDtMkBanded(const Eigen::SparseMatrix<double>& stiffness);
+  int indexMobilityRows(double theta_dt_s);
   Eigen::MatrixXd system_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   // The banded solve (bodies with a solveOrder() of at least kBandedFromMarkers markers): the

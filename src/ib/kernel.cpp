@@ -17,14 +17,14 @@ std::string_view to_string(Kernel kernel) {
   return "unknown";
 }
 
-std::optional<Kernel> parse_kernel(std::string_view name) {
+std::optional<Kernel> parseKernel(std::string_view name) {
   for (Kernel kernel : {Kernel::bilinear, Kernel::peskin4}) {
     if (to_string(kernel) == name) return kernel;
   }
   return std::nullopt;
 }
 
-int kernel_support_cells(Kernel kernel) {
+int kernelSupportCells(Kernel kernel) {
   switch (kernel) {
     case Kernel::bilinear:
       return 2;
@@ -40,10 +40,10 @@ int kernel_support_cells(Kernel kernel) {
 // product of two small non-negative numbers, without the cancellation of the expanded
 // quadratic near the ends of each interval, and lies in [1, 2].
 namespace {
-double peskin_root(double u) { return std::sqrt(1.0 + 4.0 * u * (1.0 - u)); }
+double peskinRoot(double u) { return std::sqrt(1.0 + 4.0 * u * (1.0 - u)); }
 }  // namespace
 
-double kernel_weight_1d(Kernel kernel, double r_cells) {
+double kernelWeight_1d(Kernel kernel, double r_cells) {
   const double r = std::abs(r_cells);
   if (std::isnan(r)) return std::numeric_limits<double>::quiet_NaN();
   switch (kernel) {
@@ -52,17 +52,17 @@ double kernel_weight_1d(Kernel kernel, double r_cells) {
       return r < 1.0 ? 1.0 - r : 0.0;
     case Kernel::peskin4:
       // Peskin 2002 §6, the 4-point function (see kernel.hpp for the formula as printed).
-      if (r <= 1.0) return (3.0 - 2.0 * r + peskin_root(r)) / 8.0;
+      if (r <= 1.0) return (3.0 - 2.0 * r + peskinRoot(r)) / 8.0;
       if (r < 2.0) {
         const double u = r - 1.0;  // 5 − 2r = 3 − 2u
-        return (3.0 - 2.0 * u - peskin_root(u)) / 8.0;
+        return (3.0 - 2.0 * u - peskinRoot(u)) / 8.0;
       }
       return 0.0;
   }
   return 0.0;
 }
 
-void kernel_weights_1d(Kernel kernel, double t, double (&weights)[kMaxKernelSupportCells]) {
+void kernelWeights_1d(Kernel kernel, double t, double (&weights)[kMaxKernelSupportCells]) {
   switch (kernel) {
     case Kernel::bilinear:
       // Faces f and f + 1 at distances t and 1 − t.
@@ -78,7 +78,7 @@ void kernel_weights_1d(Kernel kernel, double t, double (&weights)[kMaxKernelSupp
       //   phi(1 − t) = (1 + 2t + q)/8,  phi(2 − t) = (1 + 2t − q)/8,
       // one square root for all four; the q cancel in the even pair (f − 1, f + 1) and in the odd
       // pair (f, f + 2), each summing to 4/8 = 1/2 (Peskin's even/odd condition).
-      const double q = peskin_root(t);
+      const double q = peskinRoot(t);
       const double a = 3.0 - 2.0 * t;
       const double b = 1.0 + 2.0 * t;
       weights[0] = (a - q) / 8.0;
@@ -90,29 +90,29 @@ void kernel_weights_1d(Kernel kernel, double t, double (&weights)[kMaxKernelSupp
   }
 }
 
-int stencil_faces(Kernel kernel, int scale) {
-  const int faces = scale * kernel_support_cells(kernel);
+int stencilFaces(Kernel kernel, int scale) {
+  const int faces = scale * kernelSupportCells(kernel);
   if (scale < 1 || faces > kMaxStencilFaces) {
     throw std::invalid_argument("immersed-boundary kernel: a " + std::string(to_string(kernel)) +
                                 " kernel stretched " + std::to_string(scale) + " times is not supported (the scale must be " +
-                                "a whole number from 1 to " + std::to_string(kMaxStencilFaces / kernel_support_cells(kernel)) +
+                                "a whole number from 1 to " + std::to_string(kMaxStencilFaces / kernelSupportCells(kernel)) +
                                 ")");
   }
   return faces;
 }
 
-void stretched_kernel_weights_1d(Kernel kernel, int scale, double t, double (&weights)[kMaxStencilFaces]) {
-  const int faces = stencil_faces(kernel, scale);
+void stretchedKernelWeights_1d(Kernel kernel, int scale, double t, double (&weights)[kMaxStencilFaces]) {
+  const int faces = stencilFaces(kernel, scale);
   if (scale == 1) {
     double base[kMaxKernelSupportCells];
-    kernel_weights_1d(kernel, t, base);
+    kernelWeights_1d(kernel, t, base);
     for (int a = 0; a < kMaxStencilFaces; ++a) weights[a] = a < kMaxKernelSupportCells ? base[a] : 0.0;
     return;
   }
   const double inv_scale = 1.0 / scale;
   const double first = t + 0.5 * faces - 1.0;  // distance, in cells, from the point to the stencil's first face
   for (int a = 0; a < kMaxStencilFaces; ++a)
-    weights[a] = a < faces ? kernel_weight_1d(kernel, (first - a) * inv_scale) * inv_scale : 0.0;
+    weights[a] = a < faces ? kernelWeight_1d(kernel, (first - a) * inv_scale) * inv_scale : 0.0;
 }
 
 }  // namespace creaturelab::ib

@@ -36,13 +36,13 @@ enum class Kernel {
 /// "bilinear" or "peskin4" (the enumerator names).
 std::string_view to_string(Kernel kernel);
 /// Inverse of to_string (exact, case-sensitive match); std::nullopt for an unknown name.
-std::optional<Kernel> parse_kernel(std::string_view name);
+std::optional<Kernel> parseKernel(std::string_view name);
 
 /// Width of the kernel's support in cells: phi(r) = 0 for |r| ≥ support / 2. Also the number of
 /// faces per axis a marker's stencil covers: 2 (bilinear) or 4 (peskin4).
-int kernel_support_cells(Kernel kernel);
+int kernelSupportCells(Kernel kernel);
 
-/// The largest kernel_support_cells() of any kernel.
+/// The largest kernelSupportCells() of any kernel.
 inline constexpr int kMaxKernelSupportCells = 4;
 
 /// The largest stencil width, in faces per axis, of a stretched kernel (stretched_kernel_weights_1d):
@@ -50,15 +50,15 @@ inline constexpr int kMaxKernelSupportCells = 4;
 inline constexpr int kMaxStencilFaces = 16;
 
 /// phi(r) with r = distance / dx in cells (dimensionless; symmetric in r). NaN for a NaN r.
-double kernel_weight_1d(Kernel kernel, double r_cells);
+double kernelWeight_1d(Kernel kernel, double r_cells);
 
 /// The weights of a whole stencil. A point at xs (in face-index units) has the stencil
 /// faces f − s/2 + 1 + a, a = 0..s−1, with f = floor(xs), t = xs − f in [0, 1) and
-/// s = kernel_support_cells(kernel); weights[a] = phi(t + s/2 − 1 − a), unused entries 0.
+/// s = kernelSupportCells(kernel); weights[a] = phi(t + s/2 − 1 − a), unused entries 0.
 /// Equal to s calls of kernel_weight_1d to round-off, but with one square root (peskin4) and
 /// written so that the weights sum to 1 (and, for peskin4, the even and odd ones to 1/2) up
 /// to a few roundings.
-void kernel_weights_1d(Kernel kernel, double t, double (&weights)[kMaxKernelSupportCells]);
+void kernelWeights_1d(Kernel kernel, double t, double (&weights)[kMaxKernelSupportCells]);
 
 /// The kernel stretched by a whole factor m ≥ 1, phi_m(r) = phi(r / m) / m, whose support is
 /// m · support faces: a delta function of fixed physical width on any grid whose cell divides
@@ -69,9 +69,9 @@ void kernel_weights_1d(Kernel kernel, double t, double (&weights)[kMaxKernelSupp
 /// The stencil of a point at xs starts at face floor(xs) − m·s/2 + 1 and
 /// weights[a] = phi_m(t + m·s/2 − 1 − a), a = 0..m·s−1; for m = 1 these are kernel_weights_1d's
 /// weights, bit for bit. Throws std::invalid_argument if m < 1 or m · support > kMaxStencilFaces.
-void stretched_kernel_weights_1d(Kernel kernel, int scale, double t, double (&weights)[kMaxStencilFaces]);
+void stretchedKernelWeights_1d(Kernel kernel, int scale, double t, double (&weights)[kMaxStencilFaces]);
 
-/// Faces per axis of the stretched kernel's stencil: scale · kernel_support_cells(kernel).
-int stencil_faces(Kernel kernel, int scale);
+/// Faces per axis of the stretched kernel's stencil: scale · kernelSupportCells(kernel).
+int stencilFaces(Kernel kernel, int scale);
 
 }  // namespace creaturelab::ib

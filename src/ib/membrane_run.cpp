@@ -11,7 +11,7 @@ double laplacePressureRatio(const fluid::MacGrid2& g, const PolygonShape& shape,
   long n_in = 0, n_out = 0;
   for (int j = 0; j < g.ny; ++j)
     for (int i = 0; i < g.nx; ++i) {
-      const fluid::Vec2 c = g.cell_centre_m(i, j);
+      const fluid::Vec2 c = g.cellCentre_m(i, j);
       const double d = std::hypot(c.x - shape.centroid_m.x, c.y - shape.centroid_m.y);
       if (d < 0.5 * radius) {
         inside += g.pressure_pa(i, j);
@@ -53,7 +53,7 @@ void MembraneRunRecorder::frame(double t_s, std::span<const fluid::Vec2> x, cons
                            shape.aspect_ratio,
                            body_.elasticEnergy(x),
                            energyExcess(body_, x, shape.area_m2),
-                           fluid.kinetic_energy_joule_per_m()};
+                           fluid.kineticEnergy_joule_per_m()};
   for (std::size_t s = 0; s < series_.size(); ++s) series_[s].values.push_back(values[s]);
   for (const auto& p : x) marker_data_.insert(marker_data_.end(), {p.x, p.y});
 }

@@ -19,7 +19,7 @@ std::string show(double value) {
   return out.str();
 }
 
-std::string marker_name(std::size_t k, fluid::Vec2 p) {
+std::string markerName(std::size_t k, fluid::Vec2 p) {
   return "immersed-boundary marker " + std::to_string(k) + " at (" + show(p.x) + ", " + show(p.y) + ") m";
 }
 
@@ -28,13 +28,13 @@ std::string marker_name(std::size_t k, fluid::Vec2 p) {
 // floor(xs) − s/2 + 1 (kernel_weights_1d); it must lie within the faces first_face..last_face.
 // Bounds are compared as doubles before any conversion to int, so that a huge position cannot
 // overflow the cast. False if the stencil does not fit.
-bool axis_stencil(Kernel kernel, int scale, int support, double xs, int first_face, int last_face, int& start,
+bool axisStencil(Kernel kernel, int scale, int support, double xs, int first_face, int last_face, int& start,
                   double (&weights)[kMaxStencilFaces]) {
   const double f = std::floor(xs);
   const double first = f - static_cast<double>(support / 2 - 1);
   if (!(first >= first_face && first + static_cast<double>(support - 1) <= last_face)) return false;
   start = static_cast<int>(first);
-  stretched_kernel_weights_1d(kernel, scale, xs - f, weights);
+  stretchedKernelWeights_1d(kernel, scale, xs - f, weights);
   return true;
 }
 
@@ -42,7 +42,7 @@ bool axis_stencil(Kernel kernel, int scale, int support, double xs, int first_fa
 // compile-time S for the common widths, so that the inner loops unroll). at(i, j) points to face
 // (i, j) of the field written, whose row runs on from it: a whole face field or a patch of one.
 template <int S = 0, class Value, class At>
-void spread_component(const std::vector<FaceStencil>& stencils, Value value, At at, int support = S) {
+void spreadComponent(const std::vector<FaceStencil>& stencils, Value value, At at, int support = S) {
   if constexpr (S != 0) support = S;
   for (std::size_t k = 0; k < stencils.size(); ++k) {
     const FaceStencil& s = stencils[k];
@@ -57,7 +57,7 @@ void spread_component(const std::vector<FaceStencil>& stencils, Value value, At 
 
 // store(k, Σ_b wy[b] Σ_a wx[a] u(i0 + a, j0 + b)), for one component (S and at as in spread_component).
 template <int S = 0, class At, class Store>
-void interpolate_component(const std::vector<FaceStencil>& stencils, At at, Store store, int support = S) {
+void interpolateComponent(const std::vector<FaceStencil>& stencils, At at, Store store, int support = S) {
   if constexpr (S != 0) support = S;
   for (std::size_t k = 0; k < stencils.size(); ++k) {
     const FaceStencil& s = stencils[k];
@@ -73,14 +73,14 @@ void interpolate_component(const std::vector<FaceStencil>& stencils, At at, Stor
 }
 
 // Face (i, j) of a face field.
-auto faces_of(fluid::Array2& field) {
+auto facesOf(fluid::Array2& field) {
   return [&field](int i, int j) { return field.row(j) + i; };
 }
-auto faces_of(const fluid::Array2& field) {
+auto facesOf(const fluid::Array2& field) {
   return [&field](int i, int j) { return field.row(j) + i; };
 }
 
-void require_shape(const fluid::Array2& a, int nx, int ny, const char* what) {
+void requireShape(const fluid::Array2& a, int nx, int ny, const char* what) {
   if (a.nx() != nx || a.ny() != ny) {
     throw std::invalid_argument(std::string("immersed-boundary transfer: ") + what + " is " + std::to_string(a.nx()) +
                                 " x " + std::to_string(a.ny()) + " faces, but the located grid has " +
@@ -88,7 +88,7 @@ void require_shape(const fluid::Array2& a, int nx, int ny, const char* what) {
   }
 }
 
-void require_count(std::size_t got, int markers, const char* what) {
+void requireCount(std::size_t got, int markers, const char* what) {
   if (got != static_cast<std::size_t>(markers)) {
     throw std::invalid_argument(std::string("immersed-boundary transfer: ") + std::to_string(got) + " " + what +
                                 " for " + std::to_string(markers) + " located markers");
@@ -99,14 +99,14 @@ void require_count(std::size_t got, int markers, const char* what) {
 
 namespace {
 // axis_stencil for a marker stretched `scale` times inside a stencil `support` faces wide (its own
-// stencil_faces(kernel, scale) ≤ support): its faces centred in the wide window, zero weights around.
-bool padded_axis_stencil(Kernel kernel, int scale, int support, double xs, int first_face, int last_face, int& start,
+// stencilFaces(kernel, scale) ≤ support): its faces centred in the wide window, zero weights around.
+bool paddedAxisStencil(Kernel kernel, int scale, int support, double xs, int first_face, int last_face, int& start,
                          double (&weights)[kMaxStencilFaces]) {
-  const int own = stencil_faces(kernel, scale);
-  if (own == support) return axis_stencil(kernel, scale, support, xs, first_face, last_face, start, weights);
+  const int own = stencilFaces(kernel, scale);
+  if (own == support) return axisStencil(kernel, scale, support, xs, first_face, last_face, start, weights);
   const int pad = (support - own) / 2;  // both even: support − own is even
   double narrow[kMaxStencilFaces] = {};
-  if (!axis_stencil(kernel, scale, own, xs, first_face + pad, last_face - pad, start, narrow)) return false;
+  if (!axisStencil(kernel, scale, own, xs, first_face + pad, last_face - pad, start, narrow)) return false;
   start -= pad;
   for (int a = 0; a < kMaxStencilFaces; ++a) weights[a] = 0.0;
   for (int a = 0; a < own; ++a) weights[pad + a] = narrow[a];
@@ -128,8 +128,8 @@ void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<cons
                                 " kernel stretches for " + std::to_string(positions_m.size()) + " markers");
   int widest = kernel_scale;
   if (!marker_scales.empty()) widest = *std::max_element(marker_scales.begin(), marker_scales.end());
-  for (const int s : marker_scales) ib::stencil_faces(kernel, s);  // throws for a scale out of range
-  support_ = ib::stencil_faces(kernel, widest);  // throws for a scale out of range
+  for (const int s : marker_scales) ib::stencilFaces(kernel, s);  // throws for a scale out of range
+  support_ = ib::stencilFaces(kernel, widest);  // throws for a scale out of range
   kernel_ = kernel;
   scale_ = widest;
   nx_ = grid.nx;
@@ -144,7 +144,7 @@ void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<cons
     if (!(std::isfinite(p.x) && std::isfinite(p.y))) {
       u_stencils_.clear();
       v_stencils_.clear();
-      throw std::invalid_argument(marker_name(k, p) + " is not finite");
+      throw std::invalid_argument(markerName(k, p) + " is not finite");
     }
     const double xs = p.x / grid.dx_m;  // position in cell units
     const double ys = p.y / grid.dx_m;
@@ -153,17 +153,17 @@ void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<cons
     // u faces at (i, j + 1/2) cells: interior faces i = 1..nx−1, all rows j = 0..ny−1.
     // v faces at (i + 1/2, j) cells: all columns i = 0..nx−1, interior faces j = 1..ny−1.
     const int m = marker_scales.empty() ? scale_ : marker_scales[k];
-    const bool fits = padded_axis_stencil(kernel, m, support_, xs, 1, nx_ - 1, u.i0, u.wx) &&
-                      padded_axis_stencil(kernel, m, support_, ys - 0.5, 0, ny_ - 1, u.j0, u.wy) &&
-                      padded_axis_stencil(kernel, m, support_, xs - 0.5, 0, nx_ - 1, v.i0, v.wx) &&
-                      padded_axis_stencil(kernel, m, support_, ys, 1, ny_ - 1, v.j0, v.wy);
+    const bool fits = paddedAxisStencil(kernel, m, support_, xs, 1, nx_ - 1, u.i0, u.wx) &&
+                      paddedAxisStencil(kernel, m, support_, ys - 0.5, 0, ny_ - 1, u.j0, u.wy) &&
+                      paddedAxisStencil(kernel, m, support_, xs - 0.5, 0, nx_ - 1, v.i0, v.wx) &&
+                      paddedAxisStencil(kernel, m, support_, ys, 1, ny_ - 1, v.j0, v.wy);
     if (!fits) {
       u_stencils_.clear();
       v_stencils_.clear();
       const int reach = support_ / 2;
       const double margin_m = reach * grid.dx_m;
       throw std::invalid_argument(
-          marker_name(k, p) + " is within " + std::to_string(reach) + (reach == 1 ? " cell" : " cells") +
+          markerName(k, p) + " is within " + std::to_string(reach) + (reach == 1 ? " cell" : " cells") +
           " of the domain wall: the " + std::string(to_string(kernel)) + " kernel" +
           (scale_ > 1 ? " stretched " + std::to_string(scale_) + " times" : std::string()) + " reaches " +
           std::to_string(reach) +
@@ -176,49 +176,49 @@ void Transfer::locate(const fluid::MacGrid2& grid, Kernel kernel, std::span<cons
 
 void Transfer::spread(std::span<const fluid::Vec2> forces_n_per_m,
                       fluid::FaceVectorField2& force_density_n_per_m3) const {
-  require_count(forces_n_per_m.size(), marker_count(), "forces");
-  if (marker_count() == 0) return;
-  require_shape(force_density_n_per_m3.x, nx_ + 1, ny_, "the x force density (u faces)");
-  require_shape(force_density_n_per_m3.y, nx_, ny_ + 1, "the y force density (v faces)");
+  requireCount(forces_n_per_m.size(), markerCount(), "forces");
+  if (markerCount() == 0) return;
+  requireShape(force_density_n_per_m3.x, nx_ + 1, ny_, "the x force density (u faces)");
+  requireShape(force_density_n_per_m3.y, nx_, ny_ + 1, "the y force density (v faces)");
   const double inv_area = inv_cell_area_per_m2_;
   const auto fx = [&](std::size_t k) { return forces_n_per_m[k].x * inv_area; };
   const auto fy = [&](std::size_t k) { return forces_n_per_m[k].y * inv_area; };
   auto& density_x = force_density_n_per_m3.x;
   auto& density_y = force_density_n_per_m3.y;
   if (support_ == 2) {
-    spread_component<2>(u_stencils_, fx, faces_of(density_x));
-    spread_component<2>(v_stencils_, fy, faces_of(density_y));
+    spreadComponent<2>(u_stencils_, fx, facesOf(density_x));
+    spreadComponent<2>(v_stencils_, fy, facesOf(density_y));
   } else if (support_ == 4) {
-    spread_component<4>(u_stencils_, fx, faces_of(density_x));
-    spread_component<4>(v_stencils_, fy, faces_of(density_y));
+    spreadComponent<4>(u_stencils_, fx, facesOf(density_x));
+    spreadComponent<4>(v_stencils_, fy, facesOf(density_y));
   } else {
-    spread_component(u_stencils_, fx, faces_of(density_x), support_);
-    spread_component(v_stencils_, fy, faces_of(density_y), support_);
+    spreadComponent(u_stencils_, fx, facesOf(density_x), support_);
+    spreadComponent(v_stencils_, fy, facesOf(density_y), support_);
   }
 }
 
 void Transfer::interpolate(const fluid::MacGrid2& grid, std::span<fluid::Vec2> velocities_m_per_s) const {
-  require_count(velocities_m_per_s.size(), marker_count(), "velocities");
-  if (marker_count() == 0) return;
+  requireCount(velocities_m_per_s.size(), markerCount(), "velocities");
+  if (markerCount() == 0) return;
   if (grid.nx != nx_ || grid.ny != ny_ || grid.dx_m != dx_m_) {
     throw std::invalid_argument("immersed-boundary transfer: interpolating on a grid of " + std::to_string(grid.nx) +
                                 " x " + std::to_string(grid.ny) + " cells of " + show(grid.dx_m) +
                                 " m, but the markers were located on " + std::to_string(nx_) + " x " +
                                 std::to_string(ny_) + " cells of " + show(dx_m_) + " m");
   }
-  require_shape(grid.u_m_per_s, nx_ + 1, ny_, "the u velocity");
-  require_shape(grid.v_m_per_s, nx_, ny_ + 1, "the v velocity");
+  requireShape(grid.u_m_per_s, nx_ + 1, ny_, "the u velocity");
+  requireShape(grid.v_m_per_s, nx_, ny_ + 1, "the v velocity");
   const auto ux = [&](std::size_t k, double sum) { velocities_m_per_s[k].x = sum; };
   const auto uy = [&](std::size_t k, double sum) { velocities_m_per_s[k].y = sum; };
   if (support_ == 2) {
-    interpolate_component<2>(u_stencils_, faces_of(grid.u_m_per_s), ux);
-    interpolate_component<2>(v_stencils_, faces_of(grid.v_m_per_s), uy);
+    interpolateComponent<2>(u_stencils_, facesOf(grid.u_m_per_s), ux);
+    interpolateComponent<2>(v_stencils_, facesOf(grid.v_m_per_s), uy);
   } else if (support_ == 4) {
-    interpolate_component<4>(u_stencils_, faces_of(grid.u_m_per_s), ux);
-    interpolate_component<4>(v_stencils_, faces_of(grid.v_m_per_s), uy);
+    interpolateComponent<4>(u_stencils_, facesOf(grid.u_m_per_s), ux);
+    interpolateComponent<4>(v_stencils_, facesOf(grid.v_m_per_s), uy);
   } else {
-    interpolate_component(u_stencils_, faces_of(grid.u_m_per_s), ux, support_);
-    interpolate_component(v_stencils_, faces_of(grid.v_m_per_s), uy, support_);
+    interpolateComponent(u_stencils_, facesOf(grid.u_m_per_s), ux, support_);
+    interpolateComponent(v_stencils_, facesOf(grid.v_m_per_s), uy, support_);
   }
 }
 
@@ -267,7 +267,7 @@ struct LowerColumns {
   std::vector<double> value;
 };
 
-LowerColumns lower_columns(const std::vector<FaceStencil>& st, int support, double scale) {
+LowerColumns lowerColumns(const std::vector<FaceStencil>& st, int support, double scale) {
   const int n = static_cast<int>(st.size());
   const StencilColumns cols(st);
   LowerColumns lower;
@@ -305,7 +305,7 @@ LowerColumns lower_columns(const std::vector<FaceStencil>& st, int support, doub
 // One component's G x: x spread onto a zeroed patch just covering its stencils and read back
 // through them (spread_component, interpolate_component), in marker order both times.
 template <int S = 0>
-void apply_gram_component(const std::vector<FaceStencil>& st, int c, const double* x, double* out,
+void applyGramComponent(const std::vector<FaceStencil>& st, int c, const double* x, double* out,
                           std::vector<double>& patch, int support = S) {
   if constexpr (S != 0) support = S;
   int i_lo = st[0].i0, i_hi = st[0].i0, j_lo = st[0].j0, j_hi = st[0].j0;
@@ -316,26 +316,26 @@ void apply_gram_component(const std::vector<FaceStencil>& st, int c, const doubl
   const long width = i_hi - i_lo + support;
   patch.assign(static_cast<std::size_t>(width * (j_hi - j_lo + support)), 0.0);
   const auto at = [&](int i, int j) { return patch.data() + (j - j_lo) * width + (i - i_lo); };
-  spread_component<S>(st, [&](std::size_t k) { return x[2 * k + c]; }, at, support);
-  interpolate_component<S>(st, at, [&](std::size_t k, double sum) { out[2 * k + c] = sum; }, support);
+  spreadComponent<S>(st, [&](std::size_t k) { return x[2 * k + c]; }, at, support);
+  interpolateComponent<S>(st, at, [&](std::size_t k, double sum) { out[2 * k + c] = sum; }, support);
 }
 
 }  // namespace
 
-void Transfer::apply_gram(std::span<const double> x, std::span<double> out, std::vector<double>& patch) const {
-  const std::size_t n = 2 * static_cast<std::size_t>(marker_count());
+void Transfer::applyGram(std::span<const double> x, std::span<double> out, std::vector<double>& patch) const {
+  const std::size_t n = 2 * static_cast<std::size_t>(markerCount());
   if (x.size() != n || out.size() != n)
     throw std::invalid_argument("immersed-boundary transfer: apply_gram takes vectors of twice the " +
-                                std::to_string(marker_count()) + " located markers");
+                                std::to_string(markerCount()) + " located markers");
   if (n == 0) return;
   for (int c = 0; c < 2; ++c) {
     const std::vector<FaceStencil>& st = c == 0 ? u_stencils_ : v_stencils_;
     if (support_ == 4)
-      apply_gram_component<4>(st, c, x.data(), out.data(), patch);
+      applyGramComponent<4>(st, c, x.data(), out.data(), patch);
     else if (support_ == 8)
-      apply_gram_component<8>(st, c, x.data(), out.data(), patch);
+      applyGramComponent<8>(st, c, x.data(), out.data(), patch);
     else
-      apply_gram_component(st, c, x.data(), out.data(), patch, support_);
+      applyGramComponent(st, c, x.data(), out.data(), patch, support_);
   }
 }
 
@@ -345,9 +345,9 @@ void Transfer::apply_gram(std::span<const double> x, std::span<double> out, std:
 // the diagonal is the mirror of one below it: only those on and below are computed, the ones above
 // copied from them (about a third fewer instructions a call).
 void Transfer::gram(double scale, Eigen::SparseMatrix<double>& out) const {
-  const int n = marker_count();
-  const LowerColumns lower[2] = {lower_columns(u_stencils_, support_, scale),
-                                 lower_columns(v_stencils_, support_, scale)};
+  const int n = markerCount();
+  const LowerColumns lower[2] = {lowerColumns(u_stencils_, support_, scale),
+                                 lowerColumns(v_stencils_, support_, scale)};
   // above[c][l]: entries of column l above the diagonal, one for each k < l with (l, k) below it.
   std::vector<int> above[2] = {std::vector<int>(n, 0), std::vector<int>(n, 0)};
   for (int c = 0; c < 2; ++c)

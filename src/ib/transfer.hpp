@@ -65,10 +65,10 @@ class Transfer {
   ///
   /// `kernel_scale` m stretches the kernel to m cells per kernel unit (stretched_kernel_weights_1d):
   /// a delta function of width m · support · dx; 1 is Peskin's grid-scaled delta_h. Throws
-  /// std::invalid_argument for a scale stencil_faces() refuses.
+  /// std::invalid_argument for a scale stencilFaces() refuses.
   ///
   /// `marker_scales`, if not empty, gives each marker its own stretch (one per marker, each accepted
-  /// by stencil_faces()): a filament spread narrower than the body it hangs from. Every stencil then
+  /// by stencilFaces()): a filament spread narrower than the body it hangs from. Every stencil then
   /// spans the widest one's faces, a narrower marker's weights centred in it with zeros around, so
   /// spread, interpolate and gram treat all markers alike (a marker keeps the widest kernel's
   /// distance from the walls). `kernel_scale` is then unused.
@@ -77,16 +77,16 @@ class Transfer {
 
   /// ADDS Σ_k F_k delta_h(x_face − X_k) into the face field; delta_h = phi(dx)phi(dy)/dx².
   /// Forces are per metre of depth (N/m, 2-D), so the density is N/m³.
-  /// Throws std::invalid_argument if forces_n_per_m.size() != marker_count() or the field's
+  /// Throws std::invalid_argument if forces_n_per_m.size() != markerCount() or the field's
   /// shape is not that of the located grid's faces.
   void spread(std::span<const fluid::Vec2> forces_n_per_m, fluid::FaceVectorField2& force_density_n_per_m3) const;
 
   /// U_k = Σ_faces u(face) phi phi (the weights sum to 1). Overwrites velocities_m_per_s.
-  /// Throws std::invalid_argument if velocities_m_per_s.size() != marker_count() or the grid is
+  /// Throws std::invalid_argument if velocities_m_per_s.size() != markerCount() or the grid is
   /// not the shape and cell size that locate() saw.
   void interpolate(const fluid::MacGrid2& grid, std::span<fluid::Vec2> velocities_m_per_s) const;
 
-  int marker_count() const { return static_cast<int>(u_stencils_.size()); }
+  int markerCount() const { return static_cast<int>(u_stencils_.size()); }
 
   /// The Gram matrix of the located stencils, G(2k + c, 2l + c) = Σ_faces w_k w_l on the faces of
   /// component c (x: u faces, y: v faces), 0 between components: interpolate(spread(F)) = G F / dx².
@@ -101,22 +101,22 @@ class Transfer {
   /// instead of marker pair by marker pair). `patch` is scratch, kept between calls to reuse its
   /// storage. Why: the semi-implicit coupling's refinement sweeps need M x every step but G itself
   /// only when they refactor (ib/coupling.cpp), and forming G is costly.
-  void apply_gram(std::span<const double> x, std::span<double> out, std::vector<double>& patch) const;
+  void applyGram(std::span<const double> x, std::span<double> out, std::vector<double>& patch) const;
 
   /// The kernel of the last locate() (bilinear before the first).
   Kernel kernel() const { return kernel_; }
   /// The stretch of the last locate() (1 before the first; the widest with marker_scales) and its
   /// stencil width in faces per axis.
-  int kernel_scale() const { return scale_; }
-  int stencil_faces() const { return support_; }
+  int kernelScale() const { return scale_; }
+  int stencilFaces() const { return support_; }
   /// Stencil of marker k on u faces (x components) and on v faces (y components).
-  const FaceStencil& u_stencil(int marker) const { return u_stencils_.at(static_cast<std::size_t>(marker)); }
-  const FaceStencil& v_stencil(int marker) const { return v_stencils_.at(static_cast<std::size_t>(marker)); }
+  const FaceStencil& uStencil(int marker) const { return u_stencils_.at(static_cast<std::size_t>(marker)); }
+  const FaceStencil& vStencil(int marker) const { return v_stencils_.at(static_cast<std::size_t>(marker)); }
 
  private:
   Kernel kernel_ = Kernel::bilinear;
   int scale_ = 1;
-  int support_ = 2;            // stencil faces per axis: scale_ · kernel_support_cells(kernel_)
+  int support_ = 2;            // stencil faces per axis: scale_ · kernelSupportCells(kernel_)
   int nx_ = 0;                 // cells of the located grid
   int ny_ = 0;
   double dx_m_ = 0.0;          // its cell size

@@ -34,7 +34,7 @@ Swimmer::Swimmer(const SwimmerConfig& config) : config_(config) {
   if (config.tentacle_kernel_scale < 0) throw std::invalid_argument("the tentacles' kernel stretch must be >= 0");
   coupling_ = std::make_unique<ib::ImmersedBoundary2>(*fluid_, *body_, placed(body_->model(), config),
                                                       couplingFor(body_->model(), config));
-  initial_elastic_j_per_m_ = elastic_energy_j_per_m();
+  initial_elastic_j_per_m_ = elasticEnergy_j_per_m();
 }
 
 ib::CouplingStepReport Swimmer::step() {
@@ -59,7 +59,7 @@ ib::CouplingStepReport Swimmer::step() {
       muscle_work_j_per_m_ += tension_[m] * (before - after);
     }
   }
-  const auto& force = coupling_->applied_force_n_per_m();
+  const auto& force = coupling_->appliedForce_n_per_m();
   const auto& x = coupling_->markers_m();
   for (std::size_t k = 0; k < x.size(); ++k)
     fluid_work_j_per_m_ += force[k].x * (x[k].x - previous_[k].x) + force[k].y * (x[k].y - previous_[k].y);
@@ -84,7 +84,7 @@ void Swimmer::checkChain() const {
   }
 }
 
-double Swimmer::elastic_energy_j_per_m() const {
+double Swimmer::elasticEnergy_j_per_m() const {
   return body_->elasticEnergy(fluid_->time_s(), coupling_->markers_m());
 }
 

@@ -47,19 +47,19 @@ class Swimmer {
   /// Work the body has done on the fluid since the start, Σ_steps Σ_k F_k · (X_k^{n+1} − X_k^n), J per
   /// metre of depth, with F the force actually spread (Peskin 2002: with adjoint spreading and
   /// interpolation this is the power the fluid receives).
-  double fluid_work_j_per_m() const { return fluid_work_j_per_m_; }
+  double fluidWork_j_per_m() const { return fluid_work_j_per_m_; }
   /// Elastic energy of the body now, J per metre of depth.
-  double elastic_energy_j_per_m() const;
+  double elasticEnergy_j_per_m() const;
   /// Work of the muscles' contractile elements since the start, J per metre of depth: the
   /// power −Σ_m T_m dr_m/dt (tension times the rate the rest length shortens) summed over steps,
   /// with the tension of the positions the step's force was evaluated at and the exact change
   /// of the rest lengths over the step.
-  double muscle_work_j_per_m() const { return muscle_work_j_per_m_; }
+  double muscleWork_j_per_m() const { return muscle_work_j_per_m_; }
   /// The same work by the energy balance −Σ T dr/dt = dE_elastic/dt + F · U: elastic energy gained
-  /// plus work on the fluid. A cross-check of muscle_work_j_per_m(); the two differ by the
+  /// plus work on the fluid. A cross-check of muscleWork_j_per_m(); the two differ by the
   /// semi-implicit step's numerical dissipation.
-  double muscle_work_by_balance_j_per_m() const {
-    return elastic_energy_j_per_m() - initial_elastic_j_per_m_ + fluid_work_j_per_m_;
+  double muscleWorkByBalance_j_per_m() const {
+    return elasticEnergy_j_per_m() - initial_elastic_j_per_m_ + fluid_work_j_per_m_;
   }
   const fluid::FluidSolver2& fluid() const { return *fluid_; }
   fluid::FluidSolver2& fluid() { return *fluid_; }

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
 
-fluid::WallType wall(const ParamReader& r, const std::string& name) { return *fluid::parse_wall_type(r.text(name)); }
+fluid::WallType wall(const ParamReader& r, const std::string& name) { return *fluid::parseWallType(r.text(name)); }
 
 fluid::FluidParams fluidParams(const ParamReader& r) {
   fluid::FluidParams f = squareFluidParams(r, r.real("frame_s") / double(r.integer("substeps")));
@@ -31,7 +31,7 @@ fluid::FluidParams fluidParams(const ParamReader& r) {
 coupling::RigidFluidParams rigidFluidParams(const ParamReader& r) {
   coupling::RigidFluidParams c;
   c.forcing = r.text("forcing") == "sweeps" ? coupling::Forcing::sweeps : coupling::Forcing::projected;
-  c.kernel = *ib::parse_kernel(r.text("kernel"));
+  c.kernel = *ib::parseKernel(r.text("kernel"));
   c.marker_spacing_cells = r.real("marker_spacing_cells");
   c.forcing_tolerance = r.real("forcing_tolerance");
   c.max_forcing_iterations = int(r.integer("max_forcing_iterations"));

@@ -12,18 +12,18 @@ namespace {
 
 void setInitial(const FluidKindParams& q, fluid::MacGrid2& grid) {
   if (q.initial == "taylor_green") {
-    fluid::set_taylor_green(grid, {q.amplitude_m_per_s});
+    fluid::setTaylorGreen(grid, {q.amplitude_m_per_s});
   } else if (q.initial == "vortex_pair") {
     fluid::VortexPair pair;
     pair.circulation_m2_per_s = q.circulation_m2_per_s;
     pair.centre_y_fraction = q.vortex_height_fraction;
-    fluid::set_vortex_pair(grid, pair);
+    fluid::setVortexPair(grid, pair);
   } else if (q.initial == "shear_layer") {
     fluid::ShearLayer layer;
     layer.speed_m_per_s = q.amplitude_m_per_s;
-    fluid::set_shear_layer(grid, layer);
+    fluid::setShearLayer(grid, layer);
   } else {
-    fluid::set_rest(grid);
+    fluid::setRest(grid);
   }
 }
 
@@ -31,13 +31,13 @@ void setInitial(const FluidKindParams& q, fluid::MacGrid2& grid) {
 void appendFrame(const fluid::FluidSolver2& solver, FieldFrames& frames, fluid::Array2& u, fluid::Array2& v,
                  fluid::Array2& w) {
   const auto& g = solver.grid();
-  fluid::velocity_at_centres(g, u, v);
-  fluid::vorticity_at_centres(g, solver.walls(), w);
+  fluid::velocityAtCentres(g, u, v);
+  fluid::vorticityAtCentres(g, solver.walls(), w);
   frames.time_s.push_back(solver.time_s());
   auto add = [&](const std::string& name, const double* data, const char* unit) {
     Field& f = frames.fields[name];
     f.unit = unit;
-    f.data.insert(f.data.end(), data, data + g.cell_count());
+    f.data.insert(f.data.end(), data, data + g.cellCount());
   };
   add("u_m_per_s", u.data(), "m/s");
   add("v_m_per_s", v.data(), "m/s");
@@ -61,11 +61,11 @@ void taylorGreenError(const fluid::FluidSolver2& solver, double amplitude, doubl
   for (int j = 0; j < g.ny; ++j)
     for (int i = 0; i <= g.nx; ++i)
       visit(g.u_m_per_s(i, j),
-            fluid::taylor_green_velocity_m_per_s(g.u_position_m(i, j), t, g.width_m(), g.height_m(), amplitude, nu).x);
+            fluid::taylorGreenVelocity_m_per_s(g.uPosition_m(i, j), t, g.width_m(), g.height_m(), amplitude, nu).x);
   for (int j = 0; j <= g.ny; ++j)
     for (int i = 0; i < g.nx; ++i)
       visit(g.v_m_per_s(i, j),
-            fluid::taylor_green_velocity_m_per_s(g.v_position_m(i, j), t, g.width_m(), g.height_m(), amplitude, nu).y);
+            fluid::taylorGreenVelocity_m_per_s(g.vPosition_m(i, j), t, g.width_m(), g.height_m(), amplitude, nu).y);
   rms = std::sqrt(sum2 / double(n));
 }
 
@@ -73,7 +73,7 @@ void taylorGreenError(const fluid::FluidSolver2& solver, double amplitude, doubl
 
 fluid::FluidParams FluidKindParams::solverParams() const {
   fluid::FluidParams f = fluid;
-  f.make_square();
+  f.makeSquare();
   if (dt_s.is_auto) {
     f.time_step_policy = fluid::TimeStepPolicy::cfl_adaptive;
   } else {
@@ -135,7 +135,7 @@ Result FluidKind::run(const Params& p) const {
   const FluidKindParams q = readParams<FluidKindParams>(p);
   fluid::FluidSolver2 solver(q.solverParams());
   setInitial(q, solver.grid());
-  solver.make_divergence_free();
+  solver.makeDivergenceFree();
   if (const int n = int(q.tracers_per_side); n > 0) {
     const double L = q.fluid.domain_width_m;
     for (int j = 0; j < n; ++j)
@@ -159,8 +159,8 @@ Result FluidKind::run(const Params& p) const {
   double max_div = 0, max_div_rel = 0, max_cfl = 0, last_cfl = 0;
   auto sample = [&] {
     time.values.push_back(solver.time_s());
-    energy.values.push_back(solver.kinetic_energy_joule_per_m());
-    divergence.values.push_back(solver.max_divergence_per_s());
+    energy.values.push_back(solver.kineticEnergy_joule_per_m());
+    divergence.values.push_back(solver.maxDivergence_per_s());
     cfl.values.push_back(last_cfl);
     appendFrame(solver, frames, u, v, w);
     if (tracers.points > 0) {
@@ -170,14 +170,14 @@ Result FluidKind::run(const Params& p) const {
   };
 
   const double end = q.end_time_s, every = q.output_interval_s;
-  const double ke0 = solver.kinetic_energy_joule_per_m();
+  const double ke0 = solver.kineticEnergy_joule_per_m();
   sample();
   int next_output = 1;
   try {
     while (solver.time_s() < end * (1 - 1e-12)) {
       // Steps end exactly on output times so every frame is at its nominal time.
       const double t_out = std::min(end, next_output * every);
-      const double dt = std::min(solver.next_time_step_s(), t_out - solver.time_s());
+      const double dt = std::min(solver.nextTimeStep_s(), t_out - solver.time_s());
       const fluid::FluidStepReport step = solver.step(dt);
       last_cfl = step.cfl_number;
       max_cfl = std::max(max_cfl, step.cfl_number);
@@ -196,17 +196,17 @@ Result FluidKind::run(const Params& p) const {
   const double nan = std::nan("");
   result.metrics["max_divergence"] = {max_div, "1/s"};
   result.metrics["max_divergence_rel"] = {max_div_rel, ""};
-  result.metrics["final_kinetic_energy_j_per_m"] = {solver.kinetic_energy_joule_per_m(), "J/m"};
-  result.metrics["kinetic_energy_ratio"] = {ke0 > 0 ? solver.kinetic_energy_joule_per_m() / ke0 : nan, ""};
-  result.metrics["steps"] = {double(solver.steps_done()), ""};
-  result.metrics["mean_dt_s"] = {solver.time_s() / double(std::max(1L, solver.steps_done())), "s"};
+  result.metrics["final_kinetic_energy_j_per_m"] = {solver.kineticEnergy_joule_per_m(), "J/m"};
+  result.metrics["kinetic_energy_ratio"] = {ke0 > 0 ? solver.kineticEnergy_joule_per_m() / ke0 : nan, ""};
+  result.metrics["steps"] = {double(solver.stepsDone()), ""};
+  result.metrics["mean_dt_s"] = {solver.time_s() / double(std::max(1L, solver.stepsDone())), "s"};
   result.metrics["max_cfl"] = {max_cfl, ""};
   double linf = nan, rms = nan, nu_eff = nan;
   if (q.initial == "taylor_green") {
     taylorGreenError(solver, q.amplitude_m_per_s, linf, rms);
     // KE ~ exp(-2 nu (kx^2 + ky^2) t): twice the velocity decay rate.
     const double k2 = 2.0 * std::pow(M_PI / q.fluid.domain_width_m, 2);
-    nu_eff = std::log(ke0 / solver.kinetic_energy_joule_per_m()) / (2.0 * k2 * solver.time_s());
+    nu_eff = std::log(ke0 / solver.kineticEnergy_joule_per_m()) / (2.0 * k2 * solver.time_s());
   }
   result.metrics["velocity_error_linf_m_per_s"] = {linf, "m/s"};
   result.metrics["velocity_error_rms_m_per_s"] = {rms, "m/s"};

@@ -22,19 +22,19 @@ struct FluidKindParams {
 
   template <class V>
   void describe(V& v) {
-    fluid.describe_square_box(v);
-    fluid.describe_fluid(v);
+    fluid.describeSquareBox(v);
+    fluid.describeFluid(v);
     fluid.walls.describe(v);
-    fluid.describe_schemes(v);
+    fluid.describeSchemes(v);
     v.realOrAuto("dt_s", dt_s, "s", 1e-9, 10, "fixed step, or \"auto\": CFL-adaptive with cfl_safety_factor and max_step_s");
-    fluid.describe_adaptive_step(v);
+    fluid.describeAdaptiveStep(v);
     v.real("end_time_s", end_time_s, "s", 1e-9, 1e6, "simulated time");
     v.real("output_interval_s", output_interval_s, "s", 1e-9, 1e6, "interval between stored fields and series samples");
     v.choice("initial", initial, {"rest", "taylor_green", "vortex_pair", "shear_layer"}, "initial velocity field");
     v.real("amplitude_m_per_s", amplitude_m_per_s, "m/s", 0, 1e3, "Taylor-Green amplitude, or the shear layer's speed");
     v.real("circulation_m2_per_s", circulation_m2_per_s, "m^2/s", 0, 1e3, "circulation of each vortex of the pair");
     v.real("vortex_height_fraction", vortex_height_fraction, "", 0, 1, "starting height of the pair, fraction of the box");
-    fluid.describe_body_force(v);
+    fluid.describeBodyForce(v);
     v.integer("tracers_per_side", tracers_per_side, 0, 1000, "passive tracers on an n x n lattice (paper Fig. 6), 0 = none");
   }
 

@@ -48,8 +48,8 @@ fluid::FluidParams squareFluidParams(const ParamReader& r, double dt_s) {
   f.cells_x = f.cells_y = int(r.integer("cells"));
   f.density_kg_per_m3 = r.real("density_kg_per_m3");
   f.kinematic_viscosity_m2_per_s = r.real("kinematic_viscosity_m2_per_s");
-  f.advection = *fluid::parse_advection_scheme(r.text("advection"));
-  f.viscosity_scheme = *fluid::parse_viscosity_scheme(r.text("viscosity_scheme"));
+  f.advection = *fluid::parseAdvectionScheme(r.text("advection"));
+  f.viscosity_scheme = *fluid::parseViscosityScheme(r.text("viscosity_scheme"));
   f.threads = int(r.integer("fluid_threads"));
   // The coupled step is fixed; a fluid running away is caught as a blow-up.
   f.time_step_policy = fluid::TimeStepPolicy::fixed;
@@ -65,15 +65,15 @@ KernelScale kernelScale(const ParamReader& r) { return kernelScale(r, "kernel_ra
 KernelScale kernelScale(const ParamReader& r, const std::string& radius_param) {
   const double radius_m = r.real(radius_param);
   if (radius_m == 0) return {};
-  const ib::Kernel kernel = *ib::parse_kernel(r.text("kernel"));
-  const int reach_cells = ib::kernel_support_cells(kernel) / 2;
+  const ib::Kernel kernel = *ib::parseKernel(r.text("kernel"));
+  const int reach_cells = ib::kernelSupportCells(kernel) / 2;
   const double dx_m = r.real("domain_m") / double(r.integer("cells"));
   const double scale = radius_m / (reach_cells * dx_m);
   // A grid too coarse for the radius keeps its own kernel (never narrower than the grid can
   // carry); the kernel_cells metric records the stretch each point ran with.
   if (scale <= 1.0 + 1e-6) return {};
   const long whole = std::lround(scale);
-  const int largest = ib::kMaxStencilFaces / ib::kernel_support_cells(kernel);
+  const int largest = ib::kMaxStencilFaces / ib::kernelSupportCells(kernel);
   if (whole > largest || std::abs(scale - double(whole)) > 1e-6 * scale) {
     char msg[400];
     std::snprintf(msg, sizeof msg,
@@ -89,10 +89,10 @@ KernelScale kernelScale(const ParamReader& r, const std::string& radius_param) {
 
 ib::CouplingParams couplingParams(const ParamReader& r) {
   ib::CouplingParams c;
-  c.kernel = *ib::parse_kernel(r.text("kernel"));
+  c.kernel = *ib::parseKernel(r.text("kernel"));
   c.kernel_scale = kernelScale(r).scale;
   c.semi_implicit = r.boolean("semi_implicit");
-  c.mobility = *ib::parse_implicit_mobility(r.text("implicit_mobility"));
+  c.mobility = *ib::parseImplicitMobility(r.text("implicit_mobility"));
   c.implicit_mass_factor = r.real("implicit_mass_factor");
   c.implicit_theta = r.real("implicit_theta");
   c.factor_reuse.tolerance = r.real("implicit_reuse_tolerance");

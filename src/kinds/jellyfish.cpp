@@ -103,7 +103,7 @@ jellyfish::SwimmerConfig config(const ParamReader& r) {
   c.coupling = couplingParams(r);
   c.tentacle_kernel_scale = kernelScale(r, "tentacle_kernel_radius_m").scale;
   c.fluid.viscosity_tolerance = r.real("viscosity_tolerance");
-  c.fluid.force_stage = *fluid::parse_force_stage(r.text("force_stage"));
+  c.fluid.force_stage = *fluid::parseForceStage(r.text("force_stage"));
   c.dt_s = r.real("dt_s");
   c.start_y_fraction = r.real("start_y_fraction");
   return c;
@@ -180,7 +180,7 @@ class Recorder {
     cy_->values.push_back(o.centroid_m.y);
     ratio_->values.push_back(o.diameter_ratio);
     factor_->values.push_back(s.body().muscleFactor(0, o.time_s));
-    work_->values.push_back(s.fluid_work_j_per_m());
+    work_->values.push_back(s.fluidWork_j_per_m());
     markers_->time_s.push_back(o.time_s);
     for (const auto& p : s.markers_m()) markers_->data.insert(markers_->data.end(), {p.x, p.y});
     if (activation_->points > 0) {
@@ -193,7 +193,7 @@ class Recorder {
     }
   }
   void field(const jellyfish::Swimmer& s) {
-    fluid::vorticity_at_centres(s.fluid().grid(), s.fluid().walls(), w_);
+    fluid::vorticityAtCentres(s.fluid().grid(), s.fluid().walls(), w_);
     result_.fields.time_s.push_back(s.time_s());
     Field& f = result_.fields.fields["vorticity_per_s"];
     f.unit = "1/s";
@@ -551,13 +551,13 @@ Result JellyfishKind::run(const Params& p) const {
       const auto o = swimmer.observe();
       if (step == plan.warmup_steps) {
         start = o;
-        start_work = swimmer.muscle_work_j_per_m();
-        start_fluid = swimmer.fluid_work_j_per_m();
+        start_work = swimmer.muscleWork_j_per_m();
+        start_fluid = swimmer.fluidWork_j_per_m();
       }
       if (step == plan.work_end_step) {
         cycles_end_y = o.centroid_m.y;
-        end_work = swimmer.muscle_work_j_per_m();
-        end_fluid = swimmer.fluid_work_j_per_m();
+        end_work = swimmer.muscleWork_j_per_m();
+        end_fluid = swimmer.fluidWork_j_per_m();
       }
       if (step > plan.warmup_steps) {
         min_ratio = std::min(min_ratio, o.diameter_ratio);

@@ -48,8 +48,8 @@ std::unique_ptr<FluidSolver2> warmed_up(const FluidParams& params) {
   auto solver = std::make_unique<FluidSolver2>(params);
   VortexPair pair;
   pair.circulation_m2_per_s = 2e-3;
-  set_vortex_pair(solver->grid(), pair);
-  solver->make_divergence_free();
+  setVortexPair(solver->grid(), pair);
+  solver->makeDivergenceFree();
   for (int s = 0; s < 3; ++s) solver->step();
   return solver;
 }
@@ -121,17 +121,17 @@ void stage_only(benchmark::State& state, Stage stage, const StageSetup& setup) {
   FluidParams params = scene(cells, setup.scheme, setup.pressure, threads, setup.viscosity);
   if (setup.nu_m2_per_s > 0.0) params.kinematic_viscosity_m2_per_s = setup.nu_m2_per_s;
   auto solver = warmed_up(params);
-  const StepContext context{solver->steps_done(), solver->time_s(), solver->next_time_step_s()};
-  solver->apply_external_forces(context);
-  if (stage != Stage::advection) solver->advect_velocity(context);
-  if (stage == Stage::pressure) solver->apply_viscosity(context);
+  const StepContext context{solver->stepsDone(), solver->time_s(), solver->nextTimeStep_s()};
+  solver->applyExternalForces(context);
+  if (stage != Stage::advection) solver->advectVelocity(context);
+  if (stage == Stage::pressure) solver->applyViscosity(context);
   const MacGrid2 before = solver->grid();
   int iterations = 0;
   time_per_cell(state, cells, [&] { solver->grid() = before; }, [&] {
     if (stage == Stage::advection) {
-      solver->advect_velocity(context);
+      solver->advectVelocity(context);
     } else if (stage == Stage::viscosity) {
-      iterations = solver->apply_viscosity(context).iterations;
+      iterations = solver->applyViscosity(context).iterations;
     } else {
       iterations = solver->project(context).iterations;
     }

@@ -78,7 +78,7 @@ void measure(benchmark::State& state, const SwimmerConfig& config) {
   state.counters["markers"] = static_cast<double>(swimmer->markers_m().size());
   // The viscous solve's sweeps and iterations per step, of the worse of the two components.
   state.counters["viscosity_iterations"] = double(viscosity_iterations) / double(seconds * steps_per_second);
-  const ib::ReusedBandedSolve& solver = swimmer->coupling().banded_solver();
+  const ib::ReusedBandedSolve& solver = swimmer->coupling().bandedSolver();
   if (solver.solves() > 0) {
     state.counters["factorizations_per_solve"] = double(solver.factorizations()) / double(solver.solves());
     state.counters["sweeps_per_solve"] = double(solver.sweeps()) / double(solver.solves());

@@ -22,7 +22,7 @@ double relative_asymmetry(const MacGrid2& g) {
   for (int j = 0; j <= g.ny; ++j)
     for (int i = 0; i < g.nx; ++i)
       defect = std::max(defect, std::abs(g.v_m_per_s(i, j) - g.v_m_per_s(g.nx - 1 - i, j)));
-  return defect / max_velocity_component_m_per_s(g);
+  return defect / maxVelocityComponent_m_per_s(g);
 }
 
 void check_symmetry(AdvectionScheme scheme, PressureSolverType pressure, const Walls& walls, double limit) {
@@ -35,8 +35,8 @@ void check_symmetry(AdvectionScheme scheme, PressureSolverType pressure, const W
   FluidSolver2 solver(params);
   VortexPair pair;
   pair.circulation_m2_per_s = 2e-2;
-  set_vortex_pair(solver.grid(), pair);
-  solver.make_divergence_free();
+  setVortexPair(solver.grid(), pair);
+  solver.makeDivergenceFree();
   const double start = relative_asymmetry(solver.grid());
   const double y_start = 0.6 * params.domain_height_m;
   double worst = start;
@@ -48,7 +48,7 @@ void check_symmetry(AdvectionScheme scheme, PressureSolverType pressure, const W
   }
   // The pair has travelled down to the wall meanwhile (its vorticity peak moved).
   Array2 omega;
-  vorticity_at_centres(solver.grid(), solver.walls(), omega);
+  vorticityAtCentres(solver.grid(), solver.walls(), omega);
   int peak_j = 0;
   double peak = 0.0;
   for (int j = 0; j < 64; ++j)

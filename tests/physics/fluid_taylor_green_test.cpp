@@ -40,8 +40,8 @@ TaylorGreenRun run_taylor_green(AdvectionScheme scheme, int cells, double couran
   const int steps = static_cast<int>(std::ceil(kEndTime / (courant * dx)));
   params.fixed_step_s = kEndTime / steps;
   FluidSolver2 solver(params);
-  set_taylor_green(solver.grid(), TaylorGreenVortex{1.0});
-  solver.make_divergence_free();
+  setTaylorGreen(solver.grid(), TaylorGreenVortex{1.0});
+  solver.makeDivergenceFree();
 
   // Least-squares fit of ln KE = a − 4 ν_eff t over every step.
   double st = 0, sy = 0, stt = 0, sty = 0;
@@ -51,7 +51,7 @@ TaylorGreenRun run_taylor_green(AdvectionScheme scheme, int cells, double couran
     st += t, sy += y, stt += t * t, sty += t * y;
     ++samples;
   };
-  sample(0.0, solver.kinetic_energy_joule_per_m());
+  sample(0.0, solver.kineticEnergy_joule_per_m());
   TaylorGreenRun run;
   run.cells = cells;
   for (int s = 0; s < steps; ++s) {
@@ -67,14 +67,14 @@ TaylorGreenRun run_taylor_green(AdvectionScheme scheme, int cells, double couran
   double err2 = 0.0, ref2 = 0.0;
   for (int j = 0; j < g.ny; ++j) {
     for (int i = 0; i <= g.nx; ++i) {
-      const double exact = taylor_green_velocity_m_per_s(g.u_position_m(i, j), t, w, h, 1.0, kViscosity).x;
+      const double exact = taylorGreenVelocity_m_per_s(g.uPosition_m(i, j), t, w, h, 1.0, kViscosity).x;
       err2 += (g.u_m_per_s(i, j) - exact) * (g.u_m_per_s(i, j) - exact);
       ref2 += exact * exact;
     }
   }
   for (int j = 0; j <= g.ny; ++j) {
     for (int i = 0; i < g.nx; ++i) {
-      const double exact = taylor_green_velocity_m_per_s(g.v_position_m(i, j), t, w, h, 1.0, kViscosity).y;
+      const double exact = taylorGreenVelocity_m_per_s(g.vPosition_m(i, j), t, w, h, 1.0, kViscosity).y;
       err2 += (g.v_m_per_s(i, j) - exact) * (g.v_m_per_s(i, j) - exact);
       ref2 += exact * exact;
     }

@@ -25,21 +25,21 @@ namespace {
 double operator_error(int cells) {
   const double dx = std::numbers::pi / cells;
   MacGrid2 grid(cells, cells, dx);
-  set_taylor_green(grid, TaylorGreenVortex{1.0});
+  setTaylorGreen(grid, TaylorGreenVortex{1.0});
   const double dt = 1e-7;
   Array2 u_out, v_out;
-  make_advection_solver(AdvectionScheme::upwind2_rk2)->advect_velocity(grid, Walls{}, dt, u_out, v_out);
+  makeAdvectionSolver(AdvectionScheme::upwind2_rk2)->advectVelocity(grid, Walls{}, dt, u_out, v_out);
   double err2 = 0.0, ref2 = 0.0;
   for (int j = 0; j < cells; ++j) {
     for (int i = 0; i <= cells; ++i) {
-      const double exact = -0.5 * std::sin(2.0 * grid.u_position_m(i, j).x);
+      const double exact = -0.5 * std::sin(2.0 * grid.uPosition_m(i, j).x);
       const double rate = (u_out(i, j) - grid.u_m_per_s(i, j)) / dt;
       err2 += (rate - exact) * (rate - exact), ref2 += exact * exact;
     }
   }
   for (int j = 0; j <= cells; ++j) {
     for (int i = 0; i < cells; ++i) {
-      const double exact = -0.5 * std::sin(2.0 * grid.v_position_m(i, j).y);
+      const double exact = -0.5 * std::sin(2.0 * grid.vPosition_m(i, j).y);
       const double rate = (v_out(i, j) - grid.v_m_per_s(i, j)) / dt;
       err2 += (rate - exact) * (rate - exact), ref2 += exact * exact;
     }
@@ -74,21 +74,21 @@ Translation translate(AdvectionScheme scheme, double courant) {
   auto profile = [&](double x) { return amplitude * std::exp(-std::pow((x - x0) / sigma, 2)); };
   grid.u_m_per_s.fill(speed);
   for (int j = 0; j <= ny; ++j) {
-    for (int i = 0; i < nx; ++i) grid.v_m_per_s(i, j) = profile(grid.v_position_m(i, j).x);
+    for (int i = 0; i < nx; ++i) grid.v_m_per_s(i, j) = profile(grid.vPosition_m(i, j).x);
   }
   const int steps = static_cast<int>(std::lround(distance_m / (courant * dx / speed)));
   const double dt = distance_m / speed / steps;
-  auto solver = make_advection_solver(scheme);
+  auto solver = makeAdvectionSolver(scheme);
   Array2 u_out, v_out;
   for (int s = 0; s < steps; ++s) {
-    solver->advect_velocity(grid, walls, dt, u_out, v_out);
+    solver->advectVelocity(grid, walls, dt, u_out, v_out);
     std::swap(grid.u_m_per_s, u_out);
     std::swap(grid.v_m_per_s, v_out);
   }
   double err2 = 0.0, ref2 = 0.0, peak = 0.0;
   for (int j = 0; j <= ny; ++j) {
     for (int i = 0; i < nx; ++i) {
-      const double exact = profile(grid.v_position_m(i, j).x - distance_m);
+      const double exact = profile(grid.vPosition_m(i, j).x - distance_m);
       err2 += std::pow(grid.v_m_per_s(i, j) - exact, 2), ref2 += exact * exact;
       peak = std::max(peak, grid.v_m_per_s(i, j));
     }

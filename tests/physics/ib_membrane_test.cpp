@@ -69,7 +69,7 @@ class MembraneRun {
 
   const std::vector<fluid::Vec2>& markers() const { return coupling_->markers_m(); }
   double areaLoss() const { return 1.0 - polygonShape(markers()).area_m2 / area0_m2_; }
-  double totalEnergy() const { return body_->elasticEnergy(markers()) + fluid_->kinetic_energy_joule_per_m(); }
+  double totalEnergy() const { return body_->elasticEnergy(markers()) + fluid_->kineticEnergy_joule_per_m(); }
   // Elastic energy over the least of any N-gon of the same area, minus 1 (ib/membrane_run.hpp).
   double energyExcess() const { return ib::energyExcess(*body_, markers(), polygonShape(markers()).area_m2); }
   double dx() const { return fluid_->grid().dx_m; }

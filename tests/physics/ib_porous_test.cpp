@@ -133,7 +133,7 @@ TEST(PorousBoundary, LoadedRingPassesDarcysFlux) {
     EXPECT_NEAR(flux / (alpha * load), 1.0, 0.005) << "semi_implicit = " << semi_implicit;
     // The fluid carries the load as a pressure jump and barely moves: less kinetic energy than the
     // 1 m box moving at 3% of the Darcy speed.
-    EXPECT_LT(r.fluid->kinetic_energy_joule_per_m(), 0.5 * 1000.0 * std::pow(0.03 * alpha * load, 2));
+    EXPECT_LT(r.fluid->kineticEnergy_joule_per_m(), 0.5 * 1000.0 * std::pow(0.03 * alpha * load, 2));
   }
 }
 

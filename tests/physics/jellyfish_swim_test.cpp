@@ -77,8 +77,8 @@ TEST(JellyfishSwim, TwoIdenticalRunsAreBitwiseIdentical) {
     moved = std::max(moved, std::hypot(a.markers_m()[i].x - start[i].x, a.markers_m()[i].y - start[i].y));
   }
   EXPECT_GT(moved, 1e-3);
-  EXPECT_EQ(a.fluid_work_j_per_m(), b.fluid_work_j_per_m());
-  EXPECT_EQ(a.muscle_work_j_per_m(), b.muscle_work_j_per_m());
+  EXPECT_EQ(a.fluidWork_j_per_m(), b.fluidWork_j_per_m());
+  EXPECT_EQ(a.muscleWork_j_per_m(), b.muscleWork_j_per_m());
 }
 
 // Mirror symmetry (§3.1: the organism is axially symmetric, and the slice through its axis is
@@ -195,9 +195,9 @@ TEST(JellyfishSwim, MusclesAndBodyDoPositiveWorkOverWholeCycles) {
   const long cycle = stepsPerCycle(c);
   run(s, cycle);  // warm-up
   for (int k = 1; k <= 2; ++k) {
-    const double muscle0 = s.muscle_work_j_per_m(), fluid0 = s.fluid_work_j_per_m();
+    const double muscle0 = s.muscleWork_j_per_m(), fluid0 = s.fluidWork_j_per_m();
     run(s, cycle);
-    const double muscle = s.muscle_work_j_per_m() - muscle0, fluid = s.fluid_work_j_per_m() - fluid0;
+    const double muscle = s.muscleWork_j_per_m() - muscle0, fluid = s.fluidWork_j_per_m() - fluid0;
     std::printf("[ measured ] 0.7 Hz, 100^2, dt 0.01, cycle %d: muscle work %.4g J/m, work on the fluid %.4g J/m\n",
                 k + 1, muscle, fluid);
     EXPECT_GT(muscle, 0.0) << "cycle " << k + 1;
@@ -220,13 +220,13 @@ TEST(JellyfishSwim, CoupledStepCreatesNoEnergyOverACycle) {
     double peak_elastic = 0;
     for (long k = 0; k < stepsPerCycle(c); ++k) {
       s.step();
-      peak_elastic = std::max(peak_elastic, s.elastic_energy_j_per_m());
+      peak_elastic = std::max(peak_elastic, s.elasticEnergy_j_per_m());
     }
-    const double direct = s.muscle_work_j_per_m(), balance = s.muscle_work_by_balance_j_per_m();
+    const double direct = s.muscleWork_j_per_m(), balance = s.muscleWorkByBalance_j_per_m();
     std::printf(
         "[ measured ] %d^2, 0.7 Hz, dt 0.01, first cycle: muscle work %.4g J/m, elastic gained + fluid work %.4g J/m "
         "(elastic now %.4g, peak %.4g; fluid %.4g)\n",
-        cells, direct, balance, s.elastic_energy_j_per_m(), peak_elastic, s.fluid_work_j_per_m());
+        cells, direct, balance, s.elasticEnergy_j_per_m(), peak_elastic, s.fluidWork_j_per_m());
     EXPECT_GT(direct, 0.0);
     EXPECT_LE(balance, 1.05 * direct) << cells << "^2: the coupled step created " << balance - direct
                                       << " J/m over the first cycle";

@@ -40,13 +40,13 @@ Moments fluidMoments(const fluid::MacGrid2& g, double rho, double ox, double oz)
   const double a = rho * g.dx_m * g.dx_m;
   for (int j = 0; j < g.ny; ++j)
     for (int i = 0; i <= g.nx; ++i) {
-      const fluid::Vec2 x = g.u_position_m(i, j);
+      const fluid::Vec2 x = g.uPosition_m(i, j);
       m.px += a * g.u_m_per_s(i, j);
       m.ly += a * (x.y + oz) * g.u_m_per_s(i, j);  // (r x p)_y = z p_x - x p_z
     }
   for (int j = 0; j <= g.ny; ++j)
     for (int i = 0; i < g.nx; ++i) {
-      const fluid::Vec2 x = g.v_position_m(i, j);
+      const fluid::Vec2 x = g.vPosition_m(i, j);
       m.pz += a * g.v_m_per_s(i, j);
       m.ly -= a * (x.x + ox) * g.v_m_per_s(i, j);
     }
@@ -156,7 +156,7 @@ double plateLeak(Forcing mode, double spacing_cells, int forcing_iterations, int
   const int i = int(std::lround(0.8 / g.dx_m));
   double flux = 0, span = 0;
   for (int j = 0; j < g.ny; ++j) {
-    const double z = g.u_position_m(i, j).y;
+    const double z = g.uPosition_m(i, j).y;
     if (std::abs(z - 1.0) > 0.2) continue;
     flux += g.u_m_per_s(i, j) * g.dx_m;
     span += g.dx_m;

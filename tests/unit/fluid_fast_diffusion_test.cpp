@@ -18,7 +18,7 @@ using Method = FastPressureSolver2::Method;
 struct Case {
   int nx, ny;
   WallType left, right, bottom, top;
-  Method u_method, v_method;
+  Method uMethod, vMethod;
 };
 
 // Same field, same walls: the direct solution and a CG solve to 1e-14 agree to 1e-12 ‖b‖∞
@@ -41,27 +41,27 @@ TEST(FastDiffusion, AgreesWithTheIterativeSolverForEveryWallAndPath) {
       SCOPED_TRACE(::testing::Message() << c.nx << "x" << c.ny << " alpha " << alpha);
       const double dx = 0.01;
       MacGrid2 grid(c.nx, c.ny, dx);
-      set_vortex_pair(grid, VortexPair{});
+      setVortexPair(grid, VortexPair{});
       for (int j = 0; j < c.ny; ++j)
         for (int i = 0; i <= c.nx; ++i) grid.u_m_per_s(i, j) += 1e-3 * (((i * 7 + j * 13) % 5) - 2);
       for (int j = 0; j <= c.ny; ++j)
         for (int i = 0; i < c.nx; ++i) grid.v_m_per_s(i, j) += 1e-3 * (((i * 11 + j * 3) % 7) - 3);
-      enforce_wall_normal_velocity(grid, walls);  // the stage's precondition
-      const double b_norm = std::max(max_abs(grid.u_m_per_s), max_abs(grid.v_m_per_s));
+      enforceWallNormalVelocity(grid, walls);  // the stage's precondition
+      const double b_norm = std::max(maxAbs(grid.u_m_per_s), maxAbs(grid.v_m_per_s));
       MacGrid2 reference = grid;
       const double nu = 1e-3, dt = alpha * dx * dx / nu;
       FastDiffusion2 direct(1e-12);
-      const LinearSolveReport r = direct.diffuse_velocity(grid, walls, nu, dt);
+      const LinearSolveReport r = direct.diffuseVelocity(grid, walls, nu, dt);
       EXPECT_TRUE(r.converged);
       EXPECT_LE(r.relative_residual, 1e-12);
-      EXPECT_EQ(direct.u_method(), c.u_method);
-      EXPECT_EQ(direct.v_method(), c.v_method);
+      EXPECT_EQ(direct.uMethod(), c.uMethod);
+      EXPECT_EQ(direct.vMethod(), c.vMethod);
       ImplicitDiffusion2 iterative(1e-14, 5000);
-      EXPECT_TRUE(iterative.diffuse_velocity(reference, walls, nu, dt).converged);
+      EXPECT_TRUE(iterative.diffuseVelocity(reference, walls, nu, dt).converged);
       const double tolerance = 1e-12 * b_norm;
-      EXPECT_LE(max_abs_difference(grid.u_m_per_s.data(), reference.u_m_per_s.data(), grid.u_m_per_s.size()),
+      EXPECT_LE(maxAbsDifference(grid.u_m_per_s.data(), reference.u_m_per_s.data(), grid.u_m_per_s.size()),
                 tolerance);
-      EXPECT_LE(max_abs_difference(grid.v_m_per_s.data(), reference.v_m_per_s.data(), grid.v_m_per_s.size()),
+      EXPECT_LE(maxAbsDifference(grid.v_m_per_s.data(), reference.v_m_per_s.data(), grid.v_m_per_s.size()),
                 tolerance);
     }
   }

@@ -55,7 +55,7 @@ TEST(InflowWall, ChannelFromRestBecomesAndStaysTheUniformStream) {
         for (int s = 0; s < 6; ++s) solver.step();
         const MacGrid2& g = solver.grid();
         for (int i = 0; i < g.nx; ++i) EXPECT_EQ(g.v_m_per_s(i, 0), kInflow) << name(params);
-        EXPECT_NEAR(max_abs(g.u_m_per_s), 0.0, 1e-10) << name(params);
+        EXPECT_NEAR(maxAbs(g.u_m_per_s), 0.0, 1e-10) << name(params);
         for (int j = 0; j <= g.ny; ++j)
           for (int i = 0; i < g.nx; ++i)
             ASSERT_NEAR(g.v_m_per_s(i, j), kInflow, 1e-10) << name(params) << " " << i << "," << j;
@@ -92,7 +92,7 @@ TEST(InflowWall, ProjectionKeepsTheFluxOfARandomField) {
   // An arbitrary field, far from divergence free.
   for (std::size_t k = 0; k < g.u_m_per_s.size(); ++k) g.u_m_per_s.data()[k] = std::sin(1.7 * double(k));
   for (std::size_t k = 0; k < g.v_m_per_s.size(); ++k) g.v_m_per_s.data()[k] = std::cos(2.3 * double(k));
-  enforce_wall_normal_velocity(g, solver.walls());
+  enforceWallNormalVelocity(g, solver.walls());
   solver.project({0, 0.0, 0.01});
   double in = 0.0, out = 0.0;
   for (int i = 0; i < g.nx; ++i) {
@@ -101,7 +101,7 @@ TEST(InflowWall, ProjectionKeepsTheFluxOfARandomField) {
     out += g.v_m_per_s(i, g.ny) * g.dx_m;
   }
   EXPECT_NEAR(out, in, 1e-12);
-  EXPECT_LT(max_divergence_per_s(g), 1e-9);
+  EXPECT_LT(maxDivergence_per_s(g), 1e-9);
 }
 
 // An inflow wall on the right (its speed points into the domain: −x there) with an open left.
@@ -146,7 +146,7 @@ TEST(InflowWall, ValidationNamesWhatIsWrong) {
   stray.walls.left.inflow_m_per_s = 1.0;
   EXPECT_NE(stray.validate().find("walls.left.inflow_m_per_s"), std::string::npos) << stray.validate();
 
-  EXPECT_EQ(parse_wall_type("inflow"), WallType::inflow);
+  EXPECT_EQ(parseWallType("inflow"), WallType::inflow);
   EXPECT_EQ(to_string(WallType::inflow), "inflow");
 }
 

@@ -105,23 +105,23 @@ TEST(FluidParams, AdaptiveStepAboveTheExplicitSchemesBoundIsRefused) {
 
 TEST(FluidParams, EnumNamesRoundTrip) {
   for (WallType t : {WallType::free_slip, WallType::no_slip, WallType::moving, WallType::open}) {
-    EXPECT_EQ(parse_wall_type(to_string(t)), t);
+    EXPECT_EQ(parseWallType(to_string(t)), t);
   }
   for (AdvectionScheme s :
        {AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack, AdvectionScheme::upwind2_rk2}) {
-    EXPECT_EQ(parse_advection_scheme(to_string(s)), s);
+    EXPECT_EQ(parseAdvectionScheme(to_string(s)), s);
   }
   for (PressureSolverType s : {PressureSolverType::fast_direct, PressureSolverType::pcg}) {
-    EXPECT_EQ(parse_pressure_solver_type(to_string(s)), s);
+    EXPECT_EQ(parsePressureSolverType(to_string(s)), s);
   }
   for (TimeStepPolicy p : {TimeStepPolicy::cfl_adaptive, TimeStepPolicy::fixed}) {
-    EXPECT_EQ(parse_time_step_policy(to_string(p)), p);
+    EXPECT_EQ(parseTimeStepPolicy(to_string(p)), p);
   }
   for (ViscositySolverType s : {ViscositySolverType::iterative, ViscositySolverType::fast_direct}) {
-    EXPECT_EQ(parse_viscosity_solver_type(to_string(s)), s);
+    EXPECT_EQ(parseViscositySolverType(to_string(s)), s);
   }
-  EXPECT_FALSE(parse_viscosity_solver_type("direct").has_value());
-  EXPECT_FALSE(parse_wall_type("freeslip").has_value());
+  EXPECT_FALSE(parseViscositySolverType("direct").has_value());
+  EXPECT_FALSE(parseWallType("freeslip").has_value());
 }
 
 }  // namespace

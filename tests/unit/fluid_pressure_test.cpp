@@ -46,12 +46,12 @@ std::string describe(const Walls& walls) {
 
 double relative_residual(const Walls& walls, const Array2& q, const Array2& b) {
   Array2 aq;
-  apply_pressure_matrix(walls, q, aq);
+  applyPressureMatrix(walls, q, aq);
   Array2 r = b;
-  if (walls.closed()) remove_mean(r);
+  if (walls.closed()) removeMean(r);
   double m = 0.0;
   for (std::size_t k = 0; k < r.size(); ++k) m = std::max(m, std::abs(r.data()[k] - aq.data()[k]));
-  return m / max_abs(b);
+  return m / maxAbs(b);
 }
 
 TEST(PressureMatrix, IsSymmetricAndAnnihilatesConstantsInAClosedBox) {
@@ -60,24 +60,24 @@ TEST(PressureMatrix, IsSymmetricAndAnnihilatesConstantsInAClosedBox) {
     Array2 x(7, 5), y(7, 5), ax, ay;
     fill_noise(x, 1);
     fill_noise(y, 2);
-    apply_pressure_matrix(walls, x, ax);
-    apply_pressure_matrix(walls, y, ay);
+    applyPressureMatrix(walls, x, ax);
+    applyPressureMatrix(walls, y, ay);
     EXPECT_NEAR(dot(x, ay), dot(y, ax), 1e-12) << describe(walls);
     EXPECT_GT(dot(x, ax), 0.0) << describe(walls);
     Array2 diagonal;
-    pressure_matrix_diagonal(walls, 7, 5, diagonal);
+    pressureMatrixDiagonal(walls, 7, 5, diagonal);
     Array2 e(7, 5);
     e(3, 2) = 1.0;
-    apply_pressure_matrix(walls, e, ax);
+    applyPressureMatrix(walls, e, ax);
     EXPECT_EQ(ax(3, 2), diagonal(3, 2));
     e.fill(0.0);
     e(0, 0) = 1.0;
-    apply_pressure_matrix(walls, e, ax);
+    applyPressureMatrix(walls, e, ax);
     EXPECT_EQ(ax(0, 0), diagonal(0, 0)) << describe(walls);
   }
   Array2 ones(6, 4, 1.0), a_ones;
-  apply_pressure_matrix(Walls{}, ones, a_ones);
-  EXPECT_EQ(max_abs(a_ones), 0.0);
+  applyPressureMatrix(Walls{}, ones, a_ones);
+  EXPECT_EQ(maxAbs(a_ones), 0.0);
 }
 
 // Every wall combination, power-of-two sides (FFT paths) and others (dense path).
@@ -99,7 +99,7 @@ TEST(FastPressureSolver, SolvesEveryWallCombinationToRoundOff) {
       double difference = 0.0;
       for (std::size_t k = 0; k < q.size(); ++k)
         difference = std::max(difference, std::abs(q.data()[k] - q_dense.data()[k]));
-      EXPECT_LT(difference, 1e-11 * std::max(1.0, max_abs(q))) << describe(walls);
+      EXPECT_LT(difference, 1e-11 * std::max(1.0, maxAbs(q))) << describe(walls);
     }
   }
 }
@@ -141,7 +141,7 @@ TEST(PcgPressureSolver, MeetsItsToleranceAndAgreesWithTheDirectSolver) {
     double difference = 0.0;
     for (std::size_t k = 0; k < q.size(); ++k)
       difference = std::max(difference, std::abs(q.data()[k] - q_direct.data()[k]));
-    EXPECT_LT(difference, 1e-8 * max_abs(q_direct)) << describe(walls);
+    EXPECT_LT(difference, 1e-8 * maxAbs(q_direct)) << describe(walls);
   }
 }
 
@@ -149,7 +149,7 @@ MacGrid2 random_velocity(int nx, int ny, const Walls& walls, std::uint64_t seed)
   MacGrid2 grid(nx, ny, 0.01);
   fill_noise(grid.u_m_per_s, seed);
   fill_noise(grid.v_m_per_s, seed + 1);
-  enforce_wall_normal_velocity(grid, walls);
+  enforceWallNormalVelocity(grid, walls);
   return grid;
 }
 
@@ -169,13 +169,13 @@ TEST(Projection, LeavesNoDivergenceAndIsIdempotent) {
       const Walls walls = walls_from_mask(mask);
       FluidParams params;
       params.pressure_solver = type;
-      auto solver = make_pressure_solver(params);
+      auto solver = makePressureSolver(params);
       MacGrid2 grid = random_velocity(32, 24, walls, 100 + mask);
       const double rho = 1000.0, dt = 0.01;
-      const double u_max = max_velocity_component_m_per_s(grid);  // before projection
+      const double u_max = maxVelocityComponent_m_per_s(grid);  // before projection
       const LinearSolveReport first = solver->project(grid, walls, rho, dt);
       EXPECT_TRUE(first.converged);
-      EXPECT_LE(max_divergence_per_s(grid), 1e-10 * u_max / grid.dx_m) << to_string(type) << ", " << describe(walls);
+      EXPECT_LE(maxDivergence_per_s(grid), 1e-10 * u_max / grid.dx_m) << to_string(type) << ", " << describe(walls);
       EXPECT_LE(first.relative_residual, 1e-10) << to_string(type);
       const MacGrid2 once = grid;
       solver->project(grid, walls, rho, dt);
@@ -184,10 +184,10 @@ TEST(Projection, LeavesNoDivergenceAndIsIdempotent) {
       const double allowed = type == PressureSolverType::fast_direct ? 1e-13 : 1e-9;
       EXPECT_LE(max_velocity_change(once, grid), allowed * u_max) << to_string(type) << ", " << describe(walls);
       // Solid walls still carry no normal flow.
-      if (is_solid(walls.left)) {
+      if (isSolid(walls.left)) {
         EXPECT_EQ(grid.u_m_per_s(0, 5), 0.0);
       }
-      if (is_solid(walls.top)) {
+      if (isSolid(walls.top)) {
         EXPECT_EQ(grid.v_m_per_s(7, grid.ny), 0.0);
       }
     }
@@ -203,11 +203,11 @@ TEST(Projection, FastAndPcgGiveTheSameVelocityAndPressure) {
     PcgPressureSolver2 pcg(1e-12, 2000);
     fast.project(a, walls, 1000.0, 0.02);
     pcg.project(b, walls, 1000.0, 0.02);
-    EXPECT_LT(max_velocity_change(a, b), 1e-9 * max_velocity_component_m_per_s(a)) << describe(walls);
+    EXPECT_LT(max_velocity_change(a, b), 1e-9 * maxVelocityComponent_m_per_s(a)) << describe(walls);
     double dp = 0.0;
     for (std::size_t k = 0; k < a.pressure_pa.size(); ++k)
       dp = std::max(dp, std::abs(a.pressure_pa.data()[k] - b.pressure_pa.data()[k]));
-    EXPECT_LT(dp, 1e-9 * max_abs(a.pressure_pa)) << describe(walls);
+    EXPECT_LT(dp, 1e-9 * maxAbs(a.pressure_pa)) << describe(walls);
   }
 }
 
@@ -226,14 +226,14 @@ TEST(Projection, RemovesGradientsAndKeepsCurls) {
   const MacGrid2 curl = grid;
   FastPressureSolver2 solver;
   solver.project(grid, walls, 1.0, 1.0);
-  EXPECT_LT(max_velocity_change(curl, grid), 1e-12 * max_velocity_component_m_per_s(curl));
+  EXPECT_LT(max_velocity_change(curl, grid), 1e-12 * maxVelocityComponent_m_per_s(curl));
 
   MacGrid2 gradient(16, 16, 0.1);
   Array2 phi(16, 16);
   fill_noise(phi, 6);
-  subtract_gradient(gradient, walls, phi);  // u = −∇φ, zero on the walls
+  subtractGradient(gradient, walls, phi);  // u = −∇φ, zero on the walls
   solver.project(gradient, walls, 1.0, 1.0);
-  EXPECT_LT(max_velocity_component_m_per_s(gradient), 1e-12);
+  EXPECT_LT(maxVelocityComponent_m_per_s(gradient), 1e-12);
 }
 
 }  // namespace

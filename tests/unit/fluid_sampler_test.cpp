@@ -129,10 +129,10 @@ void compare_lanes(const SampleView& view) {
       const __m128d X = _mm_set_pd(g[first + 1].x, g[first].x);
       const __m128d Y = _mm_set_pd(g[first + 1].y, g[first].y);
       std::array<double, 2> value{}, lo{}, hi{};
-      _mm_storeu_pd(value.data(), view.sample2_on<kAxis>(X, Y));
+      _mm_storeu_pd(value.data(), view.sample2On<kAxis>(X, Y));
       expect_lanes("two lanes", g, s.value.data(), value.data(), 2, first);
       __m128d lo2, hi2;
-      _mm_storeu_pd(value.data(), view.sample2_on<kAxis>(X, Y, &lo2, &hi2));
+      _mm_storeu_pd(value.data(), view.sample2On<kAxis>(X, Y, &lo2, &hi2));
       _mm_storeu_pd(lo.data(), lo2);
       _mm_storeu_pd(hi.data(), hi2);
       expect_lanes("two lanes, bounded", g, s.value.data(), value.data(), 2, first);
@@ -145,10 +145,10 @@ void compare_lanes(const SampleView& view) {
       const __m256d X = _mm256_set_pd(g[first + 3].x, g[first + 2].x, g[first + 1].x, g[first].x);
       const __m256d Y = _mm256_set_pd(g[first + 3].y, g[first + 2].y, g[first + 1].y, g[first].y);
       std::array<double, 4> value{}, lo{}, hi{};
-      _mm256_storeu_pd(value.data(), view.sample4_on<kAxis>(X, Y));
+      _mm256_storeu_pd(value.data(), view.sample4On<kAxis>(X, Y));
       expect_lanes("four lanes", g, s.value.data(), value.data(), 4, first);
       __m256d lo4, hi4;
-      _mm256_storeu_pd(value.data(), view.sample4_on<kAxis>(X, Y, &lo4, &hi4));
+      _mm256_storeu_pd(value.data(), view.sample4On<kAxis>(X, Y, &lo4, &hi4));
       _mm256_storeu_pd(lo.data(), lo4);
       _mm256_storeu_pd(hi.data(), hi4);
       expect_lanes("four lanes, bounded", g, s.value.data(), value.data(), 4, first);
@@ -163,10 +163,10 @@ void compare_lanes(const SampleView& view) {
       for (int k = 0; k < kGroup; ++k) xs[k] = g[k].x, ys[k] = g[k].y;
       const __m512d X = _mm512_loadu_pd(xs.data());
       const __m512d Y = _mm512_loadu_pd(ys.data());
-      _mm512_storeu_pd(value.data(), view.sample8_on<kAxis>(X, Y));
+      _mm512_storeu_pd(value.data(), view.sample8On<kAxis>(X, Y));
       expect_lanes("eight lanes", g, s.value.data(), value.data(), kGroup, 0);
       __m512d lo8, hi8;
-      _mm512_storeu_pd(value.data(), view.sample8_on<kAxis>(X, Y, &lo8, &hi8));
+      _mm512_storeu_pd(value.data(), view.sample8On<kAxis>(X, Y, &lo8, &hi8));
       _mm512_storeu_pd(lo.data(), lo8);
       _mm512_storeu_pd(hi.data(), hi8);
       expect_lanes("eight lanes, bounded", g, s.value.data(), value.data(), kGroup, 0);

@@ -47,10 +47,10 @@ FluidParams vortex_box(AdvectionScheme scheme, PressureSolverType pressure) {
 
 std::uint64_t run_and_hash(const FluidParams& params, int steps) {
   FluidSolver2 solver(params);
-  set_vortex_pair(solver.grid(), VortexPair{});
-  solver.make_divergence_free();
+  setVortexPair(solver.grid(), VortexPair{});
+  solver.makeDivergenceFree();
   solver.tracers_m() = {{0.1, 0.2}, {0.3, 0.35}};
-  solver.force_density_n_per_m3().y.fill(0.5);
+  solver.forceDensity_n_per_m3().y.fill(0.5);
   for (int s = 0; s < steps; ++s) solver.step();
   return hash_state(solver);
 }
@@ -63,7 +63,7 @@ TEST(FluidSolver, RunsAreBitwiseDeterministic) {
       const std::uint64_t first = run_and_hash(params, 12);
       // A second solver, interleaved with a third one, must not see any shared state.
       FluidSolver2 other(vortex_box(AdvectionScheme::maccormack, PressureSolverType::pcg));
-      set_taylor_green(other.grid(), TaylorGreenVortex{0.02});
+      setTaylorGreen(other.grid(), TaylorGreenVortex{0.02});
       other.step();
       const std::uint64_t second = run_and_hash(params, 12);
       EXPECT_EQ(first, second) << to_string(scheme) << ", " << to_string(pressure);
@@ -78,9 +78,9 @@ TEST(FluidSolver, AdaptiveStepFollowsTheCflCondition) {
   params.cfl_safety_factor = 0.5;
   params.max_step_s = 0.2;
   FluidSolver2 solver(params);
-  EXPECT_DOUBLE_EQ(solver.next_time_step_s(), 0.2);  // at rest: the maximum step
+  EXPECT_DOUBLE_EQ(solver.nextTimeStep_s(), 0.2);  // at rest: the maximum step
   solver.grid().v_m_per_s(3, 4) = -2.0;
-  EXPECT_DOUBLE_EQ(solver.next_time_step_s(), 0.5 * 0.1 / 2.0);
+  EXPECT_DOUBLE_EQ(solver.nextTimeStep_s(), 0.5 * 0.1 / 2.0);
   const FluidStepReport report = solver.step();
   EXPECT_DOUBLE_EQ(report.dt_s, 0.025);
   EXPECT_DOUBLE_EQ(report.cfl_number, 0.5);
@@ -91,7 +91,7 @@ TEST(FluidSolver, AdaptiveStepFollowsTheCflCondition) {
   params.fixed_step_s = 0.003;
   FluidSolver2 fixed(params);
   fixed.grid().v_m_per_s(3, 4) = -2.0;
-  EXPECT_DOUBLE_EQ(fixed.next_time_step_s(), 0.003);
+  EXPECT_DOUBLE_EQ(fixed.nextTimeStep_s(), 0.003);
   EXPECT_THROW(fixed.step(0.0), std::invalid_argument);
   EXPECT_THROW(fixed.step(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
 }
@@ -106,14 +106,14 @@ TEST(FluidSolver, BlowUpIsReportedWithStepTimeAndCfl) {
   // A sheared force (10⁴ m/s² in water on the lower half): a uniform one would be balanced by
   // pressure alone.
   for (int j = 0; j < 8; ++j)
-    for (int i = 0; i <= 16; ++i) solver.force_density_n_per_m3().x(i, j) = 1e7;
+    for (int i = 0; i <= 16; ++i) solver.forceDensity_n_per_m3().x(i, j) = 1e7;
   try {
     solver.step(0.01);
     FAIL() << "expected FluidBlowUpError";
   } catch (const FluidBlowUpError& error) {
     EXPECT_EQ(error.step(), 2);
     EXPECT_DOUBLE_EQ(error.time_s(), 0.02);
-    EXPECT_GT(error.cfl_number(), 1.0);
+    EXPECT_GT(error.cflNumber(), 1.0);
     const std::string message = error.what();
     EXPECT_NE(message.find("blew up at step 2 (t = 0.02 s"), std::string::npos) << message;
     EXPECT_NE(message.find("above blowup_speed_m_per_s = 10"), std::string::npos) << message;
@@ -121,13 +121,13 @@ TEST(FluidSolver, BlowUpIsReportedWithStepTimeAndCfl) {
   }
 
   FluidSolver2 nan_solver(params);
-  nan_solver.force_density_n_per_m3().y(3, 3) = std::numeric_limits<double>::quiet_NaN();
+  nan_solver.forceDensity_n_per_m3().y(3, 3) = std::numeric_limits<double>::quiet_NaN();
   try {
     nan_solver.step(0.01);
     FAIL() << "expected FluidBlowUpError";
   } catch (const FluidBlowUpError& error) {
     EXPECT_EQ(error.step(), 1);
-    EXPECT_TRUE(std::isinf(error.cfl_number()));
+    EXPECT_TRUE(std::isinf(error.cflNumber()));
     EXPECT_NE(std::string(error.what()).find("is inf m/s"), std::string::npos) << error.what();
   }
 }
@@ -142,44 +142,44 @@ TEST(FluidSolver, ExplicitAdvectionRefusesAStepAboveItsCflBound) {
   FluidSolver2 solver(params);
   VortexPair pair;
   pair.circulation_m2_per_s = 2e-3;
-  set_vortex_pair(solver.grid(), pair);
-  solver.make_divergence_free();
-  const double speed = max_velocity_component_m_per_s(solver.grid());
+  setVortexPair(solver.grid(), pair);
+  solver.makeDivergenceFree();
+  const double speed = maxVelocityComponent_m_per_s(solver.grid());
   const double dx = solver.grid().dx_m;
-  const double ke0 = solver.kinetic_energy_joule_per_m();
-  for (int s = 0; s < 100; ++s) solver.step(0.49 * dx / max_velocity_component_m_per_s(solver.grid()));
-  EXPECT_LT(solver.kinetic_energy_joule_per_m(), ke0);
-  EXPECT_LT(max_velocity_component_m_per_s(solver.grid()), speed);
+  const double ke0 = solver.kineticEnergy_joule_per_m();
+  for (int s = 0; s < 100; ++s) solver.step(0.49 * dx / maxVelocityComponent_m_per_s(solver.grid()));
+  EXPECT_LT(solver.kineticEnergy_joule_per_m(), ke0);
+  EXPECT_LT(maxVelocityComponent_m_per_s(solver.grid()), speed);
   try {
-    solver.step(0.6 * dx / max_velocity_component_m_per_s(solver.grid()));
+    solver.step(0.6 * dx / maxVelocityComponent_m_per_s(solver.grid()));
     FAIL() << "expected FluidCflError";
   } catch (const FluidCflError& error) {
     EXPECT_EQ(error.step(), 100);
-    EXPECT_NEAR(error.cfl_number(), 0.6, 1e-9);
+    EXPECT_NEAR(error.cflNumber(), 0.6, 1e-9);
     EXPECT_EQ(error.bound(), 0.5);
     const std::string message = error.what();
     EXPECT_NE(message.find("has CFL number 0.6, above the stability bound 0.5"), std::string::npos) << message;
   }
-  EXPECT_EQ(solver.steps_done(), 100);  // nothing of the refused step was done
+  EXPECT_EQ(solver.stepsDone(), 100);  // nothing of the refused step was done
 }
 
 TEST(FluidSolver, InitialConditionsBecomeDivergenceFree) {
   FluidParams params;
   params.cells_x = params.cells_y = 32;
   FluidSolver2 solver(params);
-  set_shear_layer(solver.grid(), ShearLayer{});
-  const LinearSolveReport report = solver.make_divergence_free();
+  setShearLayer(solver.grid(), ShearLayer{});
+  const LinearSolveReport report = solver.makeDivergenceFree();
   EXPECT_TRUE(report.converged);
-  const double u_max = max_velocity_component_m_per_s(solver.grid());
+  const double u_max = maxVelocityComponent_m_per_s(solver.grid());
   EXPECT_GT(u_max, 0.005);
-  EXPECT_LE(solver.max_divergence_per_s(), 1e-10 * u_max / solver.grid().dx_m);
-  EXPECT_EQ(max_abs(solver.grid().pressure_pa), 0.0);
+  EXPECT_LE(solver.maxDivergence_per_s(), 1e-10 * u_max / solver.grid().dx_m);
+  EXPECT_EQ(maxAbs(solver.grid().pressure_pa), 0.0);
   EXPECT_EQ(solver.grid().u_m_per_s(0, 7), 0.0);  // free-slip walls: no normal flow
 
-  set_vortex_pair(solver.grid(), VortexPair{});
-  solver.make_divergence_free();
+  setVortexPair(solver.grid(), VortexPair{});
+  solver.makeDivergenceFree();
   Array2 omega;
-  vorticity_at_centres(solver.grid(), solver.walls(), omega);
+  vorticityAtCentres(solver.grid(), solver.walls(), omega);
   // The pair heading down: counter-clockwise core on the right, clockwise on the left.
   EXPECT_GT(omega(19, 19), 0.0);
   EXPECT_LT(omega(12, 19), 0.0);
@@ -195,17 +195,17 @@ TEST(FluidSolver, ForceStageOrdersTheForceAroundTheAdvection) {
     params.force_stage = stage;
     FluidSolver2 whole(params), staged(params);
     for (FluidSolver2* solver : {&whole, &staged}) {
-      set_vortex_pair(solver->grid(), VortexPair{});
-      solver->make_divergence_free();
+      setVortexPair(solver->grid(), VortexPair{});
+      solver->makeDivergenceFree();
       for (int j = 12; j < 18; ++j)
-        for (int i = 14; i < 18; ++i) solver->force_density_n_per_m3().x(i, j) = 20.0;
+        for (int i = 14; i < 18; ++i) solver->forceDensity_n_per_m3().x(i, j) = 20.0;
     }
     whole.step(dt);
     const StepContext context{0, 0.0, dt};
-    if (stage == ForceStage::before_advection) staged.apply_external_forces(context);
-    staged.advect_velocity(context);
-    if (stage == ForceStage::after_advection) staged.apply_external_forces(context);
-    staged.apply_viscosity(context);
+    if (stage == ForceStage::before_advection) staged.applyExternalForces(context);
+    staged.advectVelocity(context);
+    if (stage == ForceStage::after_advection) staged.applyExternalForces(context);
+    staged.applyViscosity(context);
     staged.project(context);
     EXPECT_EQ(whole.grid().u_m_per_s, staged.grid().u_m_per_s) << to_string(stage);
     EXPECT_EQ(whole.grid().v_m_per_s, staged.grid().v_m_per_s) << to_string(stage);
@@ -220,8 +220,8 @@ TEST(FluidSolver, ForceStageOrdersTheForceAroundTheAdvection) {
 
 TEST(FluidParams, ForceStageNamesRoundTrip) {
   for (ForceStage stage : {ForceStage::before_advection, ForceStage::after_advection})
-    EXPECT_EQ(parse_force_stage(to_string(stage)), stage);
-  EXPECT_FALSE(parse_force_stage("after").has_value());
+    EXPECT_EQ(parseForceStage(to_string(stage)), stage);
+  EXPECT_FALSE(parseForceStage("after").has_value());
 }
 
 }  // namespace

@@ -48,7 +48,7 @@ TEST(ExternalForces, GravityOnlyStepGivesTheAnalyticVelocity) {
     EXPECT_EQ(g.v_m_per_s(i, 0), 0.0);  // solid walls: no flow through
     EXPECT_EQ(g.v_m_per_s(i, g.ny), 0.0);
   }
-  EXPECT_EQ(max_abs(g.u_m_per_s), 0.0);
+  EXPECT_EQ(maxAbs(g.u_m_per_s), 0.0);
   EXPECT_DOUBLE_EQ(solver.time_s(), 0.01);
 }
 
@@ -60,7 +60,7 @@ TEST(ExternalForces, GravityInAClosedBoxIsHydrostatic) {
   only(solver, true, false, false, true);
   solver.step(0.01);
   const MacGrid2& g = solver.grid();
-  EXPECT_LT(max_velocity_component_m_per_s(g), 1e-14);
+  EXPECT_LT(maxVelocityComponent_m_per_s(g), 1e-14);
   for (int j = 0; j + 1 < g.ny; ++j) {
     const double dp_dy = (g.pressure_pa(5, j + 1) - g.pressure_pa(5, j)) / g.dx_m;
     EXPECT_NEAR(dp_dy, -params.density_kg_per_m3 * 9.81, 1e-9);  // ∂p/∂y = ρ g
@@ -71,8 +71,8 @@ TEST(ExternalForces, ForceDensityIsDividedByDensity) {
   FluidParams params = box(8, 1.0);
   params.density_kg_per_m3 = 1000.0;
   FluidSolver2 solver(params);
-  solver.force_density_n_per_m3().x.fill(2.0);  // N/m³
-  solver.force_density_n_per_m3().y.fill(-4.0);
+  solver.forceDensity_n_per_m3().x.fill(2.0);  // N/m³
+  solver.forceDensity_n_per_m3().y.fill(-4.0);
   only(solver, true, false, false, false);
   solver.step(0.5);
   EXPECT_DOUBLE_EQ(solver.grid().u_m_per_s(3, 3), 0.5 * 2.0 / 1000.0);
@@ -90,10 +90,10 @@ TEST(Advection, PreservesUniformFlowExactly) {
       MacGrid2 grid(16, 12, 0.05);
       grid.u_m_per_s.fill(0.3);
       grid.v_m_per_s.fill(fully_open ? -0.2 : 0.0);
-      enforce_wall_normal_velocity(grid, walls);
-      auto advection = make_advection_solver(scheme);
+      enforceWallNormalVelocity(grid, walls);
+      auto advection = makeAdvectionSolver(scheme);
       Array2 u, v;
-      advection->advect_velocity(grid, walls, 0.37, u, v);  // CFL > 2
+      advection->advectVelocity(grid, walls, 0.37, u, v);  // CFL > 2
       EXPECT_EQ(u, grid.u_m_per_s) << to_string(scheme);
       EXPECT_EQ(v, grid.v_m_per_s) << to_string(scheme);
     }
@@ -113,7 +113,7 @@ TEST(Step, PreservesUniformChannelFlowExactlyWithEveryStage) {
       const Array2 initial = solver.grid().u_m_per_s;
       for (int s = 0; s < 3; ++s) solver.step();
       EXPECT_EQ(solver.grid().u_m_per_s, initial) << to_string(scheme) << ", " << to_string(pressure);
-      EXPECT_EQ(max_abs(solver.grid().v_m_per_s), 0.0);
+      EXPECT_EQ(maxAbs(solver.grid().v_m_per_s), 0.0);
     }
   }
 }
@@ -143,7 +143,7 @@ TEST(Advection, SemiLagrangianFacesGetTheScalarTraceBitForBit) {
     const double c = dt / dx;
     SemiLagrangianAdvection2 advection;
     Array2 u_out, v_out;
-    advection.advect_velocity(grid, walls, dt, u_out, v_out);
+    advection.advectVelocity(grid, walls, dt, u_out, v_out);
     auto foot = [&](double X, double Y, double vel_x, double vel_y) {
       const double xm = X - 0.5 * c * vel_x, ym = Y - 0.5 * c * vel_y;
       return std::pair{X - c * u.sample(xm, ym), Y - c * v.sample(xm, ym)};
@@ -170,9 +170,9 @@ TEST(Advection, FluidAtRestStaysAtRest) {
   walls.top.tangential_velocity_m_per_s = 0.0;
   MacCormackAdvection2 advection;
   Array2 u, v;
-  advection.advect_velocity(grid, walls, 0.1, u, v);
-  EXPECT_EQ(max_abs(u), 0.0);
-  EXPECT_EQ(max_abs(v), 0.0);
+  advection.advectVelocity(grid, walls, 0.1, u, v);
+  EXPECT_EQ(maxAbs(u), 0.0);
+  EXPECT_EQ(maxAbs(v), 0.0);
 }
 
 // Both viscosity solvers: the iterative (to a tolerance) and the fast direct (exact to round-off).
@@ -216,12 +216,12 @@ TEST(Viscosity, EigenmodeDecaysByTheBackwardEulerFactor) {
     MacGrid2 grid(n, n, dx);
     set_box_eigenmode(grid, n);
     const MacGrid2 initial = grid;
-    const LinearSolveReport report = diffusion->diffuse_velocity(grid, Walls{}, nu, dt);
+    const LinearSolveReport report = diffusion->diffuseVelocity(grid, Walls{}, nu, dt);
     EXPECT_TRUE(report.converged);
     const double factor = 1.0 / (1.0 + nu * dt * box_eigenvalue_per_m2(n, dx));
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i < n; ++i) EXPECT_NEAR(grid.v_m_per_s(i, j), factor * initial.v_m_per_s(i, j), 1e-12);
-    EXPECT_EQ(max_abs(grid.u_m_per_s), 0.0);
+    EXPECT_EQ(maxAbs(grid.u_m_per_s), 0.0);
   }
 }
 
@@ -236,13 +236,13 @@ TEST(Viscosity, CrankNicolsonEigenmodeAndCouetteFixedPoint) {
     MacGrid2 grid(n, n, dx);
     set_box_eigenmode(grid, n);
     const MacGrid2 initial = grid;
-    EXPECT_TRUE(diffusion->diffuse_velocity(grid, Walls{}, nu, dt, ViscosityScheme::crank_nicolson).converged);
+    EXPECT_TRUE(diffusion->diffuseVelocity(grid, Walls{}, nu, dt, ViscosityScheme::crank_nicolson).converged);
     const double half = 0.5 * nu * dt * box_eigenvalue_per_m2(n, dx);
     const double factor = (1.0 - half) / (1.0 + half);
     ASSERT_GT(std::abs(factor - 1.0 / (1.0 + 2.0 * half)), 1e-4);  // ≫ the 1e-12 checked below
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i < n; ++i) EXPECT_NEAR(grid.v_m_per_s(i, j), factor * initial.v_m_per_s(i, j), 1e-12);
-    EXPECT_EQ(max_abs(grid.u_m_per_s), 0.0);
+    EXPECT_EQ(maxAbs(grid.u_m_per_s), 0.0);
   }
   const int nx = 8, ny = 10;
   const double top_speed = 0.7;
@@ -251,7 +251,7 @@ TEST(Viscosity, CrankNicolsonEigenmodeAndCouetteFixedPoint) {
     MacGrid2 grid(nx, ny, dx);
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i <= nx; ++i) grid.u_m_per_s(i, j) = top_speed * (j + 0.5) / ny;
-    diffusion->diffuse_velocity(grid, walls, 1.0, 0.05, ViscosityScheme::crank_nicolson);
+    diffusion->diffuseVelocity(grid, walls, 1.0, 0.05, ViscosityScheme::crank_nicolson);
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i <= nx; ++i) EXPECT_NEAR(grid.u_m_per_s(i, j), top_speed * (j + 0.5) / ny, 1e-12);
   }
@@ -269,8 +269,8 @@ Walls floor_and_moving_lid() {
 // the unknown faces, the solid walls' normal faces zero (the stage's precondition).
 MacGrid2 rough_vortex(int nx, int ny, double dx, const Walls& walls) {
   MacGrid2 grid(nx, ny, dx);
-  set_vortex_pair(grid, VortexPair{});
-  enforce_wall_normal_velocity(grid, walls);
+  setVortexPair(grid, VortexPair{});
+  enforceWallNormalVelocity(grid, walls);
   for (int j = 0; j < ny; ++j)
     for (int i = 1; i < nx; ++i) grid.u_m_per_s(i, j) += 1e-3 * (((i * 7 + j * 13) % 5) - 2);
   for (int j = 1; j < ny; ++j)
@@ -291,17 +291,17 @@ TEST(Viscosity, RichardsonSweepsMeetTheToleranceOfCg) {
     const double alpha = 0.1 * ten_alpha;
     ASSERT_LE(ten_alpha, ImplicitDiffusion2::kSweepContraction);
     MacGrid2 grid = rough_vortex(nx, ny, dx, walls);
-    const double b_norm = std::max(max_abs(grid.u_m_per_s), max_abs(grid.v_m_per_s)) + 2.0 * alpha * 0.05;
+    const double b_norm = std::max(maxAbs(grid.u_m_per_s), maxAbs(grid.v_m_per_s)) + 2.0 * alpha * 0.05;
     MacGrid2 tight = grid;
     const double nu = 1e-3, dt = alpha * dx * dx / nu;
     ImplicitDiffusion2 fast(1e-10, 100), reference(1e-14, 1000);
-    const LinearSolveReport r = fast.diffuse_velocity(grid, walls, nu, dt);
+    const LinearSolveReport r = fast.diffuseVelocity(grid, walls, nu, dt);
     EXPECT_TRUE(r.converged);
     EXPECT_LE(r.relative_residual, 1e-10);
-    EXPECT_TRUE(reference.diffuse_velocity(tight, walls, nu, dt).converged);
-    EXPECT_LE(max_abs_difference(grid.u_m_per_s.data(), tight.u_m_per_s.data(), grid.u_m_per_s.size()), 1e-10 * b_norm)
+    EXPECT_TRUE(reference.diffuseVelocity(tight, walls, nu, dt).converged);
+    EXPECT_LE(maxAbsDifference(grid.u_m_per_s.data(), tight.u_m_per_s.data(), grid.u_m_per_s.size()), 1e-10 * b_norm)
         << "10 alpha = " << ten_alpha;
-    EXPECT_LE(max_abs_difference(grid.v_m_per_s.data(), tight.v_m_per_s.data(), grid.v_m_per_s.size()), 1e-10 * b_norm)
+    EXPECT_LE(maxAbsDifference(grid.v_m_per_s.data(), tight.v_m_per_s.data(), grid.v_m_per_s.size()), 1e-10 * b_norm)
         << "10 alpha = " << ten_alpha;
   }
 }
@@ -322,19 +322,19 @@ TEST(Viscosity, ChebyshevSweepsMeetTheToleranceAtTheirRate) {
     ASSERT_GT(10.0 * alpha, ImplicitDiffusion2::kSweepContraction);
     ASSERT_LE(alpha * g, ImplicitDiffusion2::kChebyshevSpread);
     MacGrid2 grid = rough_vortex(nx, ny, dx, walls);
-    const double x_norm = std::max(max_abs(grid.u_m_per_s), max_abs(grid.v_m_per_s));
+    const double x_norm = std::max(maxAbs(grid.u_m_per_s), maxAbs(grid.v_m_per_s));
     const double b_norm = x_norm + 2.0 * alpha * 0.05;
     MacGrid2 exact = grid;
     const double nu = 1e-3, dt = alpha * dx * dx / nu;
     const double tolerance = 1e-10;
     ImplicitDiffusion2 chebyshev(tolerance, 1000);
-    const LinearSolveReport r = chebyshev.diffuse_velocity(grid, walls, nu, dt);
+    const LinearSolveReport r = chebyshev.diffuseVelocity(grid, walls, nu, dt);
     EXPECT_TRUE(r.converged);
     EXPECT_LE(r.relative_residual, tolerance);
-    ASSERT_TRUE(FastDiffusion2(1e-12).diffuse_velocity(exact, walls, nu, dt).converged);
-    EXPECT_LE(max_abs_difference(grid.u_m_per_s.data(), exact.u_m_per_s.data(), grid.u_m_per_s.size()),
+    ASSERT_TRUE(FastDiffusion2(1e-12).diffuseVelocity(exact, walls, nu, dt).converged);
+    EXPECT_LE(maxAbsDifference(grid.u_m_per_s.data(), exact.u_m_per_s.data(), grid.u_m_per_s.size()),
               2 * tolerance * b_norm);
-    EXPECT_LE(max_abs_difference(grid.v_m_per_s.data(), exact.v_m_per_s.data(), grid.v_m_per_s.size()),
+    EXPECT_LE(maxAbsDifference(grid.v_m_per_s.data(), exact.v_m_per_s.data(), grid.v_m_per_s.size()),
               2 * tolerance * b_norm);
     const double kappa = 1.0 + alpha * g;
     const double sigma = (std::sqrt(kappa) - 1.0) / (std::sqrt(kappa) + 1.0);
@@ -354,12 +354,12 @@ TEST(Viscosity, LongImplicitStepGivesCouetteProfile) {
   const Walls walls = couette_walls(top_speed);
   for (auto& diffusion : viscosity_solvers(1e-14, 2000)) {
     MacGrid2 grid(nx, ny, dx);
-    diffusion->diffuse_velocity(grid, walls, 1.0, 1e9);
+    diffusion->diffuseVelocity(grid, walls, 1.0, 1e9);
     for (int j = 0; j < ny; ++j) {
       for (int i = 0; i <= nx; ++i) EXPECT_NEAR(grid.u_m_per_s(i, j), top_speed * (j + 0.5) / ny, 1e-6);
     }
     Array2 omega;
-    vorticity_at_corners(grid, walls, omega);
+    vorticityAtCorners(grid, walls, omega);
     EXPECT_NEAR(omega(3, 0), -top_speed / (ny * dx), 1e-5);  // ω = −∂u/∂y
   }
 }
@@ -388,25 +388,25 @@ TEST(Tracers, SolidBodyRotation) {
   MacGrid2 grid(n, n, size / n);
   const double c = 0.5 * size;
   for (int j = 0; j < n; ++j)
-    for (int i = 0; i <= n; ++i) grid.u_m_per_s(i, j) = -omega * (grid.u_position_m(i, j).y - c);
+    for (int i = 0; i <= n; ++i) grid.u_m_per_s(i, j) = -omega * (grid.uPosition_m(i, j).y - c);
   for (int j = 0; j <= n; ++j)
-    for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = omega * (grid.v_position_m(i, j).x - c);
+    for (int i = 0; i < n; ++i) grid.v_m_per_s(i, j) = omega * (grid.vPosition_m(i, j).x - c);
   Walls walls;
   for (Wall* w : {&walls.left, &walls.right, &walls.bottom, &walls.top}) w->type = WallType::open;
   VelocitySampler2 sampler;
   sampler.assign(grid, walls);
-  const Vec2 u = sampler.velocity_at_m_per_s({0.3, 0.7});
+  const Vec2 u = sampler.velocityAt_m_per_s({0.3, 0.7});
   EXPECT_NEAR(u.x, -omega * 0.2, 1e-14);
   EXPECT_NEAR(u.y, omega * -0.2, 1e-14);
 
   Array2 vorticity;
-  vorticity_at_corners(grid, walls, vorticity);
+  vorticityAtCorners(grid, walls, vorticity);
   EXPECT_NEAR(vorticity(10, 20), 2.0 * omega, 1e-12);
 
   std::vector<Vec2> tracers{{0.8, 0.5}, {0.5, 0.3}};
   const int steps = 200;
   const double dt = 2.0 * std::numbers::pi / omega / steps;
-  for (int s = 0; s < steps; ++s) advect_tracers_rk2(tracers, sampler, dt, size, size);
+  for (int s = 0; s < steps; ++s) advectTracersRk2(tracers, sampler, dt, size, size);
   EXPECT_NEAR(tracers[0].x, 0.8, 1e-3);
   EXPECT_NEAR(tracers[0].y, 0.5, 1e-3);
   EXPECT_NEAR(std::hypot(tracers[1].x - c, tracers[1].y - c), 0.2, 1e-4);
@@ -432,26 +432,26 @@ TEST(Tracers, MoveExactlyWithUniformFlowAndStayInside) {
 TEST(Diagnostics, KineticEnergyDivergenceAndCfl) {
   MacGrid2 grid(10, 5, 0.2);
   grid.u_m_per_s.fill(3.0);
-  EXPECT_NEAR(kinetic_energy_joule_per_m(grid, 1000.0), 0.5 * 1000.0 * 9.0 * (2.0 * 1.0), 1e-9);
-  EXPECT_EQ(max_divergence_per_s(grid), 0.0);
-  EXPECT_DOUBLE_EQ(cfl_number(grid, 0.1), 3.0 * 0.1 / 0.2);
+  EXPECT_NEAR(kineticEnergy_joule_per_m(grid, 1000.0), 0.5 * 1000.0 * 9.0 * (2.0 * 1.0), 1e-9);
+  EXPECT_EQ(maxDivergence_per_s(grid), 0.0);
+  EXPECT_DOUBLE_EQ(cflNumber(grid, 0.1), 3.0 * 0.1 / 0.2);
   grid.v_m_per_s(4, 2) = 1.0;
-  EXPECT_DOUBLE_EQ(max_divergence_per_s(grid), 1.0 / 0.2);
+  EXPECT_DOUBLE_EQ(maxDivergence_per_s(grid), 1.0 / 0.2);
   grid.u_m_per_s(3, 3) = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_TRUE(std::isinf(max_velocity_component_m_per_s(grid)));
-  EXPECT_TRUE(std::isinf(summarize_flow(grid, 1.0).max_velocity_component_m_per_s));
+  EXPECT_TRUE(std::isinf(maxVelocityComponent_m_per_s(grid)));
+  EXPECT_TRUE(std::isinf(summarizeFlow(grid, 1.0).max_velocity_component_m_per_s));
 }
 
 // The one-pass summary that step() reports equals the separate observables.
 TEST(Diagnostics, SummaryAgreesWithTheSeparateFunctions) {
   MacGrid2 grid(13, 9, 0.05);
-  set_vortex_pair(grid, VortexPair{});
+  setVortexPair(grid, VortexPair{});
   grid.v_m_per_s(4, 0) = 0.3;  // some divergence and a wall face
-  const FlowSummary summary = summarize_flow(grid, 998.0);
-  EXPECT_EQ(summary.max_velocity_component_m_per_s, max_velocity_component_m_per_s(grid));
-  EXPECT_EQ(summary.max_divergence_per_s, max_divergence_per_s(grid));
-  EXPECT_NEAR(summary.kinetic_energy_joule_per_m, kinetic_energy_joule_per_m(grid, 998.0),
-              1e-14 * kinetic_energy_joule_per_m(grid, 998.0));
+  const FlowSummary summary = summarizeFlow(grid, 998.0);
+  EXPECT_EQ(summary.max_velocity_component_m_per_s, maxVelocityComponent_m_per_s(grid));
+  EXPECT_EQ(summary.max_divergence_per_s, maxDivergence_per_s(grid));
+  EXPECT_NEAR(summary.kinetic_energy_joule_per_m, kineticEnergy_joule_per_m(grid, 998.0),
+              1e-14 * kineticEnergy_joule_per_m(grid, 998.0));
 }
 
 }  // namespace

@@ -44,11 +44,11 @@ MacGrid2 run(const Scene& scene, int threads, int steps) {
   FluidSolver2 solver(params);
   VortexPair pair;
   pair.circulation_m2_per_s = 2e-3;
-  set_vortex_pair(solver.grid(), pair);
-  solver.make_divergence_free();
+  setVortexPair(solver.grid(), pair);
+  solver.makeDivergenceFree();
   solver.tracers_m() = {{0.1, 0.2}, {0.3, 0.15}};
   for (int s = 0; s < steps; ++s) {
-    solver.force_density_n_per_m3().x(scene.nx / 2, scene.ny / 3) = 3.0 * (s % 4);  // like a spread IB force
+    solver.forceDensity_n_per_m3().x(scene.nx / 2, scene.ny / 3) = 3.0 * (s % 4);  // like a spread IB force
     solver.step();
   }
   return solver.grid();
@@ -98,7 +98,7 @@ TEST(WorkerPool, PiecesCoverTheRangeOnceAndEveryPartRuns) {
     WorkerPool pool(threads);
     std::vector<std::atomic<int>> hits(101);
     std::atomic<int> parts_run{0};
-    for_pieces(&pool, 3, 101, [&](int lo, int hi, int) {
+    forPieces(&pool, 3, 101, [&](int lo, int hi, int) {
       for (int k = lo; k < hi; ++k) hits[k].fetch_add(1);
       parts_run.fetch_add(1);
     });

@@ -140,13 +140,13 @@ TEST(BandedLU, MultiplyOverTheReachIsBitwiseThatOverTheBand) {
   for (double& v : x) v = uniform(rng, -1, 1);
   x[3] = -0.0;
   lu.multiply(x, band);
-  lu.set_reach(first, last);
+  lu.setReach(first, last);
   lu.multiply(x, reach);
   ASSERT_EQ(band.size(), reach.size());
   EXPECT_EQ(std::memcmp(band.data(), reach.data(), band.size() * sizeof(double)), 0);
 }
 
-// The reach counts for the matrix set before it: a write after set_reach(), or a factor(), which
+// The reach counts for the matrix set before it: a write after setReach(), or a factor(), which
 // fills the kl rows above the band, makes reset() zero all the storage.
 TEST(BandedLU, ResetZeroesWritesPastTheReachAndTheFactors) {
   const int n = 50, kl = 8, ku = 6;
@@ -156,11 +156,11 @@ TEST(BandedLU, ResetZeroesWritesPastTheReachAndTheFactors) {
     if (factor) {
       fillRandom(lu, n, kl, ku, 9);  // a small diagonal: row interchanges fill the rows above the band
       for (int j = 0; j < n; ++j) first[j] = std::max(0, j - ku), last[j] = std::min(n - 1, j + kl);
-      lu.set_reach(first, last);
+      lu.setReach(first, last);
       ASSERT_TRUE(lu.factor());
     } else {
       fillRagged(lu, n, kl, ku, 9, first, last);
-      lu.set_reach(first, last);
+      lu.setReach(first, last);
       lu.at(5, 5) = 1.0;  // column 5's reach is empty
     }
     lu.reset(n, kl, ku);
@@ -190,7 +190,7 @@ TEST(BandedLU, ResetWithinTheReachLeavesAZeroMatrix) {
     BandedLU lu, fresh;
     std::vector<int> first, last, first2, last2;
     fillRagged(lu, 60, 10, 10, 1, first, last);
-    lu.set_reach(first, last);
+    lu.setReach(first, last);
     fillRagged(lu, next.n, next.kl, next.ku, 2, first2, last2);
     fillRagged(fresh, next.n, next.kl, next.ku, 2, first2, last2);
     std::mt19937_64 rng(6);
@@ -208,11 +208,11 @@ TEST(BandedLU, AReachOutsideTheBandIsRefused) {
   std::vector<int> first(10), last(10);
   for (int j = 0; j < 10; ++j) first[j] = last[j] = j;
   first[6] = 2;  // 4 above the diagonal, ku = 3
-  EXPECT_THROW(lu.set_reach(first, last), std::invalid_argument);
+  EXPECT_THROW(lu.setReach(first, last), std::invalid_argument);
   first[6] = 3;
   last[0] = 3;  // 3 below, kl = 2
-  EXPECT_THROW(lu.set_reach(first, last), std::invalid_argument);
-  EXPECT_THROW(lu.set_reach(std::vector<int>(9), std::vector<int>(9)), std::invalid_argument);
+  EXPECT_THROW(lu.setReach(first, last), std::invalid_argument);
+  EXPECT_THROW(lu.setReach(std::vector<int>(9), std::vector<int>(9)), std::invalid_argument);
 }
 
 }  // namespace

@@ -298,7 +298,7 @@ TEST_P(CouplingTest, WithoutForcesMarkersMoveWithAUniformFlow) {
     for (int k = 0; k < 24; ++k) {
       EXPECT_NEAR(ib.markers_m()[k].x, start[k].x + step * 0.01 * 0.3, 1e-15) << "marker " << k;
       EXPECT_NEAR(ib.markers_m()[k].y, start[k].y - step * 0.01 * 0.2, 1e-15) << "marker " << k;
-      EXPECT_EQ(ib.applied_force_n_per_m()[k].x, 0.0);
+      EXPECT_EQ(ib.appliedForce_n_per_m()[k].x, 0.0);
     }
   }
 }
@@ -315,7 +315,7 @@ TEST_P(CouplingTest, OneStepPutsDtTimesTheForceIntoTheFluidMomentum) {
   const double dt = 0.01;
   ib.step(dt);
   Vec2 total{0, 0};
-  for (const auto& f : ib.applied_force_n_per_m()) total = {total.x + f.x, total.y + f.y};
+  for (const auto& f : ib.appliedForce_n_per_m()) total = {total.x + f.x, total.y + f.y};
   ASSERT_GT(std::fabs(total.x), 1.0);  // 20 markers x 50 N/m^2 x 4 mm
   const Vec2 p = momentum(fluid);
   EXPECT_NEAR(p.x, dt * total.x, 1e-14 * std::fabs(dt * total.x) * 20);
@@ -331,7 +331,7 @@ TEST_P(CouplingTest, TheMembranePutsNoNetMomentumIntoTheFluid) {
   ImmersedBoundary2 ib(fluid, body, jitteredRing(30, 17), params());
   ib.step(0.01);
   double scale = 0;
-  for (const auto& f : ib.applied_force_n_per_m()) scale += std::hypot(f.x, f.y);
+  for (const auto& f : ib.appliedForce_n_per_m()) scale += std::hypot(f.x, f.y);
   ASSERT_GT(scale, 1.0);
   const Vec2 p = momentum(fluid);
   EXPECT_NEAR(p.x, 0.0, 1e-14 * 0.01 * scale);
@@ -365,8 +365,8 @@ TEST(Coupling, SemiImplicitForceOfATetheredBodyAtRestIsBackwardEuler) {
     const double m = factor * 1000.0 * 0.01 * 0.01;
     const double reduction = m / (m + dt * dt * kappa);
     for (int k = 0; k < 10; ++k) {
-      EXPECT_NEAR(ib.applied_force_n_per_m()[k].x, kappa * 0.002 * reduction, 1e-13) << "marker " << k;
-      EXPECT_NEAR(ib.applied_force_n_per_m()[k].y, kappa * 0.001 * reduction, 1e-13) << "marker " << k;
+      EXPECT_NEAR(ib.appliedForce_n_per_m()[k].x, kappa * 0.002 * reduction, 1e-13) << "marker " << k;
+      EXPECT_NEAR(ib.appliedForce_n_per_m()[k].y, kappa * 0.001 * reduction, 1e-13) << "marker " << k;
     }
   }
 }
@@ -396,8 +396,8 @@ TEST(Coupling, StencilMobilityOfOneTetheredMarkerAtRest) {
     EXPECT_EQ(g(0, 1), 0.0);
     const double fx = kappa * 0.002 / (1 + dt * dt * kappa * g(0, 0) / (rho * dx * dx));
     const double fy = kappa * 0.001 / (1 + dt * dt * kappa * g(1, 1) / (rho * dx * dx));
-    EXPECT_NEAR(ib.applied_force_n_per_m()[0].x, fx, 1e-12 * kappa * 0.002) << to_string(kernel);
-    EXPECT_NEAR(ib.applied_force_n_per_m()[0].y, fy, 1e-12 * kappa * 0.001) << to_string(kernel);
+    EXPECT_NEAR(ib.appliedForce_n_per_m()[0].x, fx, 1e-12 * kappa * 0.002) << to_string(kernel);
+    EXPECT_NEAR(ib.appliedForce_n_per_m()[0].y, fy, 1e-12 * kappa * 0.001) << to_string(kernel);
     EXPECT_LT(fx, kappa * 0.002);  // the implicit force is softer than the explicit one
   }
 }
@@ -416,10 +416,10 @@ TEST(Coupling, StencilGramMatrixIsSymmetricAndMatchesTheWeights) {
     EXPECT_LT((g - g.transpose()).cwiseAbs().maxCoeff(), 1e-15);
     EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(g).eigenvalues().minCoeff(), -1e-14);
     for (int k = 0; k < 12; ++k) {
-      const auto& u = t.u_stencil(k);
+      const auto& u = t.uStencil(k);
       double sx = 0, sy = 0;
-      for (int a = 0; a < kernel_support_cells(kernel); ++a) sx += u.wx[a] * u.wx[a];
-      for (int b = 0; b < kernel_support_cells(kernel); ++b) sy += u.wy[b] * u.wy[b];
+      for (int a = 0; a < kernelSupportCells(kernel); ++a) sx += u.wx[a] * u.wx[a];
+      for (int b = 0; b < kernelSupportCells(kernel); ++b) sy += u.wy[b] * u.wy[b];
       EXPECT_NEAR(g(2 * k, 2 * k), sx * sy, 1e-15);
       for (int l = 0; l < 12; ++l) EXPECT_EQ(g(2 * k, 2 * l + 1), 0.0);
     }
@@ -472,20 +472,20 @@ TEST(Coupling, AppliedGramIsTheFormedOnesProduct) {
       for (double& e : v) e = unit(rng);
       const Eigen::VectorXd want = g * v;
       std::vector<double> in(v.data(), v.data() + v.size()), got(300, 0.0);
-      t.apply_gram(in, got, patch);
+      t.applyGram(in, got, patch);
       double largest = 0.0, error = 0.0;
       for (int i = 0; i < 300; ++i) {
         largest = std::max(largest, std::abs(want[i]));
         error = std::max(error, std::abs(got[i] - want[i]));
       }
       EXPECT_GT(largest, 1e-3) << to_string(kernel) << " x" << stretch;  // not a product of zeros
-      EXPECT_LE(error, 1e-14 * largest) << to_string(kernel) << " x" << stretch << " (support " << t.stencil_faces()
+      EXPECT_LE(error, 1e-14 * largest) << to_string(kernel) << " x" << stretch << " (support " << t.stencilFaces()
                                         << ")";
     }
   Transfer t;
   t.locate(fluid.grid(), Kernel::peskin4, x);
   std::vector<double> wrong(299), out(300);
-  EXPECT_THROW(t.apply_gram(wrong, out, patch), std::invalid_argument);
+  EXPECT_THROW(t.applyGram(wrong, out, patch), std::invalid_argument);
 }
 
 // Each stored entry of the sparse Gram matrix is, bit for bit, scale · (Σ_a wx_k[a] wx_l[a + di]) ·
@@ -505,7 +505,7 @@ TEST(Coupling, SparseGramEntriesAreTheirOverlapsBitForBit) {
       const double scale = 0.37;
       Eigen::SparseMatrix<double> g;
       t.gram(scale, g);
-      const int s = t.stencil_faces();
+      const int s = t.stencilFaces();
       auto overlap = [s](const double* wk, const double* wl, int shift) {
         double sum = 0.0;
         for (int a = 0; a < s; ++a)
@@ -520,8 +520,8 @@ TEST(Coupling, SparseGramEntriesAreTheirOverlapsBitForBit) {
           ASSERT_EQ(row % 2, c);
           ASSERT_GT(row, previous);
           previous = row;
-          const FaceStencil& sk = c == 0 ? t.u_stencil(k) : t.v_stencil(k);
-          const FaceStencil& sl = c == 0 ? t.u_stencil(l) : t.v_stencil(l);
+          const FaceStencil& sk = c == 0 ? t.uStencil(k) : t.vStencil(k);
+          const FaceStencil& sl = c == 0 ? t.uStencil(l) : t.vStencil(l);
           const double want = scale * overlap(sk.wx, sl.wx, sk.i0 - sl.i0) * overlap(sk.wy, sl.wy, sk.j0 - sl.j0);
           ASSERT_EQ(e.value(), want) << to_string(kernel) << " x" << stretch << " (" << row << ", " << col << ")";
         }
@@ -529,8 +529,8 @@ TEST(Coupling, SparseGramEntriesAreTheirOverlapsBitForBit) {
       for (int c = 0; c < 2; ++c)
         for (int k = 0; k < 150; ++k)
           for (int l = 0; l < 150; ++l) {
-            const FaceStencil& sk = c == 0 ? t.u_stencil(k) : t.v_stencil(k);
-            const FaceStencil& sl = c == 0 ? t.u_stencil(l) : t.v_stencil(l);
+            const FaceStencil& sk = c == 0 ? t.uStencil(k) : t.vStencil(k);
+            const FaceStencil& sl = c == 0 ? t.uStencil(l) : t.vStencil(l);
             overlapping += std::abs(sk.i0 - sl.i0) < s && std::abs(sk.j0 - sl.j0) < s;
           }
       EXPECT_EQ(stored, overlapping) << to_string(kernel) << " x" << stretch;
@@ -628,8 +628,8 @@ TEST(Coupling, ReusedFactorsGiveTheStepsOfFreshOnes) {
     c.factor_reuse.tolerance = tolerance;
     ImmersedBoundary2 ib(fluid, body, jitteredRing(kMarkers, 5), c);
     for (int s = 0; s < 10; ++s) ib.step(0.002);
-    *factorizations = ib.banded_solver().factorizations();
-    EXPECT_EQ(ib.banded_solver().solves(), 10);
+    *factorizations = ib.bandedSolver().factorizations();
+    EXPECT_EQ(ib.bandedSolver().solves(), 10);
     return ib.markers_m();
   };
   long fresh_count = 0, reused_count = 0;

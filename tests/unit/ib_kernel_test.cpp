@@ -34,58 +34,58 @@ class KernelTest : public ::testing::TestWithParam<Kernel> {};
 TEST(KernelNames, RoundTripAndRejectUnknownNames) {
   EXPECT_EQ(to_string(Kernel::bilinear), "bilinear");
   EXPECT_EQ(to_string(Kernel::peskin4), "peskin4");
-  for (Kernel k : {Kernel::bilinear, Kernel::peskin4}) EXPECT_EQ(parse_kernel(to_string(k)), k);
-  EXPECT_FALSE(parse_kernel("Bilinear"));
-  EXPECT_FALSE(parse_kernel("peskin"));
-  EXPECT_FALSE(parse_kernel(""));
-  EXPECT_EQ(kernel_support_cells(Kernel::bilinear), 2);
-  EXPECT_EQ(kernel_support_cells(Kernel::peskin4), 4);
+  for (Kernel k : {Kernel::bilinear, Kernel::peskin4}) EXPECT_EQ(parseKernel(to_string(k)), k);
+  EXPECT_FALSE(parseKernel("Bilinear"));
+  EXPECT_FALSE(parseKernel("peskin"));
+  EXPECT_FALSE(parseKernel(""));
+  EXPECT_EQ(kernelSupportCells(Kernel::bilinear), 2);
+  EXPECT_EQ(kernelSupportCells(Kernel::peskin4), 4);
 }
 
 TEST(KernelFormula, BilinearIsTheHatFunction) {
   std::mt19937_64 rng(11);
   for (int n = 0; n < kSamples; ++n) {
     const double r = -3.0 + 6.0 * uniform01(rng);
-    EXPECT_EQ(kernel_weight_1d(Kernel::bilinear, r), std::max(0.0, 1.0 - std::abs(r))) << "r = " << r;
+    EXPECT_EQ(kernelWeight_1d(Kernel::bilinear, r), std::max(0.0, 1.0 - std::abs(r))) << "r = " << r;
   }
-  EXPECT_EQ(kernel_weight_1d(Kernel::bilinear, 0.0), 1.0);
-  EXPECT_EQ(kernel_weight_1d(Kernel::bilinear, 0.25), 0.75);
-  EXPECT_EQ(kernel_weight_1d(Kernel::bilinear, -1.0), 0.0);
+  EXPECT_EQ(kernelWeight_1d(Kernel::bilinear, 0.0), 1.0);
+  EXPECT_EQ(kernelWeight_1d(Kernel::bilinear, 0.25), 0.75);
+  EXPECT_EQ(kernelWeight_1d(Kernel::bilinear, -1.0), 0.0);
 }
 
 TEST(KernelFormula, Peskin4MatchesThePrintedFormula) {
   std::mt19937_64 rng(12);
   for (int n = 0; n < kSamples; ++n) {
     const double r = -3.0 + 6.0 * uniform01(rng);
-    EXPECT_NEAR(kernel_weight_1d(Kernel::peskin4, r), peskin4_as_printed(r), 1e-15) << "r = " << r;
+    EXPECT_NEAR(kernelWeight_1d(Kernel::peskin4, r), peskin4_as_printed(r), 1e-15) << "r = " << r;
   }
   // Values from the formula by hand: phi(0) = 1/2, phi(1/2) = (2 + sqrt 2)/8, phi(1) = 1/4,
   // phi(3/2) = (2 − sqrt 2)/8, phi(2) = 0.
-  EXPECT_DOUBLE_EQ(kernel_weight_1d(Kernel::peskin4, 0.0), 0.5);
-  EXPECT_DOUBLE_EQ(kernel_weight_1d(Kernel::peskin4, 0.5), (2.0 + std::sqrt(2.0)) / 8.0);
-  EXPECT_DOUBLE_EQ(kernel_weight_1d(Kernel::peskin4, -1.0), 0.25);
-  EXPECT_DOUBLE_EQ(kernel_weight_1d(Kernel::peskin4, 1.5), (2.0 - std::sqrt(2.0)) / 8.0);
-  EXPECT_EQ(kernel_weight_1d(Kernel::peskin4, 2.0), 0.0);
+  EXPECT_DOUBLE_EQ(kernelWeight_1d(Kernel::peskin4, 0.0), 0.5);
+  EXPECT_DOUBLE_EQ(kernelWeight_1d(Kernel::peskin4, 0.5), (2.0 + std::sqrt(2.0)) / 8.0);
+  EXPECT_DOUBLE_EQ(kernelWeight_1d(Kernel::peskin4, -1.0), 0.25);
+  EXPECT_DOUBLE_EQ(kernelWeight_1d(Kernel::peskin4, 1.5), (2.0 - std::sqrt(2.0)) / 8.0);
+  EXPECT_EQ(kernelWeight_1d(Kernel::peskin4, 2.0), 0.0);
   // Continuous where the branches meet.
-  EXPECT_NEAR(kernel_weight_1d(Kernel::peskin4, std::nextafter(1.0, 0.0)),
-              kernel_weight_1d(Kernel::peskin4, std::nextafter(1.0, 2.0)), 1e-15);
+  EXPECT_NEAR(kernelWeight_1d(Kernel::peskin4, std::nextafter(1.0, 0.0)),
+              kernelWeight_1d(Kernel::peskin4, std::nextafter(1.0, 2.0)), 1e-15);
 }
 
 TEST_P(KernelTest, IsSymmetricNonNegativeAndZeroOutsideItsSupport) {
   const Kernel kernel = GetParam();
-  const double half_width = 0.5 * kernel_support_cells(kernel);
+  const double half_width = 0.5 * kernelSupportCells(kernel);
   std::mt19937_64 rng(13);
   for (int n = 0; n < kSamples; ++n) {
     const double r = -4.0 + 8.0 * uniform01(rng);
-    const double phi = kernel_weight_1d(kernel, r);
-    EXPECT_EQ(phi, kernel_weight_1d(kernel, -r));
+    const double phi = kernelWeight_1d(kernel, r);
+    EXPECT_EQ(phi, kernelWeight_1d(kernel, -r));
     EXPECT_GE(phi, 0.0);
     if (std::abs(r) >= half_width) {
       EXPECT_EQ(phi, 0.0) << "r = " << r;
     }
   }
-  EXPECT_TRUE(std::isnan(kernel_weight_1d(kernel, std::numeric_limits<double>::quiet_NaN())));
-  EXPECT_EQ(kernel_weight_1d(kernel, std::numeric_limits<double>::infinity()), 0.0);
+  EXPECT_TRUE(std::isnan(kernelWeight_1d(kernel, std::numeric_limits<double>::quiet_NaN())));
+  EXPECT_EQ(kernelWeight_1d(kernel, std::numeric_limits<double>::infinity()), 0.0);
 }
 
 // Σ_j phi(r − j) = 1 and Σ_j (r − j) phi(r − j) = 0 for every r: the partition of unity and
@@ -98,7 +98,7 @@ TEST_P(KernelTest, OneDimensionalMomentConditions) {
     const double r = -5.0 + 10.0 * uniform01(rng);
     double sum = 0.0, first = 0.0, squares = 0.0, even = 0.0, odd = 0.0;
     for (int j = -8; j <= 8; ++j) {
-      const double phi = kernel_weight_1d(kernel, r - j);
+      const double phi = kernelWeight_1d(kernel, r - j);
       sum += phi;
       first += (r - j) * phi;
       squares += phi * phi;
@@ -118,17 +118,17 @@ TEST_P(KernelTest, OneDimensionalMomentConditions) {
 // conditions above.
 TEST_P(KernelTest, StencilWeightsEqualTheKernelAndSumToOne) {
   const Kernel kernel = GetParam();
-  const int s = kernel_support_cells(kernel);
+  const int s = kernelSupportCells(kernel);
   std::mt19937_64 rng(15);
   for (int n = 0; n < kSamples; ++n) {
     const double t = n == 0 ? 0.0 : uniform01(rng);
     double w[kMaxKernelSupportCells] = {-1.0, -1.0, -1.0, -1.0};
-    kernel_weights_1d(kernel, t, w);
+    kernelWeights_1d(kernel, t, w);
     double sum = 0.0, first = 0.0, even = 0.0, odd = 0.0;
     for (int a = 0; a < kMaxKernelSupportCells; ++a) {
       const double r = t + s / 2 - 1 - a;  // distance of the point from face a of its stencil
       if (a < s) {
-        EXPECT_NEAR(w[a], kernel_weight_1d(kernel, r), 1e-15) << "t = " << t << ", a = " << a;
+        EXPECT_NEAR(w[a], kernelWeight_1d(kernel, r), 1e-15) << "t = " << t << ", a = " << a;
         EXPECT_GE(w[a], 0.0);
       } else {
         EXPECT_EQ(w[a], 0.0);
@@ -152,19 +152,19 @@ TEST_P(KernelTest, StencilWeightsEqualTheKernelAndSumToOne) {
 TEST_P(KernelTest, StretchedStencilKeepsTheMomentConditions) {
   const Kernel kernel = GetParam();
   std::mt19937_64 rng(16);
-  const int largest = kMaxStencilFaces / kernel_support_cells(kernel);
+  const int largest = kMaxStencilFaces / kernelSupportCells(kernel);
   for (int m = 1; m <= largest; ++m) {
-    const int faces = stencil_faces(kernel, m);
-    ASSERT_EQ(faces, m * kernel_support_cells(kernel));
+    const int faces = stencilFaces(kernel, m);
+    ASSERT_EQ(faces, m * kernelSupportCells(kernel));
     for (int n = 0; n < 2000; ++n) {
       const double t = n == 0 ? 0.0 : uniform01(rng);
       double w[kMaxStencilFaces];
-      stretched_kernel_weights_1d(kernel, m, t, w);
+      stretchedKernelWeights_1d(kernel, m, t, w);
       double sum = 0.0, first = 0.0;
       for (int a = 0; a < kMaxStencilFaces; ++a) {
         const double r = t + faces / 2 - 1 - a;
         if (a < faces) {
-          EXPECT_NEAR(w[a], kernel_weight_1d(kernel, r / m) / m, 1e-15) << "m = " << m << ", t = " << t;
+          EXPECT_NEAR(w[a], kernelWeight_1d(kernel, r / m) / m, 1e-15) << "m = " << m << ", t = " << t;
         } else {
           EXPECT_EQ(w[a], 0.0);
         }
@@ -175,13 +175,13 @@ TEST_P(KernelTest, StretchedStencilKeepsTheMomentConditions) {
       EXPECT_NEAR(first, 0.0, 1e-13) << "m = " << m << ", t = " << t;
       if (m == 1) {
         double base[kMaxKernelSupportCells];
-        kernel_weights_1d(kernel, t, base);
-        for (int a = 0; a < kernel_support_cells(kernel); ++a) EXPECT_EQ(w[a], base[a]);
+        kernelWeights_1d(kernel, t, base);
+        for (int a = 0; a < kernelSupportCells(kernel); ++a) EXPECT_EQ(w[a], base[a]);
       }
     }
   }
-  EXPECT_THROW(stencil_faces(kernel, 0), std::invalid_argument);
-  EXPECT_THROW(stencil_faces(kernel, largest + 1), std::invalid_argument);
+  EXPECT_THROW(stencilFaces(kernel, 0), std::invalid_argument);
+  EXPECT_THROW(stencilFaces(kernel, largest + 1), std::invalid_argument);
 }
 
 INSTANTIATE_TEST_SUITE_P(Kernels, KernelTest, ::testing::Values(Kernel::bilinear, Kernel::peskin4),

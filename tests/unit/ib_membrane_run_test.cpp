@@ -43,7 +43,7 @@ TEST(MembraneRun, LaplaceRatioOfAPrescribedJump) {
   fluid::MacGrid2 g(100, 100, 0.01);
   for (int j = 0; j < g.ny; ++j)
     for (int i = 0; i < g.nx; ++i) {
-      const fluid::Vec2 c = g.cell_centre_m(i, j);
+      const fluid::Vec2 c = g.cellCentre_m(i, j);
       const double d = std::hypot(c.x - shape.centroid_m.x, c.y - shape.centroid_m.y);
       g.pressure_pa(i, j) = d < radius ? tension / radius : (d < 1.5 * radius ? 123.0 : 0.0);
     }

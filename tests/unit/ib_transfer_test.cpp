@@ -51,7 +51,7 @@ struct CompensatedSum {
 // axis), plus the corner of that region and markers exactly on faces and cell centres, where a
 // stencil weight is exactly 0 or the fraction t is exactly 0.
 std::vector<Vec2> markers(Kernel kernel, std::uint64_t seed, int count = kTransferMarkers) {
-  const double margin = 0.5 * kernel_support_cells(kernel) * kDx;
+  const double margin = 0.5 * kernelSupportCells(kernel) * kDx;
   const double inset = 1e-9 * kDx;
   std::mt19937_64 rng(seed);
   std::vector<Vec2> p;
@@ -81,7 +81,7 @@ void fill_random(fluid::Array2& a, std::mt19937_64& rng, double scale) {
 class TransferTest : public ::testing::TestWithParam<Kernel> {
  protected:
   Kernel kernel() const { return GetParam(); }
-  int support() const { return kernel_support_cells(GetParam()); }
+  int support() const { return kernelSupportCells(GetParam()); }
   MacGrid2 grid_{kNx, kNy, kDx};
 };
 
@@ -93,19 +93,19 @@ TEST_P(TransferTest, StencilWeightsAreTheKernelAtEachFaceAndSumToOne) {
   const std::vector<Vec2> p = markers(kernel(), 21);
   Transfer transfer;
   transfer.locate(grid_, kernel(), p);
-  ASSERT_EQ(transfer.marker_count(), kTransferMarkers);
+  ASSERT_EQ(transfer.markerCount(), kTransferMarkers);
   EXPECT_EQ(transfer.kernel(), kernel());
   const int s = support();
   for (int k = 0; k < kTransferMarkers; ++k) {
     for (bool on_u : {true, false}) {
-      const FaceStencil& st = on_u ? transfer.u_stencil(k) : transfer.v_stencil(k);
+      const FaceStencil& st = on_u ? transfer.uStencil(k) : transfer.vStencil(k);
       double sum = 0.0, squares = 0.0;
       for (int b = -1; b <= s; ++b) {
         for (int a = -1; a <= s; ++a) {
           const int i = st.i0 + a, j = st.j0 + b;
-          const Vec2 face = on_u ? grid_.u_position_m(i, j) : grid_.v_position_m(i, j);
+          const Vec2 face = on_u ? grid_.uPosition_m(i, j) : grid_.vPosition_m(i, j);
           const double expected =
-              kernel_weight_1d(kernel(), (p[k].x - face.x) / kDx) * kernel_weight_1d(kernel(), (p[k].y - face.y) / kDx);
+              kernelWeight_1d(kernel(), (p[k].x - face.x) / kDx) * kernelWeight_1d(kernel(), (p[k].y - face.y) / kDx);
           if (a < 0 || b < 0 || a >= s || b >= s) {
             EXPECT_NEAR(expected, 0.0, 2e-14) << "marker " << k << (on_u ? " u" : " v") << " face " << i << "," << j;
             continue;
@@ -129,14 +129,14 @@ TEST_P(TransferTest, StencilWeightsAreTheKernelAtEachFaceAndSumToOne) {
 TEST_P(TransferTest, MarkerOnAFaceSpreadsTheAnalyticDensity) {
   const double dx = 0x1.0p-7;  // a power of two: the face positions and every weight are exact
   const MacGrid2 grid(kNx, kNy, dx);
-  const std::vector<Vec2> p{grid.u_position_m(6, 9)};
+  const std::vector<Vec2> p{grid.uPosition_m(6, 9)};
   const std::vector<Vec2> f{{2.0, -3.0}};
   Transfer transfer;
   transfer.locate(grid, kernel(), p);
   FaceVectorField2 density(kNx, kNy);
   transfer.spread(f, density);
   const double area = dx * dx;
-  const double phi0 = kernel_weight_1d(kernel(), 0.0), phi_half = kernel_weight_1d(kernel(), 0.5);
+  const double phi0 = kernelWeight_1d(kernel(), 0.0), phi_half = kernelWeight_1d(kernel(), 0.5);
   EXPECT_DOUBLE_EQ(density.x(6, 9), 2.0 * phi0 * phi0 / area);
   for (int i : {5, 6})
     for (int j : {9, 10}) EXPECT_DOUBLE_EQ(density.y(i, j), -3.0 * phi_half * phi_half / area);
@@ -193,9 +193,9 @@ TEST_P(TransferTest, WallFacesReceiveNothing) {
     EXPECT_EQ(density.y(i, kNy), 0.0);
   }
   EXPECT_NE(density.x(support() / 2, support() / 2), 0.0);  // the corner marker did spread
-  for (int k = 0; k < transfer.marker_count(); ++k) {
-    const FaceStencil& u = transfer.u_stencil(k);
-    const FaceStencil& v = transfer.v_stencil(k);
+  for (int k = 0; k < transfer.markerCount(); ++k) {
+    const FaceStencil& u = transfer.uStencil(k);
+    const FaceStencil& v = transfer.vStencil(k);
     EXPECT_GE(u.i0, 1);
     EXPECT_LE(u.i0 + support() - 1, kNx - 1);
     EXPECT_GE(u.j0, 0);
@@ -230,12 +230,12 @@ TEST_P(TransferTest, InterpolationIsExactForLinearFields) {
     const double d = uniform(rng, -1, 1), e = uniform(rng, -5, 5), g = uniform(rng, -5, 5);
     for (int j = 0; j < kNy; ++j)
       for (int i = 0; i <= kNx; ++i) {
-        const Vec2 x = grid_.u_position_m(i, j);
+        const Vec2 x = grid_.uPosition_m(i, j);
         grid_.u_m_per_s(i, j) = a + b * x.x + c * x.y;
       }
     for (int j = 0; j <= kNy; ++j)
       for (int i = 0; i < kNx; ++i) {
-        const Vec2 x = grid_.v_position_m(i, j);
+        const Vec2 x = grid_.vPosition_m(i, j);
         grid_.v_m_per_s(i, j) = d + e * x.x + g * x.y;
       }
     const std::vector<Vec2> p = markers(kernel(), 52 + trial);
@@ -266,8 +266,8 @@ TEST_P(TransferTest, StretchedKernelKeepsConservationExactnessAndAdjointness) {
     const std::vector<Vec2> f = random_vectors(92 + scale, static_cast<int>(p.size()), 1.0);
     Transfer transfer;
     transfer.locate(grid_, kernel(), p, scale);
-    ASSERT_EQ(transfer.stencil_faces(), scale * support());
-    ASSERT_EQ(transfer.kernel_scale(), scale);
+    ASSERT_EQ(transfer.stencilFaces(), scale * support());
+    ASSERT_EQ(transfer.kernelScale(), scale);
 
     FaceVectorField2 density(kNx, kNy);
     transfer.spread(f, density);
@@ -281,12 +281,12 @@ TEST_P(TransferTest, StretchedKernelKeepsConservationExactnessAndAdjointness) {
     const double a = 0.3, b = -2.0, c = 1.5, d = -0.7, e = 4.0, g = 0.25;
     for (int j = 0; j < kNy; ++j)
       for (int i = 0; i <= kNx; ++i) {
-        const Vec2 x = grid_.u_position_m(i, j);
+        const Vec2 x = grid_.uPosition_m(i, j);
         grid_.u_m_per_s(i, j) = a + b * x.x + c * x.y;
       }
     for (int j = 0; j <= kNy; ++j)
       for (int i = 0; i < kNx; ++i) {
-        const Vec2 x = grid_.v_position_m(i, j);
+        const Vec2 x = grid_.vPosition_m(i, j);
         grid_.v_m_per_s(i, j) = d + e * x.x + g * x.y;
       }
     std::vector<Vec2> velocity(p.size());
@@ -339,7 +339,7 @@ TEST_P(TransferTest, MixedKernelWidthsActAsEachMarkersOwnKernel) {
   const std::vector<Vec2> f = random_vectors(94, static_cast<int>(p.size()), 1.0);
   Transfer mixed;
   mixed.locate(grid_, kernel(), p, 1, scales);
-  ASSERT_EQ(mixed.stencil_faces(), 2 * support());
+  ASSERT_EQ(mixed.stencilFaces(), 2 * support());
   FaceVectorField2 density(kNx, kNy);
   mixed.spread(f, density);
   // The same spread, marker by marker, each alone at its own stretch.
@@ -424,7 +424,7 @@ TEST_P(TransferTest, ReusedTransferIsBitwiseDeterministic) {
   fresh.locate(grid_, kernel(), p);
   reused.locate(grid_, kernel(), p);
   reused.locate(grid_, kernel(), fewer);
-  EXPECT_EQ(reused.marker_count(), 40);
+  EXPECT_EQ(reused.markerCount(), 40);
   reused.locate(grid_, kernel(), p);
 
   FaceVectorField2 d1(kNx, kNy), d2(kNx, kNy);
@@ -461,7 +461,7 @@ TEST_P(TransferTest, MarkerTooCloseToAWallThrowsNamingIt) {
       EXPECT_NE(message.find(reach), std::string::npos) << message;
       EXPECT_NE(message.find(std::string(to_string(kernel()))), std::string::npos) << message;
     }
-    EXPECT_EQ(transfer.marker_count(), 0);
+    EXPECT_EQ(transfer.markerCount(), 0);
   }
   // The example of the brief: a marker 0.31 cells from the left wall of a 0.4 m box of 100 cells.
   MacGrid2 box(100, 100, 0.004);
@@ -507,7 +507,7 @@ TEST_P(TransferTest, MismatchedSizesAndGridsThrow) {
   const MacGrid2 other(kNx + 1, kNy, kDx);
   EXPECT_THROW(transfer.interpolate(other, velocity), std::invalid_argument);
   EXPECT_THROW(transfer.locate(MacGrid2(kNx, kNy, 0.0), kernel(), p), std::invalid_argument);
-  EXPECT_EQ(transfer.marker_count(), 0);
+  EXPECT_EQ(transfer.markerCount(), 0);
   // No markers: nothing to do, whatever the field.
   transfer.spread({}, wrong_shape);
   transfer.interpolate(other, {});
@@ -526,9 +526,9 @@ TEST(TransferSmoothness, SecondDifferenceAlongAChainGrowsAsOneOverSpacingOnlyFor
   MacGrid2 grid(kNx, kNy, kDx);
   const double wave_m = 8 * kDx;
   for (int j = 0; j < kNy; ++j)
-    for (int i = 0; i <= kNx; ++i) grid.u_m_per_s(i, j) = std::sin(2 * M_PI * grid.u_position_m(i, j).x / wave_m);
+    for (int i = 0; i <= kNx; ++i) grid.u_m_per_s(i, j) = std::sin(2 * M_PI * grid.uPosition_m(i, j).x / wave_m);
   for (int j = 0; j <= kNy; ++j)
-    for (int i = 0; i < kNx; ++i) grid.v_m_per_s(i, j) = std::cos(2 * M_PI * grid.v_position_m(i, j).y / wave_m);
+    for (int i = 0; i < kNx; ++i) grid.v_m_per_s(i, j) = std::cos(2 * M_PI * grid.vPosition_m(i, j).y / wave_m);
 
   // Largest |second difference| of the interpolated velocity along the chain, 1/(m s).
   auto peak_second_difference = [&](Kernel kernel, int scale, int per_cell) {
