@@ -44,8 +44,10 @@ class PaddedComponent3 {
     for (int d = 0; d < 3; ++d) {
       double X = p[d];
       if (periodic_[d]) {
-        X -= n_[d] * std::floor(X / n_[d]);
-        if (!(X < n_[d])) X = 0.0;  // rounding of a tiny negative X, and NaN
+        if (!(X >= 0.0 && X < n_[d])) {  // wrap (std::floor is a library call without SSE4.1)
+          X -= n_[d] * std::floor(X / n_[d]);
+          if (!(X >= 0.0 && X < n_[d])) X = 0.0;  // rounding of a tiny negative X, and NaN
+        }
       } else {
         X = X > 0.0 ? X : 0.0;  // NaN lands on 0
         X = X < n_[d] ? X : n_[d];

@@ -32,6 +32,7 @@ struct AxisStencil3 {
   std::vector<int> lo, hi;                 ///< neighbour indices
   std::vector<double> lo_factor, hi_factor;
   std::vector<unsigned char> unknown;      ///< 0 on a solid wall's normal face
+  int plain_begin = 0, plain_end = 0;      ///< a run of samples with neighbours m ± 1, factor 1, unknown
 };
 
 /// Tables along x, y, z of one array.
