@@ -168,7 +168,17 @@ class WriteVisitor : public FieldVisitor<WriteVisitor> {
 };
 
 template <class P>
-std::vector<ParamSpec> schemaOf(P described = P{}) {
+std::vector<ParamSpec> schemaOf(P described) {
+  SchemaVisitor v;
+  described.describe(v);
+  return std::move(v.specs);
+}
+
+// The schema with P's in-class defaults (a named P, not a defaulted argument: gcc 12 warns
+// -Wmaybe-uninitialized on destroying such a temporary when P holds a std::vector).
+template <class P>
+std::vector<ParamSpec> schemaOf() {
+  P described;
   SchemaVisitor v;
   described.describe(v);
   return std::move(v.specs);
