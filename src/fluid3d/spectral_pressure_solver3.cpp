@@ -49,7 +49,12 @@ void SpectralPressureSolver3::prepare(const std::array<int, 3>& cells, const Bou
   for (int a = 0; a < 3; ++a)
     same = same && sides.axis[a].low == sides_.axis[a].low && sides.axis[a].high == sides_.axis[a].high;
   if (same) return;
-  for (int a = 0; a < 3; ++a) bases_[a] = eigenBasis(cells[a], sides.axis[a]);
+  for (int a = 0; a < 3; ++a) {
+    bases_[a] = eigenBasis(cells[a], sides.axis[a]);
+    fast_[a] = allow_fast_ && FastTransform1::applies(cells[a], sides.axis[a])
+                   ? std::make_unique<FastTransform1>(cells[a], sides.axis[a])
+                   : nullptr;
+  }
   cells_ = cells, sides_ = sides, ready_ = true;
   t1_ = Array3(cells[0], cells[1], cells[2]);
   t2_ = Array3(cells[0], cells[1], cells[2]);
@@ -62,6 +67,27 @@ void SpectralPressureSolver3::transform(int a, bool forward, const Array3& in, A
   auto coefficient = [&](int o, int t) {
     return forward ? e.basis[static_cast<std::size_t>(t) * n + o] : e.basis[static_cast<std::size_t>(o) * n + t];
   };
+  if (fast_[a]) {
+    const FastTransform1& f = *fast_[a];
+    // Lines along axis a: gathered, transformed, scattered (threads share the other two indices).
+    const long stride = a == 0 ? 1 : a == 1 ? nx : static_cast<long>(nx) * ny;
+    const int outer = a == 2 ? ny : nz;     // the index the threads split
+    const int inner = a == 0 ? ny : nx;     // the other one
+    forSlabs(workers_, outer, [&](int o0, int o1) {
+      std::vector<double> src(n), dst(n), work(4 * n);
+      for (int o = o0; o < o1; ++o)
+        for (int l = 0; l < inner; ++l) {
+          const long base = a == 0 ? in.index(0, l, o) : a == 1 ? in.index(l, 0, o) : in.index(l, o, 0);
+          for (int t = 0; t < n; ++t) src[t] = in.data()[base + t * stride];
+          if (forward)
+            f.forward(src.data(), dst.data(), work.data());
+          else
+            f.inverse(src.data(), dst.data(), work.data());
+          for (int t = 0; t < n; ++t) out.data()[base + t * stride] = dst[t];
+        }
+    });
+    return;
+  }
   if (a == 0) {
     forSlabs(workers_, nz, [&](int k0, int k1) {
       for (int k = k0; k < k1; ++k)

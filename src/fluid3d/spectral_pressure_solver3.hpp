@@ -10,10 +10,13 @@
 //   open–open           sin(π (k+1)(j+½)/n)                           θ = π (k+1) / n
 //   solid–open          cos(π (k+½)(j+½)/n)   (open–solid: sin)        θ = π (k+½) / n
 // q = B (Λ⁻¹ (Bᵀ b)) with B the product of the three bases; the constant mode of a closed box is
-// set to zero (mean zero). The 1-D transforms are dense, O(N (nx + ny + nz)). (An FFT along each
-// axis would make them O(N log n); the 2-D solver's FFT is private to fluid/fast_pressure_solver2.)
+// set to zero (mean zero). Along a periodic or solid–solid axis whose length is a power of two the
+// 1-D transforms are FFTs (fast_transform1.hpp), O(N log n); otherwise dense, O(N n).
 // Every loop runs in a fixed order: bitwise reproducible for any thread count.
 
+#include <memory>
+
+#include "fluid3d/fast_transform1.hpp"
 #include "fluid3d/pressure_solver3.hpp"
 
 namespace creaturelab::fluid3d {
@@ -27,6 +30,10 @@ EigenBasis1 eigenBasis(int n, const AxisBoundary3& sides);
 
 class SpectralPressureSolver3 final : public PressureSolver3 {
  public:
+  /// allow_fast = false forces the dense transforms (tests compare the two).
+  explicit SpectralPressureSolver3(bool allow_fast = true) : allow_fast_(allow_fast) {}
+  /// Whether the last solve's transform along axis a was an FFT.
+  bool fastAlong(int a) const { return fast_[a] != nullptr; }
   SolveReport3 solve(const std::array<int, 3>& cells, const Boundaries3& sides, const Array3& b, Array3& q) override;
 
  private:
@@ -34,7 +41,9 @@ class SpectralPressureSolver3 final : public PressureSolver3 {
   /// out = along axis a: out_m = Σ_j φ_m(j) in_j (forward) or out_j = Σ_m φ_m(j) in_m (inverse).
   void transform(int a, bool forward, const Array3& in, Array3& out);
 
+  bool allow_fast_ = true;
   bool ready_ = false;
+  std::array<std::unique_ptr<FastTransform1>, 3> fast_;
   std::array<int, 3> cells_{};
   Boundaries3 sides_{};
   std::array<EigenBasis1, 3> bases_;

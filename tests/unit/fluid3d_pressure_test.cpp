@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "fluid3d/fast_transform1.hpp"
 #include "fluid3d/mac_grid3.hpp"
 #include "fluid3d/pcg_pressure_solver3.hpp"
 #include "fluid3d/pressure_operator3.hpp"
@@ -99,6 +100,50 @@ TEST(Fluid3dPressure, SpectralSolveIsExact) {
     double worst = 0.0;
     for (std::size_t t = 0; t < b.size(); ++t) worst = std::max(worst, std::fabs(aq.data()[t] - b.data()[t]));
     EXPECT_LT(worst, 1e-13) << c.name;
+  }
+}
+
+// The FFT transforms give the dense orthonormal basis's coefficients, and invert them.
+TEST(Fluid3dPressure, FastTransformsMatchTheDenseBasis) {
+  for (const AxisBoundary3 sides : {AxisBoundary3{BoundaryType3::periodic, BoundaryType3::periodic},
+                                    AxisBoundary3{BoundaryType3::free_slip, BoundaryType3::no_slip}}) {
+    for (int n : {2, 8, 16}) {
+      ASSERT_TRUE(FastTransform1::applies(n, sides));
+      const FastTransform1 fast(n, sides);
+      const EigenBasis1 dense = eigenBasis(n, sides);
+      std::vector<double> line(n), c(n), back(n), work(4 * n);
+      for (int j = 0; j < n; ++j) line[j] = noise(100 + j);
+      fast.forward(line.data(), c.data(), work.data());
+      for (int m = 0; m < n; ++m) {
+        double expected = 0.0;
+        for (int j = 0; j < n; ++j) expected += dense.basis[j * n + m] * line[j];
+        EXPECT_NEAR(c[m], expected, 1e-13) << toString(sides.low) << " n = " << n << " m = " << m;
+      }
+      fast.inverse(c.data(), back.data(), work.data());
+      for (int j = 0; j < n; ++j) EXPECT_NEAR(back[j], line[j], 1e-13) << toString(sides.low) << " n = " << n;
+    }
+  }
+  EXPECT_FALSE(FastTransform1::applies(12, {BoundaryType3::periodic, BoundaryType3::periodic}));
+  EXPECT_FALSE(FastTransform1::applies(8, {BoundaryType3::free_slip, BoundaryType3::open}));
+}
+
+// The spectral solve by FFTs equals the dense one to round-off.
+TEST(Fluid3dPressure, FastAndDenseSpectralSolvesAgree) {
+  const std::array<int, 3> n{8, 16, 4};
+  for (const Case& c : kCases) {
+    MacGrid3 grid = noisyGrid(n, c.sides, 50);
+    Array3 b, q_fast, q_dense;
+    projectionRhs(grid, b, nullptr);
+    if (c.sides.closed()) {
+      std::vector<double> scratch;
+      subtractConstant3(sum3(b, nullptr, scratch) / b.size(), b, nullptr);
+    }
+    SpectralPressureSolver3 fast, dense(false);
+    fast.solve(n, c.sides, b, q_fast);
+    dense.solve(n, c.sides, b, q_dense);
+    EXPECT_TRUE(fast.fastAlong(0) && fast.fastAlong(1)) << c.name;
+    EXPECT_FALSE(dense.fastAlong(0)) << c.name;
+    for (std::size_t t = 0; t < b.size(); ++t) ASSERT_NEAR(q_fast.data()[t], q_dense.data()[t], 1e-12) << c.name;
   }
 }
 
