@@ -46,6 +46,23 @@ struct InscribeParams {
   double attachment_max_length_m = 0.06;
   std::uint64_t seed = 1;  // random attachments: core::rng keyed by (seed, "charlotte.attachments", mass)
 
+  // For the charlotte kind (kinds/describe.hpp), whose defaults these are; the seed is the web's.
+  template <class V>
+  void describe(V& v) {
+    v.integer("dilation_px", dilation_px, 1, 99, "structuring element side, odd (§6: 7x7)");
+    v.integer("band_px", band_px, 1, 99, "neighbourhood width of a segment, odd (§6: five pixels)");
+    v.integer("threshold", threshold, 0, 10, "remove segments scoring above this (§6: 8)");
+    v.choice("emphasis", emphasis,
+             {{"none", Emphasis::none}, {"cross_hatch", Emphasis::cross_hatch},
+              {"random_attachments", Emphasis::random_attachments}, {"strong_outline", Emphasis::strong_outline}},
+             "emphasis of the letters (Figs. 6.11, 6.12, 6.13, 6.14)");
+    v.integer("crosshatch_reach", crosshatch_reach, 1, 100,
+              "cross-hatch: strands to the masses this many places in and out along the partner's spoke (Fig. 6.12)");
+    v.real("attachment_probability", attachment_probability, "", 0, 1,
+           "random attachments: chance a mass inside the letters starts one (Fig. 6.13; thesis gives none)");
+    v.real("attachment_max_length_m", attachment_max_length_m, "m", 1e-4, 10, "random attachments: longest strand");
+  }
+
   // "" or one sentence naming the first bad value.
   std::string validate() const;
 };

@@ -24,48 +24,14 @@ namespace {
 namespace ch = charlotte;
 using web::StrandType;
 
-web::WebParams webParams(const ParamReader& r) {
-  web::WebParams w;
-  for (auto& p : w.attachment_points_m) p *= r.real("frame_scale");
-  w.secondary_spoke_stride = int(r.integer("secondary_spoke_stride"));
-  w.spiral_density = int(r.integer("spiral_density"));
-  w.spiral_jitter = r.real("spiral_jitter");
-  w.spiral_k_n_per_m = r.real("spiral_k_n_per_m");
-  w.spoke_k_n_per_m = r.real("spoke_k_n_per_m");
-  w.air_drag_ns_per_m = r.real("drag_ns_per_m");
-  w.seed = std::uint64_t(r.integer("seed"));
-  return w;
-}
-
-ch::InscribeParams inscribeParams(const ParamReader& r) {
-  ch::InscribeParams p;
-  p.dilation_px = int(r.integer("dilation_px"));
-  p.band_px = int(r.integer("band_px"));
-  p.threshold = int(r.integer("threshold"));
-  const std::string& e = r.text("emphasis");
-  p.emphasis = e == "cross_hatch"          ? ch::Emphasis::cross_hatch
-               : e == "random_attachments" ? ch::Emphasis::random_attachments
-               : e == "strong_outline"     ? ch::Emphasis::strong_outline
-                                           : ch::Emphasis::none;
-  p.crosshatch_reach = int(r.integer("crosshatch_reach"));
-  p.attachment_probability = r.real("attachment_probability");
-  p.attachment_max_length_m = r.real("attachment_max_length_m");
-  p.seed = std::uint64_t(r.integer("seed"));
-  return p;
-}
-
 // The target on the canvas (thesis §6, Figs. 6.1, 6.6, 6.18), centred on the hub plus the offset.
-ch::Raster targetOnCanvas(const ParamReader& r, const ch::CanvasMap& map, const Eigen::Vector2d& hub_m) {
-  const Eigen::Vector2d centre = hub_m + Eigen::Vector2d(r.real("target_offset_x_m"), r.real("target_offset_y_m"));
-  const std::string& kind = r.text("target");
-  if (kind == "random_gaps")
-    return ch::randomGapsTarget(map, centre, r.real("gaps_region_radius_m"), int(r.integer("gap_count")),
-                                r.real("gap_radius_m"), std::uint64_t(r.integer("seed")));
-  if (kind == "image")
-    return ch::placePicture(ch::readNetpbmFile(r.text("image_file")), map, centre, r.real("target_width_m"),
-                            r.real("target_max_height_m"));
-  return ch::textTarget(r.text("text"), r.text("font"), map, centre, r.real("target_width_m"),
-                        r.real("target_max_height_m"));
+ch::Raster targetOnCanvas(const CharlotteParams& q, const ch::CanvasMap& map, const Eigen::Vector2d& hub_m) {
+  const Eigen::Vector2d centre = hub_m + Eigen::Vector2d(q.target_offset_x_m, q.target_offset_y_m);
+  if (q.target == "random_gaps")
+    return ch::randomGapsTarget(map, centre, q.gaps_region_radius_m, int(q.gap_count), q.gap_radius_m, q.web.seed);
+  if (q.target == "image")
+    return ch::placePicture(ch::readNetpbmFile(q.image_file), map, centre, q.target_width_m, q.target_max_height_m);
+  return ch::textTarget(q.text, q.font, map, centre, q.target_width_m, q.target_max_height_m);
 }
 
 // The static equilibrium, which a long RK4 run reaches (the web kind checks its hub sag to 1%), with the
@@ -76,10 +42,6 @@ int settleWeb(const web::WebModel& model, springs::State<3>& state) {
   const auto eq = springs::solveStaticEquilibrium(system, state);
   if (!eq.converged) throw RunFailure("the web's static equilibrium did not converge");
   return eq.iterations;
-}
-
-ch::ResettleParams resettleParams(const ParamReader& r) {
-  return {r.text("resettle") == "dynamic", r.real("resettle_time_s"), r.real("settling_fraction")};
 }
 
 // The resettled web's series: the hub's shift per frame, the frames' times and (dynamic) kinetic
@@ -166,55 +128,6 @@ void addInscriptionTables(Result& result, const web::WebModel& model, const ch::
 }  // namespace
 
 CharlotteKind::CharlotteKind() {
-  const web::WebParams w;
-  const ch::InscribeParams d;
-  params_ = {
-      // the web (src/web, thesis §5.2); the other construction values are the web kind's defaults
-      real("frame_scale", 1.0, "", 0.05, 20, "scales the default 7-point frame (1.07 m across)"),
-      integer("secondary_spoke_stride", 2, 1, 1000,
-              "a secondary spoke from every n-th inner-frame mass (2: ~80 radii, segments short enough for letters)"),
-      integer("spiral_density", w.spiral_density, 1, 1000, "SPIRAL_DENSITY of the processed spiral (Fig. 5.16: 5)"),
-      real("spiral_jitter", w.spiral_jitter, "", 0, 1, "randomness of the spiral (§5.2)"),
-      real("spiral_k_n_per_m", w.spiral_k_n_per_m, "N/m", 1e-9, 1e3, "spiral k (the web kind's default; thesis gives none of its own)"),
-      real("spoke_k_n_per_m", w.spoke_k_n_per_m, "N/m", 1e-9, 1e3, "radial spoke k (§5.2.1: 0.01 N/m)"),
-      real("drag_ns_per_m", w.air_drag_ns_per_m, "N*s/m", 0, 1,
-           "air friction (§5.2.1: 1e-8 N s/m); it sets the resettle's 5-10 s, exp(-t / 2 s) for 10 ug masses"),
-      integer("seed", std::int64_t(w.seed), 0, std::int64_t(1) << 62,
-              "seed of every random choice (web, random attachments, random gaps)"),
-      // the target (§6, Figs. 6.1, 6.6, 6.16, 6.18)
-      choice("target", "text", {"text", "image", "random_gaps"},
-             "inscribe text (set in `font`), a PBM/PGM image, or random gaps (Fig. 6.18)"),
-      text("text", "PIG", "", "the text, UTF-8; \\n breaks a line (Fig. 6.11: P, I, G)"),
-      text("font", std::string(ch::kDefaultFont), "",
-           "pango font description of the text, installed (fc-list); heavy capitals as in Fig. 6.10 (thesis names none)"),
-      text("image_file", "", "", "PBM/PGM target image (P1/P2/P4/P5; dark = target), path from the working folder"),
-      real("target_width_m", 0.85, "m", 1e-3, 100,
-           "width of the target on the web, the height following its aspect (the default inner frame is ~0.85 m wide)"),
-      real("target_max_height_m", 0.5, "m", 1e-3, 100, "largest height of the target on the web"),
-      real("target_offset_x_m", 0.0, "m", -100, 100, "target centre right of the hub"),
-      real("target_offset_y_m", 0.0, "m", -100, 100, "target centre above the hub"),
-      integer("gap_count", 12, 1, 10000, "random gaps: how many discs (Fig. 6.18; thesis gives none)"),
-      real("gap_radius_m", 0.035, "m", 1e-4, 10, "random gaps: disc radius"),
-      real("gaps_region_radius_m", 0.33, "m", 0, 100, "random gaps: centres within this distance of the target centre"),
-      // the procedure (§6, Fig. 6.9)
-      integer("canvas_px", 600, 64, 4096, "canvas side, pixels (§5.3.1: 600 x 600)"),
-      integer("dilation_px", d.dilation_px, 1, 99, "structuring element side, odd (§6: 7x7)"),
-      integer("band_px", d.band_px, 1, 99, "neighbourhood width of a segment, odd (§6: five pixels)"),
-      integer("threshold", d.threshold, 0, 10, "remove segments scoring above this (§6: 8)"),
-      choice("emphasis", "none", {"none", "cross_hatch", "random_attachments", "strong_outline"},
-             "emphasis of the letters (Figs. 6.11, 6.12, 6.13, 6.14)"),
-      integer("crosshatch_reach", d.crosshatch_reach, 1, 100,
-              "cross-hatch: strands to the masses this many places in and out along the partner's spoke (Fig. 6.12)"),
-      real("attachment_probability", d.attachment_probability, "", 0, 1,
-           "random attachments: chance a mass inside the letters starts one (Fig. 6.13; thesis gives none)"),
-      real("attachment_max_length_m", d.attachment_max_length_m, "m", 1e-4, 10, "random attachments: longest strand"),
-      // settling (§6: "allow the web simulation to settle down"; after removal, so it stays physical)
-      choice("resettle", "dynamic", {"dynamic", "static"},
-             "after removal: RK4 run from the old rest state (gives the settling time), or the static equilibrium"),
-      real("resettle_time_s", 12.0, "s", 0.02, 1e4, "dynamic resettle: simulated time (the web settles in 5-10 s, §5.1)"),
-      real("settling_fraction", 1e-4, "", 1e-12, 1, "settled when kinetic energy stays below this fraction of its peak"),
-      boolean("renders", true, "return PNG renders (web, overlay, cut, result) for the run folder"),
-  };
   metrics_ = {
       {"particles", "", "particles of the web as built"},
       {"spiral_segments", "", "spiral segments of the web (mass on a spoke to mass on the next, Fig. 6.2)"},
@@ -248,14 +161,26 @@ std::string CharlotteKind::doc() const {
          "thesis 2005, ch. 6)";
 }
 
-std::string CharlotteKind::validate(const Params& params) const {
-  ParamReader r(params);
-  if (std::string e = webParams(r).validate(); !e.empty()) return e;
-  if (std::string e = inscribeParams(r).validate(); !e.empty()) return e;
-  if (r.text("target") == "text") return ch::checkText(r.text("text"), r.text("font"));
-  if (r.text("target") == "image") {
+web::WebParams CharlotteParams::webParams() const {
+  web::WebParams w = web;
+  for (auto& p : w.attachment_points_m) p *= frame_scale;
+  return w;
+}
+
+ch::InscribeParams CharlotteParams::inscribeParams() const {
+  ch::InscribeParams p = inscribe;
+  p.seed = web.seed;
+  return p;
+}
+
+std::string CharlotteParams::validate() const {
+  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
+  if (std::string e = webParams().validate(); !e.empty()) return e;
+  if (std::string e = inscribeParams().validate(); !e.empty()) return e;
+  if (target == "text") return ch::checkText(text, font);
+  if (target == "image") {
     try {
-      (void)ch::readNetpbmFile(r.text("image_file"));
+      (void)ch::readNetpbmFile(image_file);
     } catch (const std::invalid_argument& e) {
       return std::string("image_file: ") + e.what();
     }
@@ -264,8 +189,8 @@ std::string CharlotteKind::validate(const Params& params) const {
 }
 
 Result CharlotteKind::run(const Params& params) const {
-  ParamReader r(params);
-  const web::WebParams wp = webParams(r);
+  const CharlotteParams q = readParams<CharlotteParams>(params);
+  const web::WebParams wp = q.webParams();
   const web::WebModel model = web::build(wp);
 
   // 1. Settle (§6: "create an orb web ... and then to allow the web simulation to settle down").
@@ -273,11 +198,11 @@ Result CharlotteKind::run(const Params& params) const {
   const int settle_iterations = settleWeb(model, settled);
 
   // 2. Target on the canvas mapped onto the settled web.
-  const ch::CanvasMap map = ch::canvasOver(settled.x_m, int(r.integer("canvas_px")));
-  const ch::Raster target = targetOnCanvas(r, map, web::hubPositionM(model, settled).head<2>());
+  const ch::CanvasMap map = ch::canvasOver(settled.x_m, int(q.canvas_px));
+  const ch::Raster target = targetOnCanvas(q, map, web::hubPositionM(model, settled).head<2>());
 
   // 3. Inscribe: capture, dilate, score, select, emphasise (charlotte/inscribe.hpp).
-  const ch::InscribeParams ip = inscribeParams(r);
+  const ch::InscribeParams ip = q.inscribeParams();
   const ch::Inscription ins = ch::inscribe(model, settled, map, target, web::strandSpec(wp, StrandType::spiral),
                                            wp.particle_mass_kg, ip);
 
@@ -285,7 +210,7 @@ Result CharlotteKind::run(const Params& params) const {
   const ch::Pruned pruned = ch::removeSprings(ins.network, ins.state, ins.type, ins.removed_springs);
   ch::Resettled after;
   try {
-    ch::resettle(model, pruned, resettleParams(r), after);
+    ch::resettle(model, pruned, q.resettleParams(), after);
   } catch (const springs::DivergenceError& e) {
     throw RunFailure(e.what(), resettleSeries(after));
   }
@@ -297,7 +222,7 @@ Result CharlotteKind::run(const Params& params) const {
   addInscriptionMetrics(result, model, settle_iterations, ins, pruned, measures, after);
   const std::vector<std::int64_t> spring_segment = ch::springSegments(ins);
   addInscriptionTables(result, model, ins, pruned, after.state, spring_segment);
-  if (r.boolean("renders"))
+  if (q.renders)
     result.artifacts = ch::renderInscription(model, settled.x_m, ins, target, map, pruned, after.state.x_m, spring_segment);
   return result;
 }

@@ -67,27 +67,10 @@ std::vector<std::string> splitList(const std::string& s, char sep) {
   return out;
 }
 
-void addMotionPatternSpecs(std::vector<ParamSpec>& params) {
-  const std::vector<ParamSpec> patterns = {
-      text("kinematic_pattern", "", "",
-           "'joint = pattern; ...' (§2.2): hold | sine(mean_deg, amplitude_deg, frequency_hz, phase_deg) | "
-           "table(t_s angle_deg, ...) (linear, held past its ends); others hold"),
-      text("pd_driven", "", "",
-           "hinges PD-driven to pd_pattern (§2.2: pre-specified PD targets; §7.1: the flyer's inner wing joints), "
-           "comma-separated"),
-      text("pd_pattern", "", "", "'joint = pattern; ...' for pd_driven hinges, as kinematic_pattern (default hold)"),
-      real("pd_kp_n_m_per_rad", 200, "N m/rad", 0, 1e7,
-           "PD stiffness of pd_driven joints (the paper gives none; explicit at each step, keep kp h^2 / I small)"),
-      real("pd_kd_n_m_s_per_rad", 10, "N m s/rad", 0, 1e6, "PD damping of pd_driven joints"),
-  };
-  const auto kinematic = std::find_if(params.begin(), params.end(), [](const ParamSpec& p) { return p.name == "kinematic"; });
-  params.insert(kinematic == params.end() ? kinematic : kinematic + 1, patterns.begin(), patterns.end());
-}
-
-rigid::RigidModel loadModel(const ParamReader& r) {
-  auto model = rigid::RigidModel::load(r.text("model_file"));
-  model.setGravity({0, 0, -r.real("gravity_m_per_s2")});
-  model.setTimestep(r.real("frame_s") / double(r.integer("substeps")));
+rigid::RigidModel ControllerSettings::loadModel() const {
+  auto model = rigid::RigidModel::load(model_file);
+  model.setGravity({0, 0, -gravity_m_per_s2});
+  model.setTimestep(frame_s / double(substeps));
   return model;
 }
 
@@ -126,46 +109,46 @@ control::Pattern parsePattern(const std::string& text, const std::string& key) {
   return p;
 }
 
-control::ControllerParams controllerParams(const ParamReader& r) {
+control::ControllerParams ControllerSettings::controllerParams() const {
   control::ControllerParams p;
-  p.controlled = splitList(r.text("controlled"), ',');
-  p.kinematic = splitList(r.text("kinematic"), ',');
-  p.kinematic_patterns = patternsFor(r.text("kinematic_pattern"), p.kinematic, "kinematic_pattern", "kinematic");
-  p.pd_driven = splitList(r.text("pd_driven"), ',');
-  p.pd_patterns = patternsFor(r.text("pd_pattern"), p.pd_driven, "pd_pattern", "pd_driven");
-  p.pd_kp_n_m_per_rad = r.real("pd_kp_n_m_per_rad");
-  p.pd_kd_n_m_s_per_rad = r.real("pd_kd_n_m_s_per_rad");
-  for (const auto& o : splitList(r.text("objectives"), ',')) {
+  p.controlled = splitList(controlled, ',');
+  p.kinematic = splitList(kinematic, ',');
+  p.kinematic_patterns = patternsFor(kinematic_pattern, p.kinematic, "kinematic_pattern", "kinematic");
+  p.pd_driven = splitList(pd_driven, ',');
+  p.pd_patterns = patternsFor(pd_pattern, p.pd_driven, "pd_pattern", "pd_driven");
+  p.pd_kp_n_m_per_rad = pd_kp_n_m_per_rad;
+  p.pd_kd_n_m_s_per_rad = pd_kd_n_m_s_per_rad;
+  for (const auto& o : splitList(objectives, ',')) {
     if (o == "effort") p.objectives.push_back(control::Objective::effort);
     else if (o == "drag") p.objectives.push_back(control::Objective::drag);
     else if (o == "drag_along") p.objectives.push_back(control::Objective::drag_along);
     else throw std::invalid_argument("objectives: '" + o + "' is not one of effort | drag | drag_along");
   }
-  for (const auto& s : splitList(r.text("senses"), ',')) {
+  for (const auto& s : splitList(senses, ',')) {
     if (s == "min") p.senses.push_back(control::Sense::minimize);
     else if (s == "max") p.senses.push_back(control::Sense::maximize);
     else throw std::invalid_argument("senses: '" + s + "' is not min or max");
   }
-  for (const auto& row : splitList(r.text("weights"), ';')) {
+  for (const auto& row : splitList(weights, ';')) {
     std::vector<double> w;
     for (const auto& x : splitList(row, ',')) w.push_back(number(x, "weights"));
     p.weights.push_back(w);
   }
-  p.drag_direction = {r.real("drag_direction_x"), r.real("drag_direction_y"), r.real("drag_direction_z")};
-  p.frame_s = r.real("frame_s");
-  p.substeps = int(r.integer("substeps"));
-  p.strength_rad_per_s = r.real("strength_rad_per_s");
-  p.delta_rad = r.real("delta_rad");
-  p.one_sided = r.boolean("one_sided");
-  p.search_every_frames = int(r.integer("search_every_frames"));
-  p.rigidify_outboard = r.boolean("rigidify_outboard");
-  p.threads = int(r.integer("threads"));
+  p.drag_direction = {drag_direction_x, drag_direction_y, drag_direction_z};
+  p.frame_s = frame_s;
+  p.substeps = int(substeps);
+  p.strength_rad_per_s = strength_rad_per_s;
+  p.delta_rad = delta_rad;
+  p.one_sided = one_sided;
+  p.search_every_frames = int(search_every_frames);
+  p.rigidify_outboard = rigidify_outboard;
+  p.threads = int(threads);
   return p;
 }
 
-std::vector<InitialPose> initialPoses(const ParamReader& r) {
+std::vector<InitialPose> ControllerSettings::initialPoses() const {
   std::vector<InitialPose> out;
-  for (const auto& item : splitList(r.text("initial_deg"), ',')) {
+  for (const auto& item : splitList(initial_deg, ',')) {
     const auto eq = item.find('=');
     if (eq == std::string::npos) throw std::invalid_argument("initial_deg: '" + item + "' is not joint=degrees");
     InitialPose pose{trim(item.substr(0, eq)), numbers(item.substr(eq + 1), "initial_deg")};
@@ -174,6 +157,21 @@ std::vector<InitialPose> initialPoses(const ParamReader& r) {
     out.push_back(pose);
   }
   return out;
+}
+
+std::string ControllerSettings::checkInitialPoses(const rigid::RigidModel& model, bool hinges_only) const {
+  for (const auto& pose : initialPoses()) {
+    const int id = model.findJoint(pose.joint);
+    if (id < 0) return "initial_deg: joint '" + pose.joint + "' is not in the model " + model.path();
+    const auto type = model.joint(id).type;
+    if (type == rigid::JointType::free) return "initial_deg: joint '" + pose.joint + "' is a free joint";
+    if (hinges_only && pose.deg.size() != 1)
+      return "initial_deg: '" + pose.joint + "' needs one angle (hinges only in the planar fluid)";
+    if ((type == rigid::JointType::ball) != (pose.deg.size() == 3))
+      return "initial_deg: joint '" + pose.joint + "' takes " +
+             (type == rigid::JointType::ball ? "three numbers (a ball)" : "one angle");
+  }
+  return "";
 }
 
 std::vector<control::StrokeFollow> parseStrokeSense(const std::string& text,

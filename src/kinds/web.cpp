@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "kinds/spring_run.hpp"
 #include "springs/equilibrium.hpp"
@@ -41,105 +42,47 @@ std::string parsePoints(const std::string& text, std::vector<Point2>& out) {
   return "";
 }
 
-std::string framePoints(const ParamReader& r, std::vector<Point2>& points) {
-  if (!r.text("attachment_points_m").empty()) {
-    if (std::string err = parsePoints(r.text("attachment_points_m"), points); !err.empty()) return err;
-  } else {
-    const std::string& shape = r.text("frame_shape");
-    points = shape == "triangle" ? regularFrame(3)
-             : shape == "square" ? regularFrame(4)
-             : shape == "hexagon" ? regularFrame(6)
-             : shape == "decagon" ? regularFrame(10)
-                                  : web::defaultAttachmentPointsM();
-  }
-  for (auto& p : points) p *= r.real("frame_scale");
-  return "";
-}
+}  // namespace
 
-web::WebParams webParams(const ParamReader& r, std::string& error) {
-  web::WebParams w;
-  error = framePoints(r, w.attachment_points_m);
-  w.move_outer_m = r.real("move_outer_m");
-  w.outer_frame_placement_m = r.real("outer_frame_placement_m");
-  w.outer_frame_rest_length_m = r.real("outer_frame_rest_length_m");
-  w.outer_frame_k_n_per_m = r.real("outer_frame_k_n_per_m");
-  w.frame_placement_m = r.real("frame_placement_m");
-  w.frame_rest_length_m = r.real("frame_rest_length_m");
-  w.frame_k_n_per_m = r.real("frame_k_n_per_m");
-  w.inner_frame_inward_force_n_per_m = r.real("inner_frame_inward_force_n_per_m");
-  w.spoke_placement_m = r.real("spoke_placement_m");
-  w.spoke_rest_length_m = r.real("spoke_rest_length_m");
-  w.spoke_k_n_per_m = r.real("spoke_k_n_per_m");
-  w.primary_spoke_end =
-      r.text("primary_spoke_end") == "farthest" ? web::PrimarySpokeEnd::farthest : web::PrimarySpokeEnd::opposite;
-  w.hub_radius_m = r.real("hub_radius_m");
-  w.secondary_spoke_stride = int(r.integer("secondary_spoke_stride"));
-  w.spiral_placement_m = r.real("spiral_placement_m");
-  w.spiral_rest_length_m = r.real("spiral_rest_length_m");
-  w.spiral_k_n_per_m = r.real("spiral_k_n_per_m");
-  w.spiral_density = int(r.integer("spiral_density"));
-  w.spiral_free_masses = int(r.integer("spiral_free_masses"));
-  w.spiral_jitter = r.real("spiral_jitter");
-  if (r.real("overextension") > 0) w.overextension = r.real("overextension");
-  w.particle_mass_kg = r.real("particle_mass_kg");
-  w.air_drag_ns_per_m = r.real("drag_ns_per_m");
-  w.gravity_m_per_s2 = r.real("gravity_m_per_s2");
-  w.seed = std::uint64_t(r.integer("seed"));
+web::WebParams WebKindParams::webParams() const {
+  web::WebParams w = web;
+  if (!attachment_points_m.empty()) {
+    w.attachment_points_m.clear();
+    if (std::string err = parsePoints(attachment_points_m, w.attachment_points_m); !err.empty())
+      throw std::invalid_argument(err);
+  } else {
+    w.attachment_points_m = frame_shape == "triangle" ? regularFrame(3)
+                            : frame_shape == "square"  ? regularFrame(4)
+                            : frame_shape == "hexagon" ? regularFrame(6)
+                            : frame_shape == "decagon" ? regularFrame(10)
+                                                       : web::defaultAttachmentPointsM();
+  }
+  for (auto& p : w.attachment_points_m) p *= frame_scale;
+  if (overextension > 0) w.overextension = overextension;
   return w;
 }
 
-}  // namespace
+springs::SimulationOptions WebKindParams::simulationOptions() const {
+  springs::SimulationOptions opt;
+  opt.integrator = parseIntegratorOrThrow(integrator);
+  opt.frame_interval_s = frame_interval_s;
+  opt.dt_s = dt_s.is_auto ? 0.0 : dt_s.value;
+  opt.auto_safety = auto_safety;
+  opt.end_time_s = end_time_s;
+  opt.settling_fraction = settling_fraction;
+  return opt;
+}
+
+std::string WebKindParams::validate() const {
+  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
+  try {
+    return webParams().validate();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+}
 
 WebKind::WebKind() {
-  const web::WebParams d;  // the construction's documented defaults (src/web/web_params.hpp)
-  params_ = {
-      choice("frame_shape", "default", {"default", "triangle", "square", "hexagon", "decagon"},
-             "attachment points: an irregular 7-point frame 1.07 m across, or a regular polygon 1 m across (Fig. 5.18)"),
-      text("attachment_points_m", "", "m", "custom attachment points \"x1,y1; x2,y2; ...\" (3 to 10); overrides frame_shape"),
-      real("frame_scale", 1.0, "", 0.05, 20, "scales the attachment points (web size, thesis Fig. 5.17)"),
-      real("move_outer_m", d.move_outer_m, "m", 1e-4, 10, "MOVE_OUTER: anchor to inner-frame corner (Fig. 5.5; thesis gives none)"),
-      real("outer_frame_placement_m", d.outer_frame_placement_m, "m", 1e-5, 1, "outer frame spacing as laid (Fig. 5.5: 5 units)"),
-      real("outer_frame_rest_length_m", d.outer_frame_rest_length_m, "m", 1e-5, 1, "outer frame rest length (Fig. 5.5: 2 units)"),
-      real("outer_frame_k_n_per_m", d.outer_frame_k_n_per_m, "N/m", 1e-9, 1e3,
-           "outer frame k; thesis 0.001 collapses the web in SI (see src/web/web_params.cpp)"),
-      real("frame_placement_m", d.frame_placement_m, "m", 1e-5, 1, "inner frame spacing as laid (Fig. 5.33: 20 mm)"),
-      real("frame_rest_length_m", d.frame_rest_length_m, "m", 1e-5, 1, "inner frame rest length (Fig. 5.33: 15 mm)"),
-      real("frame_k_n_per_m", d.frame_k_n_per_m, "N/m", 1e-9, 1e3,
-           "inner frame k; thesis 0.001 collapses the web in SI (see src/web/web_params.cpp)"),
-      real("inner_frame_inward_force_n_per_m", d.inner_frame_inward_force_n_per_m, "N/m", 0, 1,
-           "inward radial force on the inner frame per metre (Fig. 5.8; thesis gives none)"),
-      real("spoke_placement_m", d.spoke_placement_m, "m", 1e-5, 1, "spoke spacing as laid (Fig. 5.28: 7 mm)"),
-      real("spoke_rest_length_m", d.spoke_rest_length_m, "m", 1e-5, 1, "spoke rest length (§5.2.1, Fig. 5.28: 3 mm)"),
-      real("spoke_k_n_per_m", d.spoke_k_n_per_m, "N/m", 1e-9, 1e3, "radial spoke k (§5.2.1: 0.01 N/m)"),
-      choice("primary_spoke_end", "opposite", {"opposite", "farthest"},
-             "primary spoke to the frame mass opposite through the centre, or the literal farthest mass (Fig. 5.10)"),
-      real("hub_radius_m", d.hub_radius_m, "m", 1e-4, 1, "hub ring radius (Fig. 5.11; thesis gives none)"),
-      integer("secondary_spoke_stride", d.secondary_spoke_stride, 1, 1000, "a secondary spoke from every n-th inner-frame mass"),
-      real("spiral_placement_m", d.spiral_placement_m, "m", 1e-5, 1, "spiral spacing as laid (thesis gives none)"),
-      real("spiral_rest_length_m", d.spiral_rest_length_m, "m", 1e-5, 1, "spiral rest length (thesis gives none)"),
-      real("spiral_k_n_per_m", d.spiral_k_n_per_m, "N/m", 1e-9, 1e3,
-           "spiral k; thesis 0.01 makes the radii zigzag (see src/web/web_params.cpp)"),
-      integer("spiral_density", d.spiral_density, 1, 1000, "SPIRAL_DENSITY of the processed spiral (Fig. 5.16: 5)"),
-      integer("spiral_free_masses", d.spiral_free_masses, 1, 1000,
-              "masses at the hub end of each radius left without spiral (§5.2 'a little distance away from the hub')"),
-      real("spiral_jitter", d.spiral_jitter, "", 0, 1, "randomness of the spiral (§5.2: 'a small amount of randomness')"),
-      real("overextension", 0.0, "", 0, 10, "if > 0, every rest length = placement / (1 + this) (§5.1: 0.75-2.5)"),
-      real("particle_mass_kg", d.particle_mass_kg, "kg", 1e-15, 1, "particle mass (§5.2.1: 10 ug)"),
-      real("drag_ns_per_m", d.air_drag_ns_per_m, "N*s/m", 0, 1, "air friction (§5.2.1: 1e-8 N s/m)"),
-      real("gravity_m_per_s2", d.gravity_m_per_s2, "m/s^2", 0, 1000, "gravity along -y (the web hangs in the x-y plane)"),
-      integer("seed", std::int64_t(d.seed), 0, std::int64_t(1) << 62, "seed of every random choice (spiral, hub links, wind)"),
-      choice("start", "laid", {"laid", "static"},
-             "start from the web as laid, or from its static equilibrium (for wind)"),
-      choice("integrator", "rk4", {"euler", "symplectic_euler", "rk4", "implicit_euler"}, "time integrator (thesis: rk4)"),
-      realOrAuto("dt_s", "s", 1e-9, 1, "substep; \"auto\" = auto_safety times the stability limit"),
-      real("auto_safety", web::kAutoStepSafety, "", 1e-3, 1,
-           "fraction of the stability limit (from an upper bound on omega_max) that dt_s = \"auto\" uses"),
-      real("frame_interval_s", 0.02, "s", 1e-6, 10, "output frame (thesis §5.2.1 'time step' 0.02 s)"),
-      real("end_time_s", 10.0, "s", 0, 1e5, "simulated time; 0 = build and solve the statics only"),
-      real("settling_fraction", 1e-4, "", 1e-12, 1, "settled when kinetic energy stays below this fraction of its peak"),
-      real("lagrangian_interval_s", 1.0, "s", 1e-6, 1e5, "interval between stored particle positions"),
-      real("wind_scale", 0.0, "", 0, 1e6, "wind of Fig. 5.45 times this (1 = WIND = m g 10); 0 = no wind"),
-  };
   metrics_ = {
       {"particles", "", "particles, anchors included"},
       {"springs", "", "springs"},
@@ -168,41 +111,15 @@ std::string WebKind::doc() const {
          "2005, §5.2-5.3)";
 }
 
-std::string WebKind::validate(const Params& p) const {
-  ParamReader r(p);
-  std::string err;
-  const web::WebParams w = webParams(r, err);
-  if (!err.empty()) return err;
-  return w.validate();
-}
-
-namespace {
-
-springs::SimulationOptions simulationOptions(const ParamReader& r) {
-  springs::SimulationOptions opt;
-  opt.integrator = parseIntegratorOrThrow(r.text("integrator"));
-  opt.frame_interval_s = r.real("frame_interval_s");
-  opt.dt_s = r.isAuto("dt_s") ? 0.0 : r.real("dt_s");
-  opt.auto_safety = r.real("auto_safety");
-  opt.end_time_s = r.real("end_time_s");
-  opt.settling_fraction = r.real("settling_fraction");
-  return opt;
-}
-
-}  // namespace
-
 // The step at the web as built (the run may start from the static shape instead: omega_max
 // changes little between the two, and this is an estimate).
 CostEstimate WebKind::estimateCost(const Params& p) const {
   try {
-    ParamReader r(p);
-    std::string err;
-    const web::WebParams w = webParams(r, err);
-    if (!err.empty()) return {};
-    const springs::SimulationOptions opt = simulationOptions(r);
+    const WebKindParams q = readParams<WebKindParams>(p);
+    const springs::SimulationOptions opt = q.simulationOptions();
     if (opt.end_time_s <= 0) return {};
-    const web::WebModel model = web::build(w);
-    return springRunCost(model.network, model.state, opt, r.text("integrator"));
+    const web::WebModel model = web::build(q.webParams());
+    return springRunCost(model.network, model.state, opt, q.integrator);
   } catch (const std::exception&) {
     return {};  // the point itself will say what is wrong
   }
@@ -225,9 +142,8 @@ void addWebMeasures(Result& result, const std::vector<core::NamedValue>& measure
 }
 
 // The thesis's wind (web/wind_gen.hpp): WIND = m g 10 x wind_scale.
-web::WindGen windGen(const ParamReader& r) {
-  return {r.real("particle_mass_kg") * r.real("gravity_m_per_s2") * 10.0 * r.real("wind_scale"),
-          std::uint64_t(r.integer("seed"))};
+web::WindGen windGen(const WebKindParams& q) {
+  return {q.web.particle_mass_kg * q.web.gravity_m_per_s2 * 10.0 * q.wind_scale, q.web.seed};
 }
 
 // The run's frames from `state`, recorded by `record`; with no time to run, the static shape alone
@@ -256,26 +172,25 @@ springs::SimulationSummary settle(const springs::System<3>& system, springs::Sta
 }  // namespace
 
 Result WebKind::run(const Params& p) const {
-  ParamReader r(p);
-  std::string err;
-  const web::WebModel model = web::build(webParams(r, err));
+  const WebKindParams q = readParams<WebKindParams>(p);
+  const web::WebModel model = web::build(q.webParams());
   // The inward frame force is constant (Fig. 5.8), so it belongs to the potential: the static solve
   // includes it and the dynamic settle ends in the same shape. The wind (time-dependent) is external.
   springs::System<3> system(model.network);
   system.setConstantForce(model.external_force_n);
   springs::State<3> statics = model.state;
   const auto eq = springs::solveStaticEquilibrium(system, statics);
-  springs::State<3> state = r.text("start") == "static" ? statics : model.state;
-  const bool windy = r.real("wind_scale") > 0;
-  web::WebWind wind(model, state, windGen(r));
+  springs::State<3> state = q.start == "static" ? statics : model.state;
+  const bool windy = q.wind_scale > 0;
+  web::WebWind wind(model, state, windGen(q));
   if (windy) system.setExternalForce([&wind](double, const springs::State<3>&, springs::Points<3>& f) { f += wind.force_n(); });
   web::WebRunRecorder recorder(model, web::hubPositionM(model, state),
-                               std::max(1, int(std::lround(r.real("lagrangian_interval_s") / r.real("frame_interval_s")))));
+                               std::max(1, int(std::lround(q.lagrangian_interval_s / q.frame_interval_s))));
   auto record = [&](int frame, double t, const springs::State<3>& s) {
     recorder.record(frame, t, s);
     if (windy) wind.next();  // windgen once per frame (Fig. 5.45), held until the next
   };
-  const springs::SimulationOptions opt = simulationOptions(r);
+  const springs::SimulationOptions opt = q.simulationOptions();
   const springs::SimulationSummary summary = settle(system, state, statics, opt, record, recorder);
   Result result;
   addWebRun(result, recorder);

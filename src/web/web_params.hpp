@@ -137,6 +137,48 @@ struct WebParams {
   double gravity_m_per_s2 = 9.81;     // along -y: the web hangs in the vertical x-y plane
   std::uint64_t seed = 1;             // every random choice: core::rng keyed by (seed, purpose, index)
 
+  // For the web and charlotte kinds (kinds/describe.hpp: name, unit, range, one-line doc; the
+  // in-class defaults are the web kind's): every field a user sets. The attachment points, the two
+  // angles, hub_attach_choices and the overextension stay the kind's or internal.
+  template <class V>
+  void describe(V& v) {
+    v.real("move_outer_m", move_outer_m, "m", 1e-4, 10, "MOVE_OUTER: anchor to inner-frame corner (Fig. 5.5; thesis gives none)");
+    v.real("outer_frame_placement_m", outer_frame_placement_m, "m", 1e-5, 1, "outer frame spacing as laid (Fig. 5.5: 5 units)");
+    v.real("outer_frame_rest_length_m", outer_frame_rest_length_m, "m", 1e-5, 1, "outer frame rest length (Fig. 5.5: 2 units)");
+    v.real("outer_frame_k_n_per_m", outer_frame_k_n_per_m, "N/m", 1e-9, 1e3,
+           "outer frame k; thesis 0.001 collapses the web in SI (see src/web/web_params.cpp)");
+    v.real("frame_placement_m", frame_placement_m, "m", 1e-5, 1, "inner frame spacing as laid (Fig. 5.33: 20 mm)");
+    v.real("frame_rest_length_m", frame_rest_length_m, "m", 1e-5, 1, "inner frame rest length (Fig. 5.33: 15 mm)");
+    v.real("frame_k_n_per_m", frame_k_n_per_m, "N/m", 1e-9, 1e3,
+           "inner frame k; thesis 0.001 collapses the web in SI (see src/web/web_params.cpp)");
+    v.real("inner_frame_inward_force_n_per_m", inner_frame_inward_force_n_per_m, "N/m", 0, 1,
+           "inward radial force on the inner frame per metre (Fig. 5.8; thesis gives none)");
+    v.real("spoke_placement_m", spoke_placement_m, "m", 1e-5, 1, "spoke spacing as laid (Fig. 5.28: 7 mm)");
+    v.real("spoke_rest_length_m", spoke_rest_length_m, "m", 1e-5, 1, "spoke rest length (§5.2.1, Fig. 5.28: 3 mm)");
+    v.real("spoke_k_n_per_m", spoke_k_n_per_m, "N/m", 1e-9, 1e3, "radial spoke k (§5.2.1: 0.01 N/m)");
+    v.choice("primary_spoke_end", primary_spoke_end,
+             {{"opposite", PrimarySpokeEnd::opposite}, {"farthest", PrimarySpokeEnd::farthest}},
+             "primary spoke to the frame mass opposite through the centre, or the literal farthest mass (Fig. 5.10)");
+    v.real("hub_radius_m", hub_radius_m, "m", 1e-4, 1, "hub ring radius (Fig. 5.11; thesis gives none)");
+    v.integer("secondary_spoke_stride", secondary_spoke_stride, 1, 1000,
+              "a secondary spoke from every n-th inner-frame mass (on the default frame 4: 43 radii; 2: ~80, with "
+              "spiral segments short enough for letters)");
+    v.real("spiral_placement_m", spiral_placement_m, "m", 1e-5, 1, "spiral spacing as laid (thesis gives none)");
+    v.real("spiral_rest_length_m", spiral_rest_length_m, "m", 1e-5, 1, "spiral rest length (thesis gives none)");
+    v.real("spiral_k_n_per_m", spiral_k_n_per_m, "N/m", 1e-9, 1e3,
+           "spiral k; thesis 0.01 makes the radii zigzag (see src/web/web_params.cpp)");
+    v.integer("spiral_density", spiral_density, 1, 1000, "SPIRAL_DENSITY of the processed spiral (Fig. 5.16: 5)");
+    v.integer("spiral_free_masses", spiral_free_masses, 1, 1000,
+              "masses at the hub end of each radius left without spiral (§5.2 'a little distance away from the hub')");
+    v.real("spiral_jitter", spiral_jitter, "", 0, 1, "randomness of the spiral (§5.2: 'a small amount of randomness')");
+    v.real("particle_mass_kg", particle_mass_kg, "kg", 1e-15, 1, "particle mass (§5.2.1: 10 ug)");
+    v.real("drag_ns_per_m", air_drag_ns_per_m, "N*s/m", 0, 1,
+           "air friction (§5.2.1: 1e-8 N s/m); with 10 ug masses motion decays as exp(-t / 2 s)");
+    v.real("gravity_m_per_s2", gravity_m_per_s2, "m/s^2", 0, 1000, "gravity along -y (the web hangs in the x-y plane)");
+    v.integer("seed", seed, 0, std::int64_t(1) << 62,
+              "seed of every random choice (spiral, hub links, wind, random attachments and gaps)");
+  }
+
   // "" when the web can be built; otherwise one sentence naming the first problem, e.g.
   // "attachment points 2, 3 and 4 are collinear; move one of them off the line".
   std::string validate() const;
