@@ -47,6 +47,7 @@ class MacCormackAdvection3 final : public AdvectionSolver3 {
  private:
   std::array<PaddedComponent3, 3> velocity_, forward_;
   FaceField3 lo_, hi_;
+  std::array<FaceField3, 3> ahead_;  // coordinate d of the forward trace's end, cell units
 };
 
 std::unique_ptr<AdvectionSolver3> makeAdvectionSolver(AdvectionScheme3 scheme);

@@ -21,6 +21,9 @@ class PaddedComponent3 {
   /// Copies component a (array `values`, shaped like grid.velocity_m_per_s[a]) with its ghosts.
   void fill(int a, const MacGrid3& grid, const Array3& values, WorkerPool* pool);
 
+  /// The stored value (i, j, k) of the component's array; indices −1 and extent reach the ghosts.
+  double at(int i, int j, int k) const { return padded_.data()[(k + 1) * sz_ + (j + 1) * sy_ + (i + 1)]; }
+
   /// Value at position p (cell units).
   double sample(const std::array<double, 3>& p) const {
     double t[3];
