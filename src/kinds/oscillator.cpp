@@ -1,6 +1,8 @@
 #include "kinds/oscillator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "core/text.hpp"
 #include "kinds/damped_oscillator.hpp"
@@ -33,59 +35,90 @@ std::string OscillatorParams::validate() const {
   return "";
 }
 
+namespace {
+
+// The oscillator as the spring-mass engine runs it: a pinned anchor and the bob on one spring, the
+// bob displaced and moving as the closed form starts, every step recorded.
+struct OscillatorSetup {
+  static constexpr double kRestM = 1.0;  // arbitrary: only the displacement from rest enters the closed form
+  static constexpr int kBob = 1;
+  springs::Network<2> net;
+  springs::State<2> state;
+  springs::SimulationOptions opt;
+};
+
+OscillatorSetup oscillatorSetup(const OscillatorParams& q) {
+  const DampedOscillator& exact = q.body;
+  OscillatorSetup s;
+  const int anchor = s.net.addParticle(exact.mass_kg, true);
+  const int bob = s.net.addParticle(exact.mass_kg, false);
+  s.net.addSpring(anchor, bob, OscillatorSetup::kRestM, exact.stiffness_n_per_m);
+  s.net.drag_ns_per_m = exact.damping_ns_per_m;
+  s.state.x_m = springs::Points<2>::Zero(2, 2);
+  s.state.v_m_per_s = springs::Points<2>::Zero(2, 2);
+  s.state.x_m(0, bob) = OscillatorSetup::kRestM + exact.x0_m;
+  s.state.v_m_per_s(0, bob) = exact.v0_m_per_s;
+  s.opt.integrator = parseIntegratorOrThrow(q.integrator);
+  s.opt.end_time_s = q.end_time_s;
+  const double omega = springs::estimateOmegaMaxRadPerS(s.net, s.state);
+  s.opt.dt_s = q.dt_s.is_auto ? springs::autoStepS(s.opt.integrator, omega, exact.zeta()) : q.dt_s.value;
+  s.opt.frame_interval_s = s.opt.dt_s;  // record every step: the error is read step by step
+  s.opt.runaway_factor = 1e6;
+  return s;
+}
+
+// Each step against the closed form: the series (in the Result as they grow, so a failed run keeps
+// them), the largest error, and at the end the metrics.
+class ErrorTrack {
+ public:
+  ErrorTrack(const DampedOscillator& exact, Result& result)
+      : exact_(exact),
+        time_(result.timeseries["time_s"] = {{}, "s"}),
+        x_num_(result.timeseries["x_m"] = {{}, "m"}),
+        x_ex_(result.timeseries["x_exact_m"] = {{}, "m"}),
+        err_(result.timeseries["error_m"] = {{}, "m"}),
+        energy_(result.timeseries["energy_j"] = {{}, "J"}) {}
+
+  void operator()(int, double t, const springs::State<2>& s) {
+    double xe = 0, ve = 0;
+    exact_.at(t, xe, ve);
+    const double xn = s.x_m(0, OscillatorSetup::kBob) - OscillatorSetup::kRestM;
+    time_.values.push_back(t);
+    x_num_.values.push_back(xn);
+    x_ex_.values.push_back(xe);
+    err_.values.push_back(xn - xe);
+    energy_.values.push_back(exact_.energy(xn, s.v_m_per_s(0, OscillatorSetup::kBob)));
+    max_err_ = std::max(max_err_, std::fabs(xn - xe));
+    v_exact_end_ = ve;
+    v_num_end_ = s.v_m_per_s(0, OscillatorSetup::kBob);
+  }
+
+  void addMetrics(double dt_used_s, Result& result) const {
+    const double x_exact_end = x_ex_.values.back(), x_num_end = x_num_.values.back();
+    result.metrics["omega_dt"] = {exact_.omega0() * dt_used_s, "rad"};
+    result.metrics["dt_used_s"] = {dt_used_s, "s"};
+    result.metrics["max_abs_error_m"] = {max_err_, "m"};
+    result.metrics["final_abs_error_m"] = {std::fabs(x_num_end - x_exact_end), "m"};
+    result.metrics["final_energy_ratio"] = {
+        exact_.energy(x_num_end, v_num_end_) / exact_.energy(x_exact_end, v_exact_end_), ""};
+  }
+
+ private:
+  const DampedOscillator& exact_;
+  Series &time_, &x_num_, &x_ex_, &err_, &energy_;
+  double max_err_ = 0, v_exact_end_ = 0, v_num_end_ = 0;
+};
+
+}  // namespace
+
 Result OscillatorKind::run(const Params& p) const {
   const OscillatorParams q = readParams<OscillatorParams>(p);
-  const DampedOscillator& exact = q.body;
-  const double rest_m = 1.0;  // arbitrary: only the displacement from rest enters the closed form
-
-  springs::Network<2> net;
-  const int anchor = net.addParticle(exact.mass_kg, true);
-  const int bob = net.addParticle(exact.mass_kg, false);
-  net.addSpring(anchor, bob, rest_m, exact.stiffness_n_per_m);
-  net.drag_ns_per_m = exact.damping_ns_per_m;
-  springs::State<2> state;
-  state.x_m = springs::Points<2>::Zero(2, 2);
-  state.v_m_per_s = springs::Points<2>::Zero(2, 2);
-  state.x_m(0, bob) = rest_m + exact.x0_m;
-  state.v_m_per_s(0, bob) = exact.v0_m_per_s;
-
-  springs::SimulationOptions opt;
-  opt.integrator = parseIntegratorOrThrow(q.integrator);
-  opt.end_time_s = q.end_time_s;
-  const double omega = springs::estimateOmegaMaxRadPerS(net, state);
-  opt.dt_s = q.dt_s.is_auto ? springs::autoStepS(opt.integrator, omega, exact.zeta()) : q.dt_s.value;
-  opt.frame_interval_s = opt.dt_s;  // record every step: the error is read step by step
-  opt.runaway_factor = 1e6;
-
+  OscillatorSetup setup = oscillatorSetup(q);
   Result result;
-  auto& time = result.timeseries["time_s"] = {{}, "s"};
-  auto& x_num = result.timeseries["x_m"] = {{}, "m"};
-  auto& x_ex = result.timeseries["x_exact_m"] = {{}, "m"};
-  auto& err = result.timeseries["error_m"] = {{}, "m"};
-  auto& energy = result.timeseries["energy_j"] = {{}, "J"};
-  double max_err = 0, v_exact_end = 0, v_num_end = 0;
-  auto record = [&](int, double t, const springs::State<2>& s) {
-    double xe = 0, ve = 0;
-    exact.at(t, xe, ve);
-    const double xn = s.x_m(0, bob) - rest_m;
-    time.values.push_back(t);
-    x_num.values.push_back(xn);
-    x_ex.values.push_back(xe);
-    err.values.push_back(xn - xe);
-    energy.values.push_back(exact.energy(xn, s.v_m_per_s(0, bob)));
-    max_err = std::max(max_err, std::fabs(xn - xe));
-    v_exact_end = ve;
-    v_num_end = s.v_m_per_s(0, bob);
-  };
-
-  springs::System<2> system(std::move(net));
-  const auto summary = runOrFail(system, state, opt, record, result);
-  const double x_exact_end = x_ex.values.back(), x_num_end = x_num.values.back();
-  result.metrics["omega_dt"] = {exact.omega0() * summary.dt_used_s, "rad"};
-  result.metrics["dt_used_s"] = {summary.dt_used_s, "s"};
-  result.metrics["max_abs_error_m"] = {max_err, "m"};
-  result.metrics["final_abs_error_m"] = {std::fabs(x_num_end - x_exact_end), "m"};
-  result.metrics["final_energy_ratio"] = {exact.energy(x_num_end, v_num_end) / exact.energy(x_exact_end, v_exact_end), ""};
+  ErrorTrack track(q.body, result);
+  springs::System<2> system(std::move(setup.net));
+  const auto summary = runOrFail(system, setup.state, setup.opt, std::ref(track), result);
+  track.addMetrics(summary.dt_used_s, result);
   return result;
 }
 

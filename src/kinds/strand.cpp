@@ -1,6 +1,8 @@
 #include "kinds/strand.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "kinds/spring_run.hpp"
 #include "springs/equilibrium.hpp"
@@ -111,61 +113,83 @@ CostEstimate StrandKind::estimateCost(const Params& p) const {
   }
 }
 
+namespace {
+
+// The depth of the strand's middle below the anchors: the middle particle, or the mean of the two.
+double midSag(const springs::State<2>& s) {
+  const int n = int(s.x_m.cols());
+  const double y = (n % 2) ? s.x_m(1, n / 2) : 0.5 * (s.x_m(1, n / 2 - 1) + s.x_m(1, n / 2));
+  return -y;
+}
+
+// Each frame: the middle's sag (a series in the Result as it grows, so a failed run keeps it) and,
+// every frames_per_track frames, the particles' positions.
+class StrandRecorder {
+ public:
+  StrandRecorder(int particles, int frames_per_track, Result& result)
+      : sag_(result.timeseries["mid_sag_m"] = {{}, "m"}),
+        tracks_(result.lagrangian["positions_m"]),
+        frames_per_track_(frames_per_track) {
+    tracks_.points = particles;
+    tracks_.dim = 2;
+  }
+  void operator()(int frame, double t, const springs::State<2>& s) {
+    sag_.values.push_back(midSag(s));
+    if (frame % frames_per_track_ == 0) keep(t, s);
+  }
+  // The last frame is always kept.
+  void finish(double t, const springs::State<2>& s) {
+    if (tracks_.time_s.empty() || tracks_.time_s.back() < t) keep(t, s);
+  }
+
+ private:
+  void keep(double t, const springs::State<2>& s) {
+    tracks_.time_s.push_back(t);
+    tracks_.data.insert(tracks_.data.end(), s.x_m.data(), s.x_m.data() + s.x_m.size());
+  }
+  Series& sag_;
+  Tracks& tracks_;
+  int frames_per_track_;
+};
+
+// The run's and the static solve's measures.
+void addStrandMetrics(const Layout& lay, const springs::System<2>& system, const springs::State<2>& state,
+                      const springs::SimulationSummary& summary, const springs::State<2>& settled, bool static_converged,
+                      Result& result) {
+  const double nan = std::nan("");
+  const double static_sag = static_converged ? midSag(settled) : nan;
+  auto& m = result.metrics;
+  m["particles"] = {double(state.x_m.cols()), ""};
+  m["anchor_span_m"] = {lay.span_m, "m"};
+  m["mid_sag_m"] = {midSag(state), "m"};
+  m["static_mid_sag_m"] = {static_sag, "m"};
+  m["static_sag_rel_diff"] = {std::fabs(midSag(state) - static_sag) / static_sag, ""};
+  m["max_strain"] = {springs::maxStrain(system.network(), state), ""};
+  m["provot_peak_strain"] = {summary.provot_peak_strain, ""};
+  m["provot_unconverged_steps"] = {double(summary.provot_unconverged_steps), ""};
+  m["provot_mean_passes"] = {summary.steps ? double(summary.provot_passes) / double(summary.steps) : 0.0, ""};
+  m["settling_time_s"] = {summary.settling_time_s.value_or(nan), "s"};
+  m["final_kinetic_energy_j"] = {summary.kinetic_energy_j.back(), "J"};
+  m["dt_used_s"] = {summary.dt_used_s, "s"};
+}
+
+}  // namespace
+
 Result StrandKind::run(const Params& p) const {
   const StrandParams q = readParams<StrandParams>(p);
-  const Layout lay = layoutOf(q);
   StrandSetup setup = setupOf(q);
-  springs::Network<2>& net = setup.net;
   springs::State<2>& state = setup.state;
-  const springs::SimulationOptions& opt = setup.opt;
-  const int n = int(state.x_m.cols());
-
-  // The middle of the strand: the middle particle, or the mean of the two middle ones.
-  auto midSag = [n](const springs::State<2>& s) {
-    const double y = (n % 2) ? s.x_m(1, n / 2) : 0.5 * (s.x_m(1, n / 2 - 1) + s.x_m(1, n / 2));
-    return -y;
-  };
-
   Result result;
-  auto& sag = result.timeseries["mid_sag_m"] = {{}, "m"};
-  Tracks& tracks = result.lagrangian["positions_m"];
-  tracks.points = n;
-  tracks.dim = 2;
-  const int frames_per_track = std::max(1, int(std::lround(q.lagrangian_interval_s / opt.frame_interval_s)));
-  auto record = [&](int frame, double t, const springs::State<2>& s) {
-    sag.values.push_back(midSag(s));
-    if (frame % frames_per_track == 0) {
-      tracks.time_s.push_back(t);
-      tracks.data.insert(tracks.data.end(), s.x_m.data(), s.x_m.data() + s.x_m.size());
-    }
-  };
-
-  springs::System<2> system(std::move(net));
+  StrandRecorder recorder(int(state.x_m.cols()),
+                          std::max(1, int(std::lround(q.lagrangian_interval_s / setup.opt.frame_interval_s))), result);
+  springs::System<2> system(std::move(setup.net));
   springs::State<2> settled = state;  // the static solve starts from the same layout
-  auto summary = runOrFail(system, state, opt, record, result);
-  if (tracks.time_s.empty() || tracks.time_s.back() < summary.time_s.back()) {  // always keep the last frame
-    tracks.time_s.push_back(summary.time_s.back());
-    tracks.data.insert(tracks.data.end(), state.x_m.data(), state.x_m.data() + state.x_m.size());
-  }
+  const auto summary = runOrFail(system, state, setup.opt, std::ref(recorder), result);
+  recorder.finish(summary.time_s.back(), state);
   result.timeseries["time_s"] = {summary.time_s, "s"};
   result.timeseries["kinetic_energy_j"] = {summary.kinetic_energy_j, "J"};
-
   const auto eq = springs::solveStaticEquilibrium(system, settled);
-
-  const double nan = std::nan("");
-  result.metrics["particles"] = {double(n), ""};
-  result.metrics["anchor_span_m"] = {lay.span_m, "m"};
-  result.metrics["mid_sag_m"] = {midSag(state), "m"};
-  result.metrics["static_mid_sag_m"] = {eq.converged ? midSag(settled) : nan, "m"};
-  result.metrics["static_sag_rel_diff"] = {
-      std::fabs(midSag(state) - result.metrics["static_mid_sag_m"].value) / result.metrics["static_mid_sag_m"].value, ""};
-  result.metrics["max_strain"] = {springs::maxStrain(system.network(), state), ""};
-  result.metrics["provot_peak_strain"] = {summary.provot_peak_strain, ""};
-  result.metrics["provot_unconverged_steps"] = {double(summary.provot_unconverged_steps), ""};
-  result.metrics["provot_mean_passes"] = {summary.steps ? double(summary.provot_passes) / double(summary.steps) : 0.0, ""};
-  result.metrics["settling_time_s"] = {summary.settling_time_s.value_or(nan), "s"};
-  result.metrics["final_kinetic_energy_j"] = {summary.kinetic_energy_j.back(), "J"};
-  result.metrics["dt_used_s"] = {summary.dt_used_s, "s"};
+  addStrandMetrics(layoutOf(q), system, state, summary, settled, eq.converged, result);
   return result;
 }
 
