@@ -9,6 +9,7 @@
 #include "fish/fish_run.hpp"
 #include "fish/skin.hpp"
 #include "fish/swim_mc.hpp"
+#include "kinds/fish_render.hpp"
 #include "render/mesh_export.hpp"
 #include "render/pov_scene.hpp"
 
@@ -18,28 +19,6 @@ namespace {
 const char* kSpec = "X. Tu, Artificial Animals for Computer Animation, PhD thesis 1996; docs/fish-spec.md";
 
 std::vector<std::int64_t> flat(const std::vector<int>& v) { return {v.begin(), v.end()}; }
-
-// The skin's mesh for the exporters (render/): our z up becomes render's y up, (x, y, z) -> (x, z, -y),
-// a rotation of -90 degrees about x, so triangles keep their orientation.
-render::TriangleMesh renderMesh(const fish::SkinMesh& skin) {
-  render::TriangleMesh out;
-  for (const auto& p : skin.positions) out.positions.push_back({p.x(), p.z(), -p.y()});
-  for (const auto& n : skin.normals) out.normals.push_back({n.x(), n.z(), -n.y()});
-  for (const auto& t : skin.triangles) out.triangles.push_back({t[0], t[1], t[2]});
-  return out;
-}
-
-// How the skin looks in its .glb.
-render::GltfLook skinLook() {
-  render::GltfLook look;
-  look.generator = "creaturelab fish (Tu 1996 NURBS skin)";
-  look.material = "fish skin";
-  look.base_colour = {0.35, 0.55, 0.7, 1.0};
-  look.metallic = 0.1;
-  look.roughness = 0.5;
-  look.double_sided = true;  // the fins are sheets
-  return look;
-}
 
 // The skin on every recorded frame (quality metrics), stored and exported on export_frames of them.
 void addSkin(const FishKindParams& q, const FishSetup& s, const fish::FishModel& model, const fish::FishRecord& rec,
@@ -88,7 +67,7 @@ void addSkin(const FishKindParams& q, const FishSetup& s, const fish::FishModel&
       for (const auto& p : skin.controlPoints()) net.data.insert(net.data.end(), {p.x(), p.y(), p.z()});
       vertices.time_s.push_back(rec.time_s[f]);
       for (const auto& p : mesh.positions) vertices.data.insert(vertices.data.end(), {p.x(), p.y(), p.z()});
-      frames.push_back({rec.time_s[f], renderMesh(mesh)});
+      frames.push_back({rec.time_s[f], fishRenderMesh(mesh)});
     }
   }
   net.points = int(skin.controlPoints().size());
@@ -108,7 +87,7 @@ void addSkin(const FishKindParams& q, const FishSetup& s, const fish::FishModel&
 
   // Artifacts: the animation, OBJ frames and POV-Ray scenes (rendered by analysis/plot_fish.py).
   auto bytes = [](const std::string& text) { return std::vector<std::uint8_t>(text.begin(), text.end()); };
-  render::GltfAnimation animation(skinLook());
+  render::GltfAnimation animation(fishSkinLook());
   for (const auto& frame : frames) animation.addFrame(frame.time_s, frame.mesh);
   result.artifacts["skin.glb"] = animation.glb("fish");
   char name[64];
@@ -241,68 +220,64 @@ CostEstimate FishKind::estimateCost(const Params& p) const {
   }
 }
 
-Result FishKind::run(const Params& p) const {
-  const FishKindParams q = readParams<FishKindParams>(p);
-  FishSetup s = q.setup();
-  const fish::FishModel model = fish::buildFish(s.geometry, s.units);
-  const double L = model.body_length_m, nan = std::nan("");
-  Result result;
-  result.metrics["swim_mc_knob"] = {nan, ""};
-  result.metrics["swim_mc_speed_ratio"] = {nan, ""};
-  result.metrics["swim_mc_slowest_body_lengths_per_s"] = {nan, "1/s"};
-  result.metrics["swim_mc_fastest_body_lengths_per_s"] = {nan, "1/s"};
-  if (const double want = q.swim_speed_body_lengths_per_s; want > 0) {  // the swim-MC's speed map
-    const fish::SpeedMap map = fish::calibrateSwimMC(model, s.solver, s.motor, q.swim_mc_swim_s, q.warmup_s,
-                                                     q.swim_mc_slowest_knob, int(q.swim_mc_levels));
-    std::string error;
-    const double knob = fish::knobForSpeed(map, want, error);
-    result.metrics["swim_mc_slowest_body_lengths_per_s"] = {map.speed_body_lengths_per_s.front(), "1/s"};
-    result.metrics["swim_mc_fastest_body_lengths_per_s"] = {map.speed_body_lengths_per_s.back(), "1/s"};
-    if (!error.empty()) throw RunFailure("swim_speed_body_lengths_per_s: " + error, result);
-    result.metrics["swim_mc_knob"] = {knob, ""};
-    s.motor.swim = fish::swimCommandForKnob(knob, s.motor.r_max);
-  }
-  result.metrics["fish_length_m"] = {L, "m"};
+namespace {
+
+// The swim-MC's speed map (swim_mc.hpp) and the swim command it gives for the wanted speed, with the
+// map's range and the knob as metrics; a speed outside the map fails the point.
+fish::SwimCommand swimCommandForSpeed(const FishKindParams& q, const FishSetup& s, const fish::FishModel& model,
+                                      Result& result) {
+  const fish::SpeedMap map = fish::calibrateSwimMC(model, s.solver, s.motor, q.swim_mc_swim_s, q.warmup_s,
+                                                   q.swim_mc_slowest_knob, int(q.swim_mc_levels));
+  std::string error;
+  const double knob = fish::knobForSpeed(map, q.swim_speed_body_lengths_per_s, error);
+  result.metrics["swim_mc_slowest_body_lengths_per_s"] = {map.speed_body_lengths_per_s.front(), "1/s"};
+  result.metrics["swim_mc_fastest_body_lengths_per_s"] = {map.speed_body_lengths_per_s.back(), "1/s"};
+  if (!error.empty()) throw RunFailure("swim_speed_body_lengths_per_s: " + error, result);
+  result.metrics["swim_mc_knob"] = {knob, ""};
+  return fish::swimCommandForKnob(knob, s.motor.r_max);
+}
+
+// The model's measures (length, mass, rest modes against the stroke), NaN for the metrics this run
+// may not reach, and its topology: unit ends and classes, muscles (unit, segment, side), faces.
+void addModel(const fish::FishModel& model, const fish::MotorParams& motor, Result& result) {
+  const double nan = std::nan("");
+  result.metrics["fish_length_m"] = {model.body_length_m, "m"};
   result.metrics["mass_kg"] = {model.totalMassKg(), "kg"};
   const fish::RestModes modes = fish::restModes(model);
   result.metrics["lowest_lateral_mode_hz"] = {modes.lowest_lateral_hz, "Hz"};
   result.metrics["spring_limit_dt_s"] = {2.0 / modes.highest_rad_per_s, "s"};
-  result.metrics["stroke_frequency_over_mode"] = {1.0 / fish::swimPeriodS(s.motor) / modes.lowest_lateral_hz, ""};
+  result.metrics["stroke_frequency_over_mode"] = {1.0 / fish::swimPeriodS(motor) / modes.lowest_lateral_hz, ""};
   for (const char* m : {"max_stable_dt_s"}) result.metrics[m] = {nan, "s"};
   for (const char* m : {"skin_rest_inward", "skin_inward_max", "skin_creases", "skin_worst_neighbour_cosine"})
     result.metrics[m] = {nan, ""};
   result.metrics["skin_seam_gap_m"] = {nan, "m"};
 
-  // The model's topology: unit ends and classes, muscles (unit, segment, side), faces.
-  {
-    std::vector<int> ends, cls, muscles, faces;
-    for (int e = 0; e < fish::kUnits; ++e) {
-      ends.push_back(model.network.spring_a[e]);
-      ends.push_back(model.network.spring_b[e]);
-      cls.push_back(int(model.unit_class[e]));
-    }
-    for (const auto& m : model.muscles) muscles.insert(muscles.end(), {m.unit, m.segment, m.side});
-    for (const auto& f : model.faces) faces.insert(faces.end(), f.node.begin(), f.node.end());
-    result.topology["unit_nodes"] = flat(ends);
-    result.topology["unit_class"] = flat(cls);  // 0 cross, 1 muscle, 2 other
-    result.topology["muscles"] = flat(muscles);
-    result.topology["faces"] = flat(faces);
+  std::vector<int> ends, cls, muscles, faces;
+  for (int e = 0; e < fish::kUnits; ++e) {
+    ends.push_back(model.network.spring_a[e]);
+    ends.push_back(model.network.spring_b[e]);
+    cls.push_back(int(model.unit_class[e]));
   }
+  for (const auto& m : model.muscles) muscles.insert(muscles.end(), {m.unit, m.segment, m.side});
+  for (const auto& f : model.faces) faces.insert(faces.end(), f.node.begin(), f.node.end());
+  result.topology["unit_nodes"] = flat(ends);
+  result.topology["unit_class"] = flat(cls);  // 0 cross, 1 muscle, 2 other
+  result.topology["muscles"] = flat(muscles);
+  result.topology["faces"] = flat(faces);
+}
 
-  if (q.task == "stable_step") {
-    const auto st = fish::largestStableStep(model, s.solver, s.motor, s.schedule, q.stable_lo_s, q.stable_hi_s,
-                                            int(q.stable_iterations));
-    result.metrics["max_stable_dt_s"] = {st.dt_s, "s"};
-    for (const char* m : {"school_count", "school_fish_steps", "school_mean_speed_body_lengths_per_s", "school_blowups"})
-      result.metrics[m] = {nan, ""};
-    result.timeseries["time_s"] = {{0.0}, "s"};
-    return result;
-  }
+// task = stable_step: the largest step that survives the schedule, and no run recorded.
+void addStableStep(const FishKindParams& q, const FishSetup& s, const fish::FishModel& model, Result& result) {
+  const auto st = fish::largestStableStep(model, s.solver, s.motor, s.schedule, q.stable_lo_s, q.stable_hi_s,
+                                          int(q.stable_iterations));
+  result.metrics["max_stable_dt_s"] = {st.dt_s, "s"};
+  for (const char* m : {"school_count", "school_fish_steps", "school_mean_speed_body_lengths_per_s", "school_blowups"})
+    result.metrics[m] = {std::nan(""), ""};
+  result.timeseries["time_s"] = {{0.0}, "s"};
+}
 
-  fish::RunOptions opt;
-  opt.frame_every_steps = int(q.frame_every_steps);
-  const fish::FishRecord rec = fish::runSchedule(model, s.solver, s.motor, s.schedule, opt);
-
+// The recorded run: centre of mass, momentum and heading per frame; nodes and muscle rest lengths.
+void addRecord(const fish::FishRecord& rec, Result& result) {
   result.timeseries["time_s"] = {rec.time_s, "s"};
   const int n = rec.frames();
   for (int axis = 0; axis < 3; ++axis) {
@@ -323,41 +298,53 @@ Result FishKind::run(const Params& p) const {
   muscles.data = rec.muscle_rest_m;
   muscles.points = fish::kMuscles;
   muscles.dim = 1;
+}
 
+// The swim, turn and travel-turn measures of the recorded run (fish_measure.hpp), and its health.
+void addSwimMeasures(const FishKindParams& q, const FishSetup& s, double L, const fish::FishRecord& rec,
+                     Result& result) {
+  const double nan = std::nan("");
   const double period = fish::swimPeriodS(s.motor);
   const fish::SwimMeasures sw = fish::measureSwim(rec, L, q.warmup_s, period);
   const fish::TurnMeasures tu = fish::measureTurn(rec, s.schedule);
-  result.metrics["steps"] = {double(rec.steps), ""};
-  result.metrics["speed_body_lengths_per_s"] = {sw.speed_body_lengths_per_s, "1/s"};
-  result.metrics["speed_m_per_s"] = {sw.speed_m_per_s, "m/s"};
+  auto& m = result.metrics;
+  m["steps"] = {double(rec.steps), ""};
+  m["speed_body_lengths_per_s"] = {sw.speed_body_lengths_per_s, "1/s"};
+  m["speed_m_per_s"] = {sw.speed_m_per_s, "m/s"};
   if (const double want = q.swim_speed_body_lengths_per_s; want > 0)
-    result.metrics["swim_mc_speed_ratio"] = {sw.speed_body_lengths_per_s / want, ""};
-  result.metrics["forward_distance_m"] = {sw.forward_distance_m, "m"};
-  result.metrics["lateral_drift_m"] = {sw.lateral_drift_m, "m"};
-  result.metrics["lateral_drift_fraction"] = {sw.lateral_drift_fraction, ""};
-  result.metrics["vertical_drift_m"] = {sw.vertical_drift_m, "m"};
-  result.metrics["settled_heading_change_deg"] = {sw.settled_heading_change_deg, "deg"};
-  result.metrics["settled_lateral_drift_fraction"] = {sw.settled_lateral_drift_fraction, ""};
-  result.metrics["com_travel_m"] = {sw.com_travel_m, "m"};
-  result.metrics["com_travel_body_lengths"] = {sw.com_travel_m / L, ""};
-  result.metrics["heading_change_deg"] = {tu.found ? tu.heading_change_deg : nan, "deg"};
-  result.metrics["turn_path_m"] = {tu.found ? tu.path_m : nan, "m"};
-  result.metrics["turn_radius_m"] = {tu.found ? tu.radius_m : nan, "m"};
-  result.metrics["turn_radius_body_lengths"] = {tu.found ? tu.radius_m / L : nan, ""};
+    m["swim_mc_speed_ratio"] = {sw.speed_body_lengths_per_s / want, ""};
+  m["forward_distance_m"] = {sw.forward_distance_m, "m"};
+  m["lateral_drift_m"] = {sw.lateral_drift_m, "m"};
+  m["lateral_drift_fraction"] = {sw.lateral_drift_fraction, ""};
+  m["vertical_drift_m"] = {sw.vertical_drift_m, "m"};
+  m["settled_heading_change_deg"] = {sw.settled_heading_change_deg, "deg"};
+  m["settled_lateral_drift_fraction"] = {sw.settled_lateral_drift_fraction, ""};
+  m["com_travel_m"] = {sw.com_travel_m, "m"};
+  m["com_travel_body_lengths"] = {sw.com_travel_m / L, ""};
+  m["heading_change_deg"] = {tu.found ? tu.heading_change_deg : nan, "deg"};
+  m["turn_path_m"] = {tu.found ? tu.path_m : nan, "m"};
+  m["turn_radius_m"] = {tu.found ? tu.radius_m : nan, "m"};
+  m["turn_radius_body_lengths"] = {tu.found ? tu.radius_m / L : nan, ""};
   const fish::TravelTurn tt = fish::measureTravelTurn(rec, s.schedule, period);
-  result.metrics["swim_period_s"] = {period, "s"};
-  result.metrics["stride_body_lengths"] = {sw.speed_body_lengths_per_s * period, ""};
-  result.metrics["travel_heading_change_deg"] = {tt.found ? tt.heading_change_deg : nan, "deg"};
-  result.metrics["travel_turn_path_m"] = {tt.found ? tt.path_m : nan, "m"};
-  result.metrics["travel_turn_radius_body_lengths"] = {tt.found ? tt.radius_m / L : nan, ""};
-  result.metrics["momentum_drift_rel"] = {rec.momentum_drift_rel, ""};
-  result.metrics["blew_up"] = {rec.blew_up ? 1.0 : 0.0, ""};
-  result.metrics["blowup_step"] = {double(rec.blowup_step), ""};
-  result.metrics["blowup_time_s"] = {rec.blew_up ? rec.blowup_time_s : -1.0, "s"};
-  // The school: independent fish, each its own solver and controller, stepped one after the other
-  // (the thesis animates up to 5; the speed goal is 1,000 in real time). Only counted, not recorded.
+  m["swim_period_s"] = {period, "s"};
+  m["stride_body_lengths"] = {sw.speed_body_lengths_per_s * period, ""};
+  m["travel_heading_change_deg"] = {tt.found ? tt.heading_change_deg : nan, "deg"};
+  m["travel_turn_path_m"] = {tt.found ? tt.path_m : nan, "m"};
+  m["travel_turn_radius_body_lengths"] = {tt.found ? tt.radius_m / L : nan, ""};
+  m["momentum_drift_rel"] = {rec.momentum_drift_rel, ""};
+  m["blew_up"] = {rec.blew_up ? 1.0 : 0.0, ""};
+  m["blowup_step"] = {double(rec.blowup_step), ""};
+  m["blowup_time_s"] = {rec.blew_up ? rec.blowup_time_s : -1.0, "s"};
+}
+
+// The school: independent fish, each its own solver and controller, stepped one after the other
+// (the thesis animates up to 5; the speed goal is 1,000 in real time). Only counted, not recorded.
+void addSchool(const FishKindParams& q, const FishSetup& s, const fish::FishModel& model, const fish::FishRecord& rec,
+               Result& result) {
+  const double L = model.body_length_m;
   const long school = long(q.school_size);
-  double speed_sum = sw.speed_body_lengths_per_s, fish_steps = double(rec.steps), school_blowups = rec.blew_up;
+  double speed_sum = result.metrics["speed_body_lengths_per_s"].value, fish_steps = double(rec.steps),
+         school_blowups = rec.blew_up;
   fish::RunOptions quiet;
   quiet.frame_every_steps = 20;  // enough frames for measureSwim, little recording
   for (long k = 1; k < school; ++k) {
@@ -374,6 +361,30 @@ Result FishKind::run(const Params& p) const {
   result.metrics["school_fish_steps"] = {fish_steps, ""};
   result.metrics["school_mean_speed_body_lengths_per_s"] = {speed_sum / double(school), "1/s"};
   result.metrics["school_blowups"] = {school_blowups, ""};
+}
+
+}  // namespace
+
+Result FishKind::run(const Params& p) const {
+  const FishKindParams q = readParams<FishKindParams>(p);
+  FishSetup s = q.setup();
+  const fish::FishModel model = fish::buildFish(s.geometry, s.units);
+  Result result;
+  for (const char* m : {"swim_mc_knob", "swim_mc_speed_ratio"}) result.metrics[m] = {std::nan(""), ""};
+  for (const char* m : {"swim_mc_slowest_body_lengths_per_s", "swim_mc_fastest_body_lengths_per_s"})
+    result.metrics[m] = {std::nan(""), "1/s"};
+  if (q.swim_speed_body_lengths_per_s > 0) s.motor.swim = swimCommandForSpeed(q, s, model, result);
+  addModel(model, s.motor, result);
+  if (q.task == "stable_step") {
+    addStableStep(q, s, model, result);
+    return result;
+  }
+  fish::RunOptions opt;
+  opt.frame_every_steps = int(q.frame_every_steps);
+  const fish::FishRecord rec = fish::runSchedule(model, s.solver, s.motor, s.schedule, opt);
+  addRecord(rec, result);
+  addSwimMeasures(q, s, model.body_length_m, rec, result);
+  addSchool(q, s, model, rec, result);
   if (q.skin) addSkin(q, s, model, rec, result);
   if (rec.blew_up && q.on_blowup == "fail")
     throw RunFailure("fish blew up at step " + std::to_string(rec.blowup_step) + " (t = " +

@@ -112,6 +112,8 @@ class FishKind : public DescribedKind<FishKindParams> {
   std::string doc() const override;
   Result run(const Params& params) const override;
   CostEstimate estimateCost(const Params& params) const override;
+  // A recorded swim skinned on every frame (kinds/fish_render.cpp).
+  const RenderHook* renderHook() const override;
 };
 
 }  // namespace creaturelab::kinds

@@ -64,6 +64,19 @@ for k in range(2):
     assert gltf["accessors"][prim["attributes"]["POSITION"]]["count"] == nv
 PY
 
+# creaturelab render draws a fish run through the kind's render hook (kinds/fish_render.cpp), its
+# first recorded frame the undeformed fish: at an exported frame the skin is the run's own OBJ
+# artifact, vertex for vertex.
+frame=$(/usr/bin/python3 -c 'import h5py, sys; print(h5py.File(sys.argv[1])["topology/skin_frames"][1])' \
+  "$scratch/a/point_000001.h5")
+"$bin" list render | grep -q "on fish runs" || fail "list render shows no fish settings"
+"$bin" render "$scratch/a" --point 1 --frames "$frame" skin_samples_around=8 skin_samples_along=16 \
+  -o "$scratch/render" >/dev/null || fail "render of a fish run failed"
+diff <(grep '^[vf]' "$scratch/a/point_000001_skin_001.obj") \
+  <(grep '^[vf]' "$scratch/render/obj/frame_$(printf %06d "$frame").obj") >/dev/null ||
+  fail "the rendered skin at frame $frame differs from the run's skin_001.obj"
+[ -s "$scratch/render/fish.glb" ] && [ -s "$scratch/render/render.h5" ] || fail "render wrote no fish.glb or render.h5"
+
 # A fish in air at full amplitude blows up: exit 3, the point failed with its step and cause.
 set +e
 # (the spec's soft units at the [reimpl] step: the calibrated body survives in air, studies/fish/units.toml)
