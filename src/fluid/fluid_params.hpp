@@ -116,7 +116,7 @@ struct FluidParams {
   template <class V>
   void describeSquareBox(V& v) {
     v.real("domain_m", domain_width_m, "m", 1e-6, 1e6,
-           "side of the square box; default ten 40 mm bell diameters (Rudolf & Mould Fig. 12)");
+           "side of the square box (Rudolf & Mould Fig. 12: 0.4 m, ten 40 mm bell diameters)");
     v.integer("cells", cells_x, 4, 4096, "cells per side (Rudolf & Mould Fig. 12: 100)");
   }
   void makeSquare() {
@@ -156,14 +156,24 @@ struct FluidParams {
   ViscosityScheme viscosity_scheme = ViscosityScheme::backward_euler;
   double viscosity_tolerance = 1e-10;  ///< ‖b − A u‖∞ ≤ tol · ‖b‖∞
   int viscosity_max_iterations = 1000;
-
-  /// advection, pressure_solver, viscosity_solver.
   template <class V>
-  void describeSchemes(V& v) {
+  void describeViscosityScheme(V& v) {
+    v.choice("viscosity_scheme", viscosity_scheme, {ViscosityScheme::backward_euler, ViscosityScheme::crank_nicolson},
+             "viscous term in time: backward Euler (Stam 1999 §2.2, first order) or Crank-Nicolson (second order "
+             "for that stage alone)");
+  }
+
+  template <class V>
+  void describeAdvection(V& v) {
     v.choice("advection", advection,
              {AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack, AdvectionScheme::upwind2_rk2},
              "semi_lagrangian (Stam 1999, linear interpolation), maccormack (limited, second order) or upwind2_rk2 "
              "(Fromm upwind + Heun, second order, CFL <= 0.5)");
+  }
+  /// advection, pressure_solver, viscosity_solver.
+  template <class V>
+  void describeSchemes(V& v) {
+    describeAdvection(v);
     v.choice("pressure_solver", pressure_solver, {PressureSolverType::fast_direct, PressureSolverType::pcg},
              "exact projection: transform + tridiagonal (uniform box) or MIC(0)-PCG to 1e-10");
     v.choice("viscosity_solver", viscosity_solver, {ViscositySolverType::iterative, ViscositySolverType::fast_direct},
@@ -201,9 +211,20 @@ struct FluidParams {
   /// Threads that share the work of one step, 1..16 (1: none). Results are bitwise the same for
   /// any number (the work is cut by index only; see worker_pool.hpp): this changes only the time.
   int threads = 1;
+  template <class V>
+  void describeThreads(V& v) {
+    v.integer("fluid_threads", threads, 1, 16,
+              "threads inside each fluid step; results are bitwise the same for any count (fluid/worker_pool.hpp); "
+              "helps only on idle cores");
+  }
 
   /// A step whose velocity is not finite or exceeds this speed throws FluidBlowUpError.
   double blowup_speed_m_per_s = 100.0;
+  template <class V>
+  void describeBlowupSpeed(V& v) {
+    v.real("blowup_speed_m_per_s", blowup_speed_m_per_s, "m/s", 1e-6, 1e6,
+           "a fluid faster than this (or not finite) stops the run as a blow-up");
+  }
 
   double cellSize_m() const { return domain_width_m / cells_x; }
 

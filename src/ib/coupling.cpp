@@ -21,18 +21,24 @@ std::optional<ImplicitMobility> parseImplicitMobility(std::string_view name) {
   return std::nullopt;
 }
 
+std::string CouplingParams::validate() const {
+  std::string out;
+  auto problem = [&](const std::string& text) { out += (out.empty() ? "" : "; ") + text; };
+  if (!(implicit_mass_factor > 0)) problem("implicit_mass_factor must be > 0");
+  if (!(implicit_theta >= 0.5 && implicit_theta <= 1.0)) problem("implicit_theta must lie in [0.5, 1]");
+  if (!(factor_reuse.tolerance >= 0) || factor_reuse.max_sweeps < 1)
+    problem("factor reuse needs a tolerance >= 0 and at least one sweep");
+  return out;
+}
+
 ImmersedBoundary2::ImmersedBoundary2(fluid::FluidSolver2& fluid, const ElasticBody& body,
                                      std::vector<fluid::Vec2> markers_m, CouplingParams params)
     : fluid_(fluid), body_(body), markers_(std::move(markers_m)), params_(params), banded_solver_(params.factor_reuse) {
   if (static_cast<int>(markers_.size()) != body_.markerCount())
     throw std::invalid_argument("immersed boundary: " + std::to_string(markers_.size()) + " markers for a body of " +
                                 std::to_string(body_.markerCount()));
-  if (!(params_.implicit_mass_factor > 0))
-    throw std::invalid_argument("immersed boundary: implicit_mass_factor must be > 0");
-  if (!(params_.implicit_theta >= 0.5 && params_.implicit_theta <= 1.0))
-    throw std::invalid_argument("immersed boundary: implicit_theta must lie in [0.5, 1]");
-  if (!(params_.factor_reuse.tolerance >= 0) || params_.factor_reuse.max_sweeps < 1)
-    throw std::invalid_argument("immersed boundary: factor reuse needs a tolerance >= 0 and at least one sweep");
+  if (const std::string err = params_.validate(); !err.empty())
+    throw std::invalid_argument("immersed boundary: " + err);
   if (!params_.marker_kernel_scales.empty() && params_.marker_kernel_scales.size() != markers_.size())
     throw std::invalid_argument("immersed boundary: " + std::to_string(params_.marker_kernel_scales.size()) +
                                 " marker kernel stretches for " + std::to_string(markers_.size()) + " markers");

@@ -66,6 +66,7 @@
 // run with an error.
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -128,7 +129,7 @@ struct CouplingParams {
   int kernel_scale = 1;
   // Each marker's own stretch (Transfer::locate), e.g. filaments narrower than the body they hang
   // from; empty: kernel_scale for every marker.
-  std::vector<int> marker_kernel_scales;
+  std::vector<int> marker_kernel_scales{};
   bool semi_implicit = true;
   ImplicitMobility mobility = ImplicitMobility::stencil;
   double implicit_mass_factor = 1.0;  // local_mass only: m = factor · ρ dx², see above
@@ -143,7 +144,31 @@ struct CouplingParams {
   // 0 factors the formed system every step (the plain banded LU, bit for bit). Not the dense solve:
   // on the paper's 100² grid at 0.01 s the system changes so much per step that the refinement
   // nearly always fails (tried, slower).
-  FactorReuse factor_reuse;
+  FactorReuse factor_reuse{};
+
+  /// kernel, semi_implicit, implicit_mobility, implicit_mass_factor, implicit_theta and
+  /// implicit_reuse_tolerance for the immersed-boundary kinds (kinds/describe.hpp: name, unit, range,
+  /// one-line doc); the kernel's stretch and the per-marker ones are the kind's to derive.
+  template <class V>
+  void describe(V& v) {
+    v.choice("kernel", kernel, {Kernel::bilinear, Kernel::peskin4},
+             "spreading/interpolation: the jellyfish paper's bilinear hat (Rudolf & Mould §3.2) or Peskin's 4-point "
+             "function (Peskin 2002 §6)");
+    v.boolean("semi_implicit", semi_implicit, "linearised implicit elastic forces (ib/coupling.hpp); false = explicit Peskin");
+    v.choice("implicit_mobility", mobility, {ImplicitMobility::stencil, ImplicitMobility::local_mass},
+             "fluid response assumed by the semi-implicit force: through the markers' stencils, or each marker alone "
+             "(ib/coupling.hpp)");
+    v.real("implicit_mass_factor", implicit_mass_factor, "", 1e-6, 100, "local_mass only: added mass per marker in rho dx^2");
+    v.real("implicit_theta", implicit_theta, "", 0.5, 1.0,
+           "semi-implicit only: elastic force at X^n + theta dt U* (ib/coupling.hpp); 1 = backward Euler, which damps "
+           "the recoil; 0.5 = the step's middle");
+    v.real("implicit_reuse_tolerance", factor_reuse.tolerance, "", 0, 1e-4,
+           "banded solve (>= 300 markers): relative residual accepted when refining on earlier LU factors, else "
+           "refactored (ib/reused_banded_solve.hpp); 0 = every step");
+  }
+
+  /// "" when usable; otherwise one sentence per problem, joined by "; ".
+  std::string validate() const;
 };
 
 struct CouplingStepReport {

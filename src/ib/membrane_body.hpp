@@ -41,7 +41,20 @@ struct MembraneParams {
   double semi_axis_x_m = 0.25;   ///< along x
   double semi_axis_y_m = 0.15;   ///< along y
   int markers = 256;             ///< N ≥ 3, equally spaced in arc length on the ellipse
-  double stiffness_n_per_m = 1.0;  ///< k per metre of depth (N/m²), > 0
+  /// k per metre of depth (N/m²), > 0; about the jellyfish bell mesoglea's E t / L.
+  double stiffness_n_per_m = 2000.0;
+
+  /// semi_axis_x_m, semi_axis_y_m, markers, stiffness_n_per_m for the membrane kind
+  /// (kinds/describe.hpp); the centre is the kind's box's.
+  template <class V>
+  void describe(V& v) {
+    v.real("semi_axis_x_m", semi_axis_x_m, "m", 1e-6, 100, "initial ellipse's semi-axis along x (centred in the box)");
+    v.real("semi_axis_y_m", semi_axis_y_m, "m", 1e-6, 100, "initial ellipse's semi-axis along y");
+    v.integer("markers", markers, 3, 100000,
+              "markers, equally spaced on the ellipse; keep them < dx/2 apart (gaps of 1-2 cells leak)");
+    v.real("stiffness_n_per_m", stiffness_n_per_m, "N/m^2", 1e-12, 1e12,
+           "zero-rest-length spring constant, N/m per metre of depth; tension = k x segment length");
+  }
 
   /// "" when usable; otherwise one sentence per problem, joined by "; ".
   std::string validate() const;

@@ -5,6 +5,42 @@
 
 namespace creaturelab::kinds {
 
+fluid::FluidParams fixedStepBox(fluid::FluidParams f, double dt_s) {
+  f.makeSquare();
+  f.time_step_policy = fluid::TimeStepPolicy::fixed;
+  f.fixed_step_s = dt_s;
+  return f;
+}
+
+KernelScale kernelScale(ib::Kernel kernel, double radius_m, double dx_m, const std::string& radius_name) {
+  if (radius_m == 0) return {};
+  const int reach_cells = ib::kernelSupportCells(kernel) / 2;
+  const double scale = radius_m / (reach_cells * dx_m);
+  // A grid too coarse for the radius keeps its own kernel (never narrower than the grid can
+  // carry); the kernel_cells metric records the stretch each point ran with.
+  if (scale <= 1.0 + 1e-6) return {};
+  const long whole = std::lround(scale);
+  const int largest = ib::kMaxStencilFaces / ib::kernelSupportCells(kernel);
+  if (whole > largest || std::abs(scale - double(whole)) > 1e-6 * scale) {
+    char msg[400];
+    std::snprintf(msg, sizeof msg,
+                  "%s = %g m must be a whole multiple (at most %d) of the %s kernel's reach of %d "
+                  "cell(s) of %g m (domain_m / cells), or at most one reach; it is %.4g reaches: change "
+                  "%s or cells",
+                  radius_name.c_str(), radius_m, largest, std::string(ib::to_string(kernel)).c_str(), reach_cells,
+                  dx_m, scale, radius_name.c_str());
+    return {1, msg};
+  }
+  return {int(whole), ""};
+}
+
+KernelScale kernelScale(const ParamReader& r) { return kernelScale(r, "kernel_radius_m"); }
+
+KernelScale kernelScale(const ParamReader& r, const std::string& radius_param) {
+  return kernelScale(*ib::parseKernel(r.text("kernel")), r.real(radius_param),
+                     r.real("domain_m") / double(r.integer("cells")), radius_param);
+}
+
 ParamSpec viscositySchemeSpec() {
   return choice("viscosity_scheme", "backward_euler", {"backward_euler", "crank_nicolson"},
                 "viscous term in time: backward Euler (Stam 1999 §2.2, first order) or Crank-Nicolson (second order "
@@ -59,33 +95,6 @@ fluid::FluidParams squareFluidParams(const ParamReader& r, double dt_s) {
 }
 
 fluid::FluidParams fluidBoxParams(const ParamReader& r) { return squareFluidParams(r, r.real("dt_s")); }
-
-KernelScale kernelScale(const ParamReader& r) { return kernelScale(r, "kernel_radius_m"); }
-
-KernelScale kernelScale(const ParamReader& r, const std::string& radius_param) {
-  const double radius_m = r.real(radius_param);
-  if (radius_m == 0) return {};
-  const ib::Kernel kernel = *ib::parseKernel(r.text("kernel"));
-  const int reach_cells = ib::kernelSupportCells(kernel) / 2;
-  const double dx_m = r.real("domain_m") / double(r.integer("cells"));
-  const double scale = radius_m / (reach_cells * dx_m);
-  // A grid too coarse for the radius keeps its own kernel (never narrower than the grid can
-  // carry); the kernel_cells metric records the stretch each point ran with.
-  if (scale <= 1.0 + 1e-6) return {};
-  const long whole = std::lround(scale);
-  const int largest = ib::kMaxStencilFaces / ib::kernelSupportCells(kernel);
-  if (whole > largest || std::abs(scale - double(whole)) > 1e-6 * scale) {
-    char msg[400];
-    std::snprintf(msg, sizeof msg,
-                  "%s = %g m must be a whole multiple (at most %d) of the %s kernel's reach of %d "
-                  "cell(s) of %g m (domain_m / cells), or at most one reach; it is %.4g reaches: change "
-                  "%s or cells",
-                  radius_param.c_str(), radius_m, largest, r.text("kernel").c_str(), reach_cells, dx_m, scale,
-                  radius_param.c_str());
-    return {1, msg};
-  }
-  return {int(whole), ""};
-}
 
 ib::CouplingParams couplingParams(const ParamReader& r) {
   ib::CouplingParams c;

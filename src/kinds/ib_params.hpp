@@ -1,8 +1,7 @@
 #pragma once
-// The parameters the immersed-boundary kinds (jellyfish, membrane) share: a fluid in a square
-// free-slip box and its coupling to the markers (ib/coupling.hpp). Declared and read in one place
-// so that the names a kind declares are the names it reads. Defaults and docs stay each kind's:
-// the jellyfish cites its paper's figures, the membrane its own test of the method.
+// What the immersed-boundary kinds (jellyfish, membrane) share: a fluid in a square free-slip box at a
+// fixed coupled step, and the kernel's support radius in metres. The solver's structs describe their
+// own fields (fluid::FluidParams, ib::CouplingParams); a kind composes them with its own defaults.
 #include <string>
 #include <vector>
 
@@ -11,6 +10,42 @@
 #include "kinds/params.hpp"
 
 namespace creaturelab::kinds {
+
+// domain_m, cells, density_kg_per_m3, kinematic_viscosity_m2_per_s, advection, viscosity_scheme,
+// fluid_threads: the fluid of a box a body is immersed in (fluid::FluidParams' own descriptions).
+template <class V>
+void describeFluidBox(V& v, fluid::FluidParams& f) {
+  f.describeSquareBox(v);
+  f.describeFluid(v);
+  f.describeAdvection(v);
+  f.describeViscosityScheme(v);
+  f.describeThreads(v);
+}
+
+// kernel_radius_m: the kernel's support as a length, so that a grid study refines one body.
+template <class V>
+void describeKernelRadius(V& v, double& radius_m) {
+  v.real("kernel_radius_m", radius_m, "m", 0, 10,
+         "radius of the kernel's support; 0 = the grid's own (1 cell bilinear, 2 peskin4), else a whole multiple "
+         "of that (ib/kernel.hpp)");
+}
+
+// The box made square (height and rows from the width and columns), stepped at the fixed dt_s: the
+// coupled step is fixed, and a fluid running away is caught as a blow-up.
+fluid::FluidParams fixedStepBox(fluid::FluidParams box, double dt_s);
+
+// The kernel stretch that makes `kernel`'s support radius radius_m on a grid of cell dx_m: 1 for radius
+// 0 and for a radius within one reach (a grid too coarse for it keeps its own kernel). Empty error, or a
+// message naming radius_name when a larger radius is not a whole multiple of the kernel's reach in
+// cells, or needs a stencil wider than kMaxStencilFaces.
+struct KernelScale {
+  int scale = 1;
+  std::string error;
+};
+KernelScale kernelScale(ib::Kernel kernel, double radius_m, double dx_m,
+                        const std::string& radius_name = "kernel_radius_m");
+
+// --- Read by name, until the jellyfish and control_fluid kinds compose the described structs above.
 
 // What each kind says about its fluid box.
 struct FluidBoxDefaults {
@@ -54,16 +89,9 @@ fluid::FluidParams squareFluidParams(const ParamReader& r, double dt_s);
 // which each kind declares itself: their ranges and defaults differ.
 fluid::FluidParams fluidBoxParams(const ParamReader& r);
 
-// The kernel stretch that makes the kernel's radius kernel_radius_m on this kind's grid (cell
-// domain_m / cells): 1 for radius 0 and for a radius within one reach (a grid too coarse for it keeps
-// its own kernel). Empty error, or a message naming the parameters when a larger radius is not a
-// whole multiple of the kernel's reach in cells, or needs a stencil wider than kMaxStencilFaces.
-struct KernelScale {
-  int scale = 1;
-  std::string error;
-};
+// kernelScale above for the radius parameter radius_param (default kernel_radius_m), the kernel and
+// the grid read by name.
 KernelScale kernelScale(const ParamReader& r);
-// The same for another radius parameter (e.g. the jellyfish's tentacle_kernel_radius_m).
 KernelScale kernelScale(const ParamReader& r, const std::string& radius_param);
 
 ib::CouplingParams couplingParams(const ParamReader& r);

@@ -8,6 +8,7 @@ creaturelab_test(fluid_unit_tests unit
     ${CMAKE_CURRENT_LIST_DIR}/fluid_threads_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fluid_fast_diffusion_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fluid_inflow_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/fluid_recorder_test.cpp
   LIBS cl_fluid)
 
 # The sampler's two-, four- and eight-lane interpolations against its scalar path, bit for bit: built with the

@@ -3,5 +3,6 @@
 creaturelab_test(kinds_unit_test unit
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/kinds_describe_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/kinds_membrane_test.cpp
   LIBS cl_kinds
 )
