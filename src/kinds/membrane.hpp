@@ -5,19 +5,18 @@
 #include "ib/coupling.hpp"
 #include "ib/membrane_body.hpp"
 #include "kinds/describe_kind.hpp"
+#include "kinds/describe_notes.hpp"
 #include "kinds/ib_params.hpp"
 
 namespace creaturelab::kinds {
 
 // The membrane kind's parameters: the coupling (ib::CouplingParams), the fluid in its square free-slip
 // box (fluid::FluidParams), the membrane (ib::MembraneParams, whose in-class defaults are this kind's),
-// the step and the output. The shared structs carry this test's defaults where they differ.
+// the step and the output. The shared structs carry this test's defaults where they differ, each with
+// its reason in the description.
 struct MembraneKindParams {
-  // The jellyfish paper's bilinear hat (§3.2), which the kernels experiment sets beside Peskin's.
   ib::CouplingParams coupling{.kernel = ib::Kernel::bilinear};
   double kernel_radius_m = 0.0;
-  // A viscous liquid in a 1 m box: the test is of the method, not of sea water; nu = 1e-2 m^2/s
-  // (10 000 x water) damps the relaxation within a few seconds, and 10 m/s is about 200x its flow.
   fluid::FluidParams fluid{.domain_width_m = 1.0,
                            .domain_height_m = 1.0,
                            .kinematic_viscosity_m2_per_s = 1e-2,
@@ -29,13 +28,22 @@ struct MembraneKindParams {
 
   template <class V>
   void describe(V& v) {
-    coupling.describe(v);
+    // Where this test's defaults differ from the shared structs': why.
+    DefaultNotes noted(v, {
+        {"kernel", "the jellyfish paper's hat, which the kernels experiment sets beside Peskin's"},
+        {"implicit_theta", "1, which the membrane test compares with 0.5"},
+        {"domain_m", "1 m: a viscous liquid in a free-slip box, a test of the method, not of sea water"},
+        {"cells", "100, the larger of the jellyfish paper's grids (50 and 100)"},
+        {"kinematic_viscosity_m2_per_s", "1e-2 (10 000 x water) damps the relaxation within a few seconds"},
+        {"blowup_speed_m_per_s", "10, about 200x the default relaxation flow"},
+    });
+    coupling.describe(noted);
     describeKernelRadius(v, kernel_radius_m);
-    describeFluidBox(v, fluid);
+    describeFluidBox(noted, fluid);
     membrane.describe(v);
     v.real("dt_s", dt_s, "s", 1e-7, 1, "coupled step (fixed)");
     v.real("duration_s", duration_s, "s", 1e-6, 1e6, "simulated time");
-    fluid.describeBlowupSpeed(v);
+    fluid.describeBlowupSpeed(noted);
     v.real("frame_rate_hz", frame_rate_hz, "Hz", 1e-3, 1e4, "series and marker frames per second");
   }
 

@@ -38,6 +38,20 @@ TEST(MembraneKind, ListsItsStructsDefaultsAndBuildsTheSolversStructs) {
   EXPECT_EQ(q.couplingParams().kernel_scale, 2);
 }
 
+// The shared structs' docs, each with this test's reason where its default differs (kinds/describe_notes.hpp).
+TEST(MembraneKind, ItsOwnDefaultsOfSharedFieldsSayWhy) {
+  const MembraneKind kind;
+  for (const ParamSpec& spec : kind.params()) {
+    const bool noted = spec.doc.find("; default ") != std::string::npos;
+    const bool shared_with_own_default = spec.name == "kernel" || spec.name == "implicit_theta" ||
+                                         spec.name == "domain_m" || spec.name == "cells" ||
+                                         spec.name == "kinematic_viscosity_m2_per_s" ||
+                                         spec.name == "blowup_speed_m_per_s";
+    EXPECT_EQ(noted, shared_with_own_default) << spec.name << ": " << spec.doc;
+  }
+  EXPECT_EQ(schemaOf<MembraneKindParams>().size(), kind.params().size());
+}
+
 TEST(MembraneKind, ValidationNamesTheParametersThatDisagree) {
   const MembraneKind kind;
   Params p = withDefaults(kind, {});
