@@ -60,7 +60,7 @@ void addChain(springs::Network<2>& net, const std::vector<fluid::Vec2>& x, const
 }  // namespace
 
 BellModel buildBell(const BellParams& p) {
-  if (const std::string err = validate(p); !err.empty()) throw std::invalid_argument(err);
+  if (const std::string err = p.validate(); !err.empty()) throw std::invalid_argument(err);
   BellModel model;
   const double a = 0.5 * p.diameter_m - p.thickness_m;
   const double b = p.height_m - p.thickness_m;

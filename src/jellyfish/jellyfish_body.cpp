@@ -7,7 +7,7 @@
 namespace creaturelab::jellyfish {
 namespace {
 void validateOrThrow(const ActivationParams& activation) {
-  if (const std::string err = validate(activation); !err.empty()) throw std::invalid_argument(err);
+  if (const std::string err = activation.validate(); !err.empty()) throw std::invalid_argument(err);
 }
 }  // namespace
 

@@ -16,7 +16,8 @@ bool positive(double v) { return std::isfinite(v) && v > 0; }
 
 }  // namespace
 
-std::string validate(const BellParams& p) {
+std::string BellParams::validate() const {
+  const BellParams& p = *this;
   Problems e;
   if (!positive(p.diameter_m)) e.add("bell diameter must be > 0");
   if (!positive(p.height_m)) e.add("bell height must be > 0");
@@ -44,7 +45,8 @@ std::string validate(const BellParams& p) {
   return e.str();
 }
 
-std::string validate(const ActivationParams& a) {
+std::string ActivationParams::validate() const {
+  const ActivationParams& a = *this;
   Problems e;
   if (!positive(a.contraction_hz)) e.add("contraction frequency must be > 0");
   if (a.knots.empty() || a.knots.size() > 16) e.add("the contraction curve needs 1 to 16 knots");
@@ -78,6 +80,33 @@ std::string validate(const ActivationParams& a) {
             " of the relaxed length; its knots or tangents overshoot (keep it within (0.05, 1.5])");
   }
   return e.str();
+}
+
+std::string KnotTable::validate() const {
+  const KnotTable defaults;
+  for (int k = int(std::clamp<std::int64_t>(used, 0, kMax)); k < kMax; ++k) {
+    const Knot &given = knots[k], &d = defaults.knots[k];
+    if (given.phase != d.phase || given.value != d.value || given.tangent != d.tangent)
+      return "knot" + std::to_string(k) + "_* is set but contraction_knots = " + std::to_string(used) +
+             ": raise contraction_knots or remove the knot";
+  }
+  return "";
+}
+
+BellParams paperBell() {
+  BellParams p;
+  p.segments = 32;
+  p.bending_rigidity_n_m = 1.186 * 1.98319e-3;
+  p.muscle_model = MuscleModel::rest_length;
+  p.muscle_tension_n_per_m2 = 1.0;
+  p.tentacle_root_spacing_m = 0.004;
+  return p;
+}
+
+ActivationParams paperActivation() {
+  ActivationParams a;
+  a.shape = ActivationShape::hermite;
+  return a;
 }
 
 }  // namespace creaturelab::jellyfish

@@ -26,8 +26,45 @@ ib::CouplingParams couplingFor(const BellModel& model, const SwimmerConfig& c) {
 
 }  // namespace
 
+fluid::FluidParams jellyfishFluid() {
+  fluid::FluidParams f;
+  f.domain_width_m = 0.25;
+  f.cells_x = 250;
+  f.cells_y = 360;
+  f.domain_height_m = f.cells_y * f.domain_width_m / f.cells_x;
+  f.kinematic_viscosity_m2_per_s = 5e-5;
+  f.advection = fluid::AdvectionScheme::maccormack;
+  f.force_stage = fluid::ForceStage::after_advection;
+  f.viscosity_tolerance = 1e-8;
+  // The coupled step is fixed; a fluid running away is caught as a blow-up.
+  f.time_step_policy = fluid::TimeStepPolicy::fixed;
+  f.fixed_step_s = 0.00125;
+  f.blowup_speed_m_per_s = 5.0;
+  return f;
+}
+
+ib::CouplingParams jellyfishCoupling() {
+  ib::CouplingParams c;
+  c.kernel = ib::Kernel::peskin4;
+  c.kernel_scale = 2;
+  c.implicit_theta = 0.5;
+  return c;
+}
+
+SwimmerConfig paperSwimmer() {
+  SwimmerConfig c;
+  c.bell = paperBell();
+  c.activation = paperActivation();
+  c.fluid = fluid::FluidParams{};
+  c.coupling = ib::CouplingParams{};
+  c.tentacle_kernel_scale = 0;
+  c.dt_s = 0.005;
+  c.start_y_fraction = 0.25;
+  return c;
+}
+
 Swimmer::Swimmer(const SwimmerConfig& config) : config_(config) {
-  if (const std::string err = validate(config.activation); !err.empty()) throw std::invalid_argument(err);
+  if (const std::string err = config.activation.validate(); !err.empty()) throw std::invalid_argument(err);
   if (!(config.dt_s > 0) || !std::isfinite(config.dt_s)) throw std::invalid_argument("time step must be > 0");
   fluid_ = std::make_unique<fluid::FluidSolver2>(config.fluid);
   body_ = std::make_unique<JellyfishBody>(buildBell(config.bell), config.activation);

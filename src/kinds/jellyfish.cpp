@@ -3,143 +3,38 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <limits>
+#include <stdexcept>
 
 #include "fluid/diagnostics2.hpp"
-#include "jellyfish/ringdown.hpp"
-#include "jellyfish/swimmer.hpp"
 #include "kinds/ib_params.hpp"
 
 namespace creaturelab::kinds {
 namespace {
 
-using jellyfish::Knot;
-
-std::string knotName(int k, const char* field) { return "knot" + std::to_string(k) + "_" + field; }
-
-// The default curve (jellyfish_params.hpp), padded with unused knots at (0, 1, 0).
-Knot defaultKnot(int k) {
-  const jellyfish::ActivationParams defaults;
-  if (k < int(defaults.knots.size())) return defaults.knots[k];
-  return {0.0, 1.0, 0.0};
-}
-
-std::vector<Knot> knots(const ParamReader& r) {
-  std::vector<Knot> out;
-  for (int k = 0; k < int(r.integer("contraction_knots")); ++k)
-    out.push_back({r.real(knotName(k, "phase")), r.real(knotName(k, "value")), r.real(knotName(k, "tangent"))});
-  return out;
-}
-
-// Constants of the active-tension bell the paper does not give: B was chosen on a 200² grid to put the pluck's
-// natural frequency f_n near the resonant 0.7 Hz (Rudolf & Mould 2009 §3.3, Fig. 5), T_max in a less viscous
-// fluid to close the bell to Fig. 3's 0.56 of its diameter; on the default setting the bell rings lower and
-// closes less (experiments/jellyfish/frequency.toml's pluck, morphology.toml's known deviation).
-constexpr double kCalibratedBendingRigidity = 1.0e-4;
-constexpr double kCalibratedTension = 14.0;
-
-// The defaults are the converged setting of the jellyfish convergence experiments (grid, step, scheme and box
-// refined together): a viscous fluid, the activation pulse, Peskin's kernel at the bell's 4 mm, 256 segments,
-// 1 mm cells, the force after the advection, a 0.25 m by 0.36 m box.
-
 // bell_segments = 0 follows the grid: the fewest even segments whose drawn length is at most
 // marker_spacing_cells cells (markers about half a cell apart, so that the boundary does not leak as the grid
 // is refined; Peskin 2002).
-int bellSegments(const ParamReader& r) {
-  const long given = r.integer("bell_segments");
-  if (given > 0) return int(given);
+int bellSegments(const JellyfishKindParams& q) {
+  if (q.swimmer.bell.segments > 0) return q.swimmer.bell.segments;
   jellyfish::BellParams probe;
-  probe.diameter_m = r.real("bell_diameter_m");
-  probe.height_m = r.real("bell_height_m");
-  probe.thickness_m = r.real("bell_thickness_m");
+  probe.diameter_m = q.swimmer.bell.diameter_m;
+  probe.height_m = q.swimmer.bell.height_m;
+  probe.thickness_m = q.swimmer.bell.thickness_m;
   probe.segments = 64;
   probe.tentacles = false;
-  if (!jellyfish::validate(probe).empty()) return 32;  // validate() reports the geometry's problem
+  if (!probe.validate().empty()) return 32;  // validate() reports the geometry's problem
   const double arc_m = 64 * jellyfish::buildBell(probe).segment_m;
-  const double spacing_m = r.real("marker_spacing_cells") * r.real("domain_m") / double(r.integer("cells"));
+  const double spacing_m = q.marker_spacing_cells * q.swimmer.fluid.domain_width_m / double(q.swimmer.fluid.cells_x);
   const int segments = 2 * int(std::ceil(arc_m / spacing_m / 2.0));
   return std::max(8, segments);
 }
 
-jellyfish::SwimmerConfig config(const ParamReader& r) {
-  jellyfish::SwimmerConfig c;
-  auto& b = c.bell;
-  b.diameter_m = r.real("bell_diameter_m");
-  b.height_m = r.real("bell_height_m");
-  b.thickness_m = r.real("bell_thickness_m");
-  b.segments = bellSegments(r);
-  b.bell_modulus_pa = r.real("bell_modulus_pa") * r.real("stiffness_scale");
-  b.bending_rigidity_n_m = r.real("bending_rigidity_n_m") * r.real("stiffness_scale");
-  b.muscle_model = r.text("muscle_model") == "active_tension" ? jellyfish::MuscleModel::active_tension
-                                                              : jellyfish::MuscleModel::rest_length;
-  b.muscle_band_fraction = r.real("muscle_band_fraction");
-  b.muscle_modulus_pa = r.real("muscle_modulus_pa");
-  b.muscle_section_per_arc = r.real("muscle_section_per_arc");
-  b.muscle_tension_n_per_m2 = r.real("muscle_tension_n_per_m2");
-  b.tentacles = r.boolean("tentacles");
-  b.tentacle_length_m = r.real("tentacle_length_m");
-  b.tentacle_area_factor = r.real("tentacle_area_factor");
-  b.tentacles_per_side = int(r.integer("tentacles_per_side"));
-  b.tentacle_root_spacing_m = 2 * r.real("tentacle_kernel_radius_m");
-  // Darcy: α = κ / μ, the permeability length over the dynamic viscosity ρ ν.
-  b.tentacle_porosity_m_per_pa_s =
-      r.real("tentacle_permeability_m") / (r.real("density_kg_per_m3") * r.real("kinematic_viscosity_m2_per_s"));
-
-  auto& a = c.activation;
-  a.contraction_hz = r.real("contraction_hz");
-  a.knots = knots(r);
-  a.expansion = r.text("expansion") == "unison" ? jellyfish::Expansion::unison : jellyfish::Expansion::staggered;
-  a.stagger = r.real("stagger");
-  a.synaptic_delay_s = r.real("synaptic_delay_s");
-  a.shape = r.text("activation_shape") == "pulse" ? jellyfish::ActivationShape::pulse : jellyfish::ActivationShape::hermite;
-  a.pulse_duration_s = r.real("pulse_duration_s");
-  a.pulse_stagger = r.real("pulse_stagger");
-  a.active_cycles = int(r.integer("active_cycles"));
-
-  c.fluid = fluidBoxParams(r);
-  // A tall box: the bell swims up its axis and must not meet the top within the window.
-  c.fluid.cells_y = int(std::lround(r.real("box_aspect") * c.fluid.cells_x));
-  c.fluid.domain_height_m = c.fluid.cells_y * c.fluid.domain_width_m / c.fluid.cells_x;
-  c.coupling = couplingParams(r);
-  c.tentacle_kernel_scale = kernelScale(r, "tentacle_kernel_radius_m").scale;
-  c.fluid.viscosity_tolerance = r.real("viscosity_tolerance");
-  c.fluid.force_stage = *fluid::parseForceStage(r.text("force_stage"));
-  c.dt_s = r.real("dt_s");
-  c.start_y_fraction = r.real("start_y_fraction");
-  return c;
-}
-
-// Times of a run: warm-up cycles, then the measured window; every time lands on a step.
-struct Schedule {
-  long warmup_steps = 0;
-  long total_steps = 0;
-  long work_end_step = 0;  // end of the last whole cycle in the window (muscle work is per whole cycles)
-  double whole_cycles = 0;  // whole cycles in the window; 0: shorter than a cycle (work_end_step = total_steps)
-  long steps_per_frame = 1;
-  long steps_per_field = 0;  // 0: no fields
-};
-
-Schedule schedule(const ParamReader& r) {
-  const double dt = r.real("dt_s");
-  Schedule s;
-  s.warmup_steps = std::lround(r.real("warmup_cycles") / r.real("contraction_hz") / dt);
-  s.total_steps = s.warmup_steps + std::lround(r.real("duration_s") / dt);
-  const double whole_cycles = std::floor(r.real("duration_s") * r.real("contraction_hz") + 1e-9);
-  s.whole_cycles = whole_cycles;
-  s.work_end_step = whole_cycles >= 1 ? s.warmup_steps + std::lround(whole_cycles / r.real("contraction_hz") / dt)
-                                      : s.total_steps;
-  s.work_end_step = std::min(s.work_end_step, s.total_steps);
-  s.steps_per_frame = std::max(1L, std::lround(1.0 / (r.real("frame_rate_hz") * dt)));
-  if (r.boolean("store_fields")) s.steps_per_field = std::max(1L, std::lround(1.0 / (r.real("field_rate_hz") * dt)));
-  return s;
-}
-
 // Passive tracers (Fig. 6): an n x n lattice over the square of side 4 bell diameters around
 // the bell's starting position.
-void seedTracers(const ParamReader& r, const jellyfish::Swimmer& s, std::vector<fluid::Vec2>& out) {
-  const int n = int(r.integer("tracers_per_side"));
-  const double side = 4 * r.real("bell_diameter_m");
-  const double cx = 0.5 * r.real("domain_m");
+void seedTracers(const JellyfishKindParams& q, const jellyfish::Swimmer& s, std::vector<fluid::Vec2>& out) {
+  const int n = int(q.tracers_per_side);
+  const double side = 4 * q.swimmer.bell.diameter_m;
+  const double cx = 0.5 * q.swimmer.fluid.domain_width_m;
   const double cy = s.observe().centroid_m.y;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
@@ -215,143 +110,96 @@ void addTopology(Result& result, const jellyfish::BellModel& m) {
   result.topology["bell_markers"] = {m.bell_markers};
 }
 
+void addMetrics(Result& result, const jellyfish::SwimMeasures& x, const jellyfish::Swimmer& swimmer,
+                const jellyfish::SwimSchedule& plan) {
+  auto& m = result.metrics;
+  m["distance_m"] = {x.distance_m, "m"};
+  m["distance_per_cycle_m"] = {x.distance_per_cycle_m, "m"};
+  m["mean_speed_m_per_s"] = {x.mean_speed_m_per_s, "m/s"};
+  m["cycle_speed_m_per_s"] = {x.cycle_speed_m_per_s, "m/s"};
+  m["whole_cycles"] = {x.whole_cycles, ""};
+  m["min_diameter_ratio"] = {x.min_diameter_ratio, ""};
+  m["stroke_amplitude"] = {x.stroke_amplitude, ""};
+  m["ringdown_hz"] = {x.ringdown_hz, "Hz"};
+  m["natural_hz"] = {x.natural_hz, "Hz"};
+  m["damping_ratio"] = {x.damping_ratio, ""};
+  m["mode_residual"] = {x.mode_residual, ""};
+  m["lateral_drift_m"] = {x.lateral_drift_m, "m"};
+  m["forward_travel_m"] = {x.forward_travel_m, "m"};
+  m["cycle_distance_spread"] = {x.cycle_distance_spread, ""};
+  m["cycle_distance_growth"] = {x.cycle_distance_growth, ""};
+  m["net_fraction"] = {x.net_fraction, ""};
+  m["muscle_work_j"] = {x.muscle_work_j, "J/m"};
+  m["muscle_work_direct_j"] = {x.muscle_work_direct_j, "J/m"};
+  m["cost_of_transport"] = {x.cost_of_transport, "J/(kg m)"};
+  m["cycles"] = {x.cycles, ""};
+  m["max_cfl"] = {x.max_cfl, ""};
+  m["max_marker_speed_m_per_s"] = {x.max_marker_speed_m_per_s, "m/s"};
+  m["markers"] = {double(swimmer.markers_m().size()), ""};
+  m["kernel_cells"] = {double(swimmer.config().coupling.kernel_scale), ""};
+  m["segment_cells"] = {swimmer.body().model().segment_m / swimmer.fluid().grid().dx_m, ""};
+  m["steps"] = {double(plan.total_steps), ""};
+}
+
 }  // namespace
 
-JellyfishKind::JellyfishKind() {
-  const jellyfish::BellParams bell;
-  const jellyfish::ActivationParams act;
-  params_ = {
-      // --- activation (§3.3, Fig. 4)
-      real("contraction_hz", act.contraction_hz, "Hz", 1e-3, 100, "contraction frequency (Fig. 12: 0.7 Hz)"),
-      choice("expansion", "staggered", {"staggered", "unison"},
-             "hermite shape: staggered, aperture springs expand more slowly than apex springs (§3.3, Fig. 4 right), "
-             "or unison; the pulse's is pulse_stagger"),
-      real("stagger", act.stagger, "", 0, 0.99,
-           "apex springs expand 1/(1 - stagger) times faster than the aperture's; not given in the paper "
-           "(jellyfish/contraction_curve.hpp)"),
-      integer("contraction_knots", std::int64_t(act.knots.size()), 1, kMaxKnots,
-              "Hermite knots of the rest-length curve used (knot0_* .. knot{N-1}_*); the paper gives none"),
-      real("synaptic_delay_s", act.synaptic_delay_s, "s", 0, 10,
-           "Spencer's synaptic delay per muscle pair from the aperture (§3.1); 0 = off"),
-      choice("activation_shape", "pulse", {"hermite", "pulse"},
-             "pulse: sin^2 over pulse_duration_s each cycle, then free recoil (Hoover, Porras & Miller 2019); "
-             "hermite: the §3.3 curve, whose held tension does not converge in the grid"),
-      real("pulse_duration_s", act.pulse_duration_s, "s", 1e-4, 100, "pulse shape: length of the contraction pulse"),
-      real("pulse_stagger", act.pulse_stagger, "", 0, 0.99,
-           "pulse shape: the apex muscle's release runs 1/(1 - pulse_stagger) times faster than the aperture's "
-           "(§3.3, Fig. 4 right); 0 = unison"),
-      integer("active_cycles", 0, 0, 100000,
-              "cycles with activation, 0 = all; 1 with a short pulse is a pluck (frequency.toml)"),
-  };
-  for (int k = 0; k < kMaxKnots; ++k) {
-    const Knot d = defaultKnot(k);
-    params_.push_back(real(knotName(k, "phase"), d.phase, "", 0, 0.999999, "phase of knot " + std::to_string(k) + " in [0, 1)"));
-    params_.push_back(real(knotName(k, "value"), d.value, "", 0.05, 1.5,
-                           "rest-length factor at knot " + std::to_string(k) + " (paper: curve between 1 and 0.56)"));
-    params_.push_back(real(knotName(k, "tangent"), d.tangent, "1/cycle", -100, 100,
-                           "slope d value / d phase at knot " + std::to_string(k)));
+jellyfish::SwimmerConfig JellyfishKindParams::setup() const {
+  jellyfish::SwimmerConfig c = swimmer;
+  auto& b = c.bell;
+  b.segments = bellSegments(*this);
+  b.bell_modulus_pa = swimmer.bell.bell_modulus_pa * stiffness_scale;
+  b.bending_rigidity_n_m = swimmer.bell.bending_rigidity_n_m * stiffness_scale;
+  b.tentacle_root_spacing_m = 2 * tentacle_kernel_radius_m;
+  // Darcy: α = κ / μ, the permeability length over the dynamic viscosity ρ ν.
+  b.tentacle_porosity_m_per_pa_s =
+      tentacle_permeability_m / (swimmer.fluid.density_kg_per_m3 * swimmer.fluid.kinematic_viscosity_m2_per_s);
+  c.activation.knots = knots.curve();
+  // A tall box: the bell swims up its axis and must not meet the top within the window.
+  c.fluid.cells_y = int(std::lround(box_aspect * c.fluid.cells_x));
+  c.fluid.domain_height_m = c.fluid.cells_y * c.fluid.domain_width_m / c.fluid.cells_x;
+  // The coupled step is fixed; a fluid running away is caught as a blow-up.
+  c.fluid.time_step_policy = fluid::TimeStepPolicy::fixed;
+  c.fluid.fixed_step_s = c.dt_s;
+  const double dx_m = swimmer.fluid.cellSize_m();
+  c.coupling.kernel_scale = kernelScale(c.coupling.kernel, kernel_radius_m, dx_m, "kernel_radius_m").scale;
+  c.tentacle_kernel_scale = kernelScale(c.coupling.kernel, tentacle_kernel_radius_m, dx_m, "tentacle_kernel_radius_m").scale;
+  return c;
+}
+
+jellyfish::SwimSchedule JellyfishKindParams::schedule() const {
+  return jellyfish::swimSchedule(window, swimmer.dt_s, swimmer.activation.contraction_hz);
+}
+
+std::string JellyfishKindParams::validate() const {
+  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
+  if (std::string err = knots.validate(); !err.empty()) return err;
+  const jellyfish::SwimmerConfig c = setup();
+  if (std::string err = c.bell.validate(); !err.empty()) return err;
+  if (std::string err = c.activation.validate(); !err.empty()) return err;
+  if (std::string err = c.fluid.validate(); !err.empty()) return err;
+  for (const auto& [radius_m, name] : {std::pair{kernel_radius_m, "kernel_radius_m"},
+                                       std::pair{tentacle_kernel_radius_m, "tentacle_kernel_radius_m"}})
+    if (std::string err = kernelScale(c.coupling.kernel, radius_m, swimmer.fluid.cellSize_m(), name).error; !err.empty())
+      return err;
+  if (tentacle_kernel_radius_m > kernel_radius_m && kernel_radius_m > 0)
+    return "tentacle_kernel_radius_m must not exceed kernel_radius_m (filaments are narrower than the bell)";
+  try {
+    jellyfish::buildBell(c.bell);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
   }
-  const std::vector<ParamSpec> bell_specs = {
-      // --- bell (§3.2, Fig. 12)
-      real("bell_diameter_m", bell.diameter_m, "m", 1e-4, 10, "Fig. 12: 40 mm"),
-      real("bell_height_m", bell.height_m, "m", 1e-4, 10, "Fig. 12: 28 mm"),
-      real("bell_thickness_m", bell.thickness_m, "m", 1e-5, 1, "Fig. 12: 4 mm; the markers are the subumbrella"),
-      integer("bell_segments", 256, 0, 2048,
-              "springs along the subumbrella (even, >= 8); 0 = follow the grid (marker_spacing_cells); 256 keeps one "
-              "body, markers <= 0.5 cells apart, in the grid study"),
-      real("marker_spacing_cells", 0.5, "", 0.05, 4,
-           "bell_segments = 0: largest marker spacing in cells; 0.5 is Peskin 2002's rule and keeps the membrane's "
-           "leak small"),
-      real("bell_modulus_pa", bell.bell_modulus_pa, "Pa", 1e-6, 1e12, "bell mesoglea, λ = 1186 Pa (Fig. 12); k = E t / L"),
-      real("bending_rigidity_n_m", kCalibratedBendingRigidity, "N m", 0, 1e6,
-           "bending rigidity B per metre of depth (a joint's angular spring is B / L); not given by the paper, "
-           "chosen on a 200² grid for a pluck ringing near §3.3's resonant 0.7 Hz"),
-      real("stiffness_scale", 1.0, "", 1e-3, 1e3,
-           "multiplies bell_modulus_pa and bending_rigidity_n_m together"),
-      choice("muscle_model", "active_tension", {"rest_length", "active_tension"},
-             "active_tension: a tension T_max a(t) that the elastic bell re-expands against, so the stroke can "
-             "resonate; rest_length: the paper's rest-length curve (§3.3)"),
-      real("muscle_band_fraction", bell.muscle_band_fraction, "", 0.01, 0.99,
-           "fraction of the half-arc from the aperture that the muscle band covers (Fig. 4's model: 14 of 16)"),
-      real("muscle_modulus_pa", bell.muscle_modulus_pa, "Pa", 1e-6, 1e12, "circumferential muscle, 400 kPa (§3.2)"),
-      real("muscle_section_per_arc", bell.muscle_section_per_arc, "", 1e-9, 10,
-           "rest_length: muscle cross-section per metre of depth per metre of band arc; not given "
-           "(jellyfish_params.hpp)"),
-      real("muscle_tension_n_per_m2", kCalibratedTension, "N/m^2", 0, 1e9,
-           "active_tension: peak tension per metre of depth per metre of band arc; not given, calibrated to close the "
-           "bell toward Fig. 3's 0.56 of its diameter"),
-      boolean("tentacles", bell.tentacles, "passive tentacle chains at the aperture (§3.2)"),
-      real("tentacle_length_m", bell.tentacle_length_m, "m", 1e-5, 10, "not given; half a diameter"),
-      real("tentacle_area_factor", bell.tentacle_area_factor, "", 1e-9, 10, "Fig. 12: 1/100 of the bell's section"),
-      integer("tentacles_per_side", bell.tentacles_per_side, 1, 8,
-              "tentacle chains per side of the slice, from the aperture inward, roots two tentacle kernel radii "
-              "apart; not given (§3.2: one per aperture point)"),
-      real("tentacle_kernel_radius_m", 0.004, "m", 0, 10,
-           "the tentacles' own kernel support radius (at most kernel_radius_m; 0 = the grid's kernel); the "
-           "default is the bell's: 2 mm filaments made porous lose their chain on the 1 mm grid"),
-      real("tentacle_permeability_m", 0.0, "m", 0, 10,
-           "Darcy permeability over thickness of a tentacle chain, slip = permeability / (rho nu) x normal load "
-           "per length (Kim & Peskin's porous boundary); 0 = impermeable; 1.7e-3 estimates a ring of 16 "
-           "filaments 0.5 mm thick in Stokes flow, h ln(h/d) / 4 pi"),
-  };
-  // --- fluid (§3.2, Fig. 12)
-  const std::vector<ParamSpec> fluid_specs = fluidBoxSpecs({
-      .domain_m = 0.25,
-      .domain_doc = "width of the free-slip box (its height is box_aspect times it): 6.25 bell diameters, "
-                    "chosen close to the paper's 10-diameter box (§3.2) in distance per cycle",
-      .cells_doc = "fluid cells across the box (Fig. 12: 100 in 0.4 m); 250 gives 1 mm cells, the converged grid of "
-                   "the convergence study",
-      .cells = 250,
-      .density_doc = "paper: '1' without units, read as g/cm^3",
-      .kinematic_viscosity_m2_per_s = 5e-5,
-      .viscosity_doc = "38 times water (Re ~16, within 2-D IB jellyfish studies' 10-300) so 1 mm cells resolve "
-                       "the Stokes layer; the paper's 1.304e-3, read as Pa s, gives 1.304e-6",
-      .advection_doc = "velocity advection: MacCormack (Selle et al. 2008, second order in space), the paper's "
-                       "semi-Lagrangian (Stam 1999), or upwind2_rk2 (Fromm upwind + Heun, CFL <= 0.5)",
-      .advection = "maccormack",
-  });
-  // --- coupling (§3.2; Peskin 2002)
-  const std::vector<ParamSpec> coupling_specs = couplingSpecs({
-      .kernel = "peskin4",
-      .kernel_doc = "spreading/interpolation: Peskin's 4-point function, or the paper's bilinear hat (§3.2), "
-                    "stretched to kernel_radius_m; the hat's bell does not converge in its segments",
-      .mobility_doc = "fluid response assumed by the semi-implicit force: through the markers' stencils "
-                      "(ib/coupling.hpp), or each marker alone",
-      .kernel_radius_m = 0.004,
-      .kernel_radius_doc = "kernel support radius: the bell's 4 mm thickness (Fig. 12), so a grid study refines "
-                           "one body; a whole multiple of the kernel's reach in cells; 0 = the grid's kernel",
-      .implicit_theta = 0.5,
-      .implicit_theta_doc = "0.5 doubles the step at the same accuracy",
-  });
-  const std::vector<ParamSpec> rest = {
-      real("viscosity_tolerance", 1e-8, "", 1e-14, 1e-2,
-           "relative residual of the implicit viscous solve (fluid/diffusion2.hpp); far below the step's and the "
-           "grid's errors"),
-      real("dt_s", 0.00125, "s", 1e-7, 0.1,
-           "coupled step, first order in time (ib/coupling.hpp); with implicit_theta = 0.5 within about 2% of the "
-           "step limit; the paper's 0.01 s is stable"),
-      choice("force_stage", "after_advection", {"before_advection", "after_advection"},
-             "where the bell's force enters the fluid step: after the advection (a source of the momentum equation, "
-             "Peskin 2002 §6), or before it (Stam 1999 §2.2, the paper's order)"),
-      real("blowup_speed_m_per_s", 5.0, "m/s", 1e-6, 1e6, "fluid speed taken as a blow-up (100x the swimming flow)"),
-      real("start_y_fraction", 0.5, "", 0.05, 0.95,
-           "aperture's starting height as a fraction of the box's (the bell swims up, its wake goes down): 0.18 m "
-           "above the floor"),
-      real("box_aspect", 1.44, "", 0.25, 8,
-           "box height / width; cells x box_aspect must be whole (1.44: cells a multiple of 25); tall enough that "
-           "floor and top barely move the swim"),
-      // --- measurement
-      real("warmup_cycles", 1.0, "", 0, 1000, "cycles before the measured window"),
-      real("duration_s", 10.0, "s", 1e-6, 1e6,
-           "measured window, the same for every frequency; compare frequencies by cycle_speed_m_per_s, which counts "
-           "whole cycles only"),
-      real("frame_rate_hz", 25.0, "Hz", 1e-3, 1e4, "series and marker frames"),
-      boolean("store_fields", false, "store vorticity fields (frames × ny × nx) with an XDMF sidecar"),
-      real("field_rate_hz", 10.0, "Hz", 1e-3, 1e4, "field frames per second when store_fields"),
-      integer("tracers_per_side", 0, 0, 200, "trace particles on an n x n lattice around the bell (Fig. 6)"),
-  };
-  for (const auto* specs : {&bell_specs, &fluid_specs, &coupling_specs, &rest})
-    params_.insert(params_.end(), specs->begin(), specs->end());
+  if (3 * swimmer.bell.diameter_m > swimmer.fluid.domain_width_m)
+    return "the box (domain_m) must be at least three bell diameters wide";
+  const double rows = box_aspect * double(swimmer.fluid.cells_x);
+  if (std::abs(rows - std::round(rows)) > 1e-9)
+    return "cells x box_aspect must be a whole number of cells (got " + std::to_string(rows) + ")";
+  if (const long segments = swimmer.bell.segments; segments != 0 && (segments < 8 || segments % 2 != 0))
+    return "bell_segments must be 0 (follow the grid) or even and at least 8, got " + std::to_string(segments);
+  if (swimmer.dt_s > window.duration_s) return "dt_s is longer than duration_s";
+  return "";
+}
+
+JellyfishKind::JellyfishKind() {
   metrics_ = {
       {"distance_m", "m", "axial (+y) displacement of the bell's centroid over the measured window"},
       {"distance_per_cycle_m", "m",
@@ -410,55 +258,22 @@ std::string JellyfishKind::doc() const {
   return "2D jellyfish bell swimming by muscle contraction, IB-coupled to the fluid (Rudolf & Mould 2009 §3)";
 }
 
-std::string JellyfishKind::validate(const Params& p) const {
-  ParamReader r(p);
-  const int used = int(r.integer("contraction_knots"));
-  for (int k = used; k < kMaxKnots; ++k) {
-    const Knot d = defaultKnot(k), given{r.real(knotName(k, "phase")), r.real(knotName(k, "value")),
-                                        r.real(knotName(k, "tangent"))};
-    if (given.phase != d.phase || given.value != d.value || given.tangent != d.tangent)
-      return knotName(k, "*") + " is set but contraction_knots = " + std::to_string(used) +
-             ": raise contraction_knots or remove the knot";
-  }
-  const auto c = config(r);
-  if (std::string err = jellyfish::validate(c.bell); !err.empty()) return err;
-  if (std::string err = jellyfish::validate(c.activation); !err.empty()) return err;
-  if (std::string err = c.fluid.validate(); !err.empty()) return err;
-  if (std::string err = kernelScale(r).error; !err.empty()) return err;
-  if (std::string err = kernelScale(r, "tentacle_kernel_radius_m").error; !err.empty()) return err;
-  if (r.real("tentacle_kernel_radius_m") > r.real("kernel_radius_m") && r.real("kernel_radius_m") > 0)
-    return "tentacle_kernel_radius_m must not exceed kernel_radius_m (filaments are narrower than the bell)";
-  try {
-    jellyfish::buildBell(c.bell);
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  if (3 * r.real("bell_diameter_m") > r.real("domain_m"))
-    return "the box (domain_m) must be at least three bell diameters wide";
-  const double rows = r.real("box_aspect") * double(r.integer("cells"));
-  if (std::abs(rows - std::round(rows)) > 1e-9)
-    return "cells x box_aspect must be a whole number of cells (got " + std::to_string(rows) + ")";
-  if (const long segments = r.integer("bell_segments"); segments != 0 && (segments < 8 || segments % 2 != 0))
-    return "bell_segments must be 0 (follow the grid) or even and at least 8, got " + std::to_string(segments);
-  if (r.real("dt_s") > r.real("duration_s")) return "dt_s is longer than duration_s";
-  return "";
-}
-
 // Steps from the schedule; memory: the fluid's arrays (the fluid kind's 280 bytes per cell, plus
 // MacCormack's four bound and two predictor arrays), the dense implicit system and its LU
 // (ib/coupling.cpp: (2 markers)² doubles, twice), and the recorded frames of markers, tracers and
 // vorticity fields.
 CostEstimate JellyfishKind::estimateCost(const Params& p) const {
   try {
-    ParamReader r(p);
-    const Schedule plan = schedule(r);
-    const double cells = double(r.integer("cells")) * std::round(r.real("box_aspect") * double(r.integer("cells")));
-    const double segments = bellSegments(r);
+    const JellyfishKindParams q = readParams<JellyfishKindParams>(p);
+    const jellyfish::SwimSchedule plan = q.schedule();
+    const double cells_x = double(q.swimmer.fluid.cells_x);
+    const double cells = cells_x * std::round(q.box_aspect * cells_x);
+    const double segments = bellSegments(q);
     const double markers = 1.5 * (segments + 1);  // tentacles add about half a bell's markers
     const double steps = double(plan.total_steps);
     const double frames = 1 + steps / double(plan.steps_per_frame);
     const double fields = plan.steps_per_field > 0 ? 1 + steps / double(plan.steps_per_field) : 0;
-    const double tracers = double(r.integer("tracers_per_side")) * double(r.integer("tracers_per_side"));
+    const double tracers = double(q.tracers_per_side) * double(q.tracers_per_side);
     CostEstimate cost;
     cost.steps = steps;
     cost.memory_bytes = 32.0 * (1 << 20) + cells * (280 + 48) + 2 * 8 * (2 * markers) * (2 * markers) +
@@ -473,166 +288,28 @@ CostEstimate JellyfishKind::estimateCost(const Params& p) const {
   }
 }
 
-namespace {
-// The distances of the window's whole cycles, from the heights at successive cycle starts.
-std::vector<double> cycleDistances(const std::vector<double>& start_y) {
-  std::vector<double> d;
-  for (std::size_t k = 0; k + 1 < start_y.size(); ++k) d.push_back(start_y[k + 1] - start_y[k]);
-  return d;
-}
-
-// Standard error of the mean of the cycles' distances, relative to the window's distance per cycle.
-double cycleSpread(const std::vector<double>& d, double per_cycle) {
-  if (d.size() < 2) return std::numeric_limits<double>::quiet_NaN();
-  double mean = 0, var = 0;
-  for (double v : d) mean += v / double(d.size());
-  for (double v : d) var += (v - mean) * (v - mean) / double(d.size() - 1);
-  return std::sqrt(var / double(d.size())) / std::abs(per_cycle);
-}
-
-// The least-squares line through the cycles' distances against the cycle's index, from the first
-// cycle of the window to the last, relative to the window's distance per cycle. A window shorter than
-// the viscous time D² / ν (32 s for the 4 cm bell at the default ν) shows a trend rather than a
-// scatter, which cycleSpread alone would read as noise.
-double cycleGrowth(const std::vector<double>& d, double per_cycle) {
-  if (d.size() < 2) return std::numeric_limits<double>::quiet_NaN();
-  const double n = double(d.size()), mid = 0.5 * (n - 1);
-  double mean = 0, sxy = 0, sxx = 0;
-  for (double v : d) mean += v / n;
-  for (std::size_t k = 0; k < d.size(); ++k) {
-    sxy += (double(k) - mid) * (d[k] - mean);
-    sxx += (double(k) - mid) * (double(k) - mid);
-  }
-  return sxy / sxx * (n - 1) / std::abs(per_cycle);
-}
-}  // namespace
-
 Result JellyfishKind::run(const Params& p) const {
-  ParamReader r(p);
-  jellyfish::Swimmer swimmer(config(r));
-  seedTracers(r, swimmer, swimmer.fluid().tracers_m());
-  const Schedule plan = schedule(r);
-  const double dt = r.real("dt_s");
+  const JellyfishKindParams q = readParams<JellyfishKindParams>(p);
+  jellyfish::Swimmer swimmer(q.setup());
+  seedTracers(q, swimmer, swimmer.fluid().tracers_m());
+  const jellyfish::SwimSchedule plan = q.schedule();
 
   Result result;
   addTopology(result, swimmer.body().model());
   Recorder recorder(result, swimmer);
   recorder.frame(swimmer);
   if (plan.steps_per_field > 0) recorder.field(swimmer);
-
-  jellyfish::SwimmerObservation start;
-  double start_work = 0, end_work = 0, start_fluid = 0, end_fluid = 0, min_ratio = std::numeric_limits<double>::infinity(), max_cfl = 0, max_speed = 0;
-  double forward_travel = 0, last_y = 0, cycles_end_y = 0;
-  std::vector<double> cycle_start_y;  // centroid height at each whole cycle's start and end in the window
-  const double period_steps = 1.0 / (r.real("contraction_hz") * dt);
-  auto cycleBoundary = [&](long step) {
-    const double k = double(step - plan.warmup_steps) / period_steps;
-    return step >= plan.warmup_steps && step <= plan.work_end_step &&
-           step - plan.warmup_steps == std::lround(std::round(k) * period_steps);
-  };
-  // Stroke amplitude over the window's second half; the free decay after the last active cycle.
-  const long second_half_step = plan.warmup_steps + (plan.total_steps - plan.warmup_steps) / 2;
-  double late_min = std::numeric_limits<double>::infinity(), late_max = -late_min;
-  const long active_cycles = r.integer("active_cycles");
-  // The activation ends with the last active cycle's pulse (pulse shape) or with the cycle (hermite).
-  const double last_cycle_s = (active_cycles - 1) / r.real("contraction_hz");
-  const double release_s = last_cycle_s + (r.text("activation_shape") == "pulse" ? r.real("pulse_duration_s")
-                                                                                 : 1.0 / r.real("contraction_hz"));
-  const long release_step = active_cycles > 0 ? std::lround(release_s / dt) : -1;
-  std::vector<double> decay_t, decay_d;
-  if (plan.warmup_steps == 0) start = swimmer.observe();
-  last_y = swimmer.observe().centroid_m.y;
-  if (cycleBoundary(0)) cycle_start_y.push_back(last_y);
+  jellyfish::SwimObserver observer(swimmer, plan);
   try {
     for (long step = 1; step <= plan.total_steps; ++step) {
-      const auto report = swimmer.step();
-      max_cfl = std::max(max_cfl, report.fluid.cfl_number);
-      max_speed = std::max(max_speed, report.max_marker_speed_m_per_s);
-      const auto o = swimmer.observe();
-      if (step == plan.warmup_steps) {
-        start = o;
-        start_work = swimmer.muscleWork_j_per_m();
-        start_fluid = swimmer.fluidWork_j_per_m();
-      }
-      if (step == plan.work_end_step) {
-        cycles_end_y = o.centroid_m.y;
-        end_work = swimmer.muscleWork_j_per_m();
-        end_fluid = swimmer.fluidWork_j_per_m();
-      }
-      if (step > plan.warmup_steps) {
-        min_ratio = std::min(min_ratio, o.diameter_ratio);
-        forward_travel += std::max(0.0, o.centroid_m.y - last_y);
-      }
-      last_y = o.centroid_m.y;
-      if (cycleBoundary(step)) cycle_start_y.push_back(o.centroid_m.y);
-      if (step > second_half_step) {
-        late_min = std::min(late_min, o.diameter_ratio);
-        late_max = std::max(late_max, o.diameter_ratio);
-      }
-      if (release_step >= 0 && step >= release_step) {
-        decay_t.push_back(o.time_s);
-        decay_d.push_back(o.diameter_ratio - 1.0);
-      }
+      observer.afterStep(step, swimmer, swimmer.step());
       if (step % plan.steps_per_frame == 0) recorder.frame(swimmer);
       if (plan.steps_per_field > 0 && step % plan.steps_per_field == 0) recorder.field(swimmer);
     }
   } catch (const std::exception& e) {
     throw RunFailure("jellyfish at t = " + std::to_string(swimmer.time_s()) + " s: " + e.what(), result);
   }
-
-  const auto end = swimmer.observe();
-  const double duration = (plan.total_steps - plan.warmup_steps) * dt;
-  const double distance = end.centroid_m.y - start.centroid_m.y;
-  const double cycles = duration * r.real("contraction_hz");
-  // Work is counted over whole cycles, so that the two work measures compare like with like
-  // (over whole cycles the elastic energy stored, far larger than one cycle's work, nearly cancels).
-  // A window that ends part way through a cycle adds that part's surge or slide to distance_m (see
-  // duration_s), so the per-cycle measures count the whole cycles only. A window shorter than one
-  // cycle counts all of itself, work and distance alike.
-  const double work_cycles = plan.whole_cycles;
-  const double work_distance = work_cycles >= 1 ? cycles_end_y - start.centroid_m.y : distance;
-  const double per_cycle = work_cycles >= 1 ? work_distance / work_cycles : distance / cycles;
-  const double work = end_work - start_work;
-  const double fluid_work = end_fluid - start_fluid;
-  const double bell_mass = r.real("density_kg_per_m3") * swimmer.body().model().bell_area_m2;
-  auto& m = result.metrics;
-  m["distance_m"] = {distance, "m"};
-  m["distance_per_cycle_m"] = {per_cycle, "m"};
-  m["mean_speed_m_per_s"] = {distance / duration, "m/s"};
-  m["cycle_speed_m_per_s"] = {per_cycle * r.real("contraction_hz"), "m/s"};
-  m["whole_cycles"] = {work_cycles, ""};
-  m["min_diameter_ratio"] = {min_ratio, ""};
-  m["stroke_amplitude"] = {late_max - late_min, ""};
-  // Two estimates of the free decay (jellyfish/ringdown.hpp): zero crossings of the first two periods
-  // after release, with a hysteresis of a fifth of the last extremum (ringdown_hz), and a fit of one
-  // damped mode to the whole decay at the frame rate (natural_hz, damping_ratio): the crossings lose
-  // a half period whenever a higher mode beating in the tail keeps the signal under the hysteresis.
-  const jellyfish::Ringdown ring = jellyfish::measureRingdown(decay_t, decay_d, 0.2, 4);
-  std::vector<double> frame_t, frame_d;
-  for (std::size_t i = 0; i < decay_t.size(); i += std::size_t(std::max(1L, plan.steps_per_frame)))
-    frame_t.push_back(decay_t[i]), frame_d.push_back(decay_d[i]);
-  const jellyfish::DampedFit fit = jellyfish::fitDampedOscillation(frame_t, frame_d);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  m["ringdown_hz"] = {release_step >= 0 ? ring.damped_hz : nan, "Hz"};
-  m["natural_hz"] = {release_step >= 0 ? fit.natural_hz : nan, "Hz"};
-  m["damping_ratio"] = {release_step >= 0 ? fit.damping_ratio : nan, ""};
-  m["mode_residual"] = {release_step >= 0 ? fit.residual_fraction : nan, ""};
-  m["lateral_drift_m"] = {end.centroid_m.x - start.centroid_m.x, "m"};
-  m["forward_travel_m"] = {forward_travel, "m"};
-  const std::vector<double> cycle_distances = cycleDistances(cycle_start_y);
-  m["cycle_distance_spread"] = {cycleSpread(cycle_distances, per_cycle), ""};
-  m["cycle_distance_growth"] = {cycleGrowth(cycle_distances, per_cycle), ""};
-  m["net_fraction"] = {forward_travel > 0 ? distance / forward_travel : nan, ""};
-  m["muscle_work_j"] = {end_fluid - start_fluid, "J/m"};
-  m["muscle_work_direct_j"] = {work, "J/m"};
-  m["cost_of_transport"] = {work_distance > 0 ? fluid_work / (bell_mass * work_distance) : nan, "J/(kg m)"};
-  m["cycles"] = {cycles, ""};
-  m["max_cfl"] = {max_cfl, ""};
-  m["max_marker_speed_m_per_s"] = {max_speed, "m/s"};
-  m["markers"] = {double(swimmer.markers_m().size()), ""};
-  m["kernel_cells"] = {double(swimmer.config().coupling.kernel_scale), ""};
-  m["segment_cells"] = {swimmer.body().model().segment_m / swimmer.fluid().grid().dx_m, ""};
-  m["steps"] = {double(plan.total_steps), ""};
+  addMetrics(result, observer.measures(swimmer), swimmer, plan);
   return result;
 }
 

@@ -1,23 +1,90 @@
 #pragma once
-#include "kinds/kind.hpp"
+#include <cstdint>
+#include <string>
+
+#include "jellyfish/swim_observer.hpp"
+#include "jellyfish/swimmer.hpp"
+#include "kinds/describe_kind.hpp"
 
 namespace creaturelab::kinds {
 
+// The jellyfish kind's parameters: the swimmer's structs (their in-class defaults are this kind's),
+// the knots of the contraction curve, the measured window, and the rules by which the kind fits the
+// body to the grid (segments, kernel radii, box aspect) and derives what the structs take.
+struct JellyfishKindParams {
+  jellyfish::SwimmerConfig swimmer;
+  jellyfish::KnotTable knots;
+  jellyfish::SwimWindow window;
+  double marker_spacing_cells = 0.5;
+  double stiffness_scale = 1.0;
+  double tentacle_kernel_radius_m = 0.004;
+  double tentacle_permeability_m = 0.0;
+  double kernel_radius_m = 0.004;
+  double box_aspect = 1.44;
+  std::int64_t tracers_per_side = 0;
+
+  template <class V>
+  void describe(V& v) {
+    // --- activation (§3.3, Fig. 4)
+    swimmer.activation.describe(v);
+    knots.describe(v);
+    // --- bell (§3.2, Fig. 12)
+    swimmer.bell.describeGeometry(v);
+    v.integer("bell_segments", swimmer.bell.segments, 0, 2048,
+              "springs along the subumbrella (even, >= 8); 0 = follow the grid (marker_spacing_cells); 256 keeps one "
+              "body, markers <= 0.5 cells apart, in the grid study");
+    v.real("marker_spacing_cells", marker_spacing_cells, "", 0.05, 4,
+           "bell_segments = 0: largest marker spacing in cells; 0.5 is Peskin 2002's rule and keeps the membrane's "
+           "leak small");
+    swimmer.bell.describeElasticity(v);
+    v.real("stiffness_scale", stiffness_scale, "", 1e-3, 1e3, "multiplies bell_modulus_pa and bending_rigidity_n_m together");
+    swimmer.bell.describeMuscle(v);
+    swimmer.bell.describeTentacles(v);
+    v.real("tentacle_kernel_radius_m", tentacle_kernel_radius_m, "m", 0, 10,
+           "the tentacles' own kernel support radius (at most kernel_radius_m; 0 = the grid's kernel); the "
+           "default is the bell's: 2 mm filaments made porous lose their chain on the 1 mm grid");
+    v.real("tentacle_permeability_m", tentacle_permeability_m, "m", 0, 10,
+           "Darcy permeability over thickness of a tentacle chain, slip = permeability / (rho nu) x normal load "
+           "per length (Kim & Peskin's porous boundary); 0 = impermeable; 1.7e-3 estimates a ring of 16 "
+           "filaments 0.5 mm thick in Stokes flow, h ln(h/d) / 4 pi");
+    // --- fluid (§3.2, Fig. 12) and coupling (§3.2; Peskin 2002)
+    swimmer.describeFluid(v);
+    swimmer.describeCoupling(v);
+    v.real("kernel_radius_m", kernel_radius_m, "m", 0, 10,
+           "kernel support radius: the bell's 4 mm thickness (Fig. 12), so a grid study refines one body; a whole "
+           "multiple of the kernel's reach in cells; 0 = the grid's kernel");
+    swimmer.describeStep(v);
+    v.real("box_aspect", box_aspect, "", 0.25, 8,
+           "box height / width; cells x box_aspect must be whole (1.44: cells a multiple of 25); tall enough that "
+           "floor and top barely move the swim");
+    // --- measurement
+    window.describe(v);
+    v.integer("tracers_per_side", tracers_per_side, 0, 200, "trace particles on an n x n lattice around the bell (Fig. 6)");
+  }
+
+  // The swimmer's structs as run: the segments that follow the grid, the stiffness scaled, the box
+  // stretched to box_aspect, the kernels stretched to their radii, the tentacles' roots and porosity.
+  jellyfish::SwimmerConfig setup() const;
+  jellyfish::SwimSchedule schedule() const;
+  // Ranges; the knots, bell, activation and fluid structs' own validate(); then the rules across them
+  // (kernel radii, the box around the bell, whole rows of cells, the step within the window).
+  std::string validate() const;
+};
+
 // A 2-D jellyfish bell swimming in sea water, coupled by the immersed boundary method
 // (Rudolf & Mould 2009 §3.1–3.3, Figs. 4, 5, 11, 12).
-class JellyfishKind : public SchemaKind {
+class JellyfishKind : public DescribedKind<JellyfishKindParams> {
  public:
   JellyfishKind();
   std::string name() const override { return "jellyfish"; }
   std::string doc() const override;
-  std::string validate(const Params& params) const override;
   Result run(const Params& params) const override;
   CostEstimate estimateCost(const Params& params) const override;
   // Defined in kinds/jellyfish_render.cpp: a recorded swim drawn in 3-D (Rudolf & Mould 2009 §3.4-3.5).
   const RenderHook* renderHook() const override;
 
   // The largest number of Hermite knots the schema declares (knot0_* .. knot{N-1}_*).
-  static constexpr int kMaxKnots = 6;
+  static constexpr int kMaxKnots = jellyfish::KnotTable::kMax;
 };
 
 }  // namespace creaturelab::kinds

@@ -28,7 +28,7 @@ double cpuSeconds() { return clockSeconds(CLOCK_PROCESS_CPUTIME_ID); }
 double elapsedSeconds() { return clockSeconds(CLOCK_MONOTONIC); }
 
 SwimmerConfig paperConfig(int cells, ib::Kernel kernel) {
-  SwimmerConfig c;  // defaults: Fig. 12 bell at 0.7 Hz, staggered, 0.4 m box of sea water
+  SwimmerConfig c = paperSwimmer();  // Fig. 12 bell at 0.7 Hz, staggered, 0.4 m box of sea water
   c.fluid.cells_x = c.fluid.cells_y = cells;
   c.fluid.time_step_policy = fluid::TimeStepPolicy::fixed;
   c.fluid.fixed_step_s = c.dt_s = 0.01;

@@ -26,10 +26,10 @@ double cpuSeconds() {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-// The jellyfish kind's defaults on the paper's 100² grid (kinds/jellyfish.cpp): the calibrated
+// The jellyfish kind's model on the paper's 100² grid, from the paper's setting (paperSwimmer()): the calibrated
 // active-tension bell, MacCormack advection, a box 1.5 times as tall as wide, dt = 0.01 s.
 jellyfish::SwimmerConfig kindConfig() {
-  jellyfish::SwimmerConfig c;
+  jellyfish::SwimmerConfig c = jellyfish::paperSwimmer();
   c.fluid.cells_x = 100;
   c.fluid.cells_y = 150;
   c.fluid.domain_height_m = 1.5 * c.fluid.domain_width_m;

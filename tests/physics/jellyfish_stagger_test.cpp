@@ -21,9 +21,9 @@ constexpr double kHz = 0.7;
 constexpr double kDtS = 0.0025;
 constexpr double kWindowS = 10.0;
 
-// The kind's defaults (kinds/jellyfish.cpp) at the resolution of the stagger experiment.
+// The paper's setting (paperSwimmer()) at the resolution of the stagger experiment.
 SwimmerConfig resolved(Expansion expansion) {
-  SwimmerConfig c;
+  SwimmerConfig c = paperSwimmer();
   c.fluid.domain_width_m = c.fluid.domain_height_m = 0.4;
   c.fluid.cells_x = c.fluid.cells_y = 200;
   c.fluid.density_kg_per_m3 = 1000.0;

@@ -17,14 +17,15 @@
 #include <vector>
 
 #include "jellyfish/swimmer.hpp"
+#include "support/dense_linalg.hpp"
 
 namespace creaturelab::jellyfish {
 namespace {
 
-// The kind's set-up (kinds/jellyfish.cpp): a 0.4 m free-slip box, sea water, the paper's bilinear
+// The paper's set-up (paperSwimmer()): a 0.4 m free-slip box, sea water, the paper's bilinear
 // transfer, a fixed coupled step, a fluid faster than 5 m/s taken as a blow-up.
 SwimmerConfig config(int cells, double hz, double dt_s, bool semi_implicit = true) {
-  SwimmerConfig c;
+  SwimmerConfig c = paperSwimmer();
   c.fluid.cells_x = c.fluid.cells_y = cells;
   c.fluid.time_step_policy = fluid::TimeStepPolicy::fixed;
   c.fluid.fixed_step_s = dt_s;
@@ -142,7 +143,7 @@ double staticEquilibriumRatio(const JellyfishBody& body, double t_s) {
       }
     }
     hessian.diagonal().array() += 1e-8 * hessian.diagonal().cwiseAbs().maxCoeff();
-    const Eigen::VectorXd step = hessian.ldlt().solve(force);
+    const Eigen::VectorXd step = test::ldltSolve(hessian, force);
     // Backtracking on the energy keeps the iteration descending through the slack/taut switches.
     const double e0 = body.elasticEnergy(t_s, x);
     double scale = 1;

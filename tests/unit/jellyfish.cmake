@@ -8,3 +8,11 @@ creaturelab_test(jellyfish_unit_test unit
     ${CMAKE_CURRENT_LIST_DIR}/jellyfish_active_test.cpp
   LIBS cl_jellyfish
 )
+
+# the jellyfish kind's parameters (kinds/jellyfish.hpp: declared once, read into the swimmer's structs,
+# the rules across them) and its render settings. No solver runs; well under 1 s.
+creaturelab_test(jellyfish_kind_test unit
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/jellyfish_kind_test.cpp
+  LIBS cl_kinds
+)

@@ -14,6 +14,7 @@
 #include "jellyfish/jellyfish_body.hpp"
 #include "jellyfish_stiffness_matrix.hpp"
 #include "jellyfish/ringdown.hpp"
+#include "support/dense_linalg.hpp"
 
 namespace creaturelab::jellyfish {
 namespace {
@@ -21,7 +22,7 @@ namespace {
 using Markers = std::vector<fluid::Vec2>;
 
 BellParams activeBell(int segments, double tension_n_per_m2) {
-  BellParams p;
+  BellParams p = paperBell();
   p.segments = segments;
   p.muscle_model = MuscleModel::active_tension;
   p.muscle_tension_n_per_m2 = tension_n_per_m2;
@@ -29,7 +30,7 @@ BellParams activeBell(int segments, double tension_n_per_m2) {
 }
 
 ActivationParams pulse(double duration_s, int cycles) {
-  ActivationParams a;
+  ActivationParams a = paperActivation();
   a.contraction_hz = 1.0;
   a.shape = ActivationShape::pulse;
   a.pulse_duration_s = duration_s;
@@ -104,13 +105,13 @@ TEST(JellyfishActivation, StaggeredPulseReleasesTheApexFirstAndContractsAlike) {
   for (double t = 0.2; t < 0.4; t += 0.01)  // the apex relaxes first
     EXPECT_LE(staggered.activation(apex, t), staggered.activation(aperture, t) + 1e-15) << "t " << t;
   a.pulse_stagger = 1.0;
-  EXPECT_NE(validate(a).find("pulse stagger"), std::string::npos);
+  EXPECT_NE(a.validate().find("pulse stagger"), std::string::npos);
 }
 
 // The Hermite shape maps the §3.3 curve so that its lowest knot (0.56) is full activation.
 TEST(JellyfishActivation, HermiteActivationIsTheCurveScaledToItsLowestKnot) {
   const BellModel model = buildBell(activeBell(32, 10.0));
-  ActivationParams a;
+  ActivationParams a = paperActivation();
   a.expansion = Expansion::unison;
   const JellyfishBody body(model, a);
   for (double t : {0.0, 0.1, 0.3 / 0.7, 0.9, 1.2}) {
@@ -162,7 +163,7 @@ TEST(JellyfishActiveTension, PullsWithTheActiveTensionAndItsStiffnessIsTheGeomet
   }
   EXPECT_LT((k - fd).cwiseAbs().maxCoeff(), 1e-6 * k.cwiseAbs().maxCoeff());
   EXPECT_LT((k - k.transpose()).cwiseAbs().maxCoeff(), 1e-14 * k.cwiseAbs().maxCoeff());
-  EXPECT_LT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(k).eigenvalues().maxCoeff(), 1e-9 * k.cwiseAbs().maxCoeff());
+  EXPECT_LT(test::symmetricEigenvalues(k).maxCoeff(), 1e-9 * k.cwiseAbs().maxCoeff());
 }
 
 // An active tension stores no elastic energy; a relaxed muscle exerts nothing.
@@ -248,7 +249,7 @@ double loadedDiameterRatio(int segments) {
     if (f.cwiseAbs().maxCoeff() < 1e-11) break;
     Eigen::MatrixXd a = -stiffnessMatrix(body, 0.5, fromVector(x));
     a.diagonal().array() += 1e-9 * a.diagonal().cwiseAbs().maxCoeff();
-    x += a.ldlt().solve(f);
+    x += test::ldltSolve(a, f);
   }
   EXPECT_LT(forceVector(body, 0.5, fromVector(x)).cwiseAbs().maxCoeff(), 1e-9) << segments << " segments";
   const int n = model.bell_markers - 1;
@@ -291,9 +292,8 @@ double breathingHz(int segments) {
   basis.conservativeResize(n, cols);
   const Eigen::MatrixXd ks = basis.transpose() * k * basis;
   const Eigen::MatrixXd ms = basis.transpose() * mass.asDiagonal() * basis;
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(ks, ms);
   // The vertical translation is the one rigid symmetric mode.
-  const Eigen::VectorXd w2 = eig.eigenvalues();
+  const Eigen::VectorXd w2 = test::generalizedSymmetricEigenvalues(ks, ms);
   EXPECT_LT(std::abs(w2[0]), 1e-6 * w2[1]) << segments << " segments";
   return std::sqrt(w2[1]) / (2 * M_PI);
 }

@@ -33,7 +33,7 @@ double ellipsePerimeter(double a, double b) {
 // the right side, for several resolutions.
 TEST(JellyfishBell, MarkersAreExactlyMirrorSymmetric) {
   for (int segments : {8, 32, 64, 66}) {
-    BellParams p;
+    BellParams p = paperBell();
     p.segments = segments;
     const BellModel m = buildBell(p);
     const auto& x = m.rest_positions_m;
@@ -61,7 +61,7 @@ TEST(JellyfishBell, MarkersAreExactlyMirrorSymmetric) {
 // at joint segments - j have the same rest angle (mirroring and reversing the chain each flip the
 // sign of the signed turning angle) and stiffness.
 TEST(JellyfishBell, SpringsAndBendsAreMirrorSymmetric) {
-  const BellParams p;
+  const BellParams p = paperBell();
   const BellModel m = buildBell(p);
   const auto& net = m.network;
   for (int e = 0; e < p.segments; ++e) {
@@ -80,7 +80,7 @@ TEST(JellyfishBell, SpringsAndBendsAreMirrorSymmetric) {
 // subumbrella, semi-axes 16 mm and 24 mm): apex on the axis x = 0 at the top, aperture markers at
 // y = 0, 32 mm apart, every bell marker on the subumbrellar half-ellipse.
 TEST(JellyfishBell, ApexOnAxisApertureAtBaseMarkersOnTheEllipse) {
-  const BellParams p;
+  const BellParams p = paperBell();
   const BellModel m = buildBell(p);
   const auto& x = m.rest_positions_m;
   const double a = 0.5 * p.diameter_m - p.thickness_m, b = p.height_m - p.thickness_m;
@@ -106,7 +106,7 @@ TEST(JellyfishBell, ApexOnAxisApertureAtBaseMarkersOnTheEllipse) {
 // and radii of curvature between a^2/b = 10.7 mm and b^2/a = 36 mm that is 1.5e-3 to 1.3e-4, so
 // the lengths agree to 2e-3 and their sum is half the ellipse's perimeter less at most 1.5e-3.
 TEST(JellyfishBell, ChainSegmentsAreEqualInArcLength) {
-  const BellParams p;
+  const BellParams p = paperBell();
   const BellModel m = buildBell(p);
   const auto& x = m.rest_positions_m;
   double shortest = 1, longest = 0, total = 0;
@@ -131,7 +131,7 @@ TEST(JellyfishBell, ChainSegmentsAreEqualInArcLength) {
 // Fig. 12 area factor 1/100): k L = E t / 100 and B / 100; each muscle element carries its arc
 // of the band, k ℓ = E_m s w and T_max w.
 TEST(JellyfishBell, SpringConstantsFollowModulusThicknessOverLength) {
-  const BellParams p;
+  const BellParams p = paperBell();
   const BellModel m = buildBell(p);
   const auto& net = m.network;
   int bell_springs = 0, tentacle_springs = 0;
@@ -185,7 +185,7 @@ TEST(JellyfishBell, SpringConstantsFollowModulusThicknessOverLength) {
 // marker of the band from the aperture toward the apex; the stagger's coordinate runs from 1 at
 // the aperture to 0 at the apex, Spencer's delay order from 0 at the aperture (§3.1).
 TEST(JellyfishBell, MusclesSpanTheBellFromApertureTowardApex) {
-  const BellParams p;
+  const BellParams p = paperBell();
   const BellModel m = buildBell(p);
   for (int k = 0; k < static_cast<int>(m.muscles.size()); ++k) {
     const MuscleSpring& s = m.muscles[k];
@@ -207,7 +207,7 @@ TEST(JellyfishBell, MusclesSpanTheBellFromApertureTowardApex) {
 // each tentacle a chain of equal springs hanging straight down 20 mm from an aperture point, with
 // bends along it and one where it leaves the bell; the network passes its own validation.
 TEST(JellyfishBell, NetworkTopologyAndTentacles) {
-  const BellParams p;
+  const BellParams p = paperBell();
   const BellModel m = buildBell(p);
   const auto& x = m.rest_positions_m;
   const int per_side = static_cast<int>(m.tentacle_markers.size()) / 2;
@@ -236,7 +236,7 @@ TEST(JellyfishBell, NetworkTopologyAndTentacles) {
 // the apex, the left ones then their mirror images (marker k of the left half mirrors k of the right);
 // each chain a bend where it leaves the bell. Roots that do not fit on the half bell are refused.
 TEST(JellyfishBell, SeveralTentaclesPerSideHangFromSpacedRoots) {
-  BellParams p;
+  BellParams p = paperBell();
   p.tentacles_per_side = 3;
   p.tentacle_root_spacing_m = 4e-3;  // two segments of 1.98 mm
   const BellModel m = buildBell(p);
@@ -266,7 +266,7 @@ TEST(JellyfishBell, SeveralTentaclesPerSideHangFromSpacedRoots) {
 // angle, so the network's elastic force and energy vanish there (up to round-off); a small
 // deformation does give a force (the check is not vacuous).
 TEST(JellyfishBell, RestShapeHasZeroElasticForce) {
-  const BellModel m = buildBell(BellParams{});
+  const BellModel m = buildBell(paperBell());
   const springs::System<2> system(m.network);
   springs::State<2> s = springs::zeroState<2>(m.network.particleCount());
   for (std::size_t i = 0; i < m.rest_positions_m.size(); ++i)
@@ -282,7 +282,7 @@ TEST(JellyfishBell, RestShapeHasZeroElasticForce) {
 
 // Unusable parameters are refused with validate()'s words.
 TEST(JellyfishBell, BuildRefusesBadParametersWithTheReason) {
-  BellParams p;
+  BellParams p = paperBell();
   p.segments = 31;
   try {
     (void)buildBell(p);

@@ -201,7 +201,7 @@ TEST(JellyfishCurve, CeresJetDerivativesMatchFiniteDifferences) {
 
 // ---- muscleFactor: staggered expansion (§3.3, Fig. 4 right) -------------------------------------
 
-const ActivationParams kDefaults;
+const ActivationParams kDefaults = paperActivation();
 
 double factor(double phase, double stagger, double position) {
   return muscleFactor(kDefaults.knots, phase, expansionWindow(kDefaults.knots), stagger, position);
@@ -316,9 +316,9 @@ TEST(JellyfishMuscleFactor, StaggerOnlyRetimesTheExpansionWhereverThePeriodStart
       kDefaults.knots, {{0.1, 1.0, 0.0}, {0.4, 0.56, 0.0}}, {{0.0, 0.56, 0.0}, {0.7, 1.0, 0.0}}};
   for (std::size_t which = 0; which < curves.size(); ++which) {
     const auto& knots = curves[which];
-    ActivationParams a;
+    ActivationParams a = paperActivation();
     a.knots = knots;
-    ASSERT_EQ(validate(a), "") << "curve " << which;
+    ASSERT_EQ(a.validate(), "") << "curve " << which;
     const Knot relaxed =
         *std::max_element(knots.begin(), knots.end(), [](auto x, auto y) { return x.value < y.value; });
     const Knot contracted =
@@ -350,23 +350,25 @@ TEST(JellyfishMuscleFactor, StaggerOnlyRetimesTheExpansionWhereverThePeriodStart
   }
 }
 
-// ---- validate(ActivationParams) ---------------------------------------------------------------
+// ---- validate() of the parameters -------------------------------------------------------------
 
 bool mentions(const std::string& message, const std::string& words) { return message.find(words) != std::string::npos; }
 
 // The defaults are usable (validate returns "").
 TEST(JellyfishParams, DefaultsAreValid) {
-  EXPECT_EQ(validate(ActivationParams{}), "");
-  EXPECT_EQ(validate(BellParams{}), "");
+  EXPECT_EQ(ActivationParams{}.validate(), "");
+  EXPECT_EQ(BellParams{}.validate(), "");
+  EXPECT_EQ(paperActivation().validate(), "");
+  EXPECT_EQ(paperBell().validate(), "");
 }
 
 // Each bad activation input gives a message naming the problem (STYLE.md: validate() says what is
 // wrong in words a user understands).
 TEST(JellyfishParams, ActivationProblemsAreNamed) {
   auto message = [](auto edit) {
-    ActivationParams a;
+    ActivationParams a = paperActivation();
     edit(a);
-    return validate(a);
+    return a.validate();
   };
   EXPECT_TRUE(mentions(message([](auto& a) {
                          a.knots = {{0.0, 1, 0}, {0.5, 0.6, 0}, {0.4, 0.7, 0}};
@@ -398,9 +400,9 @@ TEST(JellyfishParams, ActivationProblemsAreNamed) {
 // Each bad bell input gives a message naming the problem.
 TEST(JellyfishParams, BellProblemsAreNamed) {
   auto message = [](auto edit) {
-    BellParams b;
+    BellParams b = paperBell();
     edit(b);
-    return validate(b);
+    return b.validate();
   };
   EXPECT_TRUE(mentions(message([](auto& b) { b.segments = 31; }), "segments must be even and at least 8, got 31"));
   EXPECT_TRUE(mentions(message([](auto& b) { b.segments = 6; }), "segments must be even and at least 8, got 6"));

@@ -1,0 +1,95 @@
+// The jellyfish kind's parameters, declared once (kinds/describe.hpp): the schema's defaults are the
+// swimmer structs' in-class defaults, what the kind derives from them (segments, box, kernels) is what a
+// SwimmerConfig{} holds, and the rules across fields name the parameters. No solver runs.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "kinds/jellyfish.hpp"
+#include "kinds/jellyfish_render_params.hpp"
+
+namespace creaturelab::kinds {
+namespace {
+
+Params defaults() { return withDefaults(JellyfishKind(), {}); }
+
+std::string problem(const std::string& name, Value value) {
+  Params p = defaults();
+  p[name] = std::move(value);
+  return JellyfishKind().validate(p);
+}
+
+// A solver struct built in code (a test, a benchmark) runs what the kind's user runs by default.
+TEST(JellyfishKind, DefaultsSetUpTheSwimmerStructsInClassDefaults) {
+  const jellyfish::SwimmerConfig run = readParams<JellyfishKindParams>(defaults()).setup();
+  const jellyfish::SwimmerConfig in_class;
+  EXPECT_EQ(run.bell.segments, in_class.bell.segments);
+  EXPECT_EQ(run.bell.tentacle_root_spacing_m, in_class.bell.tentacle_root_spacing_m);
+  EXPECT_EQ(run.bell.tentacle_porosity_m_per_pa_s, in_class.bell.tentacle_porosity_m_per_pa_s);
+  EXPECT_EQ(run.bell.bending_rigidity_n_m, in_class.bell.bending_rigidity_n_m);
+  EXPECT_EQ(run.activation.knots.size(), in_class.activation.knots.size());
+  EXPECT_EQ(run.fluid.cells_x, in_class.fluid.cells_x);
+  EXPECT_EQ(run.fluid.cells_y, in_class.fluid.cells_y);
+  EXPECT_EQ(run.fluid.domain_height_m, in_class.fluid.domain_height_m);
+  EXPECT_EQ(run.fluid.fixed_step_s, in_class.dt_s);
+  EXPECT_EQ(run.fluid.kinematic_viscosity_m2_per_s, in_class.fluid.kinematic_viscosity_m2_per_s);
+  EXPECT_TRUE(run.fluid.time_step_policy == in_class.fluid.time_step_policy);
+  EXPECT_EQ(run.coupling.kernel_scale, in_class.coupling.kernel_scale);
+  EXPECT_EQ(run.coupling.implicit_theta, in_class.coupling.implicit_theta);
+  EXPECT_EQ(run.tentacle_kernel_scale, in_class.tentacle_kernel_scale);
+  EXPECT_EQ(run.dt_s, in_class.dt_s);
+  EXPECT_EQ(run.start_y_fraction, in_class.start_y_fraction);
+  EXPECT_EQ(JellyfishKind().validate(defaults()), "");
+}
+
+TEST(JellyfishKind, ReadsItsParametersIntoTheStructs) {
+  Params p = defaults();
+  p["bell_segments"] = std::int64_t(0);  // follow the grid: markers at most half a 1 mm cell apart
+  p["stiffness_scale"] = 2.0;
+  p["kinematic_viscosity_m2_per_s"] = 1e-5;
+  p["activation_shape"] = std::string("hermite");
+  p["contraction_knots"] = std::int64_t(3);
+  p["knot2_phase"] = 0.6;
+  p["knot2_value"] = 0.8;
+  const JellyfishKindParams q = readParams<JellyfishKindParams>(p);
+  const jellyfish::SwimmerConfig c = q.setup();
+  jellyfish::BellParams coarser = c.bell;
+  coarser.segments -= 2;
+  EXPECT_LE(jellyfish::buildBell(c.bell).segment_m, 0.5e-3);
+  EXPECT_GT(jellyfish::buildBell(coarser).segment_m, 0.5e-3);
+  EXPECT_EQ(c.bell.bell_modulus_pa, 2 * 1186.0);
+  EXPECT_EQ(c.fluid.kinematic_viscosity_m2_per_s, 1e-5);
+  EXPECT_TRUE(c.activation.shape == jellyfish::ActivationShape::hermite);
+  ASSERT_EQ(c.activation.knots.size(), 3u);
+  EXPECT_EQ(c.activation.knots[2].value, 0.8);
+  EXPECT_EQ(paramsOf(q), p);  // and back
+}
+
+TEST(JellyfishKind, RulesAcrossFieldsNameTheParameters) {
+  EXPECT_NE(problem("knot3_value", 0.7).find("knot3_* is set but contraction_knots = 2"), std::string::npos);
+  EXPECT_NE(problem("bell_segments", std::int64_t(31)).find("segments must be even"), std::string::npos);
+  EXPECT_NE(problem("kernel_radius_m", 0.0045).find("kernel_radius_m = 0.0045 m must be a whole multiple"),
+            std::string::npos);
+  EXPECT_NE(problem("tentacle_kernel_radius_m", 0.006).find("must not exceed kernel_radius_m"), std::string::npos);
+  EXPECT_NE(problem("box_aspect", 1.45).find("whole number of cells"), std::string::npos);
+  EXPECT_NE(problem("bell_diameter_m", 0.09).find("three bell diameters"), std::string::npos);
+  EXPECT_NE(problem("duration_s", 1e-3).find("dt_s is longer than duration_s"), std::string::npos);
+}
+
+TEST(JellyfishRenderSettings, DefaultsAreRenderParamsAndAutoIsTheRunsThickness) {
+  Params p;
+  for (const ParamSpec& spec : renderParamSpecs()) p[spec.name] = spec.default_value;
+  const render::RenderParams got = renderParams(p, 0.003), in_class;
+  EXPECT_EQ(got.thickness.apex_m, 0.003);
+  EXPECT_EQ(got.rings, in_class.rings);
+  EXPECT_EQ(got.noise_seed, in_class.noise_seed);
+  EXPECT_TRUE(got.structural_shape == in_class.structural_shape);
+  p["thickness_m"] = 0.005;
+  p["structural_shape"] = std::string("sin");
+  const render::RenderParams set = renderParams(p, 0.003);
+  EXPECT_EQ(set.thickness.apex_m, 0.005);
+  EXPECT_TRUE(set.structural_shape == render::StructuralShape::sin);
+}
+
+}  // namespace
+}  // namespace creaturelab::kinds
