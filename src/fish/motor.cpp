@@ -73,7 +73,8 @@ double swimPeriodS(const MotorParams& p) {
   return 2.0 * height / p.swim.rate_anterior * p.reference_step_s;
 }
 
-std::string validate(const MotorParams& p) {
+std::string MotorParams::validate() const {
+  const MotorParams& p = *this;
   auto amp = [](const char* name, double a) {
     return a > 0 && a <= 1 ? std::string() : std::string(name) + " must be in (0, 1] (got " + std::to_string(a) + ")";
   };
@@ -97,7 +98,7 @@ std::string validate(const MotorParams& p) {
 
 MotorController::MotorController(const FishModel& fish, MotorParams params, std::vector<ScheduleItem> schedule)
     : fish_(fish), params_(params), schedule_(std::move(schedule)) {
-  if (auto m = validate(params_); !m.empty()) throw std::invalid_argument(m);
+  if (auto m = params_.validate(); !m.empty()) throw std::invalid_argument(m);
   if (schedule_.empty()) throw std::invalid_argument("schedule is empty");
   for (int k = 0; k < kMuscles; ++k) rest_m_[k] = fish.network.rest_length_m[fish.muscles[k].unit];
 }

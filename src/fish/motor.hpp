@@ -144,13 +144,13 @@ struct MotorParams {
     v.real("r_max", r_max, "", 1e-9, 1, "the largest rate ([reimpl] 0.075)");
     v.real("reference_step_s", reference_step_s, "s", 1e-9, 100, "the step the rates are defined per (the [reimpl] step)");
   }
+
+  // "" or what is wrong, naming the parameter (alpha outside (0, 1], r outside (0, r_max], ...).
+  std::string validate() const;
 };
 
 // The period of the swim-MC's anterior segment (seconds): 2 x its triangle's height / its slope.
 double swimPeriodS(const MotorParams& p);
-
-// "" or what is wrong, naming the parameter (alpha outside (0, 1], r outside (0, r_max], ...).
-std::string validate(const MotorParams& p);
 
 class MotorController {
  public:

@@ -6,7 +6,8 @@
 
 namespace creaturelab::fish {
 
-std::string validate(const SkinParams& p) {
+std::string SkinParams::validate() const {
+  const SkinParams& p = *this;
   if (p.degree_around < 1 || p.degree_around >= kSkinAround)
     return "skin_degree_around " + std::to_string(p.degree_around) + " must be in [1, " + std::to_string(kSkinAround - 1) +
            "]: a NURBS degree needs more control points than itself (" + std::to_string(kSkinAround) + " around)";
@@ -103,7 +104,7 @@ NurbsSurface surfaceOf(int count_u, int count_v, int degree_u, int degree_v) {
 }  // namespace
 
 FishSkin::FishSkin(const FishModel& fish, SkinParams params) : fish_(fish), params_(params) {
-  if (auto m = validate(params_); !m.empty()) throw std::invalid_argument(m);
+  if (auto m = params_.validate(); !m.empty()) throw std::invalid_argument(m);
   const NodeMatrix& x = fish.rest_positions_m;
   for (int side : {+1, -1}) {
     const auto net = halfNet(fish, params_, side);

@@ -59,10 +59,10 @@ struct SkinParams {
     v.real("pectoral_pitch_deg", pectoral_pitch_deg, "deg", -90, 90,
            "the pectoral fins' pose: turned about the fish's lateral axis, leading edge up > 0 (display only)");
   }
-};
 
-// "" or what is wrong, naming the parameter (a degree not below its control-point count, ...).
-std::string validate(const SkinParams& p);
+  // "" or what is wrong, naming the parameter (a degree not below its control-point count, ...).
+  std::string validate() const;
+};
 
 // A triangle mesh with per-vertex normals. Parts: the body halves first (left, right: each
 // samples_around x samples_along vertices, row-major around), then the fins, then the pectoral

@@ -121,9 +121,9 @@ FishSetup FishKindParams::setup() const {
   s.solver = solver;
   s.motor = motor;
   s.motor.swim.bothAsAnterior();
-  if (auto e = fish::validate(s.motor); !e.empty()) throw std::invalid_argument(e);
+  if (auto e = s.motor.validate(); !e.empty()) throw std::invalid_argument(e);
   s.skin = skin_params;
-  if (auto e = fish::validate(s.skin); !e.empty()) throw std::invalid_argument(e);
+  if (auto e = s.skin.validate(); !e.empty()) throw std::invalid_argument(e);
   if (auto e = fish::validate(s.geometry, s.units); !e.empty()) throw std::invalid_argument(e);
   if (auto e = fish::validate(s.solver); !e.empty()) throw std::invalid_argument(e);
   try {

@@ -161,7 +161,7 @@ class FishRenderHook : public RenderHook {
 
   std::unique_ptr<RunRender> open(const RecordedRun& run, const Params& settings) const override {
     const FishRenderSettings s = readParams<FishRenderSettings>(settings);
-    if (std::string e = fish::validate(s.skin); !e.empty()) throw invalid_argument("render settings: " + e);
+    if (std::string e = s.skin.validate(); !e.empty()) throw invalid_argument("render settings: " + e);
     return std::make_unique<FishRunRender>(readFishSwim(run), s, settings);
   }
 

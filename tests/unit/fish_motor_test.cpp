@@ -32,15 +32,15 @@ TEST(Schedule, ParsesAndRejectsWithTheItemNamed) {
 TEST(Motor, ValidateNamesAlphaAndR) {
   MotorParams p = testMotor();
   p.swim.amplitude_anterior = 0;
-  EXPECT_NE(validate(p).find("swim_amplitude"), std::string::npos);
+  EXPECT_NE(p.validate().find("swim_amplitude"), std::string::npos);
   p = testMotor();
   p.swim.amplitude_posterior = 1.2;
-  EXPECT_NE(validate(p).find("swim_amplitude"), std::string::npos);
+  EXPECT_NE(p.validate().find("swim_amplitude"), std::string::npos);
   p = testMotor();
   p.turn_rate = 0.08;  // above r_max = 0.075
-  EXPECT_NE(validate(p).find("turn_rate"), std::string::npos);
+  EXPECT_NE(p.validate().find("turn_rate"), std::string::npos);
   p = testMotor();
-  EXPECT_EQ(validate(p), "");
+  EXPECT_EQ(p.validate(), "");
 }
 
 // The swim-MC's triangle wave: the left middle muscle peaks at alpha (1 - f) l after half a period,

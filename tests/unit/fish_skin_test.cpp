@@ -48,10 +48,10 @@ TEST(Nurbs, BasisIsAPartitionOfUnityAndValidateNamesTheDegree) {
   EXPECT_NE(validateNurbs(9, 9, clampedUniformKnots(9, 3)).find("degree 9"), std::string::npos);
   SkinParams p;
   p.degree_around = 9;
-  EXPECT_NE(validate(p).find("skin_degree_around"), std::string::npos);
+  EXPECT_NE(p.validate().find("skin_degree_around"), std::string::npos);
   p = {};
   p.degree_along = 21;
-  EXPECT_NE(validate(p).find("skin_degree_along"), std::string::npos);
+  EXPECT_NE(p.validate().find("skin_degree_along"), std::string::npos);
 }
 
 // A rigid motion of the nodes carries every control point with it (spec §4: to round-off);
