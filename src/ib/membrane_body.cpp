@@ -3,18 +3,32 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace creaturelab::ib {
 
+namespace {
+
+void addProblem(std::string& out, const std::string& text) { out += (out.empty() ? "" : "; ") + text; }
+
+// The ring's own rules (MembraneParams and MembraneBody): a closed ring of 3 or more markers, a
+// positive stiffness.
+std::string ringProblems(int markers, double stiffness_n_per_m) {
+  std::string out;
+  if (markers < 3) addProblem(out, "a closed membrane needs at least 3 markers (got " + std::to_string(markers) + ")");
+  if (!(stiffness_n_per_m > 0) || !std::isfinite(stiffness_n_per_m))
+    addProblem(out, "the membrane's stiffness must be a positive number of N/m per metre of depth");
+  return out;
+}
+
+}  // namespace
+
 std::string MembraneParams::validate() const {
   std::string out;
-  auto problem = [&](const std::string& text) { out += (out.empty() ? "" : "; ") + text; };
-  if (!std::isfinite(centre_x_m) || !std::isfinite(centre_y_m)) problem("the membrane's centre must be finite");
+  if (!std::isfinite(centre_x_m) || !std::isfinite(centre_y_m)) addProblem(out, "the membrane's centre must be finite");
   if (!(semi_axis_x_m > 0) || !std::isfinite(semi_axis_x_m) || !(semi_axis_y_m > 0) || !std::isfinite(semi_axis_y_m))
-    problem("the membrane's semi-axes must be positive lengths in metres");
-  if (markers < 3) problem("a closed membrane needs at least 3 markers (got " + std::to_string(markers) + ")");
-  if (!(stiffness_n_per_m > 0) || !std::isfinite(stiffness_n_per_m))
-    problem("the membrane's stiffness must be a positive number of N/m per metre of depth");
+    addProblem(out, "the membrane's semi-axes must be positive lengths in metres");
+  if (const std::string ring = ringProblems(markers, stiffness_n_per_m); !ring.empty()) addProblem(out, ring);
   return out;
 }
 
@@ -45,10 +59,7 @@ std::vector<fluid::Vec2> ellipseMarkers(const MembraneParams& p) {
 }
 
 MembraneBody::MembraneBody(int markers, double stiffness_n_per_m) : markers_(markers), k_(stiffness_n_per_m) {
-  if (markers < 3)
-    throw std::invalid_argument("a closed membrane needs at least 3 markers (got " + std::to_string(markers) + ")");
-  if (!(stiffness_n_per_m > 0) || !std::isfinite(stiffness_n_per_m))
-    throw std::invalid_argument("the membrane's stiffness must be a positive number of N/m per metre of depth");
+  if (const std::string err = ringProblems(markers, stiffness_n_per_m); !err.empty()) throw std::invalid_argument(err);
 }
 
 void MembraneBody::forces(double /*t_s*/, std::span<const fluid::Vec2> x, std::span<fluid::Vec2> force) const {
