@@ -1,5 +1,7 @@
 #include "fluid3d/advection3.hpp"
 
+#include "fluid3d/upwind_advection3.hpp"
+
 namespace creaturelab::fluid3d {
 namespace advection3_detail {
 
@@ -115,6 +117,7 @@ void MacCormackAdvection3::advect(const MacGrid3& grid, double dt_s, FaceField3&
 
 std::unique_ptr<AdvectionSolver3> makeAdvectionSolver(AdvectionScheme3 scheme) {
   if (scheme == AdvectionScheme3::semi_lagrangian) return std::make_unique<SemiLagrangianAdvection3>();
+  if (scheme == AdvectionScheme3::upwind2_rk2) return std::make_unique<Upwind2Rk2Advection3>();
   return std::make_unique<MacCormackAdvection3>();
 }
 

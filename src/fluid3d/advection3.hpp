@@ -18,6 +18,8 @@ class AdvectionSolver3 {
   /// Transports the grid's velocity along itself for dt_s into `out` (shaped like the velocity);
   /// solid walls' normal faces are zero. The grid is not modified.
   virtual void advect(const MacGrid3& grid, double dt_s, FaceField3& out) = 0;
+  /// Largest max-component CFL number (max|u_a| dt / dx) the scheme is stable at.
+  virtual double maxStableCfl() const { return std::numeric_limits<double>::infinity(); }
   void setWorkers(WorkerPool* workers) { workers_ = workers; }
 
  protected:

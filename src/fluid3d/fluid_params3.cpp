@@ -83,7 +83,12 @@ std::string_view toString(BoundaryType3 type) {
   return "?";
 }
 std::string_view toString(AdvectionScheme3 scheme) {
-  return scheme == AdvectionScheme3::semi_lagrangian ? "semi_lagrangian" : "maccormack";
+  switch (scheme) {
+    case AdvectionScheme3::semi_lagrangian: return "semi_lagrangian";
+    case AdvectionScheme3::maccormack: return "maccormack";
+    case AdvectionScheme3::upwind2_rk2: return "upwind2_rk2";
+  }
+  return "?";
 }
 std::string_view toString(PressureSolverType3 type) {
   return type == PressureSolverType3::spectral ? "spectral" : "mg_pcg";

@@ -49,7 +49,8 @@ struct Boundaries3 {
 /// Velocity advection scheme (the 2-D solver's semi-Lagrangian ones, fluid/advection2.hpp).
 enum class AdvectionScheme3 {
   semi_lagrangian,  ///< Stam 1999 §2.2: RK2 backtrace, trilinear interpolation (first order, diffusive)
-  maccormack        ///< Selle et al. 2008: forward + backward semi-Lagrangian, clamped (second order in space)
+  maccormack,       ///< Selle et al. 2008: forward + backward semi-Lagrangian, clamped (second order in space)
+  upwind2_rk2       ///< Eulerian flux form, Fromm upwind + Heun (second order, CFL ≤ ⅓: upwind_advection3.hpp)
 };
 
 /// Pressure (projection) solver.

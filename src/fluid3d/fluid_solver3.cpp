@@ -47,7 +47,8 @@ double FluidSolver3::nextTimeStep_s() const {
   if (params_.time_step_policy == TimeStepPolicy3::fixed) return params_.fixed_step_s;
   const double speed = maxVelocityComponent_m_per_s();
   if (speed <= 0.0) return params_.max_step_s;
-  return std::min(params_.max_step_s, params_.cfl_safety_factor * grid_.dx_m / speed);
+  const double cfl = std::min(params_.cfl_safety_factor, advection_->maxStableCfl());
+  return std::min(params_.max_step_s, cfl * grid_.dx_m / speed);
 }
 
 FluidStepReport3 FluidSolver3::step() { return step(nextTimeStep_s()); }
@@ -57,6 +58,14 @@ FluidStepReport3 FluidSolver3::step(double dt_s) {
   FluidStepReport3 report;
   report.dt_s = dt_s;
   report.cfl_number = maxVelocityComponent_m_per_s() * dt_s / grid_.dx_m;
+  if (stages_.advection && report.cfl_number > advection_->maxStableCfl()) {
+    std::ostringstream message;
+    message << "fluid3d refused step " << steps_done_ + 1 << " (t = " << time_s_ << " s): its CFL number "
+            << report.cfl_number << " exceeds " << advection_->maxStableCfl() << ", the stability bound of "
+            << toString(params_.advection) << " advection; take dt <= " << advection_->maxStableCfl() * grid_.dx_m /
+                   maxVelocityComponent_m_per_s() << " s";
+    throw FluidBlowUpError3(message.str());
+  }
   if (stages_.external_forces) applyExternalForces(dt_s);
   if (stages_.advection) advectVelocity(dt_s);
   if (stages_.viscosity) report.viscosity = applyViscosity(dt_s);

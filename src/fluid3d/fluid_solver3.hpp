@@ -53,9 +53,11 @@ class FluidSolver3 {
   explicit FluidSolver3(const FluidParams3& params);
   ~FluidSolver3();
 
-  /// One step of the policy's size, or of dt_s (> 0). Throws FluidBlowUpError3.
+  /// One step of the policy's size, or of dt_s (> 0). Throws FluidBlowUpError3 when the velocity blows
+  /// up, or before a step whose CFL number exceeds the advection scheme's stability bound.
   FluidStepReport3 step();
   FluidStepReport3 step(double dt_s);
+  /// fixed_step_s, or min(max_step_s, min(cfl_safety_factor, the scheme's bound) dx / max|u component|).
   double nextTimeStep_s() const;
 
   // --- the stages, each callable alone

@@ -8,7 +8,14 @@ SolveReport3 MgPcgPressureSolver3::solve(const std::array<int, 3>& cells, const 
                                          Array3& q) {
   WorkerPool* pool = workers_;
   preconditioner_.prepare(cells, sides);
-  stencil_ = pressureStencil(cells, sides);
+  bool same_sides = true;
+  for (int a = 0; a < 3; ++a)
+    same_sides = same_sides && sides.axis[a].low == stencil_sides_.axis[a].low &&
+                 sides.axis[a].high == stencil_sides_.axis[a].high;
+  if (cells != stencil_cells_ || !same_sides) {
+    stencil_ = pressureStencil(cells, sides);
+    stencil_cells_ = cells, stencil_sides_ = sides;
+  }
   const bool singular = sides.closed();
   const double mean_count = static_cast<double>(b.size());
   if (!q.sameShape(b)) q = Array3(cells[0], cells[1], cells[2]);

@@ -20,6 +20,7 @@ class MgPcgPressureSolver3 final : public PressureSolver3 {
   int max_iterations_;
   Stencil3 stencil_;
   std::array<int, 3> stencil_cells_{};
+  Boundaries3 stencil_sides_{};
   MultigridPreconditioner3 preconditioner_;
   Array3 r_, z_, s_, as_;
   std::vector<double> per_slab_;

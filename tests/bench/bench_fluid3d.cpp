@@ -1,7 +1,7 @@
 // Speed of the 3-D fluid solver: one full step at 32³ and 64³, reported as milliseconds of CPU time
 // per step ("ms_per_step", all the process's threads) and per cell ("ns_per_cell"), with the elapsed
 // time ("ms_per_step_wall") and the pressure solve's iterations. Scenes: the flyer's box (water, no-slip
-// walls, an open top; MG-PCG) and the periodic ABC flow (spectral and MG-PCG), at 1 and 2 threads
+// walls, an open top; MG-PCG; MacCormack, and at one thread the other two advection schemes) and the periodic ABC flow (spectral and MG-PCG), at 1 and 2 threads
 // (bitwise the same results). Figures from different hosts or hours compare only against a build run
 // beside them.
 #include <benchmark/benchmark.h>
@@ -24,8 +24,10 @@ double clockSeconds(clockid_t clock) {
 
 enum class Scene { open_box, periodic };
 
-std::unique_ptr<FluidSolver3> warmedUp(Scene scene, int cells, PressureSolverType3 pressure, int threads) {
+std::unique_ptr<FluidSolver3> warmedUp(Scene scene, int cells, PressureSolverType3 pressure, int threads,
+                                       AdvectionScheme3 advection) {
   FluidParams3 p;  // 0.4 m box of water
+  p.advection = advection;
   p.cells_x = p.cells_y = p.cells_z = cells;
   p.pressure_solver = pressure;
   p.threads = threads;
@@ -46,10 +48,11 @@ std::unique_ptr<FluidSolver3> warmedUp(Scene scene, int cells, PressureSolverTyp
   return solver;
 }
 
-void stepBenchmark(benchmark::State& state, Scene scene, PressureSolverType3 pressure) {
+void stepBenchmark(benchmark::State& state, Scene scene, PressureSolverType3 pressure,
+                   AdvectionScheme3 advection = AdvectionScheme3::maccormack) {
   const int cells = static_cast<int>(state.range(0));
   const int threads = static_cast<int>(state.range(1));
-  auto solver = warmedUp(scene, cells, pressure, threads);
+  auto solver = warmedUp(scene, cells, pressure, threads, advection);
   double cpu = 0.0, wall = 0.0;
   long iterations = 0;
   for (auto _ : state) {
@@ -70,6 +73,12 @@ void stepBenchmark(benchmark::State& state, Scene scene, PressureSolverType3 pre
 void BM_Step3_OpenBox_MgPcg(benchmark::State& state) {
   stepBenchmark(state, Scene::open_box, PressureSolverType3::mg_pcg);
 }
+void BM_Step3_OpenBox_MgPcg_Upwind(benchmark::State& state) {
+  stepBenchmark(state, Scene::open_box, PressureSolverType3::mg_pcg, AdvectionScheme3::upwind2_rk2);
+}
+void BM_Step3_OpenBox_MgPcg_SemiLagrangian(benchmark::State& state) {
+  stepBenchmark(state, Scene::open_box, PressureSolverType3::mg_pcg, AdvectionScheme3::semi_lagrangian);
+}
 void BM_Step3_Periodic_MgPcg(benchmark::State& state) {
   stepBenchmark(state, Scene::periodic, PressureSolverType3::mg_pcg);
 }
@@ -78,6 +87,11 @@ void BM_Step3_Periodic_Spectral(benchmark::State& state) {
 }
 
 BENCHMARK(BM_Step3_OpenBox_MgPcg)->ArgsProduct({{32, 64}, {1, 2}})->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Step3_OpenBox_MgPcg_Upwind)->ArgsProduct({{32, 64}, {1}})->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Step3_OpenBox_MgPcg_SemiLagrangian)
+    ->ArgsProduct({{32, 64}, {1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Step3_Periodic_MgPcg)->ArgsProduct({{32, 64}, {1, 2}})->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Step3_Periodic_Spectral)->ArgsProduct({{32, 64}, {1, 2}})->UseManualTime()->Unit(benchmark::kMillisecond);
 

@@ -52,13 +52,14 @@ TEST(Fluid3dStages, ClosedBoxHoldsGravityByHydrostaticPressure) {
 
 // Advection of a uniform flow in a periodic box leaves it uniform, bit for bit (a + t (b − a)).
 TEST(Fluid3dStages, UniformFlowAdvectsUnchanged) {
-  for (AdvectionScheme3 scheme : {AdvectionScheme3::semi_lagrangian, AdvectionScheme3::maccormack}) {
+  for (AdvectionScheme3 scheme :
+       {AdvectionScheme3::semi_lagrangian, AdvectionScheme3::maccormack, AdvectionScheme3::upwind2_rk2}) {
     FluidParams3 p = smallBox(Boundaries3::allPeriodic());
     p.advection = scheme;
     FluidSolver3 solver(p);
     for (int a = 0; a < 3; ++a) solver.grid().velocity_m_per_s[a].fill(0.1 * (a + 1));
     onlyStage(solver, false, true, false, false);
-    solver.step(0.013);
+    solver.step(0.0065);  // CFL 0.0195 / 0.01 · 0.3 / 0.01: 0.195, below upwind2_rk2's bound of 1/3
     for (int a = 0; a < 3; ++a)
       for (std::size_t t = 0; t < solver.grid().velocity_m_per_s[a].size(); ++t)
         ASSERT_EQ(solver.grid().velocity_m_per_s[a].data()[t], 0.1 * (a + 1)) << toString(scheme);
@@ -129,6 +130,22 @@ TEST(Fluid3dStages, NoSlipWallsDragTheFlowFreeSlipWallsDoNot) {
   }
   EXPECT_NEAR(energy_after[0], 1.0, 1e-10);
   EXPECT_LT(energy_after[1], 0.99);  // about 2 % lost in one step at nu dt / dx^2 = 0.01
+}
+
+// The explicit upwind scheme refuses a step above its stability bound (CFL 1/3), before changing
+// anything; the adaptive step stays below it.
+TEST(Fluid3dStages, UpwindAdvectionRefusesAnUnstableStep) {
+  FluidParams3 p = smallBox(Boundaries3::allPeriodic());
+  p.advection = AdvectionScheme3::upwind2_rk2;
+  p.cfl_safety_factor = 0.9;
+  p.max_step_s = 1.0;
+  FluidSolver3 solver(p);
+  solver.grid().velocity_m_per_s[0].fill(0.1);
+  const MacGrid3 before = solver.grid();
+  EXPECT_THROW(solver.step(0.04), FluidBlowUpError3);  // CFL 0.4
+  EXPECT_TRUE(solver.grid().velocity_m_per_s[0] == before.velocity_m_per_s[0]);
+  EXPECT_NEAR(solver.nextTimeStep_s() * 0.1 / p.cellSize_m(), 1.0 / 3.0, 1e-12);
+  EXPECT_NO_THROW(solver.step());
 }
 
 TEST(Fluid3dStages, BadParametersAreRefusedInWords) {

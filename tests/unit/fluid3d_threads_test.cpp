@@ -36,7 +36,8 @@ MacGrid3 run(int threads, PressureSolverType3 pressure, AdvectionScheme3 advecti
 
 TEST(Fluid3dThreads, OneAndTwoThreadsGiveBitwiseTheSameState) {
   for (PressureSolverType3 pressure : {PressureSolverType3::mg_pcg, PressureSolverType3::spectral}) {
-    for (AdvectionScheme3 advection : {AdvectionScheme3::semi_lagrangian, AdvectionScheme3::maccormack}) {
+    for (AdvectionScheme3 advection :
+         {AdvectionScheme3::semi_lagrangian, AdvectionScheme3::maccormack, AdvectionScheme3::upwind2_rk2}) {
       const MacGrid3 one = run(1, pressure, advection), two = run(2, pressure, advection);
       for (int a = 0; a < 3; ++a) EXPECT_TRUE(one.velocity_m_per_s[a] == two.velocity_m_per_s[a]) << a;
       EXPECT_TRUE(one.pressure_pa == two.pressure_pa);
