@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "jellyfish/swimmer.hpp"
+#include "support/dense_linalg.hpp"
 
 namespace creaturelab::jellyfish {
 namespace {
@@ -142,7 +143,7 @@ double staticEquilibriumRatio(const JellyfishBody& body, double t_s) {
       }
     }
     hessian.diagonal().array() += 1e-8 * hessian.diagonal().cwiseAbs().maxCoeff();
-    const Eigen::VectorXd step = hessian.ldlt().solve(force);
+    const Eigen::VectorXd step = test::ldltSolve(hessian, force);
     // Backtracking on the energy keeps the iteration descending through the slack/taut switches.
     const double e0 = body.elasticEnergy(t_s, x);
     double scale = 1;
