@@ -6,6 +6,7 @@
 
 #include "fluid3d/fluid_solver3.hpp"
 #include "fluid3d/initial_conditions3.hpp"
+#include "fluid3d/velocity_sampler3.hpp"
 
 namespace creaturelab::fluid3d {
 namespace {
@@ -146,6 +147,44 @@ TEST(Fluid3dStages, UpwindAdvectionRefusesAnUnstableStep) {
   EXPECT_TRUE(solver.grid().velocity_m_per_s[0] == before.velocity_m_per_s[0]);
   EXPECT_NEAR(solver.nextTimeStep_s() * 0.1 / p.cellSize_m(), 1.0 / 3.0, 1e-12);
   EXPECT_NO_THROW(solver.step());
+}
+
+// A flow straight through a box open at the bottom and the top is divergence-free: the projection
+// keeps it (the open sides are unknowns, p = 0 on them), while a solid bottom would stop it.
+TEST(Fluid3dStages, FlowLeavesThroughOpenSides) {
+  Boundaries3 sides = Boundaries3::allWalls(BoundaryType3::no_slip);
+  sides.axis[2] = {BoundaryType3::open, BoundaryType3::open};
+  FluidParams3 p = smallBox(sides);
+  p.pressure_solver = PressureSolverType3::spectral;
+  FluidSolver3 solver(p);
+  solver.grid().velocity_m_per_s[2].fill(0.05);
+  onlyStage(solver, false, false, false, true);
+  solver.step(0.01);
+  EXPECT_NEAR(solver.grid().velocity_m_per_s[2](3, 4, 8), 0.05, 1e-15);
+  EXPECT_NEAR(solver.grid().velocity_m_per_s[2](0, 7, 0), 0.05, 1e-15);
+  EXPECT_LT(solver.maxDivergence_per_s(), 1e-12);
+}
+
+// The sampler returns a face's own value at the face, and reproduces a linear field in between.
+TEST(Fluid3dStages, VelocitySamplerInterpolatesTrilinearly) {
+  FluidParams3 p = smallBox(Boundaries3::allWalls(BoundaryType3::free_slip));
+  FluidSolver3 solver(p);
+  MacGrid3& g = solver.grid();
+  for (int a = 0; a < 3; ++a) {
+    Array3& u = g.velocity_m_per_s[a];
+    for (int k = 0; k < u.nz(); ++k)
+      for (int j = 0; j < u.ny(); ++j)
+        for (int i = 0; i < u.nx(); ++i) {
+          const std::array<double, 3> x = g.facePosition_m(a, i, j, k);
+          u(i, j, k) = 1.0 + 2.0 * x[0] - 3.0 * x[1] + 0.5 * x[2] + a;
+        }
+  }
+  VelocitySampler3 sampler;
+  sampler.update(g);
+  EXPECT_DOUBLE_EQ(sampler.velocity_m_per_s(g.facePosition_m(1, 3, 2, 5))[1], g.velocity_m_per_s[1](3, 2, 5));
+  const std::array<double, 3> x{0.0213, 0.0377, 0.0461};  // inside, away from the walls' ghosts
+  const std::array<double, 3> v = sampler.velocity_m_per_s(x);
+  for (int a = 0; a < 3; ++a) EXPECT_NEAR(v[a], 1.0 + 2.0 * x[0] - 3.0 * x[1] + 0.5 * x[2] + a, 1e-14);
 }
 
 TEST(Fluid3dStages, BadParametersAreRefusedInWords) {
