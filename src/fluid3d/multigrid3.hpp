@@ -1,7 +1,7 @@
 #pragma once
 // A geometric multigrid V-cycle for the pressure matrix A of pressure_operator3.hpp, used as the
 // preconditioner of conjugate gradients (Tatebe 1993, "The multigrid preconditioned conjugate
-// gradient method"; Trottenberg, Oosterlee & Schüller 2001, "Multigrid", §2 and §7.7 for
+// gradient method"; Trottenberg, Oosterlee & Schüller 2001, "Multigrid", on
 // cell-centred grids).
 //
 // Levels halve every axis while all are even and at least 4 cells long. Restriction sums the 8
