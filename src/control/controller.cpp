@@ -20,7 +20,7 @@ struct Controller::Worker {
 namespace {
 // Validated before anything reads the model by the parameters' joint names.
 const ControllerParams& checked(const ControllerParams& p, const rigid::RigidModel& model) {
-  if (std::string err = validate(p, model); !err.empty()) throw std::invalid_argument(err);
+  if (std::string err = p.validate(model); !err.empty()) throw std::invalid_argument(err);
   return p;
 }
 

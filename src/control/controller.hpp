@@ -45,7 +45,7 @@ struct FrameRecord {
 class Controller {
  public:
   // `model` (with its time step set to frame_s / substeps by the caller) and `force` must outlive
-  // the controller; p must pass validate(p, model).
+  // the controller; p must pass p.validate(model).
   Controller(const rigid::RigidModel& model, ControllerParams p, const ForceModel& force);
   ~Controller();
 

@@ -29,7 +29,7 @@ std::string checkJoint(const rigid::RigidModel& model, const std::string& name, 
 std::string checkPatterns(const std::vector<Pattern>& patterns, const std::vector<std::string>& joints,
                           const rigid::RigidModel& model, const char* key) {
   for (std::size_t k = 0; k < patterns.size(); ++k) {
-    if (auto e = validate(patterns[k]); !e.empty()) return std::string(key) + ": joint '" + joints[k] + "': " + e;
+    if (auto e = patterns[k].validate(); !e.empty()) return std::string(key) + ": joint '" + joints[k] + "': " + e;
     if (patterns[k].kind != Pattern::Kind::hold && model.joint(model.findJoint(joints[k])).type != rigid::JointType::hinge)
       return std::string(key) + ": joint '" + joints[k] + "' is a ball joint: it can only hold its initial pose";
   }
@@ -37,7 +37,8 @@ std::string checkPatterns(const std::vector<Pattern>& patterns, const std::vecto
 }
 }  // namespace
 
-std::string validate(const ControllerParams& p, const rigid::RigidModel& model) {
+std::string ControllerParams::validate(const rigid::RigidModel& model) const {
+  const ControllerParams& p = *this;
   const int n = int(p.controlled.size());
   if (n == 0) return "no controlled joints";
   std::set<std::string> seen;

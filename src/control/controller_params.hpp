@@ -57,10 +57,10 @@ struct ControllerParams {
   // Test only: false skips the servo's projection of its last residual (post-stabilisation, §2.2), so
   // that a test sees the kinematic joints leave their patterns (tests/cli/control_checks_fail.sh).
   bool servo_projection = true;
-};
 
-// "" when p fits the model, else what is wrong (joint names, lengths, ranges).
-std::string validate(const ControllerParams& p, const rigid::RigidModel& model);
+  // "" when these fit the model, else what is wrong (joint names, lengths, ranges).
+  std::string validate(const rigid::RigidModel& model) const;
+};
 
 std::string toString(Objective o);
 std::string toString(Sense s);

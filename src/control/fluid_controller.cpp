@@ -49,14 +49,15 @@ std::vector<double> stabilisedArmature(const rigid::RigidModel& m, const Control
 }
 
 const ControllerParams& checked(const ControllerParams& p, const FluidControlParams& f, const rigid::RigidModel& m) {
-  if (std::string err = validate(p, f, m); !err.empty()) throw std::invalid_argument(err);
+  if (std::string err = f.validate(p, m); !err.empty()) throw std::invalid_argument(err);
   return p;
 }
 
 }  // namespace
 
-std::string validate(const ControllerParams& p, const FluidControlParams& f, const rigid::RigidModel& model) {
-  if (auto e = validate(p, model); !e.empty()) return e;
+std::string FluidControlParams::validate(const ControllerParams& p, const rigid::RigidModel& model) const {
+  const FluidControlParams& f = *this;
+  if (auto e = p.validate(model); !e.empty()) return e;
   for (const auto* names : {&p.controlled, &p.kinematic, &p.pd_driven})
     for (const auto& name : *names)
       if (model.joint(model.findJoint(name)).type == rigid::JointType::ball)
@@ -66,7 +67,7 @@ std::string validate(const ControllerParams& p, const FluidControlParams& f, con
            "state) and settle_steps (§4.3's validation mode) instead";
   if (f.limit_rad < 0) return "the joint limit must be >= 0 (0: none)";
   if (f.settle_steps < 0) return "settle_steps must be >= 0";
-  if (auto e = validate(f.stroke, p); !e.empty()) return e;
+  if (auto e = control::validate(f.stroke, p); !e.empty()) return e;
   if (f.average_steps < 1 || f.average_steps > p.substeps + f.settle_steps)
     return "average_steps must be 1..substeps + settle_steps (the steps of one evaluation)";
   return "";

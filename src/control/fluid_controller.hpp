@@ -57,10 +57,11 @@ struct FluidControlParams {
   // CMAME 196); with A it is (A - m_a) / (M + A), stable for m_a < M + 2A. The change to the
   // dynamics, A (a^{n+1} - a^n), is first order in the step (swimmer.toml's convergence runs).
   bool armature_added_mass = false;
-};
 
-// "" when usable with the model, else what is wrong.
-std::string validate(const ControllerParams& p, const FluidControlParams& f, const rigid::RigidModel& model);
+  // "" when usable with the controller's parameters p (p.validate(model) first) and the model,
+  // else what is wrong.
+  std::string validate(const ControllerParams& p, const rigid::RigidModel& model) const;
+};
 
 // The state of a coupled creature: bodies and fluid.
 struct CoupledState {

@@ -45,7 +45,8 @@ double Pattern::rate(double t) const {
   return 0;
 }
 
-std::string validate(const Pattern& p) {
+std::string Pattern::validate() const {
+  const Pattern& p = *this;
   auto finite = [](double x) { return std::isfinite(x); };
   switch (p.kind) {
     case Pattern::Kind::hold: return "";

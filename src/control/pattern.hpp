@@ -18,9 +18,8 @@ struct Pattern {
 
   double angle(double t_s, double hold_rad) const;
   double rate(double t_s) const;  // d angle / dt, rad/s (0 for hold)
+  // "" when the pattern is usable, else what is wrong (for a message that names the key).
+  std::string validate() const;
 };
-
-// "" when the pattern is usable, else what is wrong (for a message that names the key).
-std::string validate(const Pattern& p);
 
 }  // namespace creaturelab::control

@@ -34,7 +34,7 @@ struct Prescription {
   std::vector<std::vector<int>> holds;   // per controlled joint: joint ids held with it
 };
 
-// p must pass validate(p, model) and outlive the result (the patterns are pointed at).
+// p must pass p.validate(model) and outlive the result (the patterns are pointed at).
 Prescription prescription(const ControllerParams& p, const rigid::RigidModel& model);
 
 // The poses the kinematic and PD joints without a moving pattern hold: those in qpos.

@@ -96,7 +96,7 @@ std::string ControlParams::validate() const {
   if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
   try {
     const auto model = controller.loadModel();
-    if (auto e = control::validate(controllerParams(), model); !e.empty()) return e;
+    if (auto e = controllerParams().validate(model); !e.empty()) return e;
     if (auto e = controller.checkInitialPoses(model, false); !e.empty()) return e;
     if (controller.average_frames > controller.frames) return "average_frames is larger than frames";
   } catch (const rigid::RigidError& e) {

@@ -110,7 +110,7 @@ std::string ControlFluidParams::validate() const {
   if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
   try {
     const auto model = controller.loadModel();
-    if (auto e = control::validate(controller.controllerParams(), fluidControlParams(), model); !e.empty()) return e;
+    if (auto e = fluidControlParams().validate(controller.controllerParams(), model); !e.empty()) return e;
     if (auto e = swimmer.validate(model, controller.frame_s, controller.frames); !e.empty()) return e;
     const auto f = fluidParams();
     const auto c = rigidFluidParams();

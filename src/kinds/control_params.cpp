@@ -105,7 +105,7 @@ control::Pattern parsePattern(const std::string& text, const std::string& key) {
       p.angle_rad.push_back(v[1] * kRad);
     }
   }
-  if (auto e = control::validate(p); !e.empty()) throw std::invalid_argument(key + ": " + e);
+  if (auto e = p.validate(); !e.empty()) throw std::invalid_argument(key + ": " + e);
   return p;
 }
 

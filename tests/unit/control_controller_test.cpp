@@ -170,17 +170,17 @@ TEST_F(ControllerTest, ValidationNamesWhatIsWrong) {
   p.controlled = {"j0", "elbow"};
   p.objectives = {Objective::effort, Objective::effort};
   p.senses = {Sense::minimize, Sense::minimize};
-  EXPECT_NE(validate(p, model).find("'elbow'"), std::string::npos);
+  EXPECT_NE(p.validate(model).find("'elbow'"), std::string::npos);
   p.controlled = {"j0", "j1"};
-  EXPECT_EQ(validate(p, model), "");
+  EXPECT_EQ(p.validate(model), "");
   p.weights = {{1, 0}, {0, 1, 0}};
-  EXPECT_NE(validate(p, model).find("weights: row 2"), std::string::npos);
+  EXPECT_NE(p.validate(model).find("weights: row 2"), std::string::npos);
   p.weights.clear();
   p.strength_rad_per_s = -1;
-  EXPECT_NE(validate(p, model).find("strength"), std::string::npos);
+  EXPECT_NE(p.validate(model).find("strength"), std::string::npos);
   p.strength_rad_per_s = 1;
   p.delta_rad = 0;
-  EXPECT_NE(validate(p, model).find("delta_rad"), std::string::npos);
+  EXPECT_NE(p.validate(model).find("delta_rad"), std::string::npos);
   // The controller refuses them too, before it reads the model by name.
   const NoForce none;
   p.delta_rad = 0.01;

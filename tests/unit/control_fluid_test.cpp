@@ -110,7 +110,7 @@ TEST_F(ControlFluidTest, SteadyStateIsRefused) {
   p.objectives = {Objective::drag};
   p.senses = {Sense::minimize};
   p.steady_state = true;
-  EXPECT_NE(validate(p, FluidControlParams{}, model).find("settle_steps"), std::string::npos);
+  EXPECT_NE(FluidControlParams{}.validate(p, model).find("settle_steps"), std::string::npos);
 }
 
 // The block's 4 m box of 32^2 inviscid water, the hinge 1.5 m from the left wall; with a stream

@@ -44,7 +44,7 @@ TEST_F(JointsTest, PatternsInterpolateAndHold) {
   t.kind = Pattern::Kind::table;
   t.time_s = {0.0, 0.5, 1.0};
   t.angle_rad = {0.0, 0.4, -0.2};
-  EXPECT_EQ(validate(t), "");
+  EXPECT_EQ(t.validate(), "");
   EXPECT_DOUBLE_EQ(t.angle(0.25, 9), 0.2);
   EXPECT_DOUBLE_EQ(t.angle(0.75, 9), 0.1);
   EXPECT_DOUBLE_EQ(t.angle(3.0, 9), -0.2);
@@ -56,9 +56,9 @@ TEST_F(JointsTest, PatternsInterpolateAndHold) {
   const Pattern s = sine(0.1, 0.3, 2, 0.5);
   EXPECT_NEAR(s.rate(0.2), (s.angle(0.2 + 1e-6, 0) - s.angle(0.2 - 1e-6, 0)) / 2e-6, 1e-6);
   t.time_s = {0.0, 0.5, 0.5};
-  EXPECT_NE(validate(t).find("increase"), std::string::npos);
+  EXPECT_NE(t.validate().find("increase"), std::string::npos);
   t.angle_rad.pop_back();
-  EXPECT_NE(validate(t).find("differ"), std::string::npos);
+  EXPECT_NE(t.validate().find("differ"), std::string::npos);
 }
 
 // A kinematic shoulder swinging through a sine carries the rest of the chain under gravity and a
@@ -293,22 +293,22 @@ TEST_F(JointsTest, ValidationNamesPatternsAndBallWeights) {
   p.controlled = {"j0", "wrist"};
   p.objectives = {Objective::effort, Objective::effort};
   p.senses = {Sense::minimize, Sense::minimize};
-  EXPECT_EQ(validate(p, model), "");
+  EXPECT_EQ(p.validate(model), "");
   p.weights = {{1, 0, 0, 0}, {0, 1, 0, 0}};  // one per DOF: wrong, a ball counts once
-  EXPECT_NE(validate(p, model).find("a ball joint counts once"), std::string::npos) << validate(p, model);
+  EXPECT_NE(p.validate(model).find("a ball joint counts once"), std::string::npos) << p.validate(model);
   p.weights.clear();
   p.controlled = {"j0"};
   p.objectives.pop_back();
   p.senses.pop_back();
   p.kinematic = {"wrist"};
   p.kinematic_patterns = {sine(0, 0.1, 1, 0)};
-  EXPECT_NE(validate(p, model).find("kinematic_pattern: joint 'wrist' is a ball joint"), std::string::npos);
+  EXPECT_NE(p.validate(model).find("kinematic_pattern: joint 'wrist' is a ball joint"), std::string::npos);
   p.kinematic_patterns = {Pattern{}, Pattern{}};
-  EXPECT_NE(validate(p, model).find("kinematic_pattern: 2 patterns for 1"), std::string::npos);
+  EXPECT_NE(p.validate(model).find("kinematic_pattern: 2 patterns for 1"), std::string::npos);
   p.kinematic_patterns.clear();
   p.pd_driven = {"wrist"};
   p.pd_patterns = {Pattern{}};
-  EXPECT_NE(validate(p, model).find("pd_driven joint 'wrist' is not a hinge"), std::string::npos) << validate(p, model);
+  EXPECT_NE(p.validate(model).find("pd_driven joint 'wrist' is not a hinge"), std::string::npos) << p.validate(model);
 }
 
 }  // namespace
