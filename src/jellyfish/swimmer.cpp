@@ -63,12 +63,18 @@ SwimmerConfig paperSwimmer() {
   return c;
 }
 
+std::string SwimmerConfig::validate() const {
+  for (const std::string& err : {bell.validate(), activation.validate(), fluid.validate()})
+    if (!err.empty()) return err;
+  if (!(dt_s > 0) || !std::isfinite(dt_s)) return "time step must be > 0";
+  if (tentacle_kernel_scale < 0) return "the tentacles' kernel stretch must be >= 0";
+  return "";
+}
+
 Swimmer::Swimmer(const SwimmerConfig& config) : config_(config) {
-  if (const std::string err = config.activation.validate(); !err.empty()) throw std::invalid_argument(err);
-  if (!(config.dt_s > 0) || !std::isfinite(config.dt_s)) throw std::invalid_argument("time step must be > 0");
+  if (const std::string err = config.validate(); !err.empty()) throw std::invalid_argument(err);
   fluid_ = std::make_unique<fluid::FluidSolver2>(config.fluid);
   body_ = std::make_unique<JellyfishBody>(buildBell(config.bell), config.activation);
-  if (config.tentacle_kernel_scale < 0) throw std::invalid_argument("the tentacles' kernel stretch must be >= 0");
   coupling_ = std::make_unique<ib::ImmersedBoundary2>(*fluid_, *body_, placed(body_->model(), config),
                                                       couplingFor(body_->model(), config));
   initial_elastic_j_per_m_ = elasticEnergy_j_per_m();

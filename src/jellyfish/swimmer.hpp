@@ -32,56 +32,8 @@ struct SwimmerConfig {
   double start_x_fraction = 0.5;
   double start_y_fraction = 0.5;
 
-  /// The fluid as the jellyfish kind offers it: domain_m and cells (a square box the kind stretches to
-  /// its aspect), density_kg_per_m3, kinematic_viscosity_m2_per_s, advection, viscosity_scheme,
-  /// fluid_threads (FluidParams' own fields, with this swimmer's defaults and reasons).
-  template <class V>
-  void describeFluid(V& v) {
-    v.real("domain_m", fluid.domain_width_m, "m", 1e-3, 100,
-           "width of the free-slip box (its height is box_aspect times it): 6.25 bell diameters, chosen close to "
-           "the paper's 10-diameter box (§3.2) in distance per cycle");
-    v.integer("cells", fluid.cells_x, 8, 2048,
-              "fluid cells across the box (Fig. 12: 100 in 0.4 m); 250 gives 1 mm cells, the converged grid of the "
-              "convergence study");
-    v.real("density_kg_per_m3", fluid.density_kg_per_m3, "kg/m^3", 1e-3, 1e6, "paper: '1' without units, read as g/cm^3");
-    v.real("kinematic_viscosity_m2_per_s", fluid.kinematic_viscosity_m2_per_s, "m^2/s", 0, 10,
-           "38 times water (Re ~16, within 2-D IB jellyfish studies' 10-300) so 1 mm cells resolve the Stokes "
-           "layer; the paper's 1.304e-3, read as Pa s, gives 1.304e-6");
-    v.choice("advection", fluid.advection,
-             {fluid::AdvectionScheme::semi_lagrangian, fluid::AdvectionScheme::maccormack,
-              fluid::AdvectionScheme::upwind2_rk2},
-             "velocity advection: MacCormack (Selle et al. 2008, second order in space), the paper's semi-Lagrangian "
-             "(Stam 1999), or upwind2_rk2 (Fromm upwind + Heun, CFL <= 0.5)");
-    v.choice("viscosity_scheme", fluid.viscosity_scheme,
-             {fluid::ViscosityScheme::backward_euler, fluid::ViscosityScheme::crank_nicolson},
-             "viscous term in time: backward Euler (Stam 1999 §2.2, first order) or Crank-Nicolson (second order "
-             "for that stage alone)");
-    v.integer("fluid_threads", fluid.threads, 1, 16,
-              "threads inside each fluid step; results are bitwise the same for any count (fluid/worker_pool.hpp); "
-              "helps only on idle cores");
-  }
-  /// The coupling as the jellyfish kind offers it: kernel, semi_implicit, implicit_mobility,
-  /// implicit_mass_factor, implicit_theta, implicit_reuse_tolerance (CouplingParams' own fields).
-  template <class V>
-  void describeCoupling(V& v) {
-    v.choice("kernel", coupling.kernel, {ib::Kernel::bilinear, ib::Kernel::peskin4},
-             "spreading/interpolation: Peskin's 4-point function, or the paper's bilinear hat (§3.2), stretched to "
-             "kernel_radius_m; the hat's bell does not converge in its segments");
-    v.boolean("semi_implicit", coupling.semi_implicit,
-              "linearised implicit elastic forces (ib/coupling.hpp); false = explicit Peskin");
-    v.choice("implicit_mobility", coupling.mobility, {ib::ImplicitMobility::stencil, ib::ImplicitMobility::local_mass},
-             "fluid response assumed by the semi-implicit force: through the markers' stencils (ib/coupling.hpp), or "
-             "each marker alone");
-    v.real("implicit_mass_factor", coupling.implicit_mass_factor, "", 1e-6, 100,
-           "local_mass only: added mass per marker in rho dx^2");
-    v.real("implicit_theta", coupling.implicit_theta, "", 0.5, 1.0,
-           "semi-implicit only: elastic force at X^n + theta dt U* (ib/coupling.hpp); 1 = backward Euler, which damps "
-           "the recoil; 0.5 = the step's middle. 0.5 doubles the step at the same accuracy");
-    v.real("implicit_reuse_tolerance", coupling.factor_reuse.tolerance, "", 0, 1e-4,
-           "banded solve (>= 300 markers): relative residual accepted when refining on earlier LU factors, else "
-           "refactored (ib/reused_banded_solve.hpp); 0 = every step");
-  }
-  /// viscosity_tolerance, dt_s, force_stage, blowup_speed_m_per_s, start_y_fraction.
+  /// viscosity_tolerance, dt_s, force_stage, start_y_fraction (the rest of the fluid and the coupling
+  /// describe themselves: FluidParams, CouplingParams).
   template <class V>
   void describeStep(V& v) {
     v.real("viscosity_tolerance", fluid.viscosity_tolerance, "", 1e-14, 1e-2,
@@ -94,12 +46,14 @@ struct SwimmerConfig {
              {fluid::ForceStage::before_advection, fluid::ForceStage::after_advection},
              "where the bell's force enters the fluid step: after the advection (a source of the momentum equation, "
              "Peskin 2002 §6), or before it (Stam 1999 §2.2, the paper's order)");
-    v.real("blowup_speed_m_per_s", fluid.blowup_speed_m_per_s, "m/s", 1e-6, 1e6,
-           "fluid speed taken as a blow-up (100x the swimming flow)");
     v.real("start_y_fraction", start_y_fraction, "", 0.05, 0.95,
            "aperture's starting height as a fraction of the box's (the bell swims up, its wake goes down): 0.18 m "
            "above the floor");
   }
+
+  /// "" if usable (the bell's, the activation's and the fluid's validate(), a positive step, a
+  /// tentacle kernel stretch >= 0), else one sentence per problem.
+  std::string validate() const;
 };
 
 /// The paper's setting where the defaults depart from it (Rudolf & Mould 2009 §3.2, Fig. 12): paperBell(),

@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "fluid/diagnostics2.hpp"
-#include "kinds/ib_params.hpp"
 
 namespace creaturelab::kinds {
 namespace {
@@ -174,9 +173,7 @@ std::string JellyfishKindParams::validate() const {
   if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
   if (std::string err = knots.validate(); !err.empty()) return err;
   const jellyfish::SwimmerConfig c = setup();
-  if (std::string err = c.bell.validate(); !err.empty()) return err;
-  if (std::string err = c.activation.validate(); !err.empty()) return err;
-  if (std::string err = c.fluid.validate(); !err.empty()) return err;
+  if (std::string err = c.validate(); !err.empty()) return err;
   for (const auto& [radius_m, name] : {std::pair{kernel_radius_m, "kernel_radius_m"},
                                        std::pair{tentacle_kernel_radius_m, "tentacle_kernel_radius_m"}})
     if (std::string err = kernelScale(c.coupling.kernel, radius_m, swimmer.fluid.cellSize_m(), name).error; !err.empty())

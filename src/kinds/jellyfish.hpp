@@ -5,6 +5,8 @@
 #include "jellyfish/swim_observer.hpp"
 #include "jellyfish/swimmer.hpp"
 #include "kinds/describe_kind.hpp"
+#include "kinds/describe_notes.hpp"
+#include "kinds/ib_params.hpp"
 
 namespace creaturelab::kinds {
 
@@ -47,13 +49,25 @@ struct JellyfishKindParams {
            "Darcy permeability over thickness of a tentacle chain, slip = permeability / (rho nu) x normal load "
            "per length (Kim & Peskin's porous boundary); 0 = impermeable; 1.7e-3 estimates a ring of 16 "
            "filaments 0.5 mm thick in Stokes flow, h ln(h/d) / 4 pi");
-    // --- fluid (§3.2, Fig. 12) and coupling (§3.2; Peskin 2002)
-    swimmer.describeFluid(v);
-    swimmer.describeCoupling(v);
-    v.real("kernel_radius_m", kernel_radius_m, "m", 0, 10,
-           "kernel support radius: the bell's 4 mm thickness (Fig. 12), so a grid study refines one body; a whole "
-           "multiple of the kernel's reach in cells; 0 = the grid's kernel");
+    // --- fluid (§3.2, Fig. 12) and coupling (§3.2; Peskin 2002): the shared structs' own fields, with why
+    // this kind's defaults (jellyfish::jellyfishFluid, jellyfishCoupling) differ from theirs.
+    DefaultNotes noted(v, {
+        {"domain_m", "0.25 m, 6.25 bell diameters, close to the paper's 10-diameter box (§3.2) in distance per "
+                     "cycle; the height is box_aspect times it"},
+        {"cells", "250, 1 mm cells, the converged grid of the convergence study"},
+        {"kinematic_viscosity_m2_per_s", "5e-5, 38 times water (Re ~16, within 2-D IB jellyfish studies' 10-300), "
+                                         "so that 1 mm cells resolve the Stokes layer"},
+        {"advection", "maccormack (Selle et al. 2008, second order in space)"},
+        {"kernel", "peskin4: the hat's bell does not converge in its segments"},
+        {"kernel_radius_m", "the bell's 4 mm thickness (Fig. 12), so that a grid study refines one body"},
+        {"implicit_theta", "0.5, which doubles the step at the same accuracy"},
+        {"blowup_speed_m_per_s", "5 m/s, 100x the swimming flow"},
+    });
+    describeFluidBox(noted, swimmer.fluid);
+    swimmer.coupling.describe(noted);
+    describeKernelRadius(noted, kernel_radius_m);
     swimmer.describeStep(v);
+    swimmer.fluid.describeBlowupSpeed(noted);
     v.real("box_aspect", box_aspect, "", 0.25, 8,
            "box height / width; cells x box_aspect must be whole (1.44: cells a multiple of 25); tall enough that "
            "floor and top barely move the swim");
