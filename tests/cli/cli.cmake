@@ -62,3 +62,5 @@ creaturelab_cli_test(jellyfish_membrane_checks_fail TIMEOUT 600)
 creaturelab_cli_test(jellyfish_bell_checks_fail TIMEOUT 600)
 # Fig. 5's speed-peak and stroke-peak checks FAIL with the resonance broken (a softer bell, a viscous fluid); 19 s CPU
 creaturelab_cli_test(jellyfish_resonance_checks_fail TIMEOUT 600 COST 1000)
+# the paper model's Fig. 5 and Fig. 11 checks FAIL with its muscles held at rest length or its bell as soft as the default's; 15 s CPU
+creaturelab_cli_test(jellyfish_paper_checks_fail TIMEOUT 600)
