@@ -6,7 +6,8 @@ CMAKE_ARGS ?=
 # New build trees use Ninja (scripts/deps.sh installs it); an existing tree keeps its generator.
 generator = $(if $(wildcard $(1)/CMakeCache.txt),,-G Ninja)
 # The sanitizer tree at -O1 with line tables (-g1: file and line in reports): it compiles in about
-# half the time of RelWithDebInfo's -O2 -g.
+# half the time of RelWithDebInfo's -O2 -g. Its test programs and bookkeeping libraries go down to -O0
+# (CMakeLists.txt, CREATURELAB_SANITIZE_O0_LIBS).
 ASAN_FLAGS = -O1 -g1 -DNDEBUG
 REPRO_LOG  = $(BUILD)/reproduce-build.log
 
