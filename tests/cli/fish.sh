@@ -69,7 +69,8 @@ PY
 # artifact, vertex for vertex.
 frame=$(/usr/bin/python3 -c 'import h5py, sys; print(h5py.File(sys.argv[1])["topology/skin_frames"][1])' \
   "$scratch/a/point_000001.h5")
-"$bin" list render | grep -q "on fish runs" || fail "list render shows no fish settings"
+"$bin" list render >"$scratch/list_render.txt"
+grep -q "on fish runs" "$scratch/list_render.txt" || fail "list render shows no fish settings"
 "$bin" render "$scratch/a" --point 1 --frames "$frame" skin_samples_around=8 skin_samples_along=16 \
   -o "$scratch/render" >/dev/null || fail "render of a fish run failed"
 diff <(grep '^[vf]' "$scratch/a/point_000001_skin_001.obj") \
