@@ -16,17 +16,23 @@ std::string positive(const char* name, double v) {
 
 }  // namespace
 
-std::string validate(const FishGeometry& g, const UnitParams& u) {
-  for (auto [name, v] : {std::pair{"body_length_m", g.body_length_m}, {"tail_half_height", g.tail_half_height},
-                         {"stiffness_cross_n_per_m", u.stiffness_cross_n_per_m},
-                         {"stiffness_other_n_per_m", u.stiffness_other_n_per_m},
-                         {"stiffness_muscle_n_per_m", u.stiffness_muscle_n_per_m}, {"mass_unit_kg", u.mass_unit_kg}})
+std::string UnitParams::validate() const {
+  for (auto [name, v] : {std::pair{"stiffness_cross_n_per_m", stiffness_cross_n_per_m},
+                         {"stiffness_other_n_per_m", stiffness_other_n_per_m},
+                         {"stiffness_muscle_n_per_m", stiffness_muscle_n_per_m}, {"mass_unit_kg", mass_unit_kg}})
     if (auto m = positive(name, v); !m.empty()) return m;
-  if (!(u.damping_ns_per_m >= 0) || !std::isfinite(u.damping_ns_per_m))
-    return "damping_ns_per_m must be >= 0 (got " + std::to_string(u.damping_ns_per_m) + ")";
+  if (!(damping_ns_per_m >= 0) || !std::isfinite(damping_ns_per_m))
+    return "damping_ns_per_m must be >= 0 (got " + std::to_string(damping_ns_per_m) + ")";
   for (int i = 0; i < 7; ++i)
-    if (!(u.mass_units[i] > 0) || !std::isfinite(u.mass_units[i]))
-      return "mass of node class " + std::to_string(i) + " must be positive (got " + std::to_string(u.mass_units[i]) + ")";
+    if (!(mass_units[i] > 0) || !std::isfinite(mass_units[i]))
+      return "mass of node class " + std::to_string(i) + " must be positive (got " + std::to_string(mass_units[i]) + ")";
+  return "";
+}
+
+std::string FishGeometry::validate() const {
+  const FishGeometry& g = *this;
+  for (auto [name, v] : {std::pair{"body_length_m", g.body_length_m}, {"tail_half_height", g.tail_half_height}})
+    if (auto m = positive(name, v); !m.empty()) return m;
   double prev = 0;
   for (int r = 0; r < 5; ++r) {
     if (!(g.ring_station[r] > prev) || !(g.ring_station[r] < 1))
@@ -57,7 +63,8 @@ FaceFrame faceNormal(const NodeMatrix& x, const Face& f) {
 }
 
 FishModel buildFish(const FishGeometry& g, const UnitParams& u) {
-  if (auto problem = validate(g, u); !problem.empty()) throw std::invalid_argument(problem);
+  for (const std::string& problem : {g.validate(), u.validate()})
+    if (!problem.empty()) throw std::invalid_argument(problem);
   FishModel fish;
   fish.body_length_m = g.body_length_m;
   const double L = g.body_length_m;

@@ -53,6 +53,10 @@ struct FishGeometry {
            "height of the dorsal and ventral tail-fin tips (nodes 21, 22) above and below the axis, in body lengths "
            "(shape = ours)");
   }
+
+  // "" if the shape can be built (positive sizes, ring stations increasing inside (0, 1)), else
+  // what is wrong, naming the parameter.
+  std::string validate() const;
 };
 
 // The reimplementation's own node coordinates (FishData.cs InitNodes: snout at 0, rings at 5, 10,
@@ -90,6 +94,9 @@ struct UnitParams {
            "muscle units: 400 x the [reimpl] 28 (as the cross units)");
     v.real("damping_ns_per_m", damping_ns_per_m, "N*s/m", 0, 1e9, "Voigt damping gamma of every unit (spec §1 [reimpl])");
   }
+
+  // "" if every stiffness and mass is positive and the damping >= 0, else what is wrong, naming it.
+  std::string validate() const;
 };
 
 // One muscle: its unit, its segment (0 anterior, 1 middle, 2 posterior: ring gaps 1-2, 2-3, 3-4),
@@ -117,9 +124,6 @@ struct FishModel {
   double totalMassKg() const { return network.mass_kg.sum(); }
 };
 
-// "" if the geometry and unit parameters describe a fish that can be built, else what is wrong,
-// naming the parameter.
-std::string validate(const FishGeometry& g, const UnitParams& u);
 
 // Builds the fish; throws std::invalid_argument with validate()'s message on bad input.
 FishModel buildFish(const FishGeometry& g, const UnitParams& u);

@@ -14,7 +14,8 @@ FishState restState(const FishModel& fish) {
   return s;
 }
 
-std::string validate(const SolverParams& p) {
+std::string SolverParams::validate() const {
+  const SolverParams& p = *this;
   if (!(p.dt_s > 0) || !std::isfinite(p.dt_s)) return "dt_s must be positive (got " + std::to_string(p.dt_s) + ")";
   if (!(p.water.mu >= 0) || !std::isfinite(p.water.mu)) return "water_mu must be >= 0 (got " + std::to_string(p.water.mu) + ")";
   if (!p.water.current_m_per_s.allFinite()) return "current_m_per_s must be finite";
@@ -23,7 +24,7 @@ std::string validate(const SolverParams& p) {
 }
 
 FishSolver::FishSolver(const FishModel& fish, SolverParams params) : fish_(fish), params_(std::move(params)) {
-  if (auto problem = validate(params_); !problem.empty()) throw std::invalid_argument(problem);
+  if (auto problem = params_.validate(); !problem.empty()) throw std::invalid_argument(problem);
   for (int i = 0; i < kNodes; ++i) mass_kg_[i] = fish.network.mass_kg[i];
   for (int e = 0; e < kUnits; ++e) rest0_m_[e] = fish.network.rest_length_m[e];
 }

@@ -69,10 +69,10 @@ struct SolverParams {
     v.real("blowup_strain", blowup_strain, "", 1e-3, 1e3,
            "a unit longer than (1 + this) or shorter than 1/(1 + this) times its undeformed length counts as a blow-up");
   }
-};
 
-// "" or what is wrong, naming the parameter.
-std::string validate(const SolverParams& p);
+  // "" or what is wrong, naming the parameter.
+  std::string validate() const;
+};
 
 enum class StepStatus { ok, not_positive_definite, non_finite, overstretched };
 

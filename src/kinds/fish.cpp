@@ -124,8 +124,8 @@ FishSetup FishKindParams::setup() const {
   if (auto e = s.motor.validate(); !e.empty()) throw std::invalid_argument(e);
   s.skin = skin_params;
   if (auto e = s.skin.validate(); !e.empty()) throw std::invalid_argument(e);
-  if (auto e = fish::validate(s.geometry, s.units); !e.empty()) throw std::invalid_argument(e);
-  if (auto e = fish::validate(s.solver); !e.empty()) throw std::invalid_argument(e);
+  for (const std::string& e : {s.geometry.validate(), s.units.validate(), s.solver.validate()})
+    if (!e.empty()) throw std::invalid_argument(e);
   try {
     s.schedule = fish::parseSchedule(schedule);
   } catch (const std::invalid_argument& e) {

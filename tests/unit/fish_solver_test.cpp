@@ -389,10 +389,10 @@ TEST(FishSolver, BlowUpIsDetectedAndNamed) {
 TEST(FishParams, BadInputNamesTheParameter) {
   SolverParams p = testSolver();
   p.dt_s = 0;
-  EXPECT_NE(validate(p).find("dt_s"), std::string::npos);
+  EXPECT_NE(p.validate().find("dt_s"), std::string::npos);
   UnitParams u = testUnits();
   u.mass_units[2] = -1;
-  EXPECT_NE(validate(testBody(), u).find("mass"), std::string::npos);
+  EXPECT_NE(u.validate().find("mass"), std::string::npos);
   EXPECT_THROW(buildFish(testBody(), u), std::invalid_argument);
 }
 
