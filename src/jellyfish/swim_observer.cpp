@@ -159,6 +159,10 @@ SwimMeasures SwimObserver::measures(const Swimmer& swimmer) const {
   m.cycles = cycles;
   m.max_cfl = max_cfl_;
   m.max_marker_speed_m_per_s = max_speed_;
+  m.markers = double(swimmer.markers_m().size());
+  m.kernel_cells = double(swimmer.config().coupling.kernel_scale);
+  m.segment_cells = swimmer.body().model().segment_m / swimmer.fluid().grid().dx_m;
+  m.steps = double(plan_.total_steps);
   return m;
 }
 

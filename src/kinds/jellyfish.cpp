@@ -109,36 +109,21 @@ void addTopology(Result& result, const jellyfish::BellModel& m) {
   result.topology["bell_markers"] = {m.bell_markers};
 }
 
-void addMetrics(Result& result, const jellyfish::SwimMeasures& x, const jellyfish::Swimmer& swimmer,
-                const jellyfish::SwimSchedule& plan) {
-  auto& m = result.metrics;
-  m["distance_m"] = {x.distance_m, "m"};
-  m["distance_per_cycle_m"] = {x.distance_per_cycle_m, "m"};
-  m["mean_speed_m_per_s"] = {x.mean_speed_m_per_s, "m/s"};
-  m["cycle_speed_m_per_s"] = {x.cycle_speed_m_per_s, "m/s"};
-  m["whole_cycles"] = {x.whole_cycles, ""};
-  m["min_diameter_ratio"] = {x.min_diameter_ratio, ""};
-  m["stroke_amplitude"] = {x.stroke_amplitude, ""};
-  m["ringdown_hz"] = {x.ringdown_hz, "Hz"};
-  m["natural_hz"] = {x.natural_hz, "Hz"};
-  m["damping_ratio"] = {x.damping_ratio, ""};
-  m["mode_residual"] = {x.mode_residual, ""};
-  m["lateral_drift_m"] = {x.lateral_drift_m, "m"};
-  m["forward_travel_m"] = {x.forward_travel_m, "m"};
-  m["cycle_distance_spread"] = {x.cycle_distance_spread, ""};
-  m["cycle_distance_growth"] = {x.cycle_distance_growth, ""};
-  m["net_fraction"] = {x.net_fraction, ""};
-  m["muscle_work_j"] = {x.muscle_work_j, "J/m"};
-  m["muscle_work_direct_j"] = {x.muscle_work_direct_j, "J/m"};
-  m["cost_of_transport"] = {x.cost_of_transport, "J/(kg m)"};
-  m["cycles"] = {x.cycles, ""};
-  m["max_cfl"] = {x.max_cfl, ""};
-  m["max_marker_speed_m_per_s"] = {x.max_marker_speed_m_per_s, "m/s"};
-  m["markers"] = {double(swimmer.markers_m().size()), ""};
-  m["kernel_cells"] = {double(swimmer.config().coupling.kernel_scale), ""};
-  m["segment_cells"] = {swimmer.body().model().segment_m / swimmer.fluid().grid().dx_m, ""};
-  m["steps"] = {double(plan.total_steps), ""};
-}
+// The observer's measures (jellyfish::SwimMeasures::describe) as the kind's metric list, and as a
+// run's metrics.
+struct MetricList {
+  std::vector<MetricSpec> specs;
+  void metric(const std::string& name, double&, const std::string& unit, const std::string& doc) {
+    specs.push_back({name, unit, doc});
+  }
+};
+
+struct MetricValues {
+  Result& result;
+  void metric(const std::string& name, double& value, const std::string& unit, const std::string&) {
+    result.metrics[name] = {value, unit};
+  }
+};
 
 }  // namespace
 
@@ -197,58 +182,9 @@ std::string JellyfishKindParams::validate() const {
 }
 
 JellyfishKind::JellyfishKind() {
-  metrics_ = {
-      {"distance_m", "m", "axial (+y) displacement of the bell's centroid over the measured window"},
-      {"distance_per_cycle_m", "m",
-       "displacement over the window's whole cycles / their number (distance_m / cycles when the window has "
-       "less than one): a window that ends part way through a cycle would add that part's surge or slide"},
-      {"mean_speed_m_per_s", "m/s", "distance_m / duration_s"},
-      {"cycle_speed_m_per_s", "m/s",
-       "distance_per_cycle_m x contraction_hz: the mean speed over the window's whole cycles, the measure of "
-       "Fig. 5's 'distance in a given time' that does not depend on where the window cuts the last cycle"},
-      {"whole_cycles", "", "whole contraction cycles in the window (distance_per_cycle_m, the work measures)"},
-      {"min_diameter_ratio", "", "smallest aperture width / drawn width in the window"},
-      {"stroke_amplitude", "", "largest minus smallest diameter ratio over the second half of the window (the "
-                               "frequency response's amplitude, once the start-up has died away)"},
-      {"ringdown_hz", "Hz", "active_cycles > 0: damped frequency of the diameter's free decay after the last active "
-                          "cycle (zero crossings of ratio - 1); NaN without two half periods"},
-      {"natural_hz", "Hz", "active_cycles > 0: the bell-water natural frequency f_n from a fit of one damped mode "
-                         "to the whole free decay, sqrt(sigma^2 + omega^2) / 2 pi (jellyfish/ringdown.hpp)"},
-      {"damping_ratio", "", "the same fit's sigma / sqrt(sigma^2 + omega^2)"},
-      {"mode_residual", "", "rms residual of that fit over the decay's rms: how much of the decay is not one mode"},
-      {"lateral_drift_m", "m", "x displacement of the centroid over the window"},
-      {"forward_travel_m", "m",
-       "sum of the centroid's upward steps over the window: the bell surges forward on each contraction and "
-       "slides back on each re-expansion, and distance_m is what is left of the surge"},
-      {"net_fraction", "",
-       "distance_m / forward_travel_m: near 1 a stroke that keeps its surge; small, a nearly reciprocal one, "
-       "whose distance is a small difference of two large excursions and converges slowly in the grid"},
-      {"cycle_distance_spread", "",
-       "standard error of the mean distance per whole cycle in the window over distance_per_cycle_m (sample "
-       "deviation of the cycles' distances / sqrt(cycles)): how far the window is from periodic. Whether that "
-       "is a scatter or a start-up trend, see cycle_distance_growth; a steady trend is deterministic and a "
-       "grid study compares it like any other number. NaN with fewer than two whole cycles"},
-      {"cycle_distance_growth", "",
-       "least-squares line through the whole cycles' distances against their order, its rise from the "
-       "window's first cycle to its last over distance_per_cycle_m: positive while the bell still gains "
-       "speed, negative while the surge of its first strokes fades. NaN with fewer than two whole cycles"},
-      {"muscle_work_j", "J/m",
-       "muscles' net work over the whole cycles of the window, per metre of depth: the work the body did on the "
-       "fluid, sum F . dX (the body has no internal dissipation, so over periodic cycles the muscles' work goes "
-       "to the fluid); converged in dt"},
-      {"muscle_work_direct_j", "J/m",
-       "the same from -sum T dr (tension x rest-length shortening): adds the semi-implicit step's damping of the "
-       "stiff muscle, which falls in proportion to dt"},
-      {"cost_of_transport", "J/(kg m)",
-       "muscle_work_j / (bell mass per metre x distance over those whole cycles); NaN if that distance <= 0"},
-      {"cycles", "", "contraction cycles in the measured window"},
-      {"max_cfl", "", "largest max(|u|,|v|) dt / dx of any step"},
-      {"max_marker_speed_m_per_s", "m/s", "largest marker speed of any step"},
-      {"markers", "", "immersed-boundary markers (bell + tentacles)"},
-      {"kernel_cells", "", "the kernel's stretch: its radius in units of its own reach in cells (1 = the grid's kernel)"},
-      {"segment_cells", "", "drawn bell segment length in fluid cells (bell_segments = 0 keeps it <= marker_spacing_cells)"},
-      {"steps", "", "coupled steps taken"},
-  };
+  MetricList list;
+  jellyfish::SwimMeasures().describe(list);
+  metrics_ = std::move(list.specs);
 }
 
 std::string JellyfishKind::doc() const {
@@ -306,7 +242,8 @@ Result JellyfishKind::run(const Params& p) const {
   } catch (const std::exception& e) {
     throw RunFailure("jellyfish at t = " + std::to_string(swimmer.time_s()) + " s: " + e.what(), result);
   }
-  addMetrics(result, observer.measures(swimmer), swimmer, plan);
+  MetricValues metrics{result};
+  observer.measures(swimmer).describe(metrics);
   return result;
 }
 
