@@ -99,7 +99,8 @@ rc=0
 "$bin" render "$scratch/swim" -o "$scratch/out_exists" >/dev/null 2>"$scratch/exists.stderr" || rc=$?
 [[ $rc == 2 ]] && grep -q "already exists: pass --force" "$scratch/exists.stderr" || fail "existing output: $rc"
 [ -z "$(ls "$scratch/out_exists")" ] || fail "wrote into an existing folder"
-"$bin" list render | grep -q "noise_seed" || fail "list render"
+"$bin" list render >"$scratch/list_render.txt" || fail "list render exited $?"
+grep -q "noise_seed" "$scratch/list_render.txt" || fail "list render: no noise_seed"
 
 # A reproduce list's [[render]] entry renders the run under the list's --out folder, not under
 # results/runs/reproduce whatever --out says.

@@ -3,6 +3,8 @@
 // draws the same frames, refusing a recording without markers and settings out of range.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <map>
 #include <stdexcept>
 
@@ -58,13 +60,15 @@ Params defaults(const RenderHook& hook) {
   return p;
 }
 
-TEST(RenderHook, OnlyTheJellyfishsRunsRender) {
+TEST(RenderHook, TheJellyfishsAndTheFishsRunsRender) {
   const Registry registry = defaultRegistry();
   std::vector<std::string> rendering;
   for (const auto& kind : registry.all())
     if (kind->renderHook()) rendering.push_back(kind->name());
-  EXPECT_EQ(rendering, std::vector<std::string>{"jellyfish"});
+  std::sort(rendering.begin(), rendering.end());
+  EXPECT_EQ(rendering, (std::vector<std::string>{"fish", "jellyfish"}));
   EXPECT_EQ(registry.find("jellyfish")->renderHook()->name(), "jellyfish_render");
+  EXPECT_EQ(registry.find("fish")->renderHook()->name(), "fish_render");
 }
 
 TEST(RenderHook, JellyfishDrawsTheRecordedFramesAsItsRenderer) {
