@@ -7,7 +7,7 @@ CMAKE_ARGS ?=
 generator = $(if $(wildcard $(1)/CMakeCache.txt),,-G Ninja)
 # The sanitizer tree at -O1 with line tables (-g1: file and line in reports): it compiles in about
 # half the time of RelWithDebInfo's -O2 -g. Its test programs and bookkeeping libraries go down to -O0
-# (CMakeLists.txt, CREATURELAB_SANITIZE_O0_LIBS).
+# (CMakeLists.txt, CREATURELAB_TEST_OPT).
 ASAN_FLAGS = -O1 -g1 -DNDEBUG
 REPRO_LOG  = $(BUILD)/reproduce-build.log
 

@@ -26,7 +26,7 @@ if(CREATURELAB_PCH)
   add_library(cl_pch_test STATIC EXCLUDE_FROM_ALL "${anchor}")
   target_link_libraries(cl_pch_test PRIVATE Eigen3::Eigen GTest::gtest)
   target_precompile_headers(cl_pch_test PRIVATE ${CREATURELAB_PCH_HEADERS} <gtest/gtest.h>)
-  creaturelab_sanitize_o0(cl_pch_test)  # as the test programs (tests/CMakeLists.txt)
+  creaturelab_test_optimisation(cl_pch_test)  # as the test programs (CMakeLists.txt)
 endif()
 
 # True when compile options hold a flag the precompiled headers were not built with (-m..., -pthread).
@@ -54,9 +54,9 @@ function(_creaturelab_apply_pch target kind)
   if(isa)
     return()
   endif()
-  # A target compiled at -O0 in the sanitizer tree (creaturelab_sanitize_o0) takes the -O0 headers.
-  get_target_property(o0 ${target} CREATURELAB_O0)
-  if(kind STREQUAL "TEST" OR o0)
+  # A target compiled at the test programs' level (creaturelab_test_optimisation) takes their headers.
+  get_target_property(test_opt ${target} CREATURELAB_TEST_OPT)
+  if(kind STREQUAL "TEST" OR test_opt)
     target_precompile_headers(${target} REUSE_FROM cl_pch_test)
   else()
     target_precompile_headers(${target} REUSE_FROM cl_pch_lib)
