@@ -2,7 +2,8 @@
 
 namespace creaturelab::coupling {
 
-std::string validate(const InflowParams& p, const fluid::FluidParams& f) {
+std::string InflowParams::validate(const fluid::FluidParams& f) const {
+  const InflowParams& p = *this;
   using fluid::WallType;
   const bool left_inflow = f.walls.left.type == WallType::inflow;
   const bool floor_inflow = f.walls.bottom.type == WallType::inflow;

@@ -24,10 +24,10 @@ struct InflowParams {
   int stream_columns = 0;       // width of the held band, cells (0: none, with an inflow left wall)
   double source_m_per_s = 0.0;  // upward speed of the floor source (0: none)
   int source_rows = 0;          // height of the held band, cells (0: none, with an inflow floor)
-};
 
-// "" when usable with these walls, else what is wrong.
-std::string validate(const InflowParams& p, const fluid::FluidParams& fluid);
+  // "" when usable with these walls, else what is wrong.
+  std::string validate(const fluid::FluidParams& fluid) const;
+};
 
 // The stage: sets the held bands' velocities (no-op without bands).
 void applyInflow(fluid::MacGrid2& grid, const InflowParams& p);

@@ -20,7 +20,8 @@ int phaseAt(const PhaseSchedule& s, double t_s) {
   return int(s.fractions.size()) - 1;  // round-off at the cycle's end
 }
 
-std::string validate(const MouthParams& m) {
+std::string MouthParams::validate() const {
+  const MouthParams& m = *this;
   const auto& f = m.schedule.fractions;
   if (!(m.schedule.cycle_s > 0)) return "cycle_s must be positive";
   for (double x : f)

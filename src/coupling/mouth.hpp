@@ -39,10 +39,10 @@ struct MouthParams {
   double normal_x = 0.0, normal_z = -1.0;   // outward (expelling) normal in that frame; normalised
   PhaseSchedule schedule;
   std::vector<double> flux_m_per_s;         // per phase; + expels along the normal, - draws in
-};
 
-// "" when usable, else what is wrong (phase table lengths, fractions summing to 1, width).
-std::string validate(const MouthParams& m);
+  // "" when usable, else what is wrong (phase table lengths, fractions summing to 1, width).
+  std::string validate() const;
+};
 
 // Flux speed (m/s, + expelling) at time t_s.
 double mouthFlux_m_per_s(const MouthParams& m, double t_s);

@@ -9,7 +9,8 @@
 
 namespace creaturelab::coupling {
 
-std::string validate(const RigidFluidParams& p, const fluid::FluidParams& fluid) {
+std::string RigidFluidParams::validate(const fluid::FluidParams& fluid) const {
+  const RigidFluidParams& p = *this;
   if (auto e = fluid.validate(); !e.empty()) return e;
   if (!(p.marker_spacing_cells > 0 && p.marker_spacing_cells <= 1.0))
     return "marker_spacing_cells must be in (0, 1]: markers coarser than one cell leave gaps the kernel does not "
@@ -20,8 +21,8 @@ std::string validate(const RigidFluidParams& p, const fluid::FluidParams& fluid)
   if (!(p.depth_m > 0)) return "depth_m must be positive";
   if (!(p.max_marker_cells_per_step > 0 && p.max_marker_cells_per_step <= 2))
     return "max_marker_cells_per_step must be in (0, 2]";
-  if (auto e = validate(p.mouth); !e.empty()) return e;
-  return validate(p.inflow, fluid);
+  if (auto e = p.mouth.validate(); !e.empty()) return e;
+  return p.inflow.validate(fluid);
 }
 
 namespace {
@@ -35,7 +36,7 @@ void addScaled(fluid::Array2& a, double s, const fluid::Array2& b) {
   for (std::size_t k = 0; k < a.size(); ++k) p[k] += s * q[k];
 }
 const fluid::FluidParams& checked(const RigidFluidParams& p, const fluid::FluidParams& f) {
-  if (auto e = validate(p, f); !e.empty()) throw std::invalid_argument(e);
+  if (auto e = p.validate(f); !e.empty()) throw std::invalid_argument(e);
   return f;
 }
 }  // namespace

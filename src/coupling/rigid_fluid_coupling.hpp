@@ -84,10 +84,10 @@ struct RigidFluidParams {
   InflowParams inflow;
   // The swimmer's mouth (mouth.hpp, §7.2): markers after the outlines' whose velocity carries a flux.
   MouthParams mouth;
-};
 
-// "" when usable, else what is wrong.
-std::string validate(const RigidFluidParams& p, const fluid::FluidParams& fluid);
+  // "" when usable in this fluid, else what is wrong.
+  std::string validate(const fluid::FluidParams& fluid) const;
+};
 
 // A step beyond the coupled stability limit, or a body leaving the fluid box, during a run.
 class CouplingError : public std::runtime_error {

@@ -114,7 +114,7 @@ std::string ControlFluidParams::validate() const {
     if (auto e = swimmer.validate(model, controller.frame_s, controller.frames); !e.empty()) return e;
     const auto f = fluidParams();
     const auto c = rigidFluidParams();
-    if (auto e = coupling::validate(c, f); !e.empty()) return e;
+    if (auto e = c.validate(f); !e.empty()) return e;
     rigid::RigidData data(model);
     for (const auto& [joint, rad] : initialRad()) {
       if (model.findJoint(joint) < 0) return "initial_deg: joint '" + joint + "' is not in the model " + model.path();

@@ -67,7 +67,7 @@ std::vector<double> SwimmerSettings::phaseStrengths() const {
 
 std::string SwimmerSettings::validate(const rigid::RigidModel& model, double frame_s, std::int64_t frames) const {
   const auto m = mouthParams();
-  if (auto e = coupling::validate(m); !e.empty()) return e;
+  if (auto e = m.validate(); !e.empty()) return e;
   const auto strengths = phaseStrengths();
   if (!strengths.empty() && strengths.size() != m.schedule.fractions.size())
     return "phase_strength_rad_per_s needs one strength per phase (" + std::to_string(m.schedule.fractions.size()) +

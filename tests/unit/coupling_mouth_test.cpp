@@ -67,7 +67,7 @@ TEST_F(MouthTest, PhasesFollowTheFractionsAndRepeat) {
   MouthParams m = expelling(0.5);
   m.schedule = {2.0, {0.2, 0.1, 0.7}};
   m.flux_m_per_s = {-0.25, 0.5, 0.0};
-  EXPECT_EQ(validate(m), "");
+  EXPECT_EQ(m.validate(), "");
   EXPECT_EQ(phaseAt(m.schedule, 0.0), 0);
   EXPECT_EQ(phaseAt(m.schedule, 0.39), 0);
   EXPECT_EQ(phaseAt(m.schedule, 0.41), 1);
@@ -76,9 +76,9 @@ TEST_F(MouthTest, PhasesFollowTheFractionsAndRepeat) {
   EXPECT_EQ(mouthFlux_m_per_s(m, 2.1), -0.25);
   EXPECT_EQ(mouthFlux_m_per_s(m, 3.9), 0.0);
   m.schedule.fractions = {0.5, 0.1, 0.7};
-  EXPECT_NE(validate(m).find("phase_fractions must sum to 1"), std::string::npos);
+  EXPECT_NE(m.validate().find("phase_fractions must sum to 1"), std::string::npos);
   m.schedule.fractions = {0.2, 0.8};
-  EXPECT_NE(validate(m).find("phase_flux_m_per_s"), std::string::npos);
+  EXPECT_NE(m.validate().find("phase_flux_m_per_s"), std::string::npos);
 }
 
 // The mouth's forcing stage on a fluid at rest with the body still: the momentum the fluid gains is

@@ -243,16 +243,16 @@ TEST(Inflow, SourceWallsAndBandsAreValidatedTogether) {
   f.walls.bottom.inflow_m_per_s = 0.5;
   InflowParams p;
   p.source_m_per_s = 0.5;
-  EXPECT_EQ(validate(p, f), "");  // an inflow floor needs no band
+  EXPECT_EQ(p.validate(f), "");  // an inflow floor needs no band
   p.source_m_per_s = 0.0;
-  EXPECT_NE(validate(p, f).find("source_m_per_s"), std::string::npos);
+  EXPECT_NE(p.validate(f).find("source_m_per_s"), std::string::npos);
   f.walls.bottom = {};  // free slip
   p.source_m_per_s = 0.5;
-  EXPECT_NE(validate(p, f).find("inflow floor"), std::string::npos) << validate(p, f);
+  EXPECT_NE(p.validate(f).find("inflow floor"), std::string::npos) << p.validate(f);
   f.walls.bottom.type = fluid::WallType::open;
-  EXPECT_NE(validate(p, f).find("source_rows"), std::string::npos) << validate(p, f);  // open floor: a band
+  EXPECT_NE(p.validate(f).find("source_rows"), std::string::npos) << p.validate(f);  // open floor: a band
   p.source_rows = 3;
-  EXPECT_EQ(validate(p, f), "");
+  EXPECT_EQ(p.validate(f), "");
 }
 
 }  // namespace
