@@ -1,5 +1,5 @@
 #pragma once
-// `creaturelab fit spline DATA` and `creaturelab fit controller FILE` (issue 6). Each returns the
+// `creaturelab fit spline DATA` and `creaturelab fit controller FILE`. Each returns the
 // exit code; user errors are thrown as std::runtime_error (Commands::guard prints them, exit 2).
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // The creature controller of Lentine et al. 2010 in the full fluid (§4.3, §5, §6;
-// "Creature Control in a Fluid Environment"; issue 16): Controller's frame (controller.hpp) with the
+// "Creature Control in a Fluid Environment"): Controller's frame (controller.hpp) with the
 // simple wind replaced by the two-way coupled 2-D fluid (src/coupling/):
 //   - a derivative evaluation restores its own copy of the whole state (bodies and fluid, §4.3:
 //     "each perturbation needs its own copy of the fluid state"), moves the joint by +-delta over

@@ -1,6 +1,6 @@
 #pragma once
-// The external-force stage of a creature step: a swappable stage (issue 15; part 2, issue 16,
-// puts the project's fluid here instead of the simple wind). It reads the current pose and
+// The external-force stage of a creature step: a swappable stage (the coupled
+// fluid can stand here instead of the simple wind). It reads the current pose and
 // velocities (RigidData::kinematics() done), adds its generalized forces to the data's applied
 // forces and reports the force on each body, from which the drag objectives are taken
 // (Lentine et al. 2010 §3.2, Eqs. 3-4). Implementations are immutable once built, so any number

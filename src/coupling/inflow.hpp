@@ -1,5 +1,5 @@
 #pragma once
-// Fluid boundaries of the creature experiments (issue 16; Lentine et al. 2010 §4.3 Fig. 8, §7.1;
+// Fluid boundaries of the creature experiments (Lentine et al. 2010 §4.3 Fig. 8, §7.1;
 // "Creature Control in a Fluid Environment"). The paper says neither how its stream was made nor how
 // its source was. Two ways here:
 //  - an inflow wall (fluid::WallType::inflow, boundary2.hpp): the left wall or the floor is a

@@ -1,6 +1,6 @@
 #pragma once
 // The swimmer's mouth (Lentine et al. 2010 §7.2: "enforcing
-// a non-zero flux across the 'mouth' (located on the bottom) of the creature"; issue 16).
+// a non-zero flux across the 'mouth' (located on the bottom) of the creature").
 //
 // The paper's solids are closed: it enforces the flux as a boundary condition of its coupled
 // solve (Eq. 9). Here the bodies' outlines are closed marker loops whose inside moves rigidly, so a

@@ -1,5 +1,5 @@
 #pragma once
-// Boundary markers on the outlines of a planar MuJoCo creature (issue 16; Lentine et al. 2010 §4.2): the
+// Boundary markers on the outlines of a planar MuJoCo creature (Lentine et al. 2010 §4.2): the
 // fluid of the project is 2-D in the vertical x-z
 // plane of the creature, so each geom is cut by that plane and its outline is sampled by markers
 // no farther apart than `spacing_m`. The markers are fixed in their geom's frame and move with it.

@@ -1,6 +1,6 @@
 #pragma once
 // Two-way coupling of MuJoCo's planar rigid bodies with the 2-D fluid by direct forcing on
-// outline markers (issue 16; Lentine et al. 2010 §4.2, §6;
+// outline markers (Lentine et al. 2010 §4.2, §6;
 // the immersed-boundary transfer of src/ib, Peskin 2002). The fluid lives in the creature's x-z
 // plane: fluid (x, y) = world (x - origin_x, z - origin_z), per metre of depth; the bodies are
 // depth_m deep along y.

@@ -1,6 +1,6 @@
 #pragma once
 // Tuning controller parameters (stagger, knot values, frequency, ...) of a kind for an objective
-// computed from its metrics (issue 6). Each objective evaluation is one deterministic run of the
+// computed from its metrics. Each objective evaluation is one deterministic run of the
 // kind (kinds::Kind::run); derivatives are central differences, one parameter at a time, as in
 // Lentine et al. 2010 (Creature Control in a Fluid Environment, §2.1: "make a change in one
 // direction, evaluate the objective function, then make the same change in the opposite

@@ -1,7 +1,7 @@
 #pragma once
 // A measured contraction profile: samples (time, value, weight) of the normalised bell diameter
 // or muscle length over one or more periods, and the checks a profile must pass before it is
-// fitted (issue 6, "Bad input"). Pure data and checks: the readers are in profile_io.hpp.
+// fitted ("Bad input"). Pure data and checks: the readers are in profile_io.hpp.
 #include <string>
 #include <vector>
 

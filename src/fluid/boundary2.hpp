@@ -5,7 +5,7 @@
 // inflow wall its prescribed speed into the domain; an open wall's faces are unknowns like
 // interior faces. An inflow wall is solid everywhere else (known faces, Neumann pressure), so the
 // projection keeps its flux: the flux a held band of faces next to an open wall lost to the
-// projection (issue 16, the flyer's floor source) cannot leak away here.
+// projection (the flyer's floor source) cannot leak away here.
 // Tangential velocity: the tangential component's samples sit half a cell from the wall, so a
 // ghost sample half a cell outside, mirrored across the wall, sets the wall value:
 //   free-slip and open  ghost = interior            (∂u_t/∂n = 0)

@@ -22,7 +22,7 @@ namespace creaturelab::jellyfish {
 
 enum class Expansion { unison, staggered };
 
-/// How the circumferential muscle acts (issue 13 §2).
+/// How the circumferential muscle acts.
 enum class MuscleModel {
   // The paper's (§3.3): muscle springs whose rest length follows the activation curve. The curve
   // prescribes the stroke: the bell contracts to about the curve's minimum at every frequency, so
@@ -52,7 +52,7 @@ struct BellParams {
   // cell apart on the 1 mm grid, and one body through the grid study (markers closer than dx/2 keep
   // the IB boundary from leaking, Peskin 2002 §4); the paper's Fig. 4 chain is coarse (paperBell: 32).
   int segments = 256;
-  // The body is defined by continuum properties (issue 13 §1): the per-segment constants below are
+  // The body is defined by continuum properties: the per-segment constants below are
   // derived from them for any `segments`, so that refining the chain with the grid refines the
   // same body.
   template <class V>

@@ -47,7 +47,7 @@ struct ControlParams {
 };
 
 // A creature driven by the gradient-descent controller of Lentine et al. 2010 under gravity and
-// simple wind (Lentine et al. 2010 §2-3, §5, §7; issue 15): an MJCF model,
+// simple wind (Lentine et al. 2010 §2-3, §5, §7): an MJCF model,
 // controlled joints with their objectives, kinematic joints held.
 class ControlKind : public DescribedKind<ControlParams> {
  public:

@@ -101,7 +101,7 @@ struct ControlFluidParams {
   void describeFluid(V& v) {
     using fluid::WallType;
     v.real("domain_m", fluid.domain_width_m, "m", 1e-3, 100, "side of the square fluid box (the paper gives none: 4 block lengths)");
-    v.integer("cells", fluid.cells_x, 8, 2048, "cells per side (issue 16's speed goal: 128^2)");
+    v.integer("cells", fluid.cells_x, 8, 2048, "cells per side");
     v.real("density_kg_per_m3", fluid.density_kg_per_m3, "kg/m^3", 1e-3, 1e6, "fluid density (§7: 'similar to water')");
     v.real("kinematic_viscosity_m2_per_s", fluid.kinematic_viscosity_m2_per_s, "m^2/s", 0, 10,
            "0: the paper's inviscid Eq. 5 (the advection's numerical viscosity remains)");
@@ -171,7 +171,7 @@ struct ControlFluidParams {
 };
 
 // A planar creature driven by the controller of Lentine et al. 2010 in the project's 2-D fluid,
-// two-way coupled (Lentine et al. 2010 §4, §6, §7; issue 16): kind `control`'s
+// two-way coupled (Lentine et al. 2010 §4, §6, §7): kind `control`'s
 // controller with the fluid force (Eq. 10) instead of the simple wind.
 class ControlFluidKind : public DescribedKind<ControlFluidParams> {
  public:

@@ -1,6 +1,6 @@
 #pragma once
 // The swimmer's part of the control_fluid kind (Lentine et al. 2010 §7.2, Fig. 7,
-// "Creature Control in a Fluid Environment"; issue 16): the mouth and its phases (coupling/mouth.hpp),
+// "Creature Control in a Fluid Environment"): the mouth and its phases (coupling/mouth.hpp),
 // the controlled joints' sense per phase, and what the rise recorder (control/swimmer_run.hpp) tracks.
 #include <cstdint>
 #include <string>

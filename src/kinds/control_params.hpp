@@ -1,11 +1,10 @@
 #pragma once
-// What the controller kinds (control: simple wind, issue 15; control_fluid: the full fluid, issue
-// 16) read and measure the same way: the text parameters parsed into controller parameters (joint
-// lists, objectives, weights, initial poses, the motion patterns of kinematic and PD-driven joints,
-// Lentine et al. 2010 §2.2; the flyer's stroke senses and flap period, §7.1), the model, and the copy of a
-// run's measures (control/run_measures.hpp) into the Result
-// (M. Lentine et al., "Creature Control in a Fluid Environment"). Every parse error throws std::invalid_argument naming
-// the key.
+// What the controller kinds (control: simple wind; control_fluid: the full fluid) read and measure
+// the same way: the text parameters parsed into controller parameters (joint lists, objectives,
+// weights, initial poses, the motion patterns of kinematic and PD-driven joints, Lentine et al. 2010
+// §2.2; the flyer's stroke senses and flap period, §7.1), the model, and the copy of a run's measures
+// (control/run_measures.hpp) into the Result (M. Lentine et al., "Creature Control in a Fluid
+// Environment"). Every parse error throws std::invalid_argument naming the key.
 #include <cstdint>
 #include <string>
 #include <utility>

@@ -1,5 +1,5 @@
 #pragma once
-// Each parameter declared once, beside the field it sets (DESIGN.md, issue 63). A parameter struct
+// Each parameter declared once, beside the field it sets (DESIGN.md). A parameter struct
 // describes its fields through one visitor, and its in-class initialisers are the user's defaults:
 //
 //   struct StepParams {

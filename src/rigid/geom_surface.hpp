@@ -1,5 +1,5 @@
 #pragma once
-// Triangulated surfaces of a model's geoms, in each geom's own frame (issue 15): the simple wind
+// Triangulated surfaces of a model's geoms, in each geom's own frame: the simple wind
 // force of Lentine et al. 2010 §3.1 (Eq. 2) acts on
 // "each triangle of the mesh". Boxes are their 12 triangles; spheres, capsules, ellipsoids and
 // cylinders are tessellated on a latitude-longitude grid of their profile; mesh geoms use their

@@ -1,7 +1,7 @@
 #pragma once
 // Simulation data for one RigidModel (mjData behind RAII): one per thread, never shared. Every
 // operation the controller needs from MuJoCo is here, named for what it does, so that src/control/
-// stays free of MuJoCo's headers (issue 15, DESIGN.md layers).
+// stays free of MuJoCo's headers (DESIGN.md layers).
 #include <memory>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// A MuJoCo model behind RAII (issue 15): loaded from an MJCF file, read-only afterwards so that
+// A MuJoCo model behind RAII: loaded from an MJCF file, read-only afterwards so that
 // any number of threads can step their own RigidData against it. Errors name the file and carry
 // MuJoCo's own message. The controller (src/control/) knows MuJoCo only through this face.
 #include <array>

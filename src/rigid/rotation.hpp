@@ -1,5 +1,5 @@
 #pragma once
-// Unit quaternions in MuJoCo's convention (w, x, y, z), for ball joints (issue 15): a ball joint's
+// Unit quaternions in MuJoCo's convention (w, x, y, z), for ball joints: a ball joint's
 // qpos is the quaternion of its body relative to the parent, its three qvel are the angular
 // velocity in the body's own frame, and MuJoCo integrates q <- q * exp(h omega). A rotation by
 // the vector r (axis times angle, body frame) is therefore q * exp(r); log inverts exp.

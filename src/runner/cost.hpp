@@ -14,7 +14,7 @@
 namespace creaturelab::runner {
 
 // RK4 at the automatic step takes 2e4-4e4 steps for the webs in experiments/web and 2.8e5 for
-// tests/cli/strand_slow.toml; the explicit-Euler strand of issue 19 takes 1.2e8 (13 minutes), so
+// tests/cli/strand_slow.toml; the explicit-Euler strand takes 1.2e8 (13 minutes), so
 // 1e7 is about a minute.
 inline constexpr double kMaxStepsWithoutAllowLong = 1e7;
 // The runner's own memory per point (its parameters, its row of the index), measured: a dry run

@@ -57,8 +57,8 @@ struct CheckSpec {
   // relative_to selects (e.g. a driven response's peak frequency over a pluck's natural_hz).
   Where relative_to;
   std::string relative_metric;
-  // A paper claim the model is known not to reproduce, with the reason (e.g. "see the note of
-  // issue 5"). The check is still evaluated and printed (KNOWN instead of FAIL) but a failure
+  // A paper claim the model is known not to reproduce, with the reason (its data and
+  // mechanism). The check is still evaluated and printed (KNOWN instead of FAIL) but a failure
   // does not change the exit code; if it passes the table says so.
   std::string known_deviation;
   // range, ratio, difference: the metric holding each point's standard error of `metric`; the value

@@ -1,4 +1,4 @@
-// Speed of the creature controller (issue 15; Lentine et al. 2010 Fig. 14: 0.03 s per frame for
+// Speed of the creature controller (Lentine et al. 2010 Fig. 14: 0.03 s per frame for
 // the simple-force block, 0.26-0.81 s for the humans, unparallelised, 2010 hardware; Fig. 10:
 // serial time per frame grows linearly with the controlled joints, parallel stays flat).
 // Goals: the block at >= 1,000 frames per second on one core, the human with three controlled

@@ -1,4 +1,4 @@
-// Speed of the controller in the coupled fluid (issue 16; Lentine et al. 2010 Fig. 14: 14-15 s per
+// Speed of the controller in the coupled fluid (Lentine et al. 2010 Fig. 14: 14-15 s per
 // frame for the Navier-Stokes block, Fig. 10: 14/29/43/58 s serial and 14-15 s parallel on four
 // processors for 1-4 controlled joints). Goals: the block in a 128^2 fluid at >= 10 frames per
 // second with one controlled joint on one core; per-frame time flat (within 20%) from 1 to 2
@@ -166,7 +166,7 @@ BENCHMARK(BM_FlyerFrame)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(20);
 
-// The swimmer of experiments/control/swimmer.toml (Lentine et al. 2010 §7.2, Fig. 7; issue 16's
+// The swimmer of experiments/control/swimmer.toml (Lentine et al. 2010 §7.2, Fig. 7;
 // goal: >= 1 frame per second on one core, 128^2): five controlled legs, the mouth's phases, the
 // free root stabilised by its armature, range(0)^2 cells in 3 m (128; 192: swimmer.toml's grid),
 // closed walls but the open top. One iteration is one frame in phase 1 (draw in, minimise the

@@ -1,4 +1,4 @@
-// Speed of Tu's artificial fish (issue 17). The thesis: 30 frames per second with up to 5 wireframe
+// Speed of Tu's artificial fish. The thesis: 30 frames per second with up to 5 wireframe
 // fish on a 1996 SGI Indigo2. Goals here, on one core: one fish step (controller + unit forces +
 // water + LDL^T solve) <= 10 us; the skin of one fish at 32 x 64 <= 100 us; and a school swept over
 // its size (BM_School: fish-steps per second; the fish do not interact, so a school of N costs N

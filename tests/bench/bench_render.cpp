@@ -1,4 +1,4 @@
-// Speed of the jellyfish's 3-D extrapolation (issue 14; Rudolf & Mould 2009 §4: simulation plus 3-D
+// Speed of the jellyfish's 3-D extrapolation (Rudolf & Mould 2009 §4: simulation plus 3-D
 // extrapolation at 30-40 frames per second on a 1.6 GHz laptop). Goal: a 64 x 128 umbrella plus
 // tentacles with every variation in <= 2 ms per frame on one core, so that a 100² swim renders
 // live at >= 30 frames per second.

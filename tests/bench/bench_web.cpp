@@ -1,6 +1,6 @@
 // The default orb web (A. Mehla, Modeling and Animation of Orb Webs, MSc thesis, University of Saskatchewan
 // 2005, §5.2; ~6,100 particles, ~9,500 springs).
-// Goals (issue 3; Release, one core):
+// Goals (Release, one core):
 //   BM_BuildDefaultWeb              build the web                                  <= 50 ms
 //   BM_Settle10sRK4Auto             10 simulated seconds, RK4 at its auto substep   <= 3 s
 //                                   (the web's: web::kAutoStepSafety = 1, the full stability limit

@@ -1,4 +1,4 @@
-# Google Benchmark program for the controller in the coupled fluid (issue 16): frames per second of
+# Google Benchmark program for the controller in the coupled fluid: frames per second of
 # the block in a 128^2 stream, of a chain with 1-4 controlled joints, serial and parallel, and of the
 # swimmer (swimmer.toml).
 creaturelab_bench(bench_control_fluid SOURCES ${CMAKE_CURRENT_LIST_DIR}/bench_control_fluid.cpp LIBS cl_control)

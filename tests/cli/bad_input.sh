@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Bad input (issue 2 §3): malformed TOML, unknown key, wrong type, out of range, unknown kind, empty
+# Bad input: malformed TOML, unknown key, wrong type, out of range, unknown kind, empty
 # sweep or range, an output folder that cannot be created, a folder that already holds a run, bad
 # overrides. Each: exit code 2, exactly one "error:" line on stderr naming the problem, nothing on
 # stdout, and nothing written.
@@ -117,7 +117,7 @@ n_springs = 10
 EOF
 expect_bad both_span "set span_m or n_springs, not both" "$scratch/both_span.toml"
 
-# Issue 19 §5: refused before any point runs.
+# Refused before any point runs.
 write duplicate_label <<'EOF'
 kind = "strand"
 [[case]]

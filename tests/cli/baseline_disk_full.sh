@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `baseline -o` writes atomically (issue 62 §9): on a full disk it exits 2 naming the file and the
+# `baseline -o` writes atomically: on a full disk it exits 2 naming the file and the
 # old baseline stays whole (it was left as a 0-byte file), with no temporary file behind. Needs
 # root (mount); exits 77 (ctest SKIP_RETURN_CODE) with the reason when it cannot make the filesystem.
 # usage: baseline_disk_full.sh CREATURELAB SOURCE_DIR SCRATCH_DIR

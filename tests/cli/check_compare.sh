@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# check / baseline / compare round trip (issue 2 §3): run experiments/oscillator/integrators.toml,
+# check / baseline / compare round trip: run experiments/oscillator/integrators.toml,
 # `check RUN` passes, a baseline written from the run compares clean, and the same baseline with
 # one metric moved by 1% compares OUTSIDE with exit code 1. A check that must fail makes `run`
 # and `check` exit 1.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The runner writes and deletes only inside its run folder, and only its own files (issue 62 §6-8):
+# The runner writes and deletes only inside its run folder, and only its own files:
 # a `reproduce` entry named "../victim" (or a [[render]] run of that name) is refused before any
 # run (it replaced the run in the folder above --out with --force); planted symbolic links named
 # like the runner's temporary files and XDMF sidecar are removed or replaced, never written

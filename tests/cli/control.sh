@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The control kind (issue 15) end to end: block_effort runs with its checks passing, the figures
+# The control kind end to end: block_effort runs with its checks passing, the figures
 # are drawn from the HDF5 alone, --jobs 1 and 2 give bitwise-equal datasets (creaturelab digest),
 # and bad input (missing or broken MJCF, unknown joint, weights of the wrong length, negative
 # strength or delta; an unknown or wrong-length motion pattern, weights per ball-joint axis, a

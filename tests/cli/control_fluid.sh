@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The control_fluid kind (issue 16) end to end on a small block_flow (32^2, a few frames): the run
+# The control_fluid kind end to end on a small block_flow (32^2, a few frames): the run
 # writes its series, fields and markers, --jobs 1 and 2 and threads 1 and 2 give bitwise-equal
 # datasets, the figures are drawn from the HDF5 alone; bad input (a body outside the fluid box,
 # markers coarser than a cell, an unknown objective) exits 2 with one line naming it and nothing

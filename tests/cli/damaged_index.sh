@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A damaged index.h5 is bad input (issue 62 §1): HDF5 keeps attributes without a checksum, so a
+# A damaged index.h5 is bad input: HDF5 keeps attributes without a checksum, so a
 # flipped character in /sweep's columns_json, JSON of the wrong shape, an unknown column type and
 # /sweep columns of different lengths end `check`, `compare` (either side) and `baseline` with
 # exit 2 and a message naming index.h5, never an abort or a segfault. Each file is resealed after

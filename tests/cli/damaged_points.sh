@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Damaged point files are bad input, never a crash (issue 62 §2). libhdf5 itself can segfault on a
+# Damaged point files are bad input, never a crash. libhdf5 itself can segfault on a
 # corrupt global heap (where variable-length strings live), so every file this program writes
 # carries a seal of its bytes that readers verify before libhdf5 sees the file. 36 copies of a
 # point file, each with one heap object's size or index or the heap's size overwritten:

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Determinism (DESIGN.md, issue 2 §3): the same sweep with --jobs 1 and --jobs 2 (and a second
+# Determinism (DESIGN.md): the same sweep with --jobs 1 and --jobs 2 (and a second
 # --jobs 1 run) gives identical `creaturelab digest` output: every point file's datasets and
 # parameters, and the index, bitwise. The digest must also notice a real change.
 # usage: determinism.sh CREATURELAB SOURCE_DIR SCRATCH_DIR

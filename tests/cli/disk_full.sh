@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Disk full (issue 19 §3): a run into a 300 KiB tmpfs fills it while a point file is written. The
+# Disk full: a run into a 300 KiB tmpfs fills it while a point file is written. The
 # run must end cleanly: exit 3 (never a signal: HDF5 used to close the failed file a second time at
 # exit, SIGSEGV 139), a "no space left on device" message naming the point file, no temporary file
 # left, and the points written before it readable and listed in index.h5. Needs root (mount);

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A diverging point (issue 2 §2-3): RK4 on an undamped oscillator with dt beyond its stability
+# A diverging point: RK4 on an undamped oscillator with dt beyond its stability
 # limit for one point and within it for the other. The run exits 3; the failed point's file
 # exists with status "failed", a message naming the step and time, and the frames computed before
 # the failure; the good point is complete; index.h5 records both.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The fish kind end to end (issue 17): a short two-point sweep with the skin gives bitwise the same
+# The fish kind end to end: a short two-point sweep with the skin gives bitwise the same
 # datasets with --jobs 1 and 2; each point has the issue's metrics, series, node tracks, skin tracks
 # and topology, a glTF 2.0 binary that parses, OBJ frames and POV-Ray scenes; a fish that blows up
 # in air exits 3 with the step and the cause; bad fish input exits 2 naming the key, nothing written.

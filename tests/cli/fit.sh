@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `creaturelab fit` end to end (issue 6).
+# `creaturelab fit` end to end.
 #  spline: fitted to a short jellyfish run's driving curve (exact knots) and its diameter_ratio
 #          (the HDF5 output's datasets and shapes); the params.toml fragment, appended to an
 #          experiment header, runs as it is and carries the fitted knots; a CSV with a detected

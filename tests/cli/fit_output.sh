@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `fit spline` options and output (issue 62 §9): --period nan, --knots 0, a negative or NaN
+# `fit spline` options and output: --period nan, --knots 0, a negative or NaN
 # --loss-scale and a NaN bound are bad input (exit 2, nothing written; they were accepted); an
 # existing output folder is kept unless --force is given (it was overwritten); the written files
 # leave no temporary behind.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The fluid kind end to end (issue 4): /fields/<name> has shape (frames, ny, nx), one frame per
+# The fluid kind end to end: /fields/<name> has shape (frames, ny, nx), one frame per
 # chunk; the XDMF sidecar is well-formed XML whose HDF references name datasets that exist with
 # the stated dimensions; /timeseries has kinetic energy, max_divergence and CFL; the fields are
 # bitwise the same with --jobs 1 and 2.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The driven flyer (issue 16, Lentine et al. 2010 §7.1; studies/control/flyer_quick.toml, make
+# The driven flyer (Lentine et al. 2010 §7.1; studies/control/flyer_quick.toml, make
 # reproduce's version of flyer.toml) end to end
 # on 32^2 for half a second: every point written with its flyer series (senses following the
 # stroke, the PD-driven angles, the force on all bodies) and a finite mean upward force over whole

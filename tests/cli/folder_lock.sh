@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One writer per run folder (issue 19 §1). Two runs with different settings into one --out at the
+# One writer per run folder. Two runs with different settings into one --out at the
 # same time: the second is refused with exit 2 naming the holder's pid, and the first finishes with
 # an index of its own configuration only. The lock is the kernel's (fcntl): a run killed with -9
 # leaves nothing that refuses the next one. --points shares of different configurations are

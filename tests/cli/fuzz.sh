@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzz (issue 62): a small run's files are damaged at random (a seeded list: a few bytes changed,
+# Fuzz: a small run's files are damaged at random (a seeded list: a few bytes changed,
 # a file cut short, a block zeroed) and every tool that reads a run folder (check, compare,
 # digest, baseline, run --resume; one per seed, in turn) must end within 10 s with exit 0, 1, 2 or
 # 3, never a signal or a hang; after --resume the run is whole again (check exits 0).

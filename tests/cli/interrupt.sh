@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Leftovers and signals (issue 19 §4). A stale *.tmp in a run folder is removed by --resume; SIGINT
+# Leftovers and signals. A stale *.tmp in a run folder is removed by --resume; SIGINT
 # and SIGTERM mid-sweep stop the run (exit 130 / 143, as before) leaving no temporary file, every
 # point file whole and an index.h5 that lists them; --resume then finishes the run.
 # usage: interrupt.sh CREATURELAB SOURCE_DIR SCRATCH_DIR

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The jellyfish kind end to end (issue 5): a short two-point sweep on the 50² grid gives bitwise
+# The jellyfish kind end to end: a short two-point sweep on the 50² grid gives bitwise
 # the same datasets with --jobs 1 and 2; each point has the issue's metrics, the centroid and
 # diameter series, marker tracks (frames x markers x 2), the model topology, vorticity fields with
 # an XDMF sidecar and tracers; a known-deviation check prints KNOWN and leaves the exit code 0

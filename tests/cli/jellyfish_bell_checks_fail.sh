@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The bell alone rings as one mode (experiments/jellyfish/frequency.toml, issue 59: the bell first): the check fails
+# The bell alone rings as one mode (experiments/jellyfish/frequency.toml: the bell first): the check fails
 # with the tentacles on in the bell pluck, whose chains then ring with the bell (two modes). On frequency_coarse's
 # setting (2 mm cells at twice the step, 64 segments, 3 s windows, 4 s plucks), on which the intact file passes (run
 # here first); the drives and the other pluck are reused. The bell's muscle-driven checks:

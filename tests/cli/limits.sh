@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Counts that cannot wrap (issue 62 §5, §9): a sweep of 2^64 points (four axes of 65,536 values)
+# Counts that cannot wrap (§9): a sweep of 2^64 points (four axes of 65,536 values)
 # overflowed the point count to 0 and ran as an empty sweep; 2^48 points; `--points` shares beyond
 # an int wrapped and ran the whole run; an override value of several lines was cut at its first
 # line. Each is now bad input: exit 2, one message, nothing written.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# MPI (issue 2 §4; the jellyfish of issue 5 too): `mpirun -np 3 creaturelab run FILE --jobs 1` spreads the points over the ranks,
+# MPI (the jellyfish too): `mpirun -np 3 creaturelab run FILE --jobs 1` spreads the points over the ranks,
 # each writing its own point files and rank 0 the index, and gives the same digests as the threaded
 # run. Exits 77 (ctest SKIP_RETURN_CODE) when mpirun is missing or the binary was built without MPI.
 # usage: mpi.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
@@ -38,7 +38,7 @@ diff "$scratch/threads.digest" "$scratch/mpi.digest" || fail "the MPI run differ
 
 echo "mpirun -np 3 gives the threaded run's digests ($points points)"
 
-# The jellyfish (issue 5): a 3-point frequency sweep on the 50² grid, one point per rank.
+# The jellyfish: a 3-point frequency sweep on the 50² grid, one point per rank.
 cat >"$scratch/jf.toml" <<TOML
 kind = "jellyfish"
 title = "three short strokes"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# MPI and user errors (issue 2 §3-4): a user error found by rank 0 alone (an output folder that
+# MPI and user errors: a user error found by rank 0 alone (an output folder that
 # already holds a run) must end every rank with exit code 2 instead of leaving ranks 1..N-1 in a
 # barrier; an error is printed once, not once per rank; the summary counts the points of all ranks.
 # Exits 77 when mpirun is missing or the binary was built without MPI.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `creaturelab render` end to end (issue 14): a short recorded swim becomes render.h5 (+ XDMF), a
+# `creaturelab render` end to end: a short recorded swim becomes render.h5 (+ XDMF), a
 # .glb and an OBJ per frame, bitwise the same twice; --figures draws Figs. 7, 9, 10 with POV-Ray
 # (headless); bad input (a run of another kind, a point file without /lagrangian, frames outside
 # the run, a crossing outline, an unknown setting, an existing output) exits 2 with one "error:"

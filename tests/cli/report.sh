@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The reproduction report (issue 18), end to end on quick runs: `creaturelab reproduce --list --out`
+# The reproduction report, end to end on quick runs: `creaturelab reproduce --list --out`
 # runs a list (a path and an {file, set, name} entry); a fit folder beside them; analysis/draw_runs.py
 # draws them; analysis/report.py writes report.html and REPORT.md and names them last.
 # tests/cli/check_report.py then parses report.html with html.parser: every image exists and is a

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# --resume reuses a point file only when it is whole and unchanged (issue 62 §3-4): a value changed
+# --resume reuses a point file only when it is whole and unchanged: a value changed
 # inside a point file, a value changed and the file's seal rewritten (the index's content digest
 # still disagrees), and an object header whose HDF5 checksum fails are each recomputed, said on
 # stderr, and `check` then passes with the good run's digests (before, --resume sealed the changed

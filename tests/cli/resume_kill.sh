@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Crash-safe resume with a real kill (issue 2 §3): a sweep of 8 points (~0.3 s each) runs with
+# Crash-safe resume with a real kill: a sweep of 8 points (~0.3 s each) runs with
 # --jobs 1 in the background; once at least 2 point files exist it is killed with SIGKILL. Every
 # point file left is readable, `--resume` runs only the missing points (and says how many it
 # reused, leaving the finished files untouched), and the result equals an uninterrupted run's.

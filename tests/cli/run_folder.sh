@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The run folder across invocations (issue 2 §3-4): `--points i/N` shares (a Slurm job array) fill
+# The run folder across invocations: `--points i/N` shares (a Slurm job array) fill
 # one folder and give the whole run's digests; `--force` replaces a run and drops stale points;
 # `--resume` refuses point files made by a different configuration and changes nothing.
 # usage: run_folder.sh CREATURELAB SOURCE_DIR SCRATCH_DIR

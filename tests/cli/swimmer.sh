@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The swimmer (experiments/control/swimmer.toml, issue 16, Lentine et al. 2010 §7.2) end to end,
+# The swimmer (experiments/control/swimmer.toml, Lentine et al. 2010 §7.2) end to end,
 # small (64^2, two cycles of 0.1 s): both cases write the rise, phase and mouth flux series and the
 # rise metrics, the figures are drawn from the HDF5 alone; without the armature stabilisation the
 # free creature (twice the water it displaces) stops at the coupled stability limit, exit 3, the

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# check and compare verify the point files against index.h5 (issue 19 §2): a truncated, garbage,
+# check and compare verify the point files against index.h5: a truncated, garbage,
 # swapped or rewritten point file gives exit 2 and a message naming it; --no-verify trusts the
 # index as before.
 # usage: verify.sh CREATURELAB SOURCE_DIR SCRATCH_DIR

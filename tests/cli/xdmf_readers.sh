@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Real XDMF readers open what creaturelab writes (issue 58): a short jellyfish swim's field sidecar
+# Real XDMF readers open what creaturelab writes: a short jellyfish swim's field sidecar
 # (point_000000.xdmf) and its render's triangle-mesh series (render.xdmf), read by meshio's
 # TimeSeriesReader when /usr/bin/python3 imports meshio and by ParaView's pvbatch when it is on PATH;
 # counts, times and each frame's values are compared with the HDF5 (xdmf_readers.py). Exits 77

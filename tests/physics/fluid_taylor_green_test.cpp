@@ -96,7 +96,7 @@ std::vector<TaylorGreenRun> convergence_study(AdvectionScheme scheme) {
     const std::string key = std::string(to_string(scheme)) + "_" + std::to_string(runs[k].cells);
     ::testing::Test::RecordProperty(key + "_error", std::to_string(runs[k].relative_l2_error));
     ::testing::Test::RecordProperty(key + "_nu_eff", std::to_string(runs[k].effective_viscosity));
-    // Issue 4: max |∇·u| ≤ 1e-10 max|u| / dx after every step (max|u| ≤ 1 here).
+    // max |∇·u| ≤ 1e-10 max|u| / dx after every step (max|u| ≤ 1 here).
     EXPECT_LE(runs[k].max_divergence, 1e-10 / (std::numbers::pi / runs[k].cells));
     // The fitted viscosity is the physical one plus a positive numerical part.
     EXPECT_GT(runs[k].effective_viscosity, kViscosity);

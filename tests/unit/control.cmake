@@ -1,6 +1,6 @@
 # tests for unit/rigid and unit/control: the MuJoCo face, Eq. 2 wind, the target servo under load,
 # central-difference derivatives against an analytic objective, the strength limit, rigidified
-# perturbations and determinism across thread counts (issue 15). Each test well under 1 s; also
+# perturbations and determinism across thread counts. Each test well under 1 s; also
 # run under ASan/UBSan.
 creaturelab_test(control_unit_test unit
   SOURCES

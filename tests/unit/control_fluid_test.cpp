@@ -1,4 +1,4 @@
-// The controller in the coupled fluid (issue 16; Lentine et al. 2010 §4.3, §5): per-DOF
+// The controller in the coupled fluid (Lentine et al. 2010 §4.3, §5): per-DOF
 // evaluations on their own copies of the fluid give bitwise the same frames for any thread count,
 // and a re-evaluation from the same state repeats itself exactly; effort (Eq. 1) in the fluid.
 #include <gtest/gtest.h>

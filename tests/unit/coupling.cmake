@@ -1,4 +1,4 @@
-# tests for unit/coupling: MuJoCo bodies coupled to the 2-D fluid (issue 16): momentum and angular
+# tests for unit/coupling: MuJoCo bodies coupled to the 2-D fluid: momentum and angular
 # momentum balance of the exchange, the leak through a held body in a stream, bad input; the
 # controller in the fluid, bitwise the same for any thread count. Each test well under a few
 # seconds; also run under ASan/UBSan.

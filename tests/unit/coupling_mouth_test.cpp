@@ -1,4 +1,4 @@
-// The swimmer's mouth and free creature in the coupled fluid (issue 16; Lentine et al. 2010 §7.2):
+// The swimmer's mouth and free creature in the coupled fluid (Lentine et al. 2010 §7.2):
 // the flux the mouth enforces moves the fluid across it, the force it takes enters the fluid as
 // momentum and the body gets minus it (to round-off); a free creature too light for the staggered
 // coupling stops with the stability error instead of exploding silently, and the armature

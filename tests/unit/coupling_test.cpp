@@ -1,4 +1,4 @@
-// Two-way coupling of MuJoCo bodies with the 2-D fluid (issue 16; Lentine et al. 2010 §4.2, §6):
+// Two-way coupling of MuJoCo bodies with the 2-D fluid (Lentine et al. 2010 §4.2, §6):
 // the momentum the fluid gets equals minus what the bodies get, the flux through a held body in a
 // stream, and bad input.
 #include <gtest/gtest.h>

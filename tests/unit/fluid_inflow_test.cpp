@@ -1,5 +1,5 @@
 // The inflow wall (WallType::inflow, boundary2.hpp): a prescribed flux that every stage keeps.
-// Issue 16: a held band of faces beside an open floor lost flux to the projection, by an amount
+// A held band of faces beside an open floor lost flux to the projection, by an amount
 // that depended on the step; these tests pin what the wall must do instead.
 #include <gtest/gtest.h>
 

@@ -162,7 +162,7 @@ double max_velocity_change(const MacGrid2& a, const MacGrid2& b) {
   return m;
 }
 
-// Issue 4: after projection max |∇·u| ≤ 1e-10 max|u| / dx, and projecting twice changes nothing.
+// After projection max |∇·u| ≤ 1e-10 max|u| / dx, and projecting twice changes nothing.
 TEST(Projection, LeavesNoDivergenceAndIsIdempotent) {
   for (PressureSolverType type : {PressureSolverType::fast_direct, PressureSolverType::pcg}) {
     for (int mask : {0, 1, 3, 8, 15}) {

@@ -55,7 +55,7 @@ std::uint64_t run_and_hash(const FluidParams& params, int steps) {
   return hash_state(solver);
 }
 
-// Issue 4: runs are bitwise deterministic (hash of every field after the same steps).
+// Runs are bitwise deterministic (hash of every field after the same steps).
 TEST(FluidSolver, RunsAreBitwiseDeterministic) {
   for (AdvectionScheme scheme : {AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack}) {
     for (PressureSolverType pressure : {PressureSolverType::fast_direct, PressureSolverType::pcg}) {

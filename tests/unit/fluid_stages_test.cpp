@@ -80,7 +80,7 @@ TEST(ExternalForces, ForceDensityIsDividedByDensity) {
   EXPECT_EQ(solver.grid().u_m_per_s(0, 3), 0.0);  // solid wall face ignored
 }
 
-// Issue 4: uniform flow is preserved exactly by advection (both schemes).
+// Uniform flow is preserved exactly by advection (both schemes).
 TEST(Advection, PreservesUniformFlowExactly) {
   for (AdvectionScheme scheme : {AdvectionScheme::semi_lagrangian, AdvectionScheme::maccormack}) {
     for (bool fully_open : {false, true}) {

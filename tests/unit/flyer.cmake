@@ -1,4 +1,4 @@
-# tests for the driven flyer (issue 16; Lentine et al. 2010 §7.1): the stroke-following sense, the
+# tests for the driven flyer (Lentine et al. 2010 §7.1): the stroke-following sense, the
 # PD-driven wings in the coupled step, strength 0 holding, cycle means. Each test under a second.
 creaturelab_test(flyer_unit_test unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/control_flyer_test.cpp

@@ -1,5 +1,5 @@
-// The active-tension muscle, the pulse activation and the pluck measurement (issue 13 §2), and the
-// continuum definition of the bell (issue 13 §1): refining the chain refines one body, so its
+// The active-tension muscle, the pulse activation and the pluck measurement, and the
+// continuum definition of the bell: refining the chain refines one body, so its
 // static shape under a given muscle load and its in-vacuum breathing frequency converge as the
 // segments double. Rudolf & Mould 2009 §3.2-3.3.
 #include <gtest/gtest.h>
@@ -235,7 +235,7 @@ TEST(JellyfishRingdown, DampedFitRecoversTheModeUnderABeatAndADrift) {
   EXPECT_TRUE(std::isnan(fitDampedOscillation(few, few).natural_hz));
 }
 
-// ---- continuum convergence (issue 13 §1) -----------------------------------------------------
+// ---- continuum convergence -----------------------------------------------------
 
 // Static equilibrium of the bell under a constant active tension, by Newton's method on the body's
 // own forces and stiffness (with a tiny shift for the three rigid modes the load does not excite).

@@ -305,7 +305,7 @@ TEST(JellyfishMuscleFactor, StaggeredFactorIsContinuous) {
 }
 
 // The same re-timing property for activation curves whose period does not start at the relaxed
-// knot. Knots are free parameters (issue 5: "a later issue fits them"), and validate() accepts
+// knot. Knots are free parameters (fitted by `creaturelab fit spline`), and validate() accepts
 // these curves, so the stagger must still change the expansion only (from the smallest knot to the
 // largest, cyclically): outside that stretch every spring follows the curve as written, and the
 // apex spring holds the relaxed (largest) value once it has finished expanding.

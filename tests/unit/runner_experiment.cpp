@@ -1,4 +1,4 @@
-// Experiment files (DESIGN.md "Experiment files", issue 2 §3): parsing, sweeps, cases, overrides,
+// Experiment files (DESIGN.md "Experiment files"): parsing, sweeps, cases, overrides,
 // and the user errors that must name the file, the key, a close match and what was expected.
 #include "runner/experiment.hpp"
 #include "runner/checks.hpp"
@@ -743,7 +743,7 @@ TEST(RunnerExperiment, UncertaintyNamesAMetricOfARangeRatioOrDifference) {
   EXPECT_NE(m.find("one metric's standard error"), std::string::npos) << m;
 }
 
-// ---- issue 19 §5: input that should never start ----
+// ---- input that should never start ----
 
 TEST(RunnerExperimentError, DuplicateCaseLabelsAreRefused) {
   const std::string m = errorOf(

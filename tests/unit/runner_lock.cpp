@@ -1,4 +1,4 @@
-// One writer per run folder (issue 19 §1): the fcntl lock refuses a second process and names the
+// One writer per run folder: the fcntl lock refuses a second process and names the
 // holder's pid; shares (--points) coexist with each other but not with a whole run; the lock goes
 // with the process. The second process is a fork: fcntl locks never conflict within one process.
 #include "scratch_dir_test.hpp"

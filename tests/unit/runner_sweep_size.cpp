@@ -1,4 +1,4 @@
-// sweepPointCount: cases x axes counted without wrapping (issue 62 §5).
+// sweepPointCount: cases x axes counted without wrapping.
 #include <gtest/gtest.h>
 
 #include <string>

@@ -1,5 +1,5 @@
 // WebParams::validate(): every bad input is named in words a user understands, before any construction
-// (issue 3: "a clear error before any simulation"), and build() refuses it with the same message.
+// (a clear error before any simulation), and build() refuses it with the same message.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
