@@ -1,4 +1,4 @@
-"""The jellyfish's wake circulation, from a point's stored vorticity fields (issue 13 §3: the
+"""The jellyfish's wake circulation, from a point's stored vorticity fields (the
 mechanism of a claim the converged model misses, stagger.toml).
 
 Per field frame, on the right half of the box (x > the box's axis) and below the bell's lowest

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Draws controller-in-the-fluid runs (kind `control_fluid`, experiments/control/block_flow.toml ...)
-from their HDF5 alone (Lentine et al. 2010 Figs. 2, 8; issue 16).
+from their HDF5 alone (Lentine et al. 2010 Figs. 2, 8).
 
 usage: /usr/bin/python3 analysis/plot_control_fluid.py RUN_DIR [--out DIR]
 

@@ -16,7 +16,7 @@ Writes to RUN_DIR/figures/ (or --out):
                     below the aperture per cycle (analysis/jellyfish_wake.py; stagger.toml).
   resonance.png     when a point was plucked (finite natural_hz): the pluck's free decay, and
                     stroke amplitude and distance per cycle of the driven points against the
-                    driving frequency, with f_n marked (issue 13 §2).
+                    driving frequency, with f_n marked.
   convergence.png   when the run sweeps `cells`: distance per cycle and stroke amplitude against
                     the cell size per setting, with the observed order and Richardson's estimate
                     (also printed, and written to convergence.txt, with the net fraction and the
@@ -358,8 +358,8 @@ def resonance(sweep, points, out):
 
 def size_scaling(sweep, points, out):
     """Several bell sizes, each with a pluck: distance travelled in the window against the driving
-    frequency per size with its f_n marked, and the frequency of the largest distance against f_n
-    (issue 13 §3). A size run on several grids (cells across its own box: size_scaling.toml's 300
+    frequency per size with its f_n marked, and the frequency of the largest distance against f_n.
+    A size run on several grids (cells across its own box: size_scaling.toml's 300
     and 150) draws a curve and a peak per grid, the coarser dashed and open."""
     sizes = sorted({round(float(param(f, "bell_diameter_m")), 9) for f in points})
     if len(sizes) < 2:
@@ -481,7 +481,7 @@ def step_convergence(sweep, points, out):
         ax.set_xlabel("coupled step dt (s), one grid")
         ax.set_ylabel(what)
         ax.legend(fontsize=9)
-    left.set_title("step convergence (issue 13 §1)")
+    left.set_title("step convergence")
     save_study(fig, lines, out, "step_convergence")
 
 
@@ -526,7 +526,7 @@ def convergence(sweep, points, out):
         ax.set_ylabel(what)
     # One legend, beside the right panel, for both (the same colours): inside, it hid points.
     right.legend(*left.get_legend_handles_labels(), fontsize=9, loc="upper left", bbox_to_anchor=(1.02, 1.0))
-    left.set_title("grid convergence (issue 13 §1)")
+    left.set_title("grid convergence")
     save_study(fig, lines, out, "convergence")
 
 
