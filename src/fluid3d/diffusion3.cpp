@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "fluid3d/conjugate_gradients3.hpp"
+
 namespace creaturelab::fluid3d {
 
 SolveReport3 ViscositySolver3::solveComponent(int a, double diag, double off, const Array3& b, Array3& x) {
@@ -27,24 +29,8 @@ SolveReport3 ViscositySolver3::solveComponent(int a, double diag, double off, co
       for (std::size_t t = k0 * slab; t < k1 * slab; ++t) z_.data()[t] = inv_diag_.data()[t] * r_.data()[t];
     });
   };
-  precondition();
-  s_ = z_;
-  double rho = dot3(r_, z_, pool, per_slab_);
-  as_.resize(b.nx(), b.ny(), b.nz());
-  int it = 0;
-  while (r_norm > target && it < max_iterations_) {
-    ++it;
-    applyStencil(st, diag, off, s_, as_, pool);
-    const double alpha = rho / dot3(s_, as_, pool, per_slab_);
-    axpy3(alpha, s_, x, pool);
-    axpy3(-alpha, as_, r_, pool);
-    r_norm = maxAbs3(r_, pool, per_slab_);
-    if (r_norm <= target) break;
-    precondition();
-    const double rho_new = dot3(r_, z_, pool, per_slab_);
-    xpay3(z_, rho_new / rho, s_, pool);
-    rho = rho_new;
-  }
+  const int it = conjugateGradients3(st, diag, off, target, max_iterations_, precondition, x, r_, r_norm, z_, s_, as_,
+                                     per_slab_, pool);
   report.iterations = it;
   report.relative_residual = r_norm / b_norm;
   report.converged = r_norm <= target;

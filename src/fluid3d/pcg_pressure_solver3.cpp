@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "fluid3d/conjugate_gradients3.hpp"
+
 namespace creaturelab::fluid3d {
 
 SolveReport3 MgPcgPressureSolver3::solve(const std::array<int, 3>& cells, const Boundaries3& sides, const Array3& b,
@@ -40,24 +42,8 @@ SolveReport3 MgPcgPressureSolver3::solve(const std::array<int, 3>& cells, const 
     preconditioner_.apply(r_, z_, pool);
     if (singular) subtractConstant3(sum3(z_, pool, per_slab_) / mean_count, z_, pool);
   };
-  precondition();
-  s_ = z_;
-  double rho = dot3(r_, z_, pool, per_slab_);
-  as_.resize(cells[0], cells[1], cells[2]);
-  int it = 0;
-  while (r_norm > target && it < max_iterations_) {
-    ++it;
-    applyStencil(stencil_, 6.0, -1.0, s_, as_, pool);
-    const double alpha = rho / dot3(s_, as_, pool, per_slab_);
-    axpy3(alpha, s_, q, pool);
-    axpy3(-alpha, as_, r_, pool);
-    r_norm = maxAbs3(r_, pool, per_slab_);
-    if (r_norm <= target) break;
-    precondition();
-    const double rho_new = dot3(r_, z_, pool, per_slab_);
-    xpay3(z_, rho_new / rho, s_, pool);
-    rho = rho_new;
-  }
+  const int it = conjugateGradients3(stencil_, 6.0, -1.0, target, max_iterations_, precondition, q, r_, r_norm, z_, s_,
+                                     as_, per_slab_, pool);
   if (singular) subtractConstant3(sum3(q, pool, per_slab_) / mean_count, q, pool);
   report.iterations = it;
   report.relative_residual = r_norm / b_norm;
