@@ -1,0 +1,35 @@
+#pragma once
+// Immersed-boundary markers on the surfaces of a MuJoCo model's geoms (Lentine et al. 2010 §4.2,
+// the bodies' surfaces as triangle meshes, from rigid/geom_surface.hpp). Each triangle is cut into
+// m² similar triangles, m = ceil(longest edge / spacing), and each piece gives one marker at its
+// centroid, standing for its area; so no two neighbouring markers are farther apart than the
+// spacing and the areas sum to the surface's. The markers are fixed in their geom's frame and move
+// with it. Geoms on the world body (body 0) are static obstacles.
+
+#include <vector>
+
+#include "coupling3d/transfer3.hpp"
+#include "rigid/geom_surface.hpp"
+#include "rigid/rigid_data.hpp"
+
+namespace creaturelab::coupling3d {
+
+struct SurfaceMarker3 {
+  int geom = 0;
+  int body = 0;
+  Vec3 local_m{};        ///< position in the geom's frame
+  double area_m2 = 0.0;  ///< surface area the marker stands for
+};
+
+/// Markers of the given surfaces, in surface and triangle order. Throws std::invalid_argument
+/// for a spacing that is not a positive length.
+std::vector<SurfaceMarker3> surfaceMarkers(const std::vector<rigid::GeomSurface>& surfaces, double spacing_m);
+
+/// Markers of every geom with a volume of the model (rigid::geomSurfaces), its round geoms
+/// tessellated finely enough that a facet's chord is at most the spacing (and at least 16 slices).
+std::vector<SurfaceMarker3> modelSurfaceMarkers(const rigid::RigidModel& model, double spacing_m);
+
+/// World position (m) of a marker at data's current kinematics.
+Vec3 markerWorld(const rigid::RigidData& data, const SurfaceMarker3& m);
+
+}  // namespace creaturelab::coupling3d

@@ -1,0 +1,7 @@
+# tests for unit/coupling3d: the 3-D immersed-boundary transfer (exact linear interpolation, force and
+# torque kept, adjointness), surface markers, and MuJoCo bodies coupled to the 3-D fluid (momentum
+# balance, Galilean invariance, the leak through a moving body). Also run under ASan/UBSan.
+creaturelab_test(coupling3d_unit_tests unit
+  SOURCES
+    ${CMAKE_CURRENT_LIST_DIR}/coupling3d_transfer_test.cpp
+  LIBS cl_coupling3d)
