@@ -41,13 +41,6 @@ Point trace(const std::array<PaddedComponent3, 3>& v, const Point& p, const Poin
   return {p[0] + dt * u1[0], p[1] + dt * u1[1], p[2] + dt * u1[2]};
 }
 
-// True for a solid wall's normal face of component a at index m (kept zero).
-bool knownFace(const MacGrid3& grid, int a, int m) {
-  if (grid.periodic(a)) return false;
-  const AxisBoundary3& b = grid.boundaries.axis[a];
-  return (m == 0 && b.low != BoundaryType3::open) || (m == grid.n[a] && b.high != BoundaryType3::open);
-}
-
 // Calls f(a, i, j, k, position in cell units, output slot) for every sample, slab-parallel.
 template <class F>
 void forEachSample(const MacGrid3& grid, FaceField3& out, WorkerPool* pool, F f) {
@@ -60,8 +53,8 @@ void forEachSample(const MacGrid3& grid, FaceField3& out, WorkerPool* pool, F f)
           for (int i = 0; i < e[0]; ++i) {
             const int m[3] = {i, j, k};
             double& slot = out[a](i, j, k);
-            if (knownFace(grid, a, m[a])) {
-              slot = 0.0;
+            if (grid.knownFace(a, m[a])) {
+              slot = grid.knownFaceVelocity_m_per_s(a, m[a]);
               continue;
             }
             Point p{i + 0.5, j + 0.5, k + 0.5};

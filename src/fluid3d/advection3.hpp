@@ -16,7 +16,7 @@ class AdvectionSolver3 {
  public:
   virtual ~AdvectionSolver3() = default;
   /// Transports the grid's velocity along itself for dt_s into `out` (shaped like the velocity);
-  /// solid walls' normal faces are zero. The grid is not modified.
+  /// known normal faces (solid walls, inflow sides) hold their values. The grid is not modified.
   virtual void advect(const MacGrid3& grid, double dt_s, FaceField3& out) = 0;
   /// Largest max-component CFL number (max|u_a| dt / dx) the scheme is stable at.
   virtual double maxStableCfl() const { return std::numeric_limits<double>::infinity(); }

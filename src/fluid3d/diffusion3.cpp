@@ -3,8 +3,32 @@
 #include <algorithm>
 
 #include "fluid3d/conjugate_gradients3.hpp"
+#include "fluid3d/pressure_operator3.hpp"
 
 namespace creaturelab::fluid3d {
+namespace diffusion3_detail {
+
+// The known inflow face beside the first (last) unknown face along axis a is a neighbour that the
+// stencil's factor 0 leaves out: every scheme's update has α U_side for it (backward Euler α U,
+// Crank–Nicolson ½α U on each side, explicit α U), added here to the right-hand side b.
+void addInflowNeighbours(const MacGrid3& grid, int a, double alpha, Array3& b) {
+  const AxisBoundary3& sides = grid.boundaries.axis[a];
+  const int n = grid.n[a];
+  for (const bool high : {false, true}) {
+    if ((high ? sides.high : sides.low) != BoundaryType3::inflow) continue;
+    const double add = alpha * sides.normalVelocity_m_per_s(high);
+    const int m_row = high ? n - 1 : 1;
+    std::array<int, 3> e = grid.faceExtents(a);
+    for (int k = 0; k < e[2]; ++k)
+      for (int j = 0; j < e[1]; ++j)
+        for (int i = 0; i < e[0]; ++i) {
+          const int m = a == 0 ? i : a == 1 ? j : k;
+          if (m == m_row) b(i, j, k) += add;
+        }
+  }
+}
+
+}  // namespace diffusion3_detail
 
 SolveReport3 ViscositySolver3::solveComponent(int a, double diag, double off, const Array3& b, Array3& x) {
   WorkerPool* pool = workers_;
@@ -55,14 +79,17 @@ SolveReport3 ViscositySolver3::diffuse(MacGrid3& grid, double viscosity_m2_per_s
     switch (scheme_) {
       case ViscosityScheme3::explicit_euler:
         applyStencil(stencils_[a], 1.0 - 6.0 * alpha, alpha, u, b_, workers_);
+        diffusion3_detail::addInflowNeighbours(grid, a, alpha, b_);
         u = b_;
         break;
       case ViscosityScheme3::backward_euler:
         applyStencil(stencils_[a], 1.0, 0.0, u, b_, workers_);  // b = u on the unknowns
+        diffusion3_detail::addInflowNeighbours(grid, a, alpha, b_);
         report = solveComponent(a, 1.0 + 6.0 * alpha, -alpha, b_, u);
         break;
       case ViscosityScheme3::crank_nicolson:
         applyStencil(stencils_[a], 1.0 - 3.0 * alpha, 0.5 * alpha, u, b_, workers_);
+        diffusion3_detail::addInflowNeighbours(grid, a, alpha, b_);
         report = solveComponent(a, 1.0 + 3.0 * alpha, -0.5 * alpha, b_, u);
         break;
     }
@@ -70,6 +97,7 @@ SolveReport3 ViscositySolver3::diffuse(MacGrid3& grid, double viscosity_m2_per_s
     worst.relative_residual = std::max(worst.relative_residual, report.relative_residual);
     worst.converged = worst.converged && report.converged;
   }
+  enforceSolidWalls(grid);  // the known faces, which the explicit update and the solves zero
   return worst;
 }
 

@@ -47,7 +47,11 @@ std::string FluidParams3::validate() const {
     const AxisBoundary3& b = boundaries.axis[a];
     if ((b.low == BoundaryType3::periodic) != (b.high == BoundaryType3::periodic))
       problems.add("the " + name + " axis is periodic on one side only: make both sides periodic or neither");
+    for (const double speed : {b.low_inflow_m_per_s, b.high_inflow_m_per_s})
+      if (!std::isfinite(speed)) problems.add("the " + name + " axis' inflow speed must be finite (got " + show(speed) + ")");
   }
+  if (boundaries.anyInflow() && boundaries.closed())
+    problems.add("an inflow side needs an open side for the fluid to leave by: make one side open");
   if (problems.joined().empty()) {
     const double dx = cellSize_m();
     for (int a = 1; a < 3; ++a) {
@@ -79,6 +83,7 @@ std::string_view toString(BoundaryType3 type) {
     case BoundaryType3::free_slip: return "free_slip";
     case BoundaryType3::no_slip: return "no_slip";
     case BoundaryType3::open: return "open";
+    case BoundaryType3::inflow: return "inflow";
   }
   return "?";
 }

@@ -15,14 +15,23 @@ enum class BoundaryType3 {
   periodic,   ///< the box repeats along this axis (both sides of the axis must be periodic)
   free_slip,  ///< solid: u·n = 0, ∂u_t/∂n = 0
   no_slip,    ///< solid: u = 0
-  open        ///< p = 0 on the side, ∂u/∂n = 0: fluid may leave or enter
+  open,       ///< p = 0 on the side, ∂u/∂n = 0: fluid may leave or enter
+  inflow      ///< fluid enters at a prescribed speed normal to the side, u_t = 0; the pressure sees a wall
 };
 
 /// The two sides of one axis.
 struct AxisBoundary3 {
   BoundaryType3 low = BoundaryType3::free_slip;
   BoundaryType3 high = BoundaryType3::free_slip;
+  double low_inflow_m_per_s = 0.0;   ///< speed into the box through the low side when it is inflow
+  double high_inflow_m_per_s = 0.0;  ///< speed into the box through the high side when it is inflow
   bool periodic() const { return low == BoundaryType3::periodic; }
+  /// Velocity (along +axis) on the side's own normal faces when they are known: zero on a solid wall,
+  /// +speed on a low inflow side, −speed on a high one.
+  double normalVelocity_m_per_s(bool high_side) const {
+    if (high_side) return high == BoundaryType3::inflow ? -high_inflow_m_per_s : 0.0;
+    return low == BoundaryType3::inflow ? low_inflow_m_per_s : 0.0;
+  }
 };
 
 /// Sides of the box [0, Lx] × [0, Ly] × [0, Lz], by axis: x, y, z (z is up).
@@ -33,6 +42,11 @@ struct Boundaries3 {
     for (const AxisBoundary3& a : axis)
       if (a.low == BoundaryType3::open || a.high == BoundaryType3::open) return false;
     return true;
+  }
+  bool anyInflow() const {
+    for (const AxisBoundary3& a : axis)
+      if (a.low == BoundaryType3::inflow || a.high == BoundaryType3::inflow) return true;
+    return false;
   }
   static Boundaries3 allPeriodic() {
     Boundaries3 b;

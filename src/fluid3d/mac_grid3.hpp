@@ -40,6 +40,14 @@ struct MacGrid3 {
     if (!periodic(a)) e[a] += 1;
     return e;
   }
+  /// Whether component a's faces at index m along axis a are known (a solid or inflow side's own faces).
+  bool knownFace(int a, int m) const {
+    if (periodic(a)) return false;
+    const AxisBoundary3& b = boundaries.axis[a];
+    return (m == 0 && b.low != BoundaryType3::open) || (m == n[a] && b.high != BoundaryType3::open);
+  }
+  /// The value of a known face (knownFace(a, m)): zero, or an inflow side's velocity.
+  double knownFaceVelocity_m_per_s(int a, int m) const { return boundaries.axis[a].normalVelocity_m_per_s(m != 0); }
   long cellCount() const { return static_cast<long>(n[0]) * n[1] * n[2]; }
   double cellVolume_m3() const { return dx_m * dx_m * dx_m; }
   /// Position (metres) of component a's sample (i, j, k).

@@ -84,15 +84,13 @@ double maxDivergence_per_s(const MacGrid3& grid, WorkerPool* pool) {
 void enforceSolidWalls(MacGrid3& grid) {
   for (int a = 0; a < 3; ++a) {
     if (grid.periodic(a)) continue;
-    const AxisBoundary3& b = grid.boundaries.axis[a];
     Array3& comp = grid.velocity_m_per_s[a];
     const std::array<int, 3> e = grid.faceExtents(a);
     for (int k = 0; k < e[2]; ++k)
       for (int j = 0; j < e[1]; ++j)
         for (int i = 0; i < e[0]; ++i) {
-          const int m[3] = {i, j, k};
-          if ((m[a] == 0 && b.low != BoundaryType3::open) || (m[a] == grid.n[a] && b.high != BoundaryType3::open))
-            comp(i, j, k) = 0.0;
+          const int m = a == 0 ? i : a == 1 ? j : k;
+          if (grid.knownFace(a, m)) comp(i, j, k) = grid.knownFaceVelocity_m_per_s(a, m);
         }
   }
 }

@@ -5,7 +5,8 @@
 // With q = p dt/ρ (m²/s), a face between cells c and c+1 along axis a is updated as
 // u_f = u*_f − (q_{c+1} − q_c)/dx. Zero flux sum in every cell gives A q = b with
 //   (A q)_c = Σ_{6 neighbours} (q_c − q_nb),   b_c = −dx · Σ_a (u*_a(c + ½) − u*_a(c − ½)),
-// neighbours beyond a solid wall being ghosts equal to q_c (no flux) and beyond an open side
+// neighbours beyond a solid wall or an inflow side being ghosts equal to q_c (no change of the
+// known flux, which b carries) and beyond an open side
 // ghosts −q_c (p = 0 on the side): the pressure stencil of stencil3.hpp with diag 6, off −1.
 // After the update, (A q − b)_c = dx · (flux sum of c): the residual is the divergence left.
 
@@ -23,7 +24,7 @@ void projectionRhs(const MacGrid3& grid, Array3& b, WorkerPool* pool);
 void subtractGradient(MacGrid3& grid, const Array3& phi, double factor_per_m, WorkerPool* pool);
 /// max over cells of |∇·u| (1/s).
 double maxDivergence_per_s(const MacGrid3& grid, WorkerPool* pool);
-/// Zero normal velocity on the solid walls' faces.
+/// The known normal faces: zero on the solid walls, the prescribed speed into the box on inflow sides.
 void enforceSolidWalls(MacGrid3& grid);
 
 }  // namespace creaturelab::fluid3d

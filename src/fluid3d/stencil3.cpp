@@ -38,7 +38,10 @@ void findPlainRun(AxisStencil3& s) {
   s.plain_begin = b, s.plain_end = e;
 }
 
-bool isSolid(BoundaryType3 t) { return t == BoundaryType3::free_slip || t == BoundaryType3::no_slip; }
+// Sides whose normal faces are known (an inflow side's too: the pressure sees a wall there).
+bool isSolid(BoundaryType3 t) { return t != BoundaryType3::open && t != BoundaryType3::periodic; }
+// u_t = 0 on the side: no-slip walls and inflow sides.
+double tangentialGhost(BoundaryType3 t) { return t == BoundaryType3::no_slip || t == BoundaryType3::inflow ? -1.0 : 1.0; }
 
 }  // namespace stencil3_detail
 
@@ -63,8 +66,7 @@ Stencil3 velocityStencil(int a, const std::array<int, 3>& cells, const Boundarie
     if (b.periodic()) {
       s.axis[d] = periodicAxis(n);
     } else if (d != a) {
-      s.axis[d] = centredAxis(n, b.low == BoundaryType3::no_slip ? -1.0 : 1.0,
-                              b.high == BoundaryType3::no_slip ? -1.0 : 1.0);
+      s.axis[d] = centredAxis(n, tangentialGhost(b.low), tangentialGhost(b.high));
     } else {
       // Normal faces 0..n; faces 0 and n lie on the walls.
       AxisStencil3 t;

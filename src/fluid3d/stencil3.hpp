@@ -6,13 +6,14 @@
 // and a factor. Inside the box the factor is 1; across a periodic side the index wraps; across a
 // wall the neighbour is a ghost half a cell (or one face) beyond, written as factor · (the sample
 // itself) (ghost values of Griebel et al. 1998, ch. 3, as in fluid/boundary2.hpp):
-//   pressure at a solid wall       ghost = +self   (∂p/∂n = 0)
+//   pressure at a solid wall or an inflow side   ghost = +self   (∂p/∂n = 0)
 //   pressure at an open side       ghost = −self   (p = 0 on the side)
 //   tangential velocity, free-slip or open   ghost = +self   (∂u_t/∂n = 0)
-//   tangential velocity, no-slip             ghost = −self   (u_t = 0 on the wall)
-//   normal velocity next to a solid wall's face   factor 0 (that face is a known zero)
+//   tangential velocity, no-slip or inflow   ghost = −self   (u_t = 0 on the side)
+//   normal velocity next to a solid wall's face   factor 0 (that face is known: zero, or an inflow
+//                                                  side's speed, which diffusion3 adds to the right side)
 //   normal velocity beyond an open side's face    ghost = +self   (∂u_n/∂n = 0)
-// A solid wall's own normal faces are not unknowns: operators leave them zero.
+// A solid wall's (or inflow side's) own normal faces are not unknowns: operators leave them zero.
 // With Σ_nb f x_nb the sum over the six neighbours, the operators are
 //   y = diag · x + off · Σ_nb f x_nb     (pressure matrix A: diag 6, off −1; the discrete
 //                                         Laplacian times dx²: diag −6, off 1).

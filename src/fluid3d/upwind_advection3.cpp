@@ -17,24 +17,25 @@ void GhostedComponent3::fill(int a, const MacGrid3& grid, const Array3& values) 
     const int E = e[d];
     const AxisBoundary3& b = grid.boundaries.axis[d];
     const int o1 = (d + 1) % 3, o2 = (d + 2) % 3;
-    // ghost index g takes factor · value at source index.
+    // ghost index g takes offset + factor · value at source index.
     struct Rule {
       int ghost, source;
-      double factor;
+      double factor, offset = 0.0;
     };
     Rule rules[4];
     if (b.periodic()) {
       rules[0] = {-1, E - 1, 1.0}, rules[1] = {-2, E - 2, 1.0}, rules[2] = {E, 0, 1.0}, rules[3] = {E + 1, 1, 1.0};
     } else if (d != a) {
-      const double lo = b.low == BoundaryType3::no_slip ? -1.0 : 1.0;
-      const double hi = b.high == BoundaryType3::no_slip ? -1.0 : 1.0;
+      auto mirror = [](BoundaryType3 t) { return t == BoundaryType3::no_slip || t == BoundaryType3::inflow ? -1.0 : 1.0; };
+      const double lo = mirror(b.low), hi = mirror(b.high);
       rules[0] = {-1, 0, lo}, rules[1] = {-2, 1, lo}, rules[2] = {E, E - 1, hi}, rules[3] = {E + 1, E - 2, hi};
     } else {
       const bool lo_open = b.low == BoundaryType3::open, hi_open = b.high == BoundaryType3::open;
-      rules[0] = lo_open ? Rule{-1, 0, 1.0} : Rule{-1, 1, -1.0};
-      rules[1] = lo_open ? Rule{-2, 0, 1.0} : Rule{-2, 2, -1.0};
-      rules[2] = hi_open ? Rule{E, E - 1, 1.0} : Rule{E, E - 2, -1.0};
-      rules[3] = hi_open ? Rule{E + 1, E - 1, 1.0} : Rule{E + 1, E - 3, -1.0};
+      const double lo_wall = 2.0 * b.normalVelocity_m_per_s(false), hi_wall = 2.0 * b.normalVelocity_m_per_s(true);
+      rules[0] = lo_open ? Rule{-1, 0, 1.0} : Rule{-1, 1, -1.0, lo_wall};
+      rules[1] = lo_open ? Rule{-2, 0, 1.0} : Rule{-2, 2, -1.0, lo_wall};
+      rules[2] = hi_open ? Rule{E, E - 1, 1.0} : Rule{E, E - 2, -1.0, hi_wall};
+      rules[3] = hi_open ? Rule{E + 1, E - 1, 1.0} : Rule{E + 1, E - 3, -1.0, hi_wall};
     }
     for (int p2 = -kGhost; p2 < e[o2] + kGhost; ++p2)
       for (int p1 = -kGhost; p1 < e[o1] + kGhost; ++p1)
@@ -43,7 +44,7 @@ void GhostedComponent3::fill(int a, const MacGrid3& grid, const Array3& values) 
           g[d] = r.ghost, s[d] = r.source;
           g[o1] = s[o1] = p1;
           g[o2] = s[o2] = p2;
-          ref(g[0], g[1], g[2]) = r.factor * at(s[0], s[1], s[2]);
+          ref(g[0], g[1], g[2]) = r.offset + r.factor * at(s[0], s[1], s[2]);
         }
   }
 }
@@ -68,12 +69,6 @@ double frommFlux(const std::array<GhostedComponent3, 3>& q, int a, int b, const 
   return 0.5 * (advecting * (from_low + from_high) - std::fabs(advecting) * (from_high - from_low));
 }
 
-bool knownFace3(const MacGrid3& grid, int a, int index) {
-  if (grid.periodic(a)) return false;
-  const AxisBoundary3& b = grid.boundaries.axis[a];
-  return (index == 0 && b.low != BoundaryType3::open) || (index == grid.n[a] && b.high != BoundaryType3::open);
-}
-
 }  // namespace upwind3_detail
 
 void Upwind2Rk2Advection3::stage(const MacGrid3& grid, const std::array<GhostedComponent3, 3>& state, double c,
@@ -87,8 +82,8 @@ void Upwind2Rk2Advection3::stage(const MacGrid3& grid, const std::array<GhostedC
         for (int j = 0; j < e[1]; ++j)
           for (int i = 0; i < e[0]; ++i) {
             const int m[3] = {i, j, k};
-            if (knownFace3(grid, a, m[a])) {
-              out[a](i, j, k) = 0.0;
+            if (grid.knownFace(a, m[a])) {
+              out[a](i, j, k) = grid.knownFaceVelocity_m_per_s(a, m[a]);
               continue;
             }
             double divergence = 0.0;

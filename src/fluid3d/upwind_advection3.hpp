@@ -10,8 +10,8 @@
 //   q_{i+½} = q_i + ¼ (q_{i+1} − q_{i−1})   if the advecting velocity is ≥ 0,
 //   q_{i+½} = q_{i+1} − ¼ (q_{i+2} − q_i)    otherwise.
 // Walls by two ghost layers: tangential components mirrored (stencil3.hpp's factors), normal
-// components odd about a solid wall (u·n = 0 there) and constant across an open side; periodic
-// sides wrap.
+// components odd about a solid wall's value (u·n = 0 there, or an inflow side's speed U:
+// ghost = 2U − mirror) and constant across an open side; periodic sides wrap.
 // Time: Heun / SSP-RK2 (Shu & Osher 1988): u¹ = uⁿ + dt L(uⁿ), uⁿ⁺¹ = ½ uⁿ + ½ (u¹ + dt L(u¹)).
 // Stability (linear von Neumann analysis with a constant advecting velocity): the worst case is the
 // diagonal, (|u| + |v| + |w|) dt/dx ≤ 1, i.e. a max-component CFL number ≤ ⅓ (maxStableCfl());
