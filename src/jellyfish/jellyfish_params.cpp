@@ -93,6 +93,11 @@ std::string KnotTable::validate() const {
   return "";
 }
 
+ModelPreset modelPreset(Model model) {
+  if (model == Model::paper) return {MuscleModel::rest_length, ActivationShape::hermite, 2.352e-3};
+  return {BellParams{}.muscle_model, ActivationParams{}.shape, BellParams{}.bending_rigidity_n_m};
+}
+
 BellParams paperBell() {
   BellParams p;
   p.segments = 32;

@@ -72,12 +72,10 @@ struct BellParams {
   double bending_rigidity_n_m = 1.0e-4;
   // The joint mesoglea (130 Pa, §3.2) lies between the circumferential segments of the bell
   // (Fig. 3, a horizontal cross-section); the axial slice does not cut it, so it has no spring.
+  /// bell_modulus_pa (bending_rigidity_n_m is the kind's: its model key presets it, ModelPreset).
   template <class V>
   void describeElasticity(V& v) {
     v.real("bell_modulus_pa", bell_modulus_pa, "Pa", 1e-6, 1e12, "bell mesoglea, λ = 1186 Pa (Fig. 12); k = E t / L");
-    v.real("bending_rigidity_n_m", bending_rigidity_n_m, "N m", 0, 1e6,
-           "bending rigidity B per metre of depth (a joint's angular spring is B / L); not given by the paper, "
-           "chosen on a 200² grid for a pluck ringing near §3.3's resonant 0.7 Hz");
   }
 
   // --- circumferential muscle (§3.2, Fig. 4) --------------------------------------------------
@@ -98,12 +96,9 @@ struct BellParams {
   // (an element of arc w pulls with T_max · w · a(t)). Not given by the paper; calibrated in a less
   // viscous fluid to close the bell to Fig. 3's 0.56 of its diameter.
   double muscle_tension_n_per_m2 = 14.0;
+  /// Every muscle field but muscle_model (the kind's model key presets it: ModelPreset).
   template <class V>
   void describeMuscle(V& v) {
-    v.choice("muscle_model", muscle_model,
-             {{"rest_length", MuscleModel::rest_length}, {"active_tension", MuscleModel::active_tension}},
-             "active_tension: a tension T_max a(t) that the elastic bell re-expands against, so the stroke can "
-             "resonate; rest_length: the paper's rest-length curve (§3.3)");
     v.real("muscle_band_fraction", muscle_band_fraction, "", 0.01, 0.99,
            "fraction of the half-arc from the aperture that the muscle band covers (Fig. 4's model: 14 of 16)");
     v.real("muscle_modulus_pa", muscle_modulus_pa, "Pa", 1e-6, 1e12, "circumferential muscle, 400 kPa (§3.2)");
@@ -198,7 +193,8 @@ struct ActivationParams {
   // then the bell rings down freely (the pluck of experiments/jellyfish/frequency.toml).
   int active_cycles = 0;
 
-  /// Every field but the knots (KnotTable describes those).
+  /// Every field but the knots (KnotTable describes those) and the shape (the kind's model key presets it:
+  /// ModelPreset).
   template <class V>
   void describe(V& v) {
     v.real("contraction_hz", contraction_hz, "Hz", 1e-3, 100, "contraction frequency (Fig. 12: 0.7 Hz)");
@@ -210,9 +206,6 @@ struct ActivationParams {
            "(jellyfish/contraction_curve.hpp)");
     v.real("synaptic_delay_s", synaptic_delay_s, "s", 0, 10,
            "Spencer's synaptic delay per muscle pair from the aperture (§3.1); 0 = off");
-    v.choice("activation_shape", shape, {{"hermite", ActivationShape::hermite}, {"pulse", ActivationShape::pulse}},
-             "pulse: sin^2 over pulse_duration_s each cycle, then free recoil (Hoover, Porras & Miller 2019); "
-             "hermite: the §3.3 curve, whose held tension does not converge in the grid");
     v.real("pulse_duration_s", pulse_duration_s, "s", 1e-4, 100, "pulse shape: length of the contraction pulse");
     v.real("pulse_stagger", pulse_stagger, "", 0, 0.99,
            "pulse shape: the apex muscle's release runs 1/(1 - pulse_stagger) times faster than the aperture's "
@@ -224,6 +217,24 @@ struct ActivationParams {
   /// "" if usable, else one sentence per problem joined by "; ".
   std::string validate() const;
 };
+
+/// Which model a run starts from (the jellyfish kind's `model` key).
+enum class Model {
+  ours,  // the defaults: tension-pulse muscles that the elastic bell re-expands against, so the stroke can resonate
+  paper  // Rudolf & Mould 2009's: rest-length springs following the §3.3 Hermite curve, Fig. 12's joint stiffness
+};
+
+/// The three settings in which the two models differ; the rest of a run's setting is shared.
+struct ModelPreset {
+  MuscleModel muscle_model = MuscleModel::active_tension;
+  ActivationShape activation_shape = ActivationShape::pulse;
+  double bending_rigidity_n_m = 0;  // N m per metre of depth
+};
+/// ours: BellParams' and ActivationParams' in-class defaults. paper: rest_length, hermite and B = 2.352e-3 N m,
+/// Fig. 12's "Angular Elastic Stiffness 1.186 N m/rad" per joint read per metre of depth on the paper's
+/// 32-segment chain (1.983 mm joints: 1.186 x 1.983e-3); it keeps the bell open against the stiff muscle
+/// springs, which crush a bell of ours' bending to about 0.2 of its diameter.
+ModelPreset modelPreset(Model model);
 
 /// The paper's bell where the defaults depart from it (Rudolf & Mould 2009 §3.2-3.3, Fig. 4, 12): Fig. 4's
 /// 32-segment chain, its angular stiffness 1.186 N·m/rad per joint read per metre of depth on that chain

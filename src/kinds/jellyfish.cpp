@@ -130,9 +130,17 @@ struct MetricValues {
 jellyfish::SwimmerConfig JellyfishKindParams::setup() const {
   jellyfish::SwimmerConfig c = swimmer;
   auto& b = c.bell;
+  const jellyfish::ModelPreset preset = jellyfish::modelPreset(model);
+  b.muscle_model = muscle_model == "auto"           ? preset.muscle_model
+                   : muscle_model == "rest_length" ? jellyfish::MuscleModel::rest_length
+                                                   : jellyfish::MuscleModel::active_tension;
+  c.activation.shape = activation_shape == "auto"     ? preset.activation_shape
+                       : activation_shape == "hermite" ? jellyfish::ActivationShape::hermite
+                                                       : jellyfish::ActivationShape::pulse;
+  const double bending_n_m = bending_rigidity_n_m.is_auto ? preset.bending_rigidity_n_m : bending_rigidity_n_m.value;
   b.segments = bellSegments(*this);
   b.bell_modulus_pa = swimmer.bell.bell_modulus_pa * stiffness_scale;
-  b.bending_rigidity_n_m = swimmer.bell.bending_rigidity_n_m * stiffness_scale;
+  b.bending_rigidity_n_m = bending_n_m * stiffness_scale;
   b.tentacle_root_spacing_m = 2 * tentacle_kernel_radius_m;
   // Darcy: α = κ / μ, the permeability length over the dynamic viscosity ρ ν.
   b.tentacle_porosity_m_per_pa_s =

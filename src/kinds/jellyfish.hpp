@@ -24,11 +24,26 @@ struct JellyfishKindParams {
   double kernel_radius_m = 0.004;
   double box_aspect = 1.44;
   std::int64_t tracers_per_side = 0;
+  // The model and the three settings it presets (jellyfish::modelPreset); "auto" takes the model's, a
+  // value set in the file wins over it.
+  jellyfish::Model model = jellyfish::Model::ours;
+  std::string muscle_model = "auto";
+  std::string activation_shape = "auto";
+  RealOrAuto bending_rigidity_n_m;
 
   template <class V>
   void describe(V& v) {
+    v.choice("model", model, {{"ours", jellyfish::Model::ours}, {"paper", jellyfish::Model::paper}},
+             "ours: tension-pulse muscles (active_tension, pulse) and bending 1e-4 N m, so the stroke can "
+             "resonate; paper: Rudolf & Mould 2009's, rest-length Hermite muscles (rest_length, hermite, §3.3) "
+             "and bending 2.352e-3 N m (Fig. 12); it sets muscle_model, activation_shape and "
+             "bending_rigidity_n_m where those are auto");
     // --- activation (§3.3, Fig. 4)
     swimmer.activation.describe(v);
+    v.choice("activation_shape", activation_shape, {"auto", "pulse", "hermite"},
+             "auto: the model's (ours pulse, paper hermite); pulse: sin^2 over pulse_duration_s each cycle, then "
+             "free recoil (Hoover, Porras & Miller 2019); hermite: the §3.3 curve, whose held tension does not "
+             "converge in the grid");
     knots.describe(v);
     // --- bell (§3.2, Fig. 12)
     swimmer.bell.describeGeometry(v);
@@ -39,7 +54,15 @@ struct JellyfishKindParams {
            "bell_segments = 0: largest marker spacing in cells; 0.5 is Peskin 2002's rule and keeps the membrane's "
            "leak small");
     swimmer.bell.describeElasticity(v);
+    v.realOrAuto("bending_rigidity_n_m", bending_rigidity_n_m, "N m", 0, 1e6,
+                 "bending rigidity B per metre of depth (a joint's angular spring is B / L); auto: the model's, "
+                 "ours 1e-4 (not given by the paper: chosen on a 200² grid for a pluck ringing near §3.3's "
+                 "resonant 0.7 Hz), paper 2.352e-3 (Fig. 12's 1.186 N m/rad per 1.983 mm joint)");
     v.real("stiffness_scale", stiffness_scale, "", 1e-3, 1e3, "multiplies bell_modulus_pa and bending_rigidity_n_m together");
+    v.choice("muscle_model", muscle_model, {"auto", "active_tension", "rest_length"},
+             "auto: the model's (ours active_tension, paper rest_length); active_tension: a tension T_max a(t) "
+             "that the elastic bell re-expands against, so the stroke can resonate; rest_length: the paper's "
+             "rest-length curve (§3.3)");
     swimmer.bell.describeMuscle(v);
     swimmer.bell.describeTentacles(v);
     v.real("tentacle_kernel_radius_m", tentacle_kernel_radius_m, "m", 0, 10,
@@ -76,7 +99,7 @@ struct JellyfishKindParams {
     v.integer("tracers_per_side", tracers_per_side, 0, 200, "trace particles on an n x n lattice around the bell (Fig. 6)");
   }
 
-  // The swimmer's structs as run: the segments that follow the grid, the stiffness scaled, the box
+  // The swimmer's structs as run: the model's preset where its keys are auto, the segments that follow the grid, the stiffness scaled, the box
   // stretched to box_aspect, the kernels stretched to their radii, the tentacles' roots and porosity.
   jellyfish::SwimmerConfig setup() const;
   jellyfish::SwimSchedule schedule() const;

@@ -3,7 +3,9 @@
 // SwimmerConfig{} holds, and the rules across fields name the parameters. No solver runs.
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <string>
+#include <utility>
 
 #include "kinds/jellyfish.hpp"
 #include "kinds/jellyfish_render_params.hpp"
@@ -27,6 +29,8 @@ TEST(JellyfishKind, DefaultsSetUpTheSwimmerStructsInClassDefaults) {
   EXPECT_EQ(run.bell.tentacle_root_spacing_m, in_class.bell.tentacle_root_spacing_m);
   EXPECT_EQ(run.bell.tentacle_porosity_m_per_pa_s, in_class.bell.tentacle_porosity_m_per_pa_s);
   EXPECT_EQ(run.bell.bending_rigidity_n_m, in_class.bell.bending_rigidity_n_m);
+  EXPECT_TRUE(run.bell.muscle_model == in_class.bell.muscle_model);
+  EXPECT_TRUE(run.activation.shape == in_class.activation.shape);
   EXPECT_EQ(run.activation.knots.size(), in_class.activation.knots.size());
   EXPECT_EQ(run.fluid.cells_x, in_class.fluid.cells_x);
   EXPECT_EQ(run.fluid.cells_y, in_class.fluid.cells_y);
@@ -63,6 +67,48 @@ TEST(JellyfishKind, ReadsItsParametersIntoTheStructs) {
   ASSERT_EQ(c.activation.knots.size(), 3u);
   EXPECT_EQ(c.activation.knots[2].value, 0.8);
   EXPECT_EQ(paramsOf(q), p);  // and back
+}
+
+// model = "paper" presets the paper's muscles, activation and bending (Rudolf & Mould 2009 §3.3, Fig. 12)
+// where the file leaves them auto; a value the file sets wins, in either model.
+TEST(JellyfishKind, ModelPresetsMusclesShapeAndBendingAndTheFileWins) {
+  const auto setup = [](std::initializer_list<std::pair<const std::string, Value>> given) {
+    Params p = defaults();
+    for (const auto& [name, value] : given) p[name] = value;
+    EXPECT_EQ(JellyfishKind().validate(p), "");
+    return readParams<JellyfishKindParams>(p).setup();
+  };
+  const jellyfish::SwimmerConfig in_class;
+  EXPECT_EQ(defaults().at("model"), Value(std::string("ours")));
+  EXPECT_EQ(defaults().at("bending_rigidity_n_m"), Value(std::string("auto")));
+
+  const jellyfish::SwimmerConfig paper = setup({{"model", std::string("paper")}});
+  EXPECT_TRUE(paper.bell.muscle_model == jellyfish::MuscleModel::rest_length);
+  EXPECT_TRUE(paper.activation.shape == jellyfish::ActivationShape::hermite);
+  EXPECT_EQ(paper.bell.bending_rigidity_n_m, 2.352e-3);
+  EXPECT_EQ(paper.bell.muscle_tension_n_per_m2, in_class.bell.muscle_tension_n_per_m2);  // the rest is shared
+  EXPECT_EQ(paper.fluid.cells_x, in_class.fluid.cells_x);
+
+  const jellyfish::SwimmerConfig paper_set = setup({{"model", std::string("paper")},
+                                                    {"bending_rigidity_n_m", 5e-4},
+                                                    {"muscle_model", std::string("active_tension")},
+                                                    {"activation_shape", std::string("pulse")}});
+  EXPECT_EQ(paper_set.bell.bending_rigidity_n_m, 5e-4);
+  EXPECT_TRUE(paper_set.bell.muscle_model == jellyfish::MuscleModel::active_tension);
+  EXPECT_TRUE(paper_set.activation.shape == jellyfish::ActivationShape::pulse);
+
+  // A value equal to ours' default still wins over the paper's preset: set is set.
+  const jellyfish::SwimmerConfig paper_ours_b =
+      setup({{"model", std::string("paper")}, {"bending_rigidity_n_m", in_class.bell.bending_rigidity_n_m}});
+  EXPECT_EQ(paper_ours_b.bell.bending_rigidity_n_m, in_class.bell.bending_rigidity_n_m);
+  EXPECT_TRUE(paper_ours_b.bell.muscle_model == jellyfish::MuscleModel::rest_length);
+
+  const jellyfish::SwimmerConfig ours_set =
+      setup({{"muscle_model", std::string("rest_length")}, {"activation_shape", std::string("hermite")},
+             {"bending_rigidity_n_m", 2e-3}, {"stiffness_scale", 2.0}});
+  EXPECT_TRUE(ours_set.bell.muscle_model == jellyfish::MuscleModel::rest_length);
+  EXPECT_TRUE(ours_set.activation.shape == jellyfish::ActivationShape::hermite);
+  EXPECT_EQ(ours_set.bell.bending_rigidity_n_m, 4e-3);  // stiffness_scale applies to the value set
 }
 
 TEST(JellyfishKind, RulesAcrossFieldsNameTheParameters) {
