@@ -5,4 +5,5 @@ creaturelab_test(fluid3d_unit_tests unit
     ${CMAKE_CURRENT_LIST_DIR}/fluid3d_stages_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fluid3d_threads_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fluid3d_inflow_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/fluid3d_vorticity_test.cpp
   LIBS cl_fluid3d)
