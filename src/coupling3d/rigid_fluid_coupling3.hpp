@@ -9,7 +9,8 @@
 //   1. advanceFluid   external forces, advection with u^n, viscosity -> u~ (the fluid's stages
 //                     1-3, each as the fluid's FluidStages3 switches; §6 steps 2 and 5)
 //   2. (solid)        the caller steps MuJoCo from x^n to x^{n+1} with the reaction of the previous
-//                     step applied (applyReaction; §6 step 3), or sets a kinematic pose
+//                     step applied (applyReaction; §6 step 3), or sets a kinematic pose, and then
+//                     updates the kinematics (MuJoCo's step leaves the poses of the step's start)
 //   3. forceFluid     markers at x^{n+1} with the solid's effective velocity V = (x^{n+1} − x^n)/dt
 //                     (§6 step 4's velocity); marker forces F solved so that the projected velocity
 //                     meets them, I P (u~ + dt S F/ρ) = V (Taira & Colonius 2007, J. Comput. Phys.

@@ -4,4 +4,6 @@
 creaturelab_test(coupling3d_unit_tests unit
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/coupling3d_transfer_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/coupling3d_markers_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/coupling3d_coupling_test.cpp
   LIBS cl_coupling3d)
