@@ -40,10 +40,17 @@ Indexed weld(const std::vector<rigid::Triangle>& soup) {
   return out;
 }
 
-double longestEdge(const Indexed& m) {
+std::vector<V3> vertexNormals(const std::vector<V3>& x, const std::vector<std::array<int, 3>>& tri);
+
+// Longest edge of the surface offset by t along its vertex normals (the flesh's own edges).
+double longestOffsetEdge(const Indexed& m, double t) {
+  const std::vector<V3> n = vertexNormals(m.x, m.tri);
   double longest = 0;
-  for (const auto& t : m.tri)
-    for (int k = 0; k < 3; ++k) longest = std::max(longest, (m.x[t[k]] - m.x[t[(k + 1) % 3]]).norm());
+  for (const auto& f : m.tri)
+    for (int k = 0; k < 3; ++k) {
+      const int a = f[k], b = f[(k + 1) % 3];
+      longest = std::max(longest, (m.x[a] + t * n[a] - m.x[b] - t * n[b]).norm());
+    }
   return longest;
 }
 
@@ -109,7 +116,7 @@ FleshMesh buildFleshMesh(const rigid::RigidModel& model, const FleshParams& para
     if (surface.body == 0) continue;
     Indexed m = weld(surface.triangles);
     if (params.max_edge_m > 0)
-      for (int level = 0; level < 12 && longestEdge(m) > params.max_edge_m; ++level) m = subdivide(m);
+      for (int level = 0; level < 12 && longestOffsetEdge(m, t) > params.max_edge_m; ++level) m = subdivide(m);
 
     // Stage: the geom's surface in the world at the reference configuration, and the flesh's.
     std::vector<V3> inner(m.x.size()), outer(m.x.size()), middle(m.x.size());
