@@ -2,7 +2,8 @@
 // Parameters of the 3-D incompressible fluid solver, for Eqs. 5–6 of Lentine, Gräfe & Fedkiw 2010
 // (§4.1, "Navier–Stokes equations") with a viscous term:
 //   ∂u/∂t + u·∇u = −∇p/ρ + ν ∇²u + f,   ∇·u = 0.
-// Plain struct with in-class defaults; validate() says in words what is wrong.
+// Plain struct with in-class defaults; validate() says in words what is wrong. describe(v) names
+// each field for the fluid3d kind (kinds/describe.hpp: name, unit, range, one-line doc).
 
 #include <array>
 #include <string>
@@ -119,6 +120,84 @@ struct FluidParams3 {
   int threads = 1;
   /// A step whose velocity is not finite or exceeds this speed throws FluidBlowUpError3.
   double blowup_speed_m_per_s = 100.0;
+
+  template <class V>
+  void describe(V& v) {
+    describeBox(v);
+    v.real("density_kg_per_m3", density_kg_per_m3, "kg/m^3", 1e-6, 1e6, "fluid density (water: 1000)");
+    v.real("kinematic_viscosity_m2_per_s", kinematic_viscosity_m2_per_s, "m^2/s", 0, 1e3,
+           "nu (water at 20 C: 1e-6); 0 switches the viscous stage off");
+    describeSides(v);
+    describeSchemes(v);
+    v.real("cfl_safety_factor", cfl_safety_factor, "", 1e-6, 10,
+           "adaptive step: fraction of the CFL limit dx / max|u component| (capped by the scheme's bound)");
+    v.real("max_step_s", max_step_s, "s", 1e-9, 10, "largest adaptive step");
+    v.real("body_acceleration_x_m_per_s2", body_acceleration_m_per_s2[0], "m/s^2", -1e4, 1e4,
+           "uniform body force per unit mass, x");
+    v.real("body_acceleration_y_m_per_s2", body_acceleration_m_per_s2[1], "m/s^2", -1e4, 1e4,
+           "uniform body force per unit mass, y");
+    v.real("body_acceleration_z_m_per_s2", body_acceleration_m_per_s2[2], "m/s^2", -1e4, 1e4,
+           "uniform body force per unit mass, z (up; gravity: -9.81)");
+    v.integer("threads", threads, 1, 16, "threads sharing each step (results bitwise the same for any number)");
+    v.real("blowup_speed_m_per_s", blowup_speed_m_per_s, "m/s", 1e-9, 1e9,
+           "a step whose velocity exceeds this speed (or is not finite) ends the run as failed");
+  }
+  template <class V>
+  void describeBox(V& v) {
+    v.real("domain_x_m", domain_x_m, "m", 1e-6, 1e6, "box length along x");
+    v.real("domain_y_m", domain_y_m, "m", 1e-6, 1e6, "box length along y");
+    v.real("domain_z_m", domain_z_m, "m", 1e-6, 1e6, "box height (z is up); cells are cubes: the lengths over the cells agree");
+    v.integer("cells_x", cells_x, 2, 1024, "cells along x");
+    v.integer("cells_y", cells_y, 2, 1024, "cells along y");
+    v.integer("cells_z", cells_z, 2, 1024, "cells along z");
+  }
+  /// side_<axis>_<low|high> and inflow_<axis>_<low|high>_m_per_s for the six sides.
+  template <class V>
+  void describeSides(V& v) {
+    const char* axes[3] = {"x", "y", "z"};
+    for (int a = 0; a < 3; ++a)
+      for (const bool high : {false, true}) {
+        const std::string side = std::string(axes[a]) + (high ? "_high" : "_low");
+        AxisBoundary3& b = boundaries.axis[a];
+        v.choice("side_" + side, high ? b.high : b.low,
+                 {{"periodic", BoundaryType3::periodic},
+                  {"free_slip", BoundaryType3::free_slip},
+                  {"no_slip", BoundaryType3::no_slip},
+                  {"open", BoundaryType3::open},
+                  {"inflow", BoundaryType3::inflow}},
+                 "the " + side + " side: periodic (both sides of the axis), free_slip, no_slip, open (p = 0) or inflow "
+                 "(fluid enters at inflow_" + side + "_m_per_s, u_t = 0)");
+        v.real("inflow_" + side + "_m_per_s", high ? b.high_inflow_m_per_s : b.low_inflow_m_per_s, "m/s", -1e3, 1e3,
+               "speed into the box through the " + side + " side when it is inflow (Lentine et al. 2010 §7.1: the "
+               "floor's source)");
+      }
+  }
+  /// advection, viscosity_scheme, pressure_solver and the iterative solves' tolerances.
+  template <class V>
+  void describeSchemes(V& v) {
+    v.choice("advection", advection,
+             {{"semi_lagrangian", AdvectionScheme3::semi_lagrangian},
+              {"maccormack", AdvectionScheme3::maccormack},
+              {"upwind2_rk2", AdvectionScheme3::upwind2_rk2}},
+             "semi_lagrangian (Stam 1999, first order), maccormack (Selle et al. 2008, limited) or upwind2_rk2 "
+             "(Fromm upwind + Heun, second order, CFL <= 1/3)");
+    v.choice("viscosity_scheme", viscosity_scheme,
+             {{"backward_euler", ViscosityScheme3::backward_euler},
+              {"crank_nicolson", ViscosityScheme3::crank_nicolson},
+              {"explicit_euler", ViscosityScheme3::explicit_euler}},
+             "viscous term in time: backward Euler (Stam 1999 §2.2, first order), Crank-Nicolson (second order) "
+             "or explicit Euler (stable for nu dt / dx^2 <= 1/6)");
+    v.choice("pressure_solver", pressure_solver,
+             {{"mg_pcg", PressureSolverType3::mg_pcg}, {"spectral", PressureSolverType3::spectral}},
+             "projection: multigrid-preconditioned CG to pressure_tolerance, or the exact eigenbasis solve "
+             "(FFT along periodic and walled axes of a power-of-two length)");
+    v.real("pressure_tolerance", pressure_tolerance, "", 1e-16, 1e-2,
+           "MG-PCG stops at |b - A q|inf <= tolerance |b|inf");
+    v.integer("pressure_max_iterations", pressure_max_iterations, 1, 100000, "MG-PCG iteration limit");
+    v.real("viscosity_tolerance", viscosity_tolerance, "", 1e-16, 1e-2,
+           "implicit viscosity: CG stops at |b - A u|inf <= tolerance |b|inf");
+    v.integer("viscosity_max_iterations", viscosity_max_iterations, 1, 100000, "viscosity CG iteration limit");
+  }
 
   double cellSize_m() const { return domain_x_m / cells_x; }
   /// Empty when usable; otherwise one sentence per problem, joined by "; ".
