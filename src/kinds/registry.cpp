@@ -3,6 +3,7 @@
 #include "kinds/control_fluid.hpp"
 #include "kinds/fish.hpp"
 #include "kinds/fluid.hpp"
+#include "kinds/fluid3d.hpp"
 #include "kinds/jellyfish.hpp"
 #include "kinds/kind.hpp"
 #include "kinds/membrane.hpp"
@@ -24,6 +25,7 @@ Registry defaultRegistry() {
   r.add(std::make_unique<ControlKind>());
   r.add(std::make_unique<ControlFluidKind>());
   r.add(std::make_unique<FishKind>());
+  r.add(std::make_unique<Fluid3dKind>());
   return r;
 }
 
