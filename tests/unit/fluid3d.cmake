@@ -7,3 +7,7 @@ creaturelab_test(fluid3d_unit_tests unit
     ${CMAKE_CURRENT_LIST_DIR}/fluid3d_inflow_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/fluid3d_vorticity_test.cpp
   LIBS cl_fluid3d)
+# the fluid3d kind on 8³ grids (about 0.1 s)
+creaturelab_test(fluid3d_kind_tests unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/fluid3d_kind_test.cpp
+  LIBS cl_kinds)
