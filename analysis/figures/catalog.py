@@ -165,6 +165,10 @@ FIGURES = [
            "The driven flyer's outer wing joints maximise drag on the down-stroke and minimise it on the "
            "up-stroke, and the flyer's animation closely matches that of many flying creatures (§7.1).",
            "flyer", None, None),
+    Figure("lentine", "§4.1 (3-D fluid)",
+           "The paper's 3-D creatures move in an incompressible fluid (§4.1, Eqs. 5-8); our 3-D solver of them "
+           "converges at second order to the decaying Taylor-Green vortex (Stokes limit), as the 2-D one is checked.",
+           "taylor_green3d", "fluid3d_taylor_green", None),
     # --- Tu 1996 (chapters: the thesis's figures are not numbered in the text we cite)
     Figure("tu", "ch. 4 (in air)",
            "The fish's muscles are internal forces in equal and opposite pairs: without the water's reaction the "
