@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The 3-D Taylor-Green claim's checks (experiments/fluid3d/taylor_green.toml, on its quick study's 16^3, 32^3
+# The 3-D Taylor-Green claim's checks (experiments/fluid3d/taylor_green3d.toml, on its quick study's 16^3, 32^3
 # and 64^3 over a quarter of the span, 0.5 s) fail when their mechanism is broken: backward Euler in place of
 # Crank-Nicolson adds a first-order time error (relative decay-rate error nu k^2 dt 3/2, 0.015 on 16^3), so
 # neither order is two and the 64^3 decay rate is not the discrete Laplacian's; without viscosity there is
@@ -8,7 +8,7 @@
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 source "$(dirname "${BASH_SOURCE[0]}")/checks_fail_lib.sh"  # status, broken, also, study
 
-quick=studies/fluid3d/taylor_green_quick.toml
+quick=studies/fluid3d/taylor_green3d_quick.toml
 broken first_order_time "$quick" "decay rate: observed order two" \
   params.end_time_s=0.5 params.viscosity_scheme=backward_euler
 also first_order_time "velocity: observed order two"
