@@ -64,6 +64,7 @@ void Flesh::step(rigid::RigidData& skeleton, double h_s) {
   if (!(h_s > 0) || !std::isfinite(h_s)) throw std::invalid_argument("flesh: step needs a positive time step (s)");
   skeleton.kinematics();
   anchorStates(mesh_, skeleton, anchor_m_, anchor_v_);
+  anchorJacobians(skeleton);
   forcesAtStart();
   rightHandSide(h_s);
   assembleMatrix(h_s);
@@ -73,12 +74,52 @@ void Flesh::step(rigid::RigidData& skeleton, double h_s) {
   external_n_.setZero();
 }
 
+void Flesh::anchorJacobians(rigid::RigidData& skeleton) {
+  dofs_ = params_.implicit_skeleton ? skeleton.model().dofs() : 0;
+  if (dofs_ == 0) return;
+  // RigidData offers no Jacobian, but a wrench applied at a point is J^T times it: a unit force at a
+  // body's centre of mass c gives a row of its linear Jacobian there, a unit couple a row of its
+  // angular one. The applied forces are restored afterwards.
+  double* applied = skeleton.appliedForces();
+  const std::vector<double> keep(applied, applied + dofs_);
+  const int bodies = skeleton.model().bodies();
+  std::vector<Eigen::MatrixXd> body_jacobian(bodies);  // 6 x dofs: linear at c, then angular
+  for (int b : mesh_.body) {
+    if (body_jacobian[b].size() > 0) continue;
+    body_jacobian[b].setZero(6, dofs_);
+    const double* c = skeleton.bodyComPosition(b);
+    for (int row = 0; row < 6; ++row) {
+      rigid::Vec3 unit{0, 0, 0}, zero{0, 0, 0};
+      unit[row % 3] = 1;
+      std::fill(applied, applied + dofs_, 0.0);
+      skeleton.applyWrenchAt(b, row < 3 ? unit : zero, row < 3 ? zero : unit, {c[0], c[1], c[2]});
+      for (int j = 0; j < dofs_; ++j) body_jacobian[b](row, j) = applied[j];
+    }
+  }
+  std::copy(keep.begin(), keep.end(), applied);
+  // J_i = J_v(c) - [r_i]x J_w, r_i = p_i - c: the anchor's velocity v(c) + w x r_i.
+  anchor_jacobian_.resize(3 * vertices(), dofs_);
+  for (int i = 0; i < vertices(); ++i) {
+    const int b = mesh_.body[i];
+    const Eigen::Vector3d r = anchor_m_.col(i) - Eigen::Map<const Eigen::Vector3d>(skeleton.bodyComPosition(b));
+    Eigen::Matrix3d cross_r;
+    cross_r << 0, -r[2], r[1], r[2], 0, -r[0], -r[1], r[0], 0;
+    anchor_jacobian_.middleRows<3>(3 * i) = body_jacobian[b].topRows<3>() - cross_r * body_jacobian[b].bottomRows<3>();
+  }
+  std::vector<double> b_matrix;
+  skeleton.eulerMatrix(b_matrix);
+  euler_matrix_ = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+      b_matrix.data(), dofs_, dofs_);
+}
+
 void Flesh::forcesAtStart() {
   edges_.forces(state_, 0.0, force_n_);  // edge springs with their damping, and weight
   force_n_ += external_n_;
+  binding_force_n_.resize(3, vertices());
   for (int i = 0; i < vertices(); ++i)
-    force_n_.col(i) -= binding_k_[i] * (state_.x_m.col(i) - anchor_m_.col(i)) +
-                       binding_c_[i] * (state_.v_m_per_s.col(i) - anchor_v_.col(i));
+    binding_force_n_.col(i) = -binding_k_[i] * (state_.x_m.col(i) - anchor_m_.col(i)) -
+                              binding_c_[i] * (state_.v_m_per_s.col(i) - anchor_v_.col(i));
+  force_n_ += binding_force_n_;
   stiffness_.clear();
   damping_.clear();
   edges_.addStiffnessTriplets(state_, 1.0, stiffness_, /*clamp_compression=*/true);
@@ -86,27 +127,49 @@ void Flesh::forcesAtStart() {
 }
 
 void Flesh::rightHandSide(double h) {
-  // b = h (f0 + h K_edges v0 - h k_i (v0 - w_i)): the binding's df/dx = -k_i I acts on the velocity
-  // relative to the anchor, the anchor moving on with w_i.
-  const int dofs = 3 * vertices();
-  rhs_.resize(dofs);
+  // Flesh rows: h (f0 + h K_edges v0 - h k_i (v0 - w_i)), the binding's df/dx = -k_i I acting on the
+  // velocity relative to the anchor. Skeleton rows: -h sum_i J_i^T (f_i - h k_i (v_i - w_i)).
+  const int n3 = 3 * vertices();
+  rhs_.resize(n3 + dofs_);
   const double* v0 = state_.v_m_per_s.data();
-  for (int r = 0; r < dofs; ++r) rhs_[r] = force_n_.data()[r] - h * binding_k_[r / 3] * (v0[r] - anchor_v_.data()[r]);
+  const double* w0 = anchor_v_.data();
+  for (int r = 0; r < n3; ++r) rhs_[r] = force_n_.data()[r] - h * binding_k_[r / 3] * (v0[r] - w0[r]);
   for (const auto& t : stiffness_) rhs_[t.row()] += h * t.value() * v0[t.col()];
-  rhs_ *= h;
+  rhs_.head(n3) *= h;
+  if (dofs_ == 0) return;
+  Eigen::VectorXd binding(n3);
+  for (int r = 0; r < n3; ++r) binding[r] = binding_force_n_.data()[r] - h * binding_k_[r / 3] * (v0[r] - w0[r]);
+  rhs_.tail(dofs_) = -h * (anchor_jacobian_.transpose() * binding);
 }
 
 void Flesh::assembleMatrix(double h) {
-  const int dofs = 3 * vertices();
+  const int n3 = 3 * vertices();
   entries_.clear();
-  entries_.reserve(dofs + damping_.size() + stiffness_.size());
-  for (int r = 0; r < dofs; ++r) {
+  entries_.reserve(n3 + damping_.size() + stiffness_.size());
+  for (int r = 0; r < n3; ++r) {
     const int i = r / 3;
     entries_.emplace_back(r, r, mesh_.mass_kg[i] + h * binding_c_[i] + h * h * binding_k_[i]);
   }
   for (const auto& t : damping_) entries_.emplace_back(t.row(), t.col(), -h * t.value());
   for (const auto& t : stiffness_) entries_.emplace_back(t.row(), t.col(), -h * h * t.value());
-  a_.resize(dofs, dofs);
+  if (dofs_ > 0) {
+    // -h G J and its transpose; B + h J^T G J.
+    Eigen::MatrixXd body_block = euler_matrix_;
+    for (int r = 0; r < n3; ++r) {
+      const double hg = h * (binding_c_[r / 3] + h * binding_k_[r / 3]);
+      for (int j = 0; j < dofs_; ++j) {
+        const double jr = anchor_jacobian_(r, j);
+        if (jr == 0) continue;
+        entries_.emplace_back(r, n3 + j, -hg * jr);
+        entries_.emplace_back(n3 + j, r, -hg * jr);
+      }
+      body_block.noalias() += hg * anchor_jacobian_.row(r).transpose() * anchor_jacobian_.row(r);
+    }
+    for (int a = 0; a < dofs_; ++a)
+      for (int b = 0; b < dofs_; ++b)
+        if (body_block(a, b) != 0) entries_.emplace_back(n3 + a, n3 + b, body_block(a, b));
+  }
+  a_.resize(n3 + dofs_, n3 + dofs_);
   a_.setFromTriplets(entries_.begin(), entries_.end());
 }
 
@@ -122,16 +185,18 @@ void Flesh::solveVelocityChange() {
 }
 
 void Flesh::integrate(double h) {
-  state_.v_m_per_s.reshaped() += dv_;
+  state_.v_m_per_s.reshaped() += dv_.head(3 * vertices());
   state_.x_m += h * state_.v_m_per_s;
 }
 
 void Flesh::bindingReactions(double h, rigid::RigidData& skeleton) {
-  // f_i(x1, v1) with the anchor at p_i + h w_i; its reaction acts at the anchor's present point.
-  binding_force_n_.resize(3, vertices());
+  // f_i(t + h) with the anchor's velocity at the step's end, w_i + J_i du (du = 0 when explicit), and
+  // its position p_i + h (w_i + J_i du); its reaction acts at the anchor's present point.
+  Eigen::Matrix3Xd anchor_v1 = anchor_v_;
+  if (dofs_ > 0) anchor_v1.reshaped() += anchor_jacobian_ * dv_.tail(dofs_);
   for (int i = 0; i < vertices(); ++i)
-    binding_force_n_.col(i) = -binding_k_[i] * (state_.x_m.col(i) - anchor_m_.col(i) - h * anchor_v_.col(i)) -
-                              binding_c_[i] * (state_.v_m_per_s.col(i) - anchor_v_.col(i));
+    binding_force_n_.col(i) = -binding_k_[i] * (state_.x_m.col(i) - anchor_m_.col(i) - h * anchor_v1.col(i)) -
+                              binding_c_[i] * (state_.v_m_per_s.col(i) - anchor_v1.col(i));
   summary_.binding_impulse_on_flesh_ns = h * binding_force_n_.rowwise().sum();
   applyReactions(mesh_, binding_force_n_, anchor_m_, skeleton);
 }

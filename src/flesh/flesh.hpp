@@ -8,17 +8,25 @@
 // the project's spring engine (springs::System, with compressed edges' transverse stiffness clamped
 // as springs::ImplicitEuler does, so that the matrix stays positive definite).
 //
-// The binding force on vertex i is f_i = -k_i (x_i - p_i(t)) - c_i (v_i - w_i), p_i the anchor and
-// w_i its velocity. Over a step the anchor is taken to move on with its velocity at the step's start,
-// p_i(t + h) = p_i + h w_i (the skeleton steps after the flesh), so the binding is linear in
-// (x1, v1) and its backward Euler step is exact:
-//   f_i(x1, v1) = f_i(x0, v0) - h k_i (v0 - w_i) - (c_i + h k_i) dv_i.
-// Its reaction -f_i(x1, v1) goes to the anchor's body for the skeleton's step, so the flesh's
-// momentum change h sum f_i (+ external forces) is exactly what the bodies lose: linear momentum is
-// conserved to the linear solve's tolerance. The flesh is implicit, the skeleton explicit
-// (partitioned): stable for any flesh stiffness on a held or driven skeleton; a free body much lighter
-// than the flesh bound to it is limited by MuJoCo's explicit step, h < 2 / omega with omega^2 the
-// binding's total stiffness over the body's mass.
+// The binding force on vertex i is f_i = -k_i (x_i - p_i) - c_i (v_i - w_i), p_i its anchor and w_i
+// the anchor's velocity, w_i = J_i u with J_i the anchor's Jacobian and u the skeleton's joint
+// velocities (MuJoCo's qvel). Over a step the anchor moves with its velocity at the step's end,
+// p_i(t + h) = p_i + h w_i(t + h) (backward Euler for the skeleton's positions too), so the binding is
+// linear in the unknowns and, with g_i = c_i + h k_i,
+//   f_i(t + h) = f_i - h k_i (v_i - w_i) - g_i (dv_i - J_i du).
+// The skeleton's velocity change under the reactions, B du = -h sum_i J_i^T f_i(t + h), with B = M + h D
+// (MuJoCo's Euler matrix: mass and joint damping), is solved together with the flesh's as one
+// symmetric positive definite system (its energy norm is dv' A dv + du' B du + h sum g_i |dv_i - J_i du|^2):
+//   [ A + h G      -h G J       ] [dv]   [ h (f0 + h df/dx v0 - h k (v0 - w0))          ]
+//   [ -h J^T G     B + h J^T G J ] [du] = [ -h sum_i J_i^T (f_i - h k_i (v_i - w_i)) ],
+// A the flesh's matrix above without the binding. So the flesh and the skeleton are implicit together:
+// stable for any binding stiffness and any mass ratio. The skeleton's own forces (gravity, joints,
+// fluid, actuators) stay MuJoCo's: du is only the prediction that makes the coupling implicit, and the
+// reactions -f_i(t + h) are handed to the bodies for MuJoCo's step, which gives du back exactly when
+// nothing else acts. The flesh's momentum change h sum f_i(t + h) (+ external forces) is then exactly
+// what the bodies lose: linear momentum is conserved to the linear solve's tolerance.
+// (FleshParams::implicit_skeleton = false keeps du = 0 in the solve: the bodies see the reactions
+// explicitly, which is unstable for stiff binding on light bones.)
 //
 // A coupled step, in this order:
 //   1. the fluid adds its forces to externalForces_n() (and to the bodies' applied forces);
@@ -73,7 +81,7 @@ class Flesh {
 
   // One backward Euler step of h seconds against the skeleton's current state (its kinematics are
   // recomputed first); adds the binding's reactions to the skeleton's applied forces. Does not step
-  // the skeleton.
+  // the skeleton; h should be its time step (B uses the model's for the joint damping).
   void step(rigid::RigidData& skeleton, double h_s);
   const FleshStepSummary& lastStep() const { return summary_; }
 
@@ -88,10 +96,11 @@ class Flesh {
 
  private:
   // Stages of step().
+  void anchorJacobians(rigid::RigidData& skeleton);  // J_i and B (implicit_skeleton only)
   void forcesAtStart();                         // f0 (edges, weight, binding, external) and the Jacobians
-  void rightHandSide(double h);                 // b = h (f0 + h df/dx v0)
-  void assembleMatrix(double h);                // A = M - h df/dv - h^2 df/dx
-  void solveVelocityChange();                   // CG: A dv = b
+  void rightHandSide(double h);                 // b = h (f0 + h df/dx v0), the skeleton's rows
+  void assembleMatrix(double h);                // the system above
+  void solveVelocityChange();                   // CG: dv and du
   void integrate(double h);                     // v1 = v0 + dv, x1 = x0 + h v1
   void bindingReactions(double h, rigid::RigidData& skeleton);
 
@@ -103,7 +112,10 @@ class Flesh {
   Eigen::Matrix3Xd external_n_;
 
   // Per-step work space.
+  int dofs_ = 0;    // the skeleton's, in the solve (0 when the skeleton is explicit)
   Eigen::Matrix3Xd anchor_m_, anchor_v_, force_n_, binding_force_n_;
+  Eigen::MatrixXd anchor_jacobian_;   // 3 vertices x dofs: J_i stacked
+  Eigen::MatrixXd euler_matrix_;      // B = M + h D, dofs x dofs
   std::vector<Eigen::Triplet<double>> stiffness_, damping_, entries_;
   Eigen::SparseMatrix<double> a_;
   Eigen::VectorXd rhs_, dv_;
