@@ -4,5 +4,6 @@ creaturelab_test(flesh_unit_test unit
   SOURCES
     ${CMAKE_CURRENT_LIST_DIR}/flesh_mesh_test.cpp
     ${CMAKE_CURRENT_LIST_DIR}/flesh_dynamics_test.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/flesh_export_test.cpp
   LIBS cl_flesh cl_render
 )
