@@ -4,6 +4,33 @@
 #include <cmath>
 
 namespace creaturelab::fluid3d {
+namespace recorder3_detail {
+
+// Volume flux into the box through its inflow sides and out through its open sides (m³/s).
+std::array<double, 2> boundaryFluxes_m3_per_s(const MacGrid3& g) {
+  double in = 0.0, out = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    if (g.periodic(a)) continue;
+    const AxisBoundary3& b = g.boundaries.axis[a];
+    const Array3& u = g.velocity_m_per_s[a];
+    for (const bool high : {false, true}) {
+      const BoundaryType3 type = high ? b.high : b.low;
+      if (type != BoundaryType3::open && type != BoundaryType3::inflow) continue;
+      const int m = high ? g.n[a] : 0;
+      double sum = 0.0;  // along +axis
+      for (int k = 0; k < u.nz(); ++k)
+        for (int j = 0; j < u.ny(); ++j)
+          for (int i = 0; i < u.nx(); ++i)
+            if ((a == 0 ? i : a == 1 ? j : k) == m) sum += u(i, j, k);
+      const double outward = (high ? sum : -sum) * g.dx_m * g.dx_m;
+      if (type == BoundaryType3::inflow) in -= outward;
+      else out += outward;
+    }
+  }
+  return {in, out};
+}
+
+}  // namespace recorder3_detail
 
 FluidRecorder3::FluidRecorder3(const FluidSolver3& solver, int slice_normal_axis, std::optional<ExactFlow3> exact)
     : exact_(std::move(exact)), ke0_(solver.kineticEnergy_joule()) {
@@ -70,6 +97,7 @@ std::vector<core::NamedValue> FluidRecorder3::measure(const FluidSolver3& solver
   const double nan = std::nan(""), ke = solver.kineticEnergy_joule(), t = solver.time_s();
   const double nu = solver.params().kinematic_viscosity_m2_per_s;
   double linf = nan, rms = nan, nu_eff = nan;
+  const std::array<double, 2> flux = recorder3_detail::boundaryFluxes_m3_per_s(solver.grid());
   if (exact_ && t > 0) {
     const VelocityError3 error = velocityError(solver.grid(), *exact_, t);
     linf = error.linf_m_per_s, rms = error.rms_m_per_s;
@@ -90,6 +118,9 @@ std::vector<core::NamedValue> FluidRecorder3::measure(const FluidSolver3& solver
       {"velocity_error_rms_m_per_s", "m/s", rms},
       {"effective_viscosity_m2_per_s", "m^2/s", nu_eff},
       {"decay_rate_error", "", nu > 0 ? std::fabs(nu_eff - nu) / nu : nan},
+      {"inflow_m3_per_s", "m^3/s", flux[0]},
+      {"outflow_m3_per_s", "m^3/s", flux[1]},
+      {"flux_balance_rel", "", flux[0] > 0 ? std::fabs(flux[1] - flux[0]) / flux[0] : nan},
   };
 }
 

@@ -57,7 +57,9 @@ class FluidRecorder3 {
   /// At the end: max_divergence_per_s, max_divergence_rel, final_kinetic_energy_j, kinetic_energy_ratio,
   /// steps, mean_dt_s, max_cfl, max_pressure_iterations, unconverged_solves; and against the exact flow
   /// (NaN without one) velocity_error_linf_m_per_s, velocity_error_rms_m_per_s,
-  /// effective_viscosity_m2_per_s, decay_rate_error.
+  /// effective_viscosity_m2_per_s, decay_rate_error; the volume fluxes at the end, in through the inflow
+  /// sides (inflow_m3_per_s) and out through the open ones (outflow_m3_per_s), and
+  /// flux_balance_rel = |out − in| / in (NaN without inflow).
   std::vector<core::NamedValue> measure(const FluidSolver3& solver) const;
 
  private:

@@ -106,6 +106,9 @@ Fluid3dKind::Fluid3dKind() {
       {"effective_viscosity_m2_per_s", "m^2/s",
        "Taylor-Green or ABC only: nu fitted to the energy decay, e^(-6 nu k^2 t) and e^(-2 nu k^2 t)"},
       {"decay_rate_error", "", "Taylor-Green or ABC only: |effective viscosity - nu| / nu"},
+      {"inflow_m3_per_s", "m^3/s", "volume flux into the box through its inflow sides at the end"},
+      {"outflow_m3_per_s", "m^3/s", "volume flux out of the box through its open sides at the end (net: may be negative)"},
+      {"flux_balance_rel", "", "inflow sides only: |outflow - inflow| / inflow at the end (mass conservation)"},
   };
 }
 

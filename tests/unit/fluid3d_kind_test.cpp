@@ -67,6 +67,10 @@ TEST(Fluid3dKind, UpdraftFromAnInflowFloor) {
   const std::vector<double>& w = r.fields.fields.at("w_m_per_s").data;
   EXPECT_NEAR(w[2 * 64 + 4 * 8 + 4], 0.02, 0.01);  // last frame, the plane's centre
   EXPECT_TRUE(std::isnan(r.metrics.at("decay_rate_error").value));  // no exact flow
+  const double in = 0.02 * 0.4 * 0.4;  // m³/s through the 0.4 m square floor
+  EXPECT_NEAR(r.metrics.at("inflow_m3_per_s").value, in, 1e-15);
+  EXPECT_NEAR(r.metrics.at("outflow_m3_per_s").value, in, 1e-8 * in);
+  EXPECT_LT(r.metrics.at("flux_balance_rel").value, 1e-8);
 }
 
 TEST(Fluid3dKind, BadInputIsRefusedInWords) {
