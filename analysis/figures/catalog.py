@@ -169,6 +169,10 @@ FIGURES = [
            "The paper's 3-D creatures move in an incompressible fluid (§4.1, Eqs. 5-8); our 3-D solver of them "
            "converges at second order to the decaying Taylor-Green vortex (Stokes limit), as the 2-D one is checked.",
            "taylor_green3d", "fluid3d_taylor_green", None),
+    Figure("lentine", "§7.1 (the flyer's fluid)",
+           "The fluid boundary is open at the top and closed elsewhere, with a source term at the floor forcing "
+           "fluid flow upwards (§7.1): here an inflow floor, without the flyer; mass is conserved.",
+           "updraft", "fluid3d_updraft", None),
     # --- Tu 1996 (chapters: the thesis's figures are not numbered in the text we cite)
     Figure("tu", "ch. 4 (in air)",
            "The fish's muscles are internal forces in equal and opposite pairs: without the water's reaction the "
