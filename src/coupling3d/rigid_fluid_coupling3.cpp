@@ -96,7 +96,18 @@ void RigidFluidCoupling3::advanceFluid(double dt) {
   const fluid3d::FluidStages3& stages = fluid_.stages();
   if (stages.external_forces) fluid_.applyExternalForces(dt);
   if (stages.advection) fluid_.advectVelocity(dt);
-  if (stages.viscosity) fluid_.applyViscosity(dt);
+  if (stages.viscosity && !p_.viscosity_in_forcing) fluid_.applyViscosity(dt);
+}
+
+void RigidFluidCoupling3::respond(fluid3d::FaceField3& velocity, double dt) {
+  fluid3d::MacGrid3& g = fluid_.grid();
+  const fluid3d::FluidStages3& stages = fluid_.stages();
+  std::swap(velocity, g.velocity_m_per_s);
+  const bool viscous = p_.viscosity_in_forcing && stages.viscosity;
+  if (stages.pressure && viscous) fluid_.project(dt);
+  if (viscous) fluid_.applyViscosity(dt);
+  if (stages.pressure) fluid_.project(dt);
+  std::swap(velocity, g.velocity_m_per_s);
 }
 
 void RigidFluidCoupling3::forceFluid(const rigid::RigidData& data, double dt) {
@@ -133,7 +144,10 @@ void RigidFluidCoupling3::forceFluid(const rigid::RigidData& data, double dt) {
     std::fill(force_.begin(), force_.end(), Vec3{});
     iterations_ = 0;
     residual_m_per_s_ = 0.0;
-    if (fluid_.stages().pressure) fluid_.project(dt);
+    fluid3d::FaceField3& u = fluid_.grid().velocity_m_per_s;
+    std::swap(u, spread_);
+    respond(spread_, dt);
+    std::swap(u, spread_);
   }
   reaction(data);
   const double speed = fluid_.maxVelocityComponent_m_per_s();
@@ -157,12 +171,13 @@ void RigidFluidCoupling3::projectedForcing(double dt) {
   const double to_velocity = dt / rho;
   const double eps = p_.forcing_regularisation;
   const std::size_t n = markers_.size();
-  const bool pressure = fluid_.stages().pressure;
   force_.resize(n, Vec3{});
   zero(spread_);
   transfer_.spread(force_, spread_);
   addScaled(g.velocity_m_per_s, to_velocity, spread_);
-  if (pressure) fluid_.project(dt);
+  std::swap(g.velocity_m_per_s, spread_);
+  respond(spread_, dt);
+  std::swap(g.velocity_m_per_s, spread_);
   const fluid3d::Array3 pressure_pa = g.pressure_pa;
   residual_.resize(n);
   transfer_.interpolate(g.velocity_m_per_s, residual_);
@@ -184,19 +199,15 @@ void RigidFluidCoupling3::projectedForcing(double dt) {
   const double tol = p_.forcing_tolerance * (scale > 0 ? scale : 1.0);
   while (maxAbs(residual_) > tol && iterations_ < p_.max_forcing_iterations && rz > 0) {
     ++iterations_;
-    // q = P S p dt/ρ: spread into spread_, projected in the fluid's grid (velocity swapped in and out).
+    // q = P S p dt/ρ (P H P S p dt/ρ with viscosity_in_forcing), in spread_.
     zero(spread_);
     transfer_.spread(direction_, spread_);
     for (int a = 0; a < 3; ++a) {
       double* p = spread_[a].data();
       for (std::size_t t = 0; t < spread_[a].size(); ++t) p[t] *= to_velocity;
     }
-    std::swap(spread_, g.velocity_m_per_s);
-    if (pressure) {
-      g.pressure_pa.fill(0.0);
-      fluid_.project(dt);
-    }
-    std::swap(spread_, g.velocity_m_per_s);
+    g.pressure_pa.fill(0.0);  // the projection's warm start: the increment's pressure is not the flow's
+    respond(spread_, dt);
     transfer_.interpolate(spread_, applied_);
     for (std::size_t k = 0; k < n; ++k)
       for (int a = 0; a < 3; ++a) applied_[k][a] += eps * dt / mass_[k] * direction_[k][a];

@@ -7,7 +7,8 @@
 //
 // One coupled step of dt, in the caller's order:
 //   1. advanceFluid   external forces, advection with u^n, viscosity -> u~ (the fluid's stages
-//                     1-3, each as the fluid's FluidStages3 switches; §6 steps 2 and 5)
+//                     1-3, each as the fluid's FluidStages3 switches; §6 steps 2 and 5; viscosity
+//                     moves into step 3 with RigidFluidParams3::viscosity_in_forcing)
 //   2. (solid)        the caller steps MuJoCo from x^n to x^{n+1} with the reaction of the previous
 //                     step applied (applyReaction; §6 step 3), or sets a kinematic pose, and then
 //                     updates the kinematics (MuJoCo's step leaves the poses of the step's start)
@@ -52,6 +53,14 @@ struct RigidFluidParams3 {
   /// about this fraction of their forcing.
   double forcing_regularisation = 1e-3;
   Vec3 origin_m{0.0, 0.0, 0.0};  ///< world position of the fluid box's corner (0, 0, 0)
+  /// Solve the forces through the viscous step too: advanceFluid leaves viscosity out and forceFluid
+  /// sets u^{n+1} = P H P (u~ + dt S F/ρ), H the fluid's viscous solve, F from I P H P S F dt/ρ (+ ε D F)
+  /// = V − I P H P u~ (Taira & Colonius 2007's operator with the viscous solve done exactly). Then a
+  /// steady state is the discrete steady Stokes (or Navier–Stokes) solution whatever dt; without it the
+  /// viscous step smooths the forced velocity after the forcing, an error of order ν dt / dx² at the
+  /// markers, negligible for water on centimetre cells but not in the Stokes regime. Costs a viscous
+  /// solve and a second projection per CG iteration.
+  bool viscosity_in_forcing = false;
   /// Coupled stability limit: no marker may move more than this many cells in one step.
   double max_marker_cells_per_step = 1.0;
 
@@ -102,6 +111,8 @@ class RigidFluidCoupling3 {
  private:
   void place(const rigid::RigidData& data, std::vector<Vec3>& out) const;
   void projectedForcing(double dt_s);
+  /// The fluid's response to a velocity change, in place: P, or P H P with viscosity_in_forcing.
+  void respond(fluid3d::FaceField3& velocity, double dt_s);
   void reaction(const rigid::RigidData& data);
 
   RigidFluidParams3 p_;

@@ -1,0 +1,5 @@
+# tests for physics/coupling3d: MuJoCo bodies in the 3-D fluid against published and analytic cases
+# (Stokes drag of a periodic array of spheres; the leak through a moving sphere).
+creaturelab_test(coupling3d_physics_tests physics
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/coupling3d_sphere_test.cpp
+  LIBS cl_coupling3d)
