@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <queue>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -54,25 +55,56 @@ double longestOffsetEdge(const Indexed& m, double t) {
   return longest;
 }
 
-// Splits every triangle in four at its edges' midpoints (shared by the two triangles of an edge, so
-// the surface stays closed); orientation is kept.
-Indexed subdivide(const Indexed& m) {
-  Indexed out{m.x, {}};
-  std::map<std::pair<int, int>, int> midpoint;
-  auto mid = [&](int a, int b) {
-    const auto key = std::minmax(a, b);
-    const auto [it, added] = midpoint.try_emplace(key, int(out.x.size()));
-    if (added) out.x.push_back(0.5 * (m.x[a] + m.x[b]));
-    return it->second;
+// Bisects the longest edge of the surface, in both triangles that share it (so the surface stays
+// closed and keeps its orientation), until no edge is longer than max_edge. The longest first, so a
+// long thin quad of a capsule's side is cut across its length rather than into slivers. Midpoints stay
+// on the flat triangles: refinement adds vertices, not roundness.
+Indexed bisectLongEdges(Indexed m, double max_edge) {
+  using Edge = std::pair<int, int>;
+  std::map<Edge, std::vector<int>> faces;  // edge (low, high) -> triangles using it
+  auto attach = [&](int f) {
+    for (int k = 0; k < 3; ++k) faces[std::minmax(m.tri[f][k], m.tri[f][(k + 1) % 3])].push_back(f);
   };
-  for (const auto& t : m.tri) {
-    const int ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
-    out.tri.push_back({t[0], ab, ca});
-    out.tri.push_back({ab, t[1], bc});
-    out.tri.push_back({ca, bc, t[2]});
-    out.tri.push_back({ab, bc, ca});
+  auto detach = [&](int f) {
+    for (int k = 0; k < 3; ++k) {
+      auto& list = faces[std::minmax(m.tri[f][k], m.tri[f][(k + 1) % 3])];
+      list.erase(std::find(list.begin(), list.end(), f));
+    }
+  };
+  for (int f = 0; f < int(m.tri.size()); ++f) attach(f);
+  // Longest first; ties broken by the vertex indices, so the result does not depend on the map's layout.
+  std::priority_queue<std::tuple<double, int, int>> queue;
+  auto push = [&](int a, int b) {
+    const auto [lo, hi] = std::minmax(a, b);
+    const double length = (m.x[lo] - m.x[hi]).norm();
+    if (length > max_edge) queue.emplace(length, lo, hi);
+  };
+  for (const auto& [e, list] : faces) push(e.first, e.second);
+  while (!queue.empty()) {
+    const auto [length, a, b] = queue.top();
+    queue.pop();
+    const auto it = faces.find({a, b});
+    if (it == faces.end() || it->second.empty()) continue;  // already split
+    const int mid = int(m.x.size());
+    m.x.push_back(0.5 * (m.x[a] + m.x[b]));
+    const std::vector<int> sharing = it->second;
+    for (int f : sharing) {
+      detach(f);
+      const std::array<int, 3> t = m.tri[f];
+      int k = 0;  // the corner where the edge starts, in the triangle's own order
+      while (!((t[k] == a && t[(k + 1) % 3] == b) || (t[k] == b && t[(k + 1) % 3] == a))) ++k;
+      const int p = t[k], q = t[(k + 1) % 3], r = t[(k + 2) % 3];
+      m.tri[f] = {p, mid, r};
+      m.tri.push_back({mid, q, r});
+      attach(f);
+      attach(int(m.tri.size()) - 1);
+      push(p, mid);
+      push(mid, q);
+      push(mid, r);
+    }
+    faces.erase({a, b});
   }
-  return out;
+  return m;
 }
 
 double area(const V3& a, const V3& b, const V3& c) { return 0.5 * (b - a).cross(c - a).norm(); }
@@ -115,8 +147,11 @@ FleshMesh buildFleshMesh(const rigid::RigidModel& model, const FleshParams& para
   for (const rigid::GeomSurface& surface : rigid::geomSurfaces(model, params.slices)) {
     if (surface.body == 0) continue;
     Indexed m = weld(surface.triangles);
-    if (params.max_edge_m > 0)
-      for (int level = 0; level < 12 && longestOffsetEdge(m, t) > params.max_edge_m; ++level) m = subdivide(m);
+    // The flesh's edges are longer than the geom's by up to (r + t) / r: refine the geom's surface to
+    // shorter edges until the flesh's are short enough.
+    for (double limit = params.max_edge_m; params.max_edge_m > 0 && longestOffsetEdge(m, t) > params.max_edge_m;
+         limit *= 0.9)
+      m = bisectLongEdges(std::move(m), limit);
 
     // Stage: the geom's surface in the world at the reference configuration, and the flesh's.
     std::vector<V3> inner(m.x.size()), outer(m.x.size()), middle(m.x.size());

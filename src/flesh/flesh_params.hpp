@@ -11,8 +11,8 @@ struct FleshParams {
   // Geometry (flesh_mesh.hpp): every geom's surface pushed outward along its vertex normals.
   double thickness_m = 0.01;  // flesh layer over the skeleton's geoms; chosen: 40% of the swimmer's leg radius
   int slices = 16;            // segments around each round geom (rigid::geomSurfaces), >= 3
-  // Triangles are split in four (edge midpoints) until no edge of a geom's flesh is longer;
-  // 0 keeps the tessellation as it is. Lets a box or a long capsule reach marker spacing.
+  // Longest edges bisected (flesh_mesh.cpp) until no edge of the flesh is longer; 0 keeps the
+  // tessellation as it is. Lets a box or a long capsule reach the fluid's marker spacing.
   double max_edge_m = 0.0;
 
   // Mass: density times the shell's volume (flesh_mesh.hpp). Skeletal muscle, 1050 kg/m^3

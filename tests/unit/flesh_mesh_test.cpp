@@ -79,16 +79,26 @@ TEST_F(FleshMeshTest, AnchorsGiveTheRestShapeAndAreasSumToTheSurface) {
   EXPECT_TRUE((area.array() > 0).all());
 }
 
+// Longest-edge bisection: a box (8 vertices) and a sphere with a capsule refined to 30 mm and 15 mm
+// edges stay closed and outward, with no edge longer, and the mass barely moves (midpoints stay on
+// the flat triangles).
 TEST_F(FleshMeshTest, MaxEdgeRefinesAndStaysClosed) {
-  const auto model = load(testing::boxXml());
-  FleshParams p;
-  p.max_edge_m = 0.03;
-  const FleshMesh coarse = buildFleshMesh(model, FleshParams{}), fine = buildFleshMesh(model, p);
-  EXPECT_EQ(coarse.vertices(), 8);
-  double longest = 0;
-  for (const auto& e : fine.edges) longest = std::max(longest, (fine.rest_m.col(e[0]) - fine.rest_m.col(e[1])).norm());
-  EXPECT_LE(longest, p.max_edge_m);
-  EXPECT_EQ(render::checkClosedOriented(asRenderMesh(fine, fine.rest_m)), "");
+  for (const std::string& xml : {testing::boxXml(), testing::freeCreatureXml(0.1, 2.0)})
+    for (const double max_edge : {0.03, 0.015}) {
+      const auto model = load(xml);
+      FleshParams p;
+      p.max_edge_m = max_edge;
+      const FleshMesh coarse = buildFleshMesh(model, FleshParams{}), fine = buildFleshMesh(model, p);
+      double longest = 0;
+      for (const auto& e : fine.edges)
+        longest = std::max(longest, (fine.rest_m.col(e[0]) - fine.rest_m.col(e[1])).norm());
+      EXPECT_LE(longest, max_edge);
+      EXPECT_GT(fine.vertices(), coarse.vertices());
+      const render::TriangleMesh r = asRenderMesh(fine, fine.rest_m);
+      EXPECT_EQ(render::checkClosedOriented(r), "");
+      EXPECT_GT(render::signedVolume(r), 0);
+      EXPECT_NEAR(fine.mass_kg.sum(), coarse.mass_kg.sum(), 0.1 * coarse.mass_kg.sum());
+    }
 }
 
 TEST_F(FleshMeshTest, BadParametersAreNamed) {
