@@ -50,6 +50,9 @@ std::string FluidParams3::validate() const {
     for (const double speed : {b.low_inflow_m_per_s, b.high_inflow_m_per_s})
       if (!std::isfinite(speed)) problems.add("the " + name + " axis' inflow speed must be finite (got " + show(speed) + ")");
   }
+  if (projection == ProjectionScheme3::incremental && viscosity_scheme == ViscosityScheme3::crank_nicolson)
+    problems.add("projection = incremental needs viscosity_scheme backward_euler or explicit_euler: with "
+                 "crank_nicolson it grows unstable beside no-slip walls once nu dt / dx^2 reaches 1");
   if (boundaries.anyInflow() && boundaries.closed())
     problems.add("an inflow side needs an open side for the fluid to leave by: make one side open");
   if (problems.joined().empty()) {
@@ -105,6 +108,10 @@ std::string_view toString(ViscosityScheme3 scheme) {
     case ViscosityScheme3::explicit_euler: return "explicit_euler";
   }
   return "?";
+}
+
+std::string_view toString(ProjectionScheme3 scheme) {
+  return scheme == ProjectionScheme3::incremental ? "incremental" : "non_incremental";
 }
 
 }  // namespace creaturelab::fluid3d

@@ -81,6 +81,16 @@ enum class ViscosityScheme3 {
   explicit_euler   ///< u_new = (I + ν dt ∇²) u, stable for ν dt / dx² ≤ 1/6
 };
 
+/// How the projection meets the viscous stage (Guermond, Minev & Shen 2006, Comput. Methods Appl. Mech.
+/// Engrg. 195, §3.1–3.2).
+enum class ProjectionScheme3 {
+  non_incremental,  ///< Chorin: the predictor has no pressure; the projection finds the whole pressure. Its
+                    ///< steady state depends on dt beside walls (a numerical boundary layer of width √(ν dt))
+  incremental       ///< Goda 1979 / van Kan 1986: the predictor subtracts (dt/ρ) ∇pⁿ, the projection finds the
+                    ///< increment; steady states do not depend on dt. Not with Crank–Nicolson viscosity
+                    ///< (validate() refuses it: unstable beside no-slip walls at ν dt / dx² ≥ 1)
+};
+
 enum class TimeStepPolicy3 {
   cfl_adaptive,  ///< dt = min(max_step_s, cfl_safety_factor · dx / max|u_component|)
   fixed          ///< dt = fixed_step_s
@@ -105,6 +115,7 @@ struct FluidParams3 {
   int viscosity_max_iterations = 500;
 
   PressureSolverType3 pressure_solver = PressureSolverType3::mg_pcg;
+  ProjectionScheme3 projection = ProjectionScheme3::non_incremental;
   /// MG-PCG stops at ‖b − A q‖∞ ≤ pressure_tolerance · ‖b‖∞ (= dx² max|∇·u| after the update).
   double pressure_tolerance = 1e-10;
   int pressure_max_iterations = 500;
@@ -187,6 +198,10 @@ struct FluidParams3 {
               {"explicit_euler", ViscosityScheme3::explicit_euler}},
              "viscous term in time: backward Euler (Stam 1999 §2.2, first order), Crank-Nicolson (second order) "
              "or explicit Euler (stable for nu dt / dx^2 <= 1/6)");
+    v.choice("projection", projection,
+             {{"non_incremental", ProjectionScheme3::non_incremental}, {"incremental", ProjectionScheme3::incremental}},
+             "non_incremental (Chorin: steady states beside walls depend on dt) or incremental (the previous "
+             "pressure in the predictor, Guermond et al. 2006 §3.2: they do not; not with crank_nicolson)");
     v.choice("pressure_solver", pressure_solver,
              {{"mg_pcg", PressureSolverType3::mg_pcg}, {"spectral", PressureSolverType3::spectral}},
              "projection: multigrid-preconditioned CG to pressure_tolerance, or the exact eigenbasis solve "
@@ -208,5 +223,6 @@ std::string_view toString(BoundaryType3 type);
 std::string_view toString(AdvectionScheme3 scheme);
 std::string_view toString(PressureSolverType3 type);
 std::string_view toString(ViscosityScheme3 scheme);
+std::string_view toString(ProjectionScheme3 scheme);
 
 }  // namespace creaturelab::fluid3d

@@ -68,6 +68,7 @@ FluidStepReport3 FluidSolver3::step(double dt_s) {
   }
   if (stages_.external_forces) applyExternalForces(dt_s);
   if (stages_.advection) advectVelocity(dt_s);
+  if (stages_.pressure && params_.projection == ProjectionScheme3::incremental) applyPressureGradient(dt_s);
   if (stages_.viscosity) report.viscosity = applyViscosity(dt_s);
   if (stages_.pressure) report.pressure = project(dt_s);
   time_s_ += dt_s;
@@ -105,7 +106,13 @@ SolveReport3 FluidSolver3::applyViscosity(double dt_s) {
   return viscosity_->diffuse(grid_, params_.kinematic_viscosity_m2_per_s, dt_s);
 }
 
-SolveReport3 FluidSolver3::project(double dt_s) { return pressure_->project(grid_, params_.density_kg_per_m3, dt_s); }
+SolveReport3 FluidSolver3::project(double dt_s) {
+  return pressure_->project(grid_, params_.density_kg_per_m3, dt_s, params_.projection == ProjectionScheme3::incremental);
+}
+
+void FluidSolver3::applyPressureGradient(double dt_s) {
+  subtractGradient(grid_, grid_.pressure_pa, dt_s / (params_.density_kg_per_m3 * grid_.dx_m), workers_.get());
+}
 
 SolveReport3 FluidSolver3::makeDivergenceFree() {
   enforceSolidWalls(grid_);

@@ -11,6 +11,9 @@
 // and pressure are swappable sub-solvers. Deterministic for any FluidParams3::threads (loops are
 // cut by slab index only: parallel3.hpp); no I/O.
 //
+// With ProjectionScheme3::incremental a stage between 2 and 3 subtracts (dt/ρ) ∇pⁿ (applyPressureGradient)
+// and stage 4 finds the pressure's increment (Guermond, Minev & Shen 2006 §3.2).
+//
 // Accuracy: the split is first order in time (advection without the pressure, then the
 // projection); in space the operators are second order (tests/physics/fluid3d_abc_test.cpp).
 
@@ -64,7 +67,10 @@ class FluidSolver3 {
   void applyExternalForces(double dt_s);
   void advectVelocity(double dt_s);
   SolveReport3 applyViscosity(double dt_s);
+  /// The projection; with the incremental scheme it adds its pressure to the previous one.
   SolveReport3 project(double dt_s);
+  /// The incremental scheme's predictor term: u −= (dt/ρ) ∇p with the grid's (previous) pressure.
+  void applyPressureGradient(double dt_s);
   /// For initial conditions: zero normal velocity on solid walls and project (pressure reset to zero).
   SolveReport3 makeDivergenceFree();
 

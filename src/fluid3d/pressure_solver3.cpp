@@ -7,20 +7,24 @@
 
 namespace creaturelab::fluid3d {
 
-SolveReport3 PressureSolver3::project(MacGrid3& grid, double density_kg_per_m3, double dt_s) {
+SolveReport3 PressureSolver3::project(MacGrid3& grid, double density_kg_per_m3, double dt_s, bool increment) {
   projectionRhs(grid, rhs_, workers_);
   if (grid.boundaries.closed()) {
     std::vector<double> per_slab;
     subtractConstant3(sum3(rhs_, workers_, per_slab) / static_cast<double>(rhs_.size()), rhs_, workers_);
   }
-  // Warm start from the previous pressure: q = p dt / ρ.
+  // Warm start from the previous pressure, q = p dt / ρ; an increment starts from zero.
   q_ = grid.pressure_pa;
-  const double to_q = dt_s / density_kg_per_m3;
+  const double to_q = increment ? 0.0 : dt_s / density_kg_per_m3;
   for (std::size_t t = 0; t < q_.size(); ++t) q_.data()[t] *= to_q;
   const SolveReport3 report = solve(grid.n, grid.boundaries, rhs_, q_);
   subtractGradient(grid, q_, 1.0 / grid.dx_m, workers_);
   const double to_p = density_kg_per_m3 / dt_s;
-  for (std::size_t t = 0; t < q_.size(); ++t) grid.pressure_pa.data()[t] = q_.data()[t] * to_p;
+  if (increment) {
+    for (std::size_t t = 0; t < q_.size(); ++t) grid.pressure_pa.data()[t] += q_.data()[t] * to_p;
+  } else {
+    for (std::size_t t = 0; t < q_.size(); ++t) grid.pressure_pa.data()[t] = q_.data()[t] * to_p;
+  }
   return report;
 }
 

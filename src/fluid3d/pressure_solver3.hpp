@@ -21,8 +21,9 @@ struct SolveReport3 {
 class PressureSolver3 {
  public:
   virtual ~PressureSolver3() = default;
-  /// Makes the grid's velocity divergence-free and leaves the pressure in grid.pressure_pa.
-  SolveReport3 project(MacGrid3& grid, double density_kg_per_m3, double dt_s);
+  /// Makes the grid's velocity divergence-free and leaves the pressure in grid.pressure_pa; with
+  /// `increment`, the projection's pressure is added to grid.pressure_pa instead (incremental scheme).
+  SolveReport3 project(MacGrid3& grid, double density_kg_per_m3, double dt_s, bool increment = false);
   /// Solves A q = b; q holds the initial guess of iterative solvers. In a closed box b must have
   /// mean zero (project() removes it) and q comes back with mean zero.
   virtual SolveReport3 solve(const std::array<int, 3>& cells, const Boundaries3& sides, const Array3& b,

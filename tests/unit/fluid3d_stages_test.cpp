@@ -51,6 +51,28 @@ TEST(Fluid3dStages, ClosedBoxHoldsGravityByHydrostaticPressure) {
   EXPECT_NEAR(solver.grid().pressure_pa(2, 3, 2) - solver.grid().pressure_pa(2, 3, 3), per_cell, 1e-6 * per_cell);
 }
 
+// The incremental projection: after the first step has found the hydrostatic pressure, the next
+// predictor's (dt/ρ) ∇pⁿ cancels gravity's dt g, so the projection's increment is nearly zero and the
+// pressure stays.
+TEST(Fluid3dStages, IncrementalProjectionCarriesTheHydrostaticPressure) {
+  FluidParams3 p = smallBox(Boundaries3::allWalls(BoundaryType3::no_slip));
+  p.body_acceleration_m_per_s2 = {0.0, 0.0, -9.81};
+  p.projection = ProjectionScheme3::incremental;
+  FluidSolver3 solver(p);
+  onlyStage(solver, true, false, false, true);
+  solver.step(0.01);
+  const Array3 first = solver.grid().pressure_pa;
+  solver.step(0.01);
+  EXPECT_LT(solver.maxVelocityComponent_m_per_s(), 1e-9 * 0.0981);
+  double change = 0.0;
+  for (std::size_t t = 0; t < first.size(); ++t)
+    change = std::max(change, std::fabs(solver.grid().pressure_pa.data()[t] - first.data()[t]));
+  const double per_cell = p.density_kg_per_m3 * 9.81 * p.cellSize_m();
+  EXPECT_LT(change, 1e-8 * per_cell);
+  p.viscosity_scheme = ViscosityScheme3::crank_nicolson;
+  EXPECT_NE(p.validate().find("projection = incremental needs"), std::string::npos) << p.validate();
+}
+
 // Advection of a uniform flow in a periodic box leaves it uniform, bit for bit (a + t (b − a)).
 TEST(Fluid3dStages, UniformFlowAdvectsUnchanged) {
   for (AdvectionScheme3 scheme :
