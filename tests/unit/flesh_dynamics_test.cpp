@@ -103,6 +103,33 @@ TEST_F(FleshDynamicsTest, FleshAndFreeSkeletonConserveLinearMomentum) {
   EXPECT_LT(drift, 1e-12 * scale);
 }
 
+// The fluid's hook: forces added to externalForces_n() before each step act once and are cleared; a
+// uniform push F on every vertex of a free sphere's flesh changes the total linear momentum by
+// h sum F per step (to round-off) and, through the binding, carries the bone along: after 0.5 s the
+// sphere moves at the common acceleration sum F / (flesh + bone mass) times t, within 2%. 50 steps,
+// about 0.05 s of CPU.
+TEST_F(FleshDynamicsTest, ExternalForcesPushFleshAndBoneTogether) {
+  const auto model = load(testing::freeSphereXml(0.1, 2.0));
+  Flesh flesh(model);
+  rigid::RigidData skeleton(model);
+  flesh.placeOnSkeleton(skeleton);
+  const double h = model.timestep_s(), push_n = 0.01;
+  const int steps = 50;
+  for (int k = 0; k < steps; ++k) {
+    flesh.externalForces_n().row(0).array() += push_n;
+    flesh.step(skeleton, h);
+    EXPECT_EQ(flesh.externalForces_n().cwiseAbs().maxCoeff(), 0.0);
+    skeleton.step();
+    std::fill(skeleton.appliedForces(), skeleton.appliedForces() + model.dofs(), 0.0);
+  }
+  rigid::Vec3 linear{}, angular{};
+  skeleton.subtreeMomentum(1, linear, angular);
+  const double total_push = steps * h * push_n * flesh.vertices();  // N s
+  EXPECT_NEAR(linear[0] + flesh.linearMomentum_kg_m_per_s()[0], total_push, 1e-12 * total_push);
+  const double together = total_push / (flesh.mesh().mass_kg.sum() + model.bodyMass_kg(1));  // m/s
+  EXPECT_NEAR(skeleton.qvel()[0], together, 0.02 * together);
+}
+
 // Stiff springs at a large step (Baraff & Witkin's point): a flesh of 1 GPa bound at 1 kHz, stepped at
 // 50 ms (the binding's omega h = 314, far beyond explicit Euler's 2), without damping, stays bounded
 // and loses energy. About 0.05 s of CPU.
