@@ -60,8 +60,15 @@ RigidFluidCoupling3::RigidFluidCoupling3(const rigid::RigidData& data, const flu
     : p_(p), fluid_(checked(p, f)) {
   const fluid3d::MacGrid3& g = fluid_.grid();
   markers_ = modelSurfaceMarkers(data.model(), p_.marker_spacing_cells * g.dx_m);
+  if (p_.interior_markers) {
+    // At least the kernel's half-width inside, so that no interior marker's stencil reaches past the surface.
+    const double margin = 0.5 * ib::kernelSupportCells(p_.kernel) * g.dx_m;
+    const std::vector<SurfaceMarker3> inside = interiorMarkers(data.model(), g.dx_m, margin);
+    markers_.insert(markers_.end(), inside.begin(), inside.end());
+  }
   mass_.resize(markers_.size());
-  for (std::size_t k = 0; k < markers_.size(); ++k) mass_[k] = f.density_kg_per_m3 * markers_[k].area_m2 * g.dx_m;
+  for (std::size_t k = 0; k < markers_.size(); ++k)
+    mass_[k] = f.density_kg_per_m3 * (markers_[k].area_m2 * g.dx_m + markers_[k].volume_m3);
   placeMarkers(data);
   const int nb = data.model().bodies();
   body_force_n_.assign(nb, Vec3{});

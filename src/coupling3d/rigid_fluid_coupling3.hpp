@@ -45,6 +45,10 @@ struct RigidFluidParams3 {
   /// Surface markers per cell: no two neighbours farther apart than marker_spacing_cells dx. At most
   /// 1: farther apart, fluid slips between markers the kernel no longer joins.
   double marker_spacing_cells = 0.5;
+  /// Also markers inside each primitive geom, on a lattice of one cell at least the kernel's half-width
+  /// (2 cells for peskin4) below the surface (interiorMarkers): the fluid inside then moves with the
+  /// body instead of lagging it (the kernel constrains only the averaged velocity at the surface markers).
+  bool interior_markers = true;
   /// CG stops when every marker's velocity is met to this fraction of the largest speed (markers' or fluid's).
   double forcing_tolerance = 1e-4;
   int max_forcing_iterations = 100;
@@ -119,7 +123,7 @@ class RigidFluidCoupling3 {
   fluid3d::FluidSolver3 fluid_;
   std::vector<SurfaceMarker3> markers_;
   Transfer3 transfer_;
-  std::vector<double> mass_;  // ρ dA dx / dt without the 1/dt: ρ dA dx (kg)
+  std::vector<double> mass_;  // direct-forcing mass times dt: ρ (dA dx + dV) (kg)
   std::vector<Vec3> previous_, current_, velocity_, residual_, z_, direction_, applied_, force_;
   fluid3d::FaceField3 spread_;
   std::vector<Vec3> body_force_n_, body_torque_n_m_, body_point_m_;

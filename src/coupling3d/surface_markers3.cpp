@@ -63,6 +63,45 @@ std::vector<SurfaceMarker3> modelSurfaceMarkers(const rigid::RigidModel& model, 
   return surfaceMarkers(rigid::geomSurfaces(model, slices), spacing_m);
 }
 
+std::vector<SurfaceMarker3> interiorMarkers(const rigid::RigidModel& model, double spacing_m, double margin_m) {
+  if (!(spacing_m > 0) || !std::isfinite(spacing_m) || !(margin_m >= 0))
+    throw std::invalid_argument("interior markers need a positive spacing and a margin of at least 0");
+  std::vector<SurfaceMarker3> out;
+  for (int g = 0; g < model.geoms(); ++g) {
+    const int type = model.geomType(g);
+    const Vec3 s = model.geomSize(g);
+    // Depth of a point below the surface (positive inside; for the ellipsoid a lower bound), geom frame.
+    auto depth = [&](const Vec3& x) {
+      switch (type) {
+        case 2: return s[0] - std::hypot(x[0], x[1], x[2]);                                        // sphere
+        case 3: return s[0] - std::hypot(x[0], x[1], std::max(0.0, std::abs(x[2]) - s[1]));        // capsule
+        case 4: {                                                                                  // ellipsoid
+          const double r = std::hypot(x[0] / s[0], x[1] / s[1], x[2] / s[2]);
+          return (1.0 - r) * std::min({s[0], s[1], s[2]});
+        }
+        case 5: return std::min(s[0] - std::hypot(x[0], x[1]), s[1] - std::abs(x[2]));             // cylinder
+        case 6: return std::min({s[0] - std::abs(x[0]), s[1] - std::abs(x[1]), s[2] - std::abs(x[2])});  // box
+        default: return -1.0;
+      }
+    };
+    if (type < 2 || type > 6) continue;
+    Vec3 half{s[0], s[0], s[0]};  // half extents of the geom's bounding box
+    if (type == 3) half[2] = s[0] + s[1];
+    if (type == 4 || type == 6) half = s;
+    if (type == 5) half[2] = s[1];
+    int m[3];
+    for (int a = 0; a < 3; ++a) m[a] = static_cast<int>(std::floor(half[a] / spacing_m));
+    // Lattice points (i + ½ or i) spacing about the centre: symmetric, so a symmetric geom gets a symmetric set.
+    for (int k = -m[2]; k <= m[2]; ++k)
+      for (int j = -m[1]; j <= m[1]; ++j)
+        for (int i = -m[0]; i <= m[0]; ++i) {
+          const Vec3 x{i * spacing_m, j * spacing_m, k * spacing_m};
+          if (depth(x) >= margin_m) out.push_back({g, model.geomBody(g), x, 0.0, spacing_m * spacing_m * spacing_m});
+        }
+  }
+  return out;
+}
+
 Vec3 markerWorld(const rigid::RigidData& data, const SurfaceMarker3& m) {
   const double* p = data.geomPosition(m.geom);
   const double* R = data.geomRotation(m.geom);

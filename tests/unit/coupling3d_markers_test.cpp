@@ -67,6 +67,30 @@ TEST_F(SurfaceMarkers3Test, CoverTheSurfacesAtTheSpacing) {
   EXPECT_LE(largestGap(m, 1), spacing);
 }
 
+// Interior markers: on the lattice, at least the margin inside, filling the inner volume.
+TEST_F(SurfaceMarkers3Test, InteriorMarkersFillTheInside) {
+  const auto model = testing::loadScene(dir_, "scene",
+                                        "<geom type=\"box\" size=\"0.1 0.2 0.05\" pos=\"0.5 0.5 0.5\"/>"
+                                        "<body pos=\"0.3 0.4 0.5\"><freejoint/><geom type=\"sphere\" size=\"0.1\"/></body>"
+                                        "<body pos=\"0.3 0.4 0.5\"><freejoint/><geom type=\"capsule\" size=\"0.009 0.2\"/></body>",
+                                        0.01);
+  const double h = 0.01, margin = 0.01;
+  const std::vector<SurfaceMarker3> m = interiorMarkers(model, h, margin);
+  double volume[3] = {0, 0, 0};
+  for (const SurfaceMarker3& k : m) {
+    EXPECT_EQ(k.area_m2, 0.0);
+    EXPECT_NEAR(k.volume_m3, h * h * h, 1e-18);
+    volume[k.geom] += k.volume_m3;
+    if (k.geom == 1) EXPECT_LE(std::hypot(k.local_m[0], k.local_m[1], k.local_m[2]), 0.1 - margin + 1e-12);
+    if (k.geom == 0) EXPECT_LE(std::abs(k.local_m[2]), 0.05 - margin + 1e-12);
+  }
+  // The lattice counts the inner box (0.09 × 0.19 × 0.04 half sizes: 19 × 39 × 9 points) exactly and the
+  // inner ball (radius 0.09) to within the lattice's resolution; the thin capsule (radius under the margin) has none.
+  EXPECT_NEAR(volume[0], 19 * 39 * 9 * h * h * h, 1e-12);
+  EXPECT_NEAR(volume[1], 4.0 / 3.0 * kPi * std::pow(0.09, 3), 0.03 * 4.0 / 3.0 * kPi * std::pow(0.09, 3));
+  EXPECT_EQ(volume[2], 0.0);
+}
+
 TEST_F(SurfaceMarkers3Test, FollowTheirGeom) {
   const auto model = testing::loadScene(
       dir_, "scene", "<body pos=\"0.3 0.4 0.5\"><freejoint/><geom type=\"box\" size=\"0.05 0.1 0.02\"/></body>", 0.01);
