@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include <Eigen/Geometry>
+
 namespace creaturelab::flesh {
 
 void anchorStates(const FleshMesh& mesh, const rigid::RigidData& skeleton, Eigen::Matrix3Xd& anchor_m,

@@ -8,6 +8,8 @@
 #include <tuple>
 #include <utility>
 
+#include <Eigen/Geometry>
+
 #include "rigid/geom_surface.hpp"
 #include "rigid/rigid_data.hpp"
 

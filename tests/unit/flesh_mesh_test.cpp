@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
+
 #include "control_models.hpp"
 #include "flesh/flesh.hpp"
 #include "flesh_models.hpp"
