@@ -25,15 +25,11 @@ springs::Network<3> edgeNetwork(const FleshMesh& mesh, const FleshParams& p, con
   return net;
 }
 
-FleshMesh validatedMesh(const rigid::RigidModel& model, const FleshParams& params) {
-  return buildFleshMesh(model, params);  // validates params first
-}
-
 }  // namespace
 
 Flesh::Flesh(const rigid::RigidModel& model, const FleshParams& params)
     : params_(params),
-      mesh_(validatedMesh(model, params)),
+      mesh_(buildFleshMesh(model, params)),  // validates the parameters first
       edges_(edgeNetwork(mesh_, params, model.gravity_m_per_s2())) {
   const int n = mesh_.vertices();
   state_.x_m = mesh_.rest_m;
