@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "flesh/binding.hpp"
 
@@ -30,7 +31,8 @@ springs::Network<3> edgeNetwork(const FleshMesh& mesh, const FleshParams& p, con
 Flesh::Flesh(const rigid::RigidModel& model, const FleshParams& params)
     : params_(params),
       mesh_(buildFleshMesh(model, params)),  // validates the parameters first
-      edges_(edgeNetwork(mesh_, params, model.gravity_m_per_s2())) {
+      edges_(edgeNetwork(mesh_, params, model.gravity_m_per_s2())),
+      model_bodies_(model.bodies()) {
   const int n = mesh_.vertices();
   state_.x_m = mesh_.rest_m;
   state_.v_m_per_s.setZero(3, n);
@@ -58,6 +60,11 @@ void Flesh::placeOnSkeleton(rigid::RigidData& skeleton) {
 
 void Flesh::step(rigid::RigidData& skeleton, double h_s) {
   if (!(h_s > 0) || !std::isfinite(h_s)) throw std::invalid_argument("flesh: step needs a positive time step (s)");
+  if (skeleton.model().bodies() != model_bodies_)
+    throw std::invalid_argument("flesh: stepped against a skeleton of " + std::to_string(skeleton.model().bodies()) +
+                                " bodies, built on one of " + std::to_string(model_bodies_));
+  if (external_n_.cols() != vertices())
+    throw std::invalid_argument("flesh: externalForces_n() must keep its 3 x " + std::to_string(vertices()) + " shape");
   skeleton.kinematics();
   anchorStates(mesh_, skeleton, anchor_m_, anchor_v_);
   anchorJacobians(skeleton);

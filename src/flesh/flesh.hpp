@@ -107,6 +107,7 @@ class Flesh {
   FleshParams params_;
   FleshMesh mesh_;
   springs::System<3> edges_;  // edge springs and weight
+  int model_bodies_;          // the skeleton's body count, to refuse another model's data
   springs::State<3> state_;
   Eigen::VectorXd binding_k_, binding_c_;
   Eigen::Matrix3Xd external_n_;

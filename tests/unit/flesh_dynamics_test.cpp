@@ -262,6 +262,11 @@ TEST_F(FleshDynamicsTest, BadStateAndStepAreErrors) {
   x(0, 0) = NAN;
   EXPECT_THROW(flesh.setState(x, flesh.velocities_m_per_s()), std::invalid_argument);
   EXPECT_THROW(flesh.step(skeleton, 0.0), std::invalid_argument);
+  const auto other = load(testing::freeCreatureXml(0.1, 2.0));
+  rigid::RigidData other_skeleton(other);
+  EXPECT_THROW(flesh.step(other_skeleton, 0.01), std::invalid_argument);
+  flesh.externalForces_n().resize(3, 1);
+  EXPECT_THROW(flesh.step(skeleton, 0.01), std::invalid_argument);
 }
 
 }  // namespace
