@@ -167,8 +167,8 @@ void RigidFluidCoupling3::forceFluid(const rigid::RigidData& data, double dt) {
 // The marker forces F (N) for which the projected velocity meets the markers' velocity V,
 //   I P (u~ + dt/ρ S F) = V,
 // by conjugate gradients on A F = I P S F dt/ρ + ε D F = V − I P u~ (A symmetric positive
-// definite for ε > 0: S = Iᵀ/dx³ and P an orthogonal projection), with D = dt/(ρ dA dx) per marker
-// (the direct-forcing mobility) and the preconditioner D⁻¹. The regularisation ε D F damps forces
+// definite for ε > 0: S = Iᵀ/dx³ and P an orthogonal projection), with D = dt/(ρ dV) per marker
+// (the direct-forcing mobility, dV = dA dx on the surface) and the preconditioner D⁻¹. The regularisation ε D F damps forces
 // the fluid cannot feel; the equation holds for the total F, so the warm start's share is damped too.
 // Warm start: the last step's forces (a steady flow needs the same ones again), spread before the
 // first projection, which therefore costs nothing extra.
@@ -177,6 +177,11 @@ void RigidFluidCoupling3::projectedForcing(double dt) {
   const double rho = fluid_.params().density_kg_per_m3;
   const double to_velocity = dt / rho;
   const double eps = p_.forcing_regularisation;
+  // The direct-forcing mobility dt/(ρ dV) of a marker, times 1/(1 + 6 ν dt/dx²) when the forcing acts
+  // through the viscous step: the diagonal of (I − ν dt ∇²)⁻¹'s inverse on the 7-point stencil, so that
+  // the preconditioner and the regularisation keep their scale relative to A whatever ν dt/dx².
+  const double nu_number = fluid_.params().kinematic_viscosity_m2_per_s * dt / (g.dx_m * g.dx_m);
+  const double mobility = p_.viscosity_in_forcing && fluid_.stages().viscosity ? 1.0 / (1.0 + 6.0 * nu_number) : 1.0;
   const std::size_t n = markers_.size();
   force_.resize(n, Vec3{});
   zero(spread_);
@@ -191,13 +196,13 @@ void RigidFluidCoupling3::projectedForcing(double dt) {
   double scale = std::max(maxAbs(velocity_), fluid_.maxVelocityComponent_m_per_s());
   for (std::size_t k = 0; k < n; ++k)
     for (int a = 0; a < 3; ++a)
-      residual_[k][a] = velocity_[k][a] - residual_[k][a] - eps * dt / mass_[k] * force_[k][a];
+      residual_[k][a] = velocity_[k][a] - residual_[k][a] - eps * mobility * dt / mass_[k] * force_[k][a];
   z_.resize(n);
   direction_.resize(n);
   applied_.resize(n);
   auto precondition = [&]() {
     for (std::size_t k = 0; k < n; ++k)
-      for (int a = 0; a < 3; ++a) z_[k][a] = mass_[k] / dt * residual_[k][a];
+      for (int a = 0; a < 3; ++a) z_[k][a] = mass_[k] / (mobility * dt) * residual_[k][a];
     return dot(z_, residual_);
   };
   double rz = precondition();
@@ -217,7 +222,7 @@ void RigidFluidCoupling3::projectedForcing(double dt) {
     respond(spread_, dt);
     transfer_.interpolate(spread_, applied_);
     for (std::size_t k = 0; k < n; ++k)
-      for (int a = 0; a < 3; ++a) applied_[k][a] += eps * dt / mass_[k] * direction_[k][a];
+      for (int a = 0; a < 3; ++a) applied_[k][a] += eps * mobility * dt / mass_[k] * direction_[k][a];
     const double pap = dot(direction_, applied_);
     if (!(pap > 0)) break;
     const double alpha = rz / pap;

@@ -170,14 +170,15 @@ double effectiveRadius_m(double K_measured, double radius_m) {
 // than 1e-4 per step. On finer grids (study in the commit message) the offset stays about half a cell
 // and K converges to the reference at first order.
 ArrayDrag cheapArrayDrag(const std::filesystem::path& dir, Forcing3 forcing) {
-  return arrayDrag(dir, 16, 0.25, 1.0, 1e-4, 30, forcing, true, 0.5, 1e-6, 1e-5);
+  return arrayDrag(dir, 16, 0.25, 1.0, 1e-4, 30, forcing, true, 0.5, 1e-6, RigidFluidParams3{}.forcing_regularisation);
 }
 
-// The check: the sphere drags like one 0.4 to 1 cell larger than its markers (measured 0.72 here with
-// the interior markers, 0.59 without; the kernel reaches 2 cells past each marker).
+// The check: the sphere drags like one 0.5 to 1.1 cells larger than its markers (measured 0.84 here;
+// the kernel reaches 2 cells past each marker, and the forcing's regularisation lets the markers slip a
+// little: at a tenth of the default weight the offset is 1.00).
 bool dragMatchesWithinTheOffset(const ArrayDrag& d, double dx_m, double radius_m, double& offset_cells) {
   offset_cells = (effectiveRadius_m(d.K, radius_m) - radius_m) / dx_m;
-  return offset_cells > 0.4 && offset_cells < 1.0;
+  return offset_cells > 0.5 && offset_cells < 1.1;
 }
 
 TEST_F(Coupling3Physics, ArrayOfSpheresDragsAsHasimotoWithAFractionOfACellOffset) {
