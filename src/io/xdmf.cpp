@@ -30,21 +30,31 @@ void floatItem(std::ostringstream& s, const std::string& dims, const std::string
 std::string xdmfText(const XdmfGrid& g) {
   std::ostringstream s;
   openCollection(s, "fields");
-  const std::string cells = std::to_string(g.ny) + " " + std::to_string(g.nx);
+  // Cell counts, node counts (cells + 1), origin and spacing, slowest axis first: (z,) y, x.
+  const bool volume = g.nz > 0;
+  auto joined = [volume](auto z, auto y, auto x) {
+    std::ostringstream out;
+    out.precision(17);
+    if (volume) out << z << " ";
+    out << y << " " << x;
+    return out.str();
+  };
+  const std::string cells = joined(g.nz, g.ny, g.nx), nodes = joined(g.nz + 1, g.ny + 1, g.nx + 1);
+  const std::string rank = volume ? "3" : "2", zeros = volume ? " 0 0 0" : " 0 0", ones = volume ? " 1 1 1" : " 1 1";
   for (size_t k = 0; k < g.time_s.size(); ++k) {
-    // Node counts are cells + 1; XDMF lists dimensions slowest first (y, x).
     s << "   <Grid Name=\"frame " << k << "\" GridType=\"Uniform\">\n"
       << "    <Time Value=\"" << g.time_s[k] << "\" />\n"
-      << "    <Topology TopologyType=\"2DCoRectMesh\" Dimensions=\"" << g.ny + 1 << " " << g.nx + 1 << "\" />\n"
-      << "    <Geometry GeometryType=\"ORIGIN_DXDY\">\n"
-      << "     <DataItem Dimensions=\"2\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" << g.origin_y << " "
-      << g.origin_x << "</DataItem>\n"
-      << "     <DataItem Dimensions=\"2\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" << g.dy << " " << g.dx
-      << "</DataItem>\n"
+      << "    <Topology TopologyType=\"" << rank << "DCoRectMesh\" Dimensions=\"" << nodes << "\" />\n"
+      << "    <Geometry GeometryType=\"" << (volume ? "ORIGIN_DXDYDZ" : "ORIGIN_DXDY") << "\">\n"
+      << "     <DataItem Dimensions=\"" << rank << "\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">"
+      << joined(g.origin_z, g.origin_y, g.origin_x) << "</DataItem>\n"
+      << "     <DataItem Dimensions=\"" << rank << "\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">"
+      << joined(g.dz, g.dy, g.dx) << "</DataItem>\n"
       << "    </Geometry>\n";
-    // Frame k of (frames, ny, nx): start k 0 0, stride 1 1 1, count 1 ny nx, then the dataset's shape.
+    // Frame k of (frames, [nz,] ny, nx): start k 0 0 [0], stride 1 1 1 [1], count 1 [nz] ny nx, then
+    // the dataset's shape.
     std::string slab = "|";  // appended piece by piece: gcc 12 misreads "|" + std::to_string(k) (-Wstringop-overflow)
-    slab += std::to_string(k) + " 0 0:1 1 1:1 " + cells + ":" + std::to_string(g.time_s.size()) + " " + cells;
+    slab += std::to_string(k) + zeros + ":1" + ones + ":1 " + cells + ":" + std::to_string(g.time_s.size()) + " " + cells;
     for (const auto& f : g.fields) {
       s << "    <Attribute Name=\"" << f << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
       floatItem(s, cells, g.h5_file + ":/fields/" + f + slab);

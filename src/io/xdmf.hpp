@@ -9,14 +9,16 @@
 
 namespace creaturelab::io {
 
-// Cell-centred fields stored as /fields/<name> with shape (frames, ny, nx): a temporal collection
-// of 2D co-rectilinear grids; each frame selects its slab with XDMF 3's "file:/path|start:stride:
-// count:dataspace" form (ParaView's Xdmf3 readers; its legacy XDMF 2 reader and meshio cannot).
+// Cell-centred fields stored as /fields/<name> with shape (frames, ny, nx), or (frames, nz, ny, nx)
+// when nz > 0: a temporal collection of 2D or 3D co-rectilinear grids (2DCoRectMesh, 3DCoRectMesh:
+// node counts, origin and spacing listed slowest axis first), each field a cell attribute. Each
+// frame selects its slab with XDMF 3's "file:/path|start:stride:count:dataspace" form (ParaView's
+// Xdmf3 readers; its legacy XDMF 2 reader cannot, and meshio reads no co-rectilinear grid at all).
 struct XdmfGrid {
   std::string h5_file;  // as referenced from the .xdmf (a bare name when side by side)
   std::vector<double> time_s;
-  int nx = 0, ny = 0;
-  double dx = 0, dy = 0, origin_x = 0, origin_y = 0;
+  int nx = 0, ny = 0, nz = 0;  // cells; nz = 0: a 2D grid
+  double dx = 0, dy = 0, dz = 0, origin_x = 0, origin_y = 0, origin_z = 0;
   std::vector<std::string> fields;  // dataset names under /fields
 };
 

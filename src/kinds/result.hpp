@@ -28,7 +28,8 @@ struct Tracks {
   int frames() const { return time_s.empty() ? 0 : int(time_s.size()); }
 };
 
-// Cell-centred scalar fields on a uniform 2D grid at output times: frames × ny × nx, row-major.
+// Cell-centred scalar fields on a uniform 2D grid (frames × ny × nx) or 3D grid (frames × nz × ny × nx)
+// at output times, row-major (x fastest).
 struct Field {
   std::vector<double> data;
   std::string unit;
@@ -37,9 +38,10 @@ struct Field {
 struct FieldFrames {
   std::vector<double> time_s;  // one per frame
   int nx = 0, ny = 0;
-  double dx_m = 0, dy_m = 0;             // cell size
-  double origin_x_m = 0, origin_y_m = 0; // lower-left corner of the domain
-  std::map<std::string, Field> fields;   // each frames × ny × nx
+  int nz = 0;                            // 0: 2D frames; > 0: cells along z of a 3D grid
+  double dx_m = 0, dy_m = 0, dz_m = 0;   // cell size
+  double origin_x_m = 0, origin_y_m = 0, origin_z_m = 0;  // lowest corner of the domain
+  std::map<std::string, Field> fields;   // each frames × ny × nx, or frames × nz × ny × nx
   int frames() const { return int(time_s.size()); }
 };
 

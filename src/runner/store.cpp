@@ -30,19 +30,30 @@ void writeParameters(const io::Group& root, const kinds::Kind& kind, const kinds
   }
 }
 
-// /fields/<name>: (frames, ny, nx), one frame per chunk, so a viewer reads a frame at a time.
+// /fields/<name>: (frames, ny, nx), or (frames, nz, ny, nx) for a 3D grid, one frame per chunk, so a
+// viewer reads a frame at a time; the grid's spacing and origin as attributes of /fields.
 void writeFields(const io::Group& root, const kinds::FieldFrames& f) {
   if (f.frames() == 0 || f.fields.empty()) return;
   const io::Group group = root.requireGroup("fields");
-  const hsize_t nt = hsize_t(f.frames()), ny = hsize_t(f.ny), nx = hsize_t(f.nx);
-  for (const auto& [name, field] : f.fields)
-    io::setAttr(io::writeArray(group, name, field.data.data(), {nt, ny, nx}, std::vector<hsize_t>{1, ny, nx}), "unit",
-                field.unit);
+  std::vector<hsize_t> dims = {hsize_t(f.frames()), hsize_t(f.ny), hsize_t(f.nx)};
+  if (f.nz > 0) dims.insert(dims.begin() + 1, hsize_t(f.nz));
+  std::vector<hsize_t> frame = dims;
+  frame[0] = 1;
+  const std::size_t values = std::size_t(f.frames()) * std::size_t(std::max(f.nz, 1)) * std::size_t(f.ny) * f.nx;
+  for (const auto& [name, field] : f.fields) {
+    if (field.data.size() != values)
+      throw std::runtime_error("field '" + name + "' has " + std::to_string(field.data.size()) + " values, its grid " +
+                               std::to_string(values));
+    io::setAttr(io::writeArray(group, name, field.data.data(), dims, frame), "unit", field.unit);
+  }
   io::setAttr(io::writeVector(group, "time_s", f.time_s), "unit", "s");
   io::setAttr(group, "dx_m", f.dx_m);
   io::setAttr(group, "dy_m", f.dy_m);
   io::setAttr(group, "origin_x_m", f.origin_x_m);
   io::setAttr(group, "origin_y_m", f.origin_y_m);
+  if (f.nz == 0) return;
+  io::setAttr(group, "dz_m", f.dz_m);
+  io::setAttr(group, "origin_z_m", f.origin_z_m);
 }
 
 // Result::artifacts as <dir>/point_NNNNNN_<name>, each written to .tmp and renamed like the point file.
@@ -58,7 +69,8 @@ void writeArtifacts(const std::string& dir, int index, const kinds::Result& r) {
 
 void writeXdmfSidecar(const std::string& dir, int index, const kinds::FieldFrames& f) {
   if (f.frames() == 0 || f.fields.empty()) return;
-  io::XdmfGrid g{pointFileName(index), f.time_s, f.nx, f.ny, f.dx_m, f.dy_m, f.origin_x_m, f.origin_y_m, {}};
+  io::XdmfGrid g{pointFileName(index), f.time_s, f.nx, f.ny, f.nz, f.dx_m, f.dy_m, f.dz_m,
+                 f.origin_x_m, f.origin_y_m, f.origin_z_m, {}};
   for (const auto& [name, field] : f.fields) g.fields.push_back(name);
   io::writeFileAtomically(dir + "/" + fs::path(pointFileName(index)).stem().string() + ".xdmf", io::xdmfText(g));
 }

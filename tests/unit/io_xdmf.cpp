@@ -15,7 +15,7 @@ namespace io = creaturelab::io;
 namespace fs = std::filesystem;
 
 TEST(Xdmf, FieldsSelectEachFrameBySlab) {
-  const io::XdmfGrid g{"p.h5", {0.0, 0.5, 1.0, 1.5}, 3, 2, 0.1, 0.2, 0.0, 0.0, {"u"}};
+  const io::XdmfGrid g{"p.h5", {0.0, 0.5, 1.0, 1.5}, 3, 2, 0, 0.1, 0.2, 0.0, 0.0, 0.0, 0.0, {"u"}};
   const std::string x = io::xdmfText(g);
   EXPECT_NE(x.find("<Xdmf Version=\"3.0\">"), std::string::npos);
   EXPECT_NE(x.find("Dimensions=\"2 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">p.h5:/fields/u|1 0 0:1 1 1:1 "
@@ -24,6 +24,24 @@ TEST(Xdmf, FieldsSelectEachFrameBySlab) {
   EXPECT_NE(x.find("Precision=\"8\" Format=\"XML\">0.20000000000000001 0.10000000000000001</DataItem>"),
             std::string::npos);
   EXPECT_EQ(x.find("HyperSlab"), std::string::npos);  // ParaView's Xdmf3 readers skip that form
+}
+
+// nz > 0: a 3D co-rectilinear grid, node counts, origin and spacing in z, y, x order, each frame a
+// (1, nz, ny, nx) slab of the (frames, nz, ny, nx) dataset as a cell attribute.
+TEST(Xdmf, VolumeFieldsAre3dCoRectMeshesWithCellAttributes) {
+  const io::XdmfGrid g{"p.h5", {0.0, 0.5}, 3, 2, 4, 0.1, 0.2, 0.25, 1.0, 2.0, -0.5, {"q", "u"}};
+  const std::string x = io::xdmfText(g);
+  EXPECT_NE(x.find("<Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"5 3 4\" />"), std::string::npos);
+  EXPECT_NE(x.find("<Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n     <DataItem Dimensions=\"3\" NumberType=\"Float\" "
+                   "Precision=\"8\" Format=\"XML\">-0.5 2 1</DataItem>\n     <DataItem Dimensions=\"3\" "
+                   "NumberType=\"Float\" Precision=\"8\" Format=\"XML\">0.25 0.20000000000000001 "
+                   "0.10000000000000001</DataItem>"),
+            std::string::npos);
+  EXPECT_NE(x.find("<Attribute Name=\"u\" AttributeType=\"Scalar\" Center=\"Cell\">\n     <DataItem Dimensions=\"4 "
+                   "2 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">p.h5:/fields/u|1 0 0 0:1 1 1 1:1 4 2 3:2 "
+                   "4 2 3</DataItem>"),
+            std::string::npos);
+  EXPECT_EQ(x.find("2DCoRectMesh"), std::string::npos);
 }
 
 TEST(Xdmf, MeshNamesWholeDatasetsOnly) {

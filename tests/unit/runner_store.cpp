@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 
@@ -228,6 +230,47 @@ TEST(RunnerKinds, NoKindDeclaresAMetricWithAParameterOrIndexName) {
   std::string list;
   for (const auto& c : clashes) list += " " + c + ";";
   EXPECT_TRUE(clashes.empty()) << "/sweep names clash (a sweep over them cannot write its index):" << list;
+}
+
+// Fields on a 3D grid: (frames, nz, ny, nx) datasets with the grid's spacing and origin in z too, and
+// a sidecar of 3D co-rectilinear meshes; a 2D result keeps its (frames, ny, nx) layout without z
+// attributes; a field whose size is not its grid's is refused before anything reads past it.
+TEST_F(RunnerStore, VolumeFieldsAreFramesByZByYByX) {
+  const Experiment e = runner::loadExperimentText("kind = \"oscillator\"\n", "v.toml", {}, registry());
+  const kinds::Kind& kind = *registry().find("oscillator");
+  const auto pts = runner::expandPoints(e, kind);
+  PointOutcome o = outcome(kind, 0);
+  kinds::FieldFrames& f = o.result.fields;
+  f.time_s = {0.0, 0.5};
+  f.nx = 4, f.ny = 3, f.nz = 2;
+  f.dx_m = f.dy_m = f.dz_m = 0.25;
+  f.origin_z_m = -1.0;
+  f.fields["q"].unit = "1/s^2";
+  for (int v = 0; v < 2 * 2 * 3 * 4; ++v) f.fields["q"].data.push_back(v);
+  runner::writePointFile(dir(), e, kind, pts[0], o, provenance());
+  {
+    const io::File file = io::File::openReadOnly(dir() + "/point_000000.h5");
+    const io::Group fields = file.root().openGroup("fields");
+    EXPECT_EQ(fields.openDataset("q").shape(), (std::vector<hsize_t>{2, 2, 3, 4}));
+    EXPECT_EQ(io::readArrayDouble(fields, "q")[23], 23.0);
+    EXPECT_EQ(io::getAttrDouble(fields, "dz_m"), 0.25);
+    EXPECT_EQ(io::getAttrDouble(fields, "origin_z_m"), -1.0);
+  }
+  std::ifstream sidecar(dir() + "/point_000000.xdmf");
+  const std::string xdmf((std::istreambuf_iterator<char>(sidecar)), std::istreambuf_iterator<char>());
+  EXPECT_NE(xdmf.find("TopologyType=\"3DCoRectMesh\" Dimensions=\"3 4 5\""), std::string::npos) << xdmf;
+
+  f.nz = 0;
+  f.fields["q"].data.resize(2 * 3 * 4);
+  runner::writePointFile(dir(), e, kind, pts[0], o, provenance());
+  {
+    const io::File file = io::File::openReadOnly(dir() + "/point_000000.h5");
+    const io::Group fields = file.root().openGroup("fields");
+    EXPECT_EQ(fields.openDataset("q").shape(), (std::vector<hsize_t>{2, 3, 4}));
+    EXPECT_FALSE(io::hasAttr(fields, "dz_m"));
+  }
+  f.fields["q"].data.pop_back();
+  EXPECT_THROW(runner::writePointFile(dir(), e, kind, pts[0], o, provenance()), std::runtime_error);
 }
 
 TEST_F(RunnerStore, ReadIndexWithoutAnIndexNamesTheFolder) {
