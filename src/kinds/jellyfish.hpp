@@ -34,7 +34,7 @@ struct JellyfishKindParams {
   template <class V>
   void describe(V& v) {
     v.choice("model", model, {{"ours", jellyfish::Model::ours}, {"paper", jellyfish::Model::paper}},
-             "ours: tension-pulse muscles (active_tension, pulse) and bending 1e-4 N m, so the stroke can "
+             "ours: tension-pulse muscles (active_tension, pulse) and bending 7.3e-5 N m, so the stroke can "
              "resonate; paper: Rudolf & Mould 2009's, rest-length Hermite muscles (rest_length, hermite, §3.3) "
              "and bending 2.352e-3 N m (Fig. 12); it sets muscle_model, activation_shape and "
              "bending_rigidity_n_m where those are auto");
@@ -56,8 +56,8 @@ struct JellyfishKindParams {
     swimmer.bell.describeElasticity(v);
     v.realOrAuto("bending_rigidity_n_m", bending_rigidity_n_m, "N m", 0, 1e6,
                  "bending rigidity B per metre of depth (a joint's angular spring is B / L); auto: the model's, "
-                 "ours 1e-4 (not given by the paper: chosen on a 200² grid for a pluck ringing near §3.3's "
-                 "resonant 0.7 Hz), paper 2.352e-3 (Fig. 12's 1.186 N m/rad per 1.983 mm joint)");
+                 "ours 7.3e-5 (not given by the paper: calibrated so that the bell alone's pluck rings at "
+                 "§3.3's resonant 0.7 Hz), paper 2.352e-3 (Fig. 12's 1.186 N m/rad per 1.983 mm joint)");
     v.real("stiffness_scale", stiffness_scale, "", 1e-3, 1e3, "multiplies bell_modulus_pa and bending_rigidity_n_m together");
     v.choice("muscle_model", muscle_model, {"auto", "active_tension", "rest_length"},
              "auto: the model's (ours active_tension, paper rest_length); active_tension: a tension T_max a(t) "

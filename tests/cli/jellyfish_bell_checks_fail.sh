@@ -3,7 +3,7 @@
 # with the tentacles on in the bell pluck, whose chains then ring with the bell (two modes). On frequency_coarse's
 # setting (2 mm cells at twice the step, 64 segments, 3 s windows, 4 s plucks), on which the intact file passes (run
 # here first); the drives and the other pluck are reused. The bell's muscle-driven checks:
-# jellyfish_frequency_checks_fail.sh. About 15 s of CPU.
+# jellyfish_frequency_checks_fail.sh. About 18 s of CPU.
 # usage: jellyfish_bell_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 source "$(dirname "${BASH_SOURCE[0]}")/checks_fail_lib.sh"  # status, broken, also, intact, frequency_coarse, reused
@@ -11,6 +11,6 @@ source "$(dirname "${BASH_SOURCE[0]}")/checks_fail_lib.sh"  # status, broken, al
 frequency_coarse coarse
 intact intact "$scratch/coarse.toml"
 frequency_coarse tentacled true
-reused tentacled 0 1 2
+reused tentacled 0 1 2 3
 broken tentacled "$scratch/tentacled.toml" "the bell alone rings as one mode (the bell pluck's one-mode fit residual at most 0.1)" \
   --resume

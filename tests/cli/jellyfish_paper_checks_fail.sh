@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The paper model's claim checks (Rudolf & Mould 2009 §3.3; studies/jellyfish/paper_model.toml at 0.7 Hz, Fig. 5,
 # and paper_model_morphology.toml, Figs. 3 and 11) fail with their mechanisms broken: the rest-length curve held at 1
-# (knot1_value = 1, the muscles never shorten) leaves the bell still and open, and the default model's bending
-# rigidity (1e-4 N m) lets the stiff muscle springs crush it to about 0.2 of its diameter. On 2 mm cells at twice the
-# step, 64 segments, a 3 s window (Fig. 11: one warm-up cycle, no tracers or fields), on which the intact files pass
+# (knot1_value = 1, the muscles never shorten) leaves the bell still and open, and a bending rigidity of the default
+# model's order (1e-4 N m) lets the stiff muscle springs crush it to about 0.2 of its diameter. On 2 mm cells at twice
+# the step, 64 segments, a 3 s window (Fig. 11: one warm-up cycle, no tracers or fields), on which the intact files pass
 # (run here first). The argmax check of Fig. 5 is a known deviation and decides nothing. About 15 s of CPU.
 # usage: jellyfish_paper_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
