@@ -55,12 +55,13 @@ creaturelab_cli_test(fish_checks_fail) # each fish claim check FAILs with its me
 creaturelab_cli_test(control_fluid_checks_fail) # block_flow's and the swimmer's claim checks FAIL with the controller off, the flyer's is inconclusive, Fig. 10's thread checks FAIL on a one-ulp nudge
 # Fig. 4's unison check FAILs with the bell's muscles off; 12 s CPU
 creaturelab_cli_test(jellyfish_checks_fail TIMEOUT 600)
-creaturelab_cli_test(jellyfish_frequency_checks_fail TIMEOUT 600) # Fig. 5's and the bell alone's driven checks FAIL with the muscles off; 17 s CPU
+creaturelab_cli_test(jellyfish_frequency_checks_fail TIMEOUT 600) # Fig. 5's and the bell alone's driven checks FAIL with the muscles off; 22 s CPU
 # the membrane's checks FAIL with its mechanism broken (kernels of one width, slack springs, sparse markers); 18 s CPU
 creaturelab_cli_test(jellyfish_membrane_checks_fail TIMEOUT 600)
-# Fig. 5's file: the bell alone's one-mode check FAILs with tentacles on in its pluck; 16 s CPU
+# Fig. 5's file: the bell alone's one-mode check FAILs with tentacles on in its pluck; 18 s CPU
 creaturelab_cli_test(jellyfish_bell_checks_fail TIMEOUT 600)
-# Fig. 5's speed-peak and stroke-peak checks FAIL with the resonance broken (a softer bell, a viscous fluid); 19 s CPU
+# Fig. 5's speed-peak, stroke-peak and within-20%-of-the-bell's-f_n checks FAIL with the resonance broken (a softer
+# bell, a viscous fluid); 20 s CPU
 creaturelab_cli_test(jellyfish_resonance_checks_fail TIMEOUT 600 COST 1000)
 # the paper model's Fig. 5 and Fig. 11 checks FAIL with its muscles held at rest length or its bell as soft as the default's; 15 s CPU
 creaturelab_cli_test(jellyfish_paper_checks_fail TIMEOUT 600)
