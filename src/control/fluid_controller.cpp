@@ -13,7 +13,7 @@ namespace {
 // The fluid's reaction of the last coupled step as the servo's external-force stage.
 class CouplingReaction final : public ForceModel {
  public:
-  CouplingReaction(const coupling::RigidFluidCoupling* c, std::vector<double> armature)
+  CouplingReaction(const CoupledFluid* c, std::vector<double> armature)
       : c_(c), armature_(std::move(armature)) {}
   void apply(rigid::RigidData& data, std::vector<Vec3>& body_force_n) const override {
     body_force_n = c_->bodyForce_n();
@@ -29,7 +29,7 @@ class CouplingReaction final : public ForceModel {
     const std::vector<double> a = data.save().warmstart;
     for (std::size_t d = 0; d < armature_.size(); ++d) data.appliedForces()[d] += armature_[d] * a[d];
   }
-  const coupling::RigidFluidCoupling* c_;
+  const CoupledFluid* c_;
   std::vector<double> armature_;  // per DOF; empty: off
 };
 
@@ -60,7 +60,7 @@ std::string FluidControlParams::validate(const ControllerParams& p, const rigid:
   if (auto e = p.validate(model); !e.empty()) return e;
   for (const auto* names : {&p.controlled, &p.kinematic, &p.pd_driven})
     for (const auto& name : *names)
-      if (model.joint(model.findJoint(name)).type == rigid::JointType::ball)
+      if (f.planar_fluid && model.joint(model.findJoint(name)).type == rigid::JointType::ball)
         return "joint '" + name + "' is a ball joint: the fluid is planar (x-z), give hinges";
   if (p.steady_state)
     return "steady_state: with the fluid use perturbation = placed (§3.3's steady-state calculation on the fluid's "
@@ -75,15 +75,15 @@ std::string FluidControlParams::validate(const ControllerParams& p, const rigid:
 
 struct FluidController::World {
   World(const rigid::RigidModel& m, const std::vector<std::pair<std::string, double>>& initial,
-        const fluid::FluidParams& fp, const coupling::RigidFluidParams& cp, std::vector<double> armature)
+        const CoupledFluidFactory& make, bool single_threaded, std::vector<double> armature)
       : data(m), force(nullptr, {}) {
     for (const auto& [name, rad] : initial) data.qpos()[m.joint(m.findJoint(name)).qpos] = rad;
     data.kinematics();
-    coupling = std::make_unique<coupling::RigidFluidCoupling>(data, fp, cp);
+    coupling = make(data, single_threaded);
     force = CouplingReaction(coupling.get(), std::move(armature));
   }
   rigid::RigidData data;
-  std::unique_ptr<coupling::RigidFluidCoupling> coupling;
+  std::unique_ptr<CoupledFluid> coupling;
   CouplingReaction force;
   ServoScratch servo;
   Prescribed pr, step;
@@ -99,6 +99,11 @@ struct FluidController::World {
 FluidController::FluidController(const rigid::RigidModel& model, ControllerParams p, FluidControlParams f,
                                  const std::vector<std::pair<std::string, double>>& initial,
                                  const fluid::FluidParams& fluid, const coupling::RigidFluidParams& cp)
+    : FluidController(model, std::move(p), std::move(f), initial, planarFluid(fluid, cp)) {}
+
+FluidController::FluidController(const rigid::RigidModel& model, ControllerParams p, FluidControlParams f,
+                                 const std::vector<std::pair<std::string, double>>& initial,
+                                 const CoupledFluidFactory& make)
     : model_(model), p_(checked(p, f, model)), f_(f), layout_(makeLayout(p_, model)) {
   for (const auto& [name, rad] : initial)
     if (model.findJoint(name) < 0) throw std::invalid_argument("joint '" + name + "' is not in the model " + model.path());
@@ -108,14 +113,15 @@ FluidController::FluidController(const rigid::RigidModel& model, ControllerParam
   // fluid's threads (fluid_threads; bitwise the same for any count). The evaluations' fluids take
   // them only when the evaluations themselves run one at a time: nested, the two kinds of thread
   // would compete for the same cores (§5's parallelism is across evaluations).
-  main_ = std::make_unique<World>(model, initial, fluid, cp, armature);
+  // A fluid whose snapshot is not exact gets one copy per evaluation (joint, side) instead of one per
+  // thread, so that what it keeps of its last evaluation does not depend on the thread count.
+  main_ = std::make_unique<World>(model, initial, make, false, armature);
   captureHolds(pres_, main_->data.qpos());
   pool_ = std::make_unique<fluid::WorkerPool>(p_.threads);
-  fluid::FluidParams evaluation_fluid = fluid;
-  if (p_.threads > 1) evaluation_fluid.threads = 1;
-  for (int k = 0; k < fluid::threadPieceCount(pool_.get()); ++k)
-    workers_.push_back(std::make_unique<World>(model, initial, evaluation_fluid, cp, armature));
   const int n = int(p_.controlled.size());
+  const int copies = main_->coupling->exactSnapshot() ? fluid::threadPieceCount(pool_.get()) : 2 * n;
+  for (int k = 0; k < copies; ++k)
+    workers_.push_back(std::make_unique<World>(model, initial, make, p_.threads > 1, armature));
   direction_.assign(n, 0.0);
   derivative_.assign(n, 0.0);
   frame_force_.assign(n, Vec3{});
@@ -125,7 +131,17 @@ FluidController::FluidController(const rigid::RigidModel& model, ControllerParam
 FluidController::~FluidController() = default;
 
 rigid::RigidData& FluidController::data() { return main_->data; }
-const coupling::RigidFluidCoupling& FluidController::coupling() const { return *main_->coupling; }
+const CoupledFluid& FluidController::coupledFluid() const { return *main_->coupling; }
+const coupling::RigidFluidCoupling& FluidController::coupling() const {
+  const auto* planar = dynamic_cast<const CoupledFluid2*>(main_->coupling.get());
+  if (!planar) throw std::logic_error("FluidController::coupling(): the fluid is not the planar one");
+  return planar->coupling();
+}
+
+FluidController::World& FluidController::evaluationWorld(int part, int joint, double offset_rad) {
+  if (main_->coupling->exactSnapshot()) return *workers_[part];
+  return *workers_[2 * joint + (offset_rad > 0 ? 1 : 0)];
+}
 
 // One coupled step (rigid_fluid_coupling.hpp): fluid to u~, the solid to x^{n+1} with the servo
 // reaching pr's targets under the fluid's last reaction, forcing at x^{n+1}, projection.
@@ -135,8 +151,7 @@ void FluidController::coupledStep(World& w, const Prescribed& pr) {
   const ServoReport s = advanceFrame(w.data, pr, w.force, 1, p_.servo_iterations, p_.servo_tolerance_rad, w.servo);
   w.residual_rad = std::max(w.residual_rad, s.residual_rad);
   w.data.kinematics();
-  w.coupling->forceFluid(w.data, dt);
-  w.coupling->project(dt);
+  w.coupling->forceAndProject(w.data, dt);
   w.forcing_iterations = std::max(w.forcing_iterations, w.coupling->forcingIterations());
   const auto& body = w.coupling->bodyForce_n();
   for (std::size_t b = 1; b < body.size(); ++b)
@@ -183,7 +198,7 @@ void FluidController::save(World& w, CoupledState& s) const {
 void FluidController::restore(World& w, const CoupledState& s) const {
   w.data.restore(s.rigid);
   w.data.kinematics();
-  w.coupling->restore(s.fluid);
+  w.coupling->restore(*s.fluid, w.data);
 }
 
 // Perturbation::placed: pr's held joints (those without a pattern) set to their targets at rest
@@ -249,7 +264,7 @@ double FluidController::evaluate(World& w, const CoupledState& start, int joint,
 double FluidController::evaluate(int joint, double offset_rad) {
   CoupledState s;
   save(*main_, s);
-  return evaluate(*workers_[0], s, joint, offset_rad);
+  return evaluate(evaluationWorld(0, joint, offset_rad), s, joint, offset_rad);
 }
 
 std::vector<double> FluidController::derivatives() {
@@ -257,7 +272,9 @@ std::vector<double> FluidController::derivatives() {
   save(*main_, start);
   auto g = centralDifferences(
       pool_.get(), int(p_.controlled.size()), p_.delta_rad, p_.one_sided,
-      [&](int part, int joint, double offset) { return evaluate(*workers_[part], start, joint, offset); },
+      [&](int part, int joint, double offset) {
+        return evaluate(evaluationWorld(part, joint, offset), start, joint, offset);
+      },
       "while perturbing a joint in the fluid");
   for (const auto& w : workers_) max_forcing_iterations_ = std::max(max_forcing_iterations_, w->forcing_iterations);
   return g;

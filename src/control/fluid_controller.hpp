@@ -1,7 +1,8 @@
 #pragma once
 // The creature controller of Lentine et al. 2010 in the full fluid (§4.3, §5, §6;
 // "Creature Control in a Fluid Environment"): Controller's frame (controller.hpp) with the
-// simple wind replaced by the two-way coupled 2-D fluid (src/coupling/):
+// simple wind replaced by a two-way coupled fluid (coupled_fluid.hpp: the planar fluid of src/coupling/
+// or the 3-D one of src/coupling3d/):
 //   - a derivative evaluation restores its own copy of the whole state (bodies and fluid, §4.3:
 //     "each perturbation needs its own copy of the fluid state"), moves the joint by +-delta over
 //     one frame of stable coupled steps (the servo reaches the target at each step, the bodies
@@ -25,6 +26,7 @@
 #include <vector>
 
 #include "control/controller.hpp"
+#include "control/coupled_fluid.hpp"
 #include "control/prescription.hpp"
 #include "control/stroke_sense.hpp"
 #include "coupling/rigid_fluid_coupling.hpp"
@@ -57,6 +59,8 @@ struct FluidControlParams {
   // CMAME 196); with A it is (A - m_a) / (M + A), stable for m_a < M + 2A. The change to the
   // dynamics, A (a^{n+1} - a^n), is first order in the step (swimmer.toml's convergence runs).
   bool armature_added_mass = false;
+  // The fluid is planar (x-z, src/coupling/): prescribed joints must be hinges. False for the 3-D fluid.
+  bool planar_fluid = true;
 
   // "" when usable with the controller's parameters p (p.validate(model) first) and the model,
   // else what is wrong.
@@ -66,7 +70,7 @@ struct FluidControlParams {
 // The state of a coupled creature: bodies and fluid.
 struct CoupledState {
   rigid::RigidState rigid;
-  coupling::CouplingState fluid;
+  std::unique_ptr<FluidSnapshot> fluid;
 };
 
 class FluidController {
@@ -76,6 +80,9 @@ class FluidController {
   FluidController(const rigid::RigidModel& model, ControllerParams p, FluidControlParams f,
                   const std::vector<std::pair<std::string, double>>& initial_rad, const fluid::FluidParams& fluid,
                   const coupling::RigidFluidParams& coupling);
+  // The same over any coupled fluid: `make` builds the main copy and each evaluation's.
+  FluidController(const rigid::RigidModel& model, ControllerParams p, FluidControlParams f,
+                  const std::vector<std::pair<std::string, double>>& initial_rad, const CoupledFluidFactory& make);
   ~FluidController();
 
   FrameRecord frame();
@@ -87,7 +94,9 @@ class FluidController {
   double evaluate(int joint, double offset_rad);
 
   rigid::RigidData& data();
+  // The planar coupling (throws std::logic_error over another fluid).
   const coupling::RigidFluidCoupling& coupling() const;
+  const CoupledFluid& coupledFluid() const;
   const ControllerParams& params() const { return p_; }
   // Mean force of the last frame on the bodies each controlled joint moves (N, world).
   const std::vector<Vec3>& frameForce_n() const { return frame_force_; }
@@ -111,6 +120,8 @@ class FluidController {
   void save(World& w, CoupledState& s) const;
   void restore(World& w, const CoupledState& s) const;
   Vec3 jointForce(const World& w, int joint) const;
+  // The copy an evaluation of joint at offset runs in, on thread piece `part`.
+  World& evaluationWorld(int part, int joint, double offset_rad);
 
   const rigid::RigidModel& model_;
   ControllerParams p_;
