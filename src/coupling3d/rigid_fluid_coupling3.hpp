@@ -20,7 +20,8 @@
 //                     marker's body gets −F (the reaction, applied at the next step: staggered)
 // Where this differs from §6: the paper solves solid velocities and pressure together (Eq. 9);
 // here the solid feels the previous step's fluid force (explicit), which is unstable for free
-// bodies much lighter than the fluid they displace (added mass).
+// bodies not several times denser than the fluid: the reaction includes the force that accelerates
+// the fluid the body carries (inside it and within the kernel's reach) and its added mass.
 //
 // Momentum: the transfer keeps the kernels' partition of unity and zero first moment, so the fluid
 // receives exactly dt Σ F_k (and, away from walls, dt Σ X_k × F_k) and the bodies the negatives.
@@ -52,9 +53,10 @@ struct RigidFluidParams3 {
   /// CG stops when every marker's velocity is met to this fraction of the largest speed (markers' or fluid's).
   double forcing_tolerance = 1e-4;
   int max_forcing_iterations = 100;
-  /// Tikhonov weight on the marker forces relative to the direct-forcing mass ρ dA dx / dt: damps
-  /// forces the fluid cannot feel (markers closer than the kernel resolves); the markers slip by
-  /// about this fraction of their forcing.
+  /// Tikhonov weight on the marker forces relative to the direct-forcing mass ρ dV / dt (dV = dA dx on
+  /// the surface, the lattice cell inside; times 1 + 6 ν dt/dx² with viscosity_in_forcing): damps forces
+  /// the fluid cannot feel (markers closer than the kernel resolves); the markers slip by about this
+  /// fraction of their forcing.
   double forcing_regularisation = 1e-3;
   Vec3 origin_m{0.0, 0.0, 0.0};  ///< world position of the fluid box's corner (0, 0, 0)
   /// Solve the forces through the viscous step too: advanceFluid leaves viscosity out and forceFluid
