@@ -1,0 +1,171 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "control/fluid_controller.hpp"
+#include "coupling3d/rigid_fluid_coupling3.hpp"
+#include "fluid3d/fluid_params3.hpp"
+#include "kinds/control_params.hpp"
+#include "kinds/describe_kind.hpp"
+
+namespace creaturelab::kinds {
+
+// The driven flyer's controller (Lentine et al. 2010 §7.1; the 2-D flyer's experiments/control/flyer.toml):
+// the outer wing joints of models/flyer3d.xml controlled for F_d (|F| on the whole creature), maximised
+// while the PD-driven inner joints flap down and minimised while they flap up; a 30 deg flap at 0.5 Hz
+// (not in the paper), the PD gains scaled with the 4 kg segments; §3.3's steady-state evaluation.
+inline ControllerSettings flyer3dControllerDefaults() {
+  ControllerSettings c;
+  c.model_file = "experiments/control/models/flyer3d.xml";
+  c.controlled = "outer_r, outer_l";
+  c.objectives = "drag, drag";
+  c.senses = "max, max";
+  c.pd_driven = "inner_r, inner_l";
+  c.pd_pattern = "inner_r = sine(0, 30, 0.5, 0); inner_l = sine(0, 30, 0.5, 0)";
+  c.pd_kp_n_m_per_rad = 800;
+  c.pd_kd_n_m_s_per_rad = 40;
+  c.gravity_m_per_s2 = 0;
+  c.frame_s = 1.0 / 60;
+  c.substeps = 2;
+  c.frames = 240;
+  c.strength_rad_per_s = 2.0;
+  c.delta_rad = 0.02;
+  c.average_frames = 30;
+  return c;
+}
+
+// §7.1's box (the paper gives none): 4 m x 2 m x 4 m around the 2.3 m span, air (the segments must be
+// far heavier than the fluid they displace for the staggered coupling) at Re = 0.5 m/s x 1 m / nu = 100
+// as the 2-D flyer's; "open at the top and closed elsewhere with a source term at the floor": free-slip
+// sides, an inflow floor at 0.5 m/s, an open top. 32 cells along x (0.125 m cubes).
+inline fluid3d::FluidParams3 flyer3dFluid() {
+  fluid3d::FluidParams3 f;
+  f.domain_x_m = 4.0;
+  f.domain_y_m = 2.0;
+  f.domain_z_m = 4.0;
+  f.cells_x = 32;
+  f.density_kg_per_m3 = 1.2;
+  f.kinematic_viscosity_m2_per_s = 0.005;
+  f.boundaries.axis[2].low = fluid3d::BoundaryType3::inflow;
+  f.boundaries.axis[2].low_inflow_m_per_s = 0.5;
+  f.boundaries.axis[2].high = fluid3d::BoundaryType3::open;
+  f.blowup_speed_m_per_s = 50.0;
+  return f;
+}
+
+// The fluid box's corner in the world: the creature (at the origin) in the box's middle.
+inline coupling3d::RigidFluidParams3 flyer3dCoupling() {
+  coupling3d::RigidFluidParams3 c;
+  c.origin_m = {-2.0, -1.0, -2.0};
+  return c;
+}
+
+// The control_fluid3d kind's parameters: the controller's (ControllerSettings), the derivative
+// evaluations', the flyer's flap and reading, the 3-D fluid box (fluid3d::FluidParams3) and the
+// coupling (coupling3d::RigidFluidParams3).
+struct ControlFluid3dParams {
+  ControllerSettings controller = flyer3dControllerDefaults();
+  std::int64_t warmup_frames = 60;
+  std::string perturbation = "placed";
+  std::string objective_bodies = "creature";
+  std::int64_t settle_steps = 4;
+  std::int64_t average_steps = 2;
+  std::string stroke_sense = "outer_r = +inner_r, outer_l = +inner_l";
+  double flap_period_s = 2.0;
+  std::int64_t force_cycles = 2;
+  double controlled_limit_deg = 90;
+  fluid3d::FluidParams3 fluid = flyer3dFluid();
+  coupling3d::RigidFluidParams3 coupling = flyer3dCoupling();
+
+  template <class V>
+  void describe(V& v) {
+    controller.describeCreature(v);
+    controller.describeRun(v);
+    v.integer("warmup_frames", warmup_frames, 0, 10000000, "frames with the pose held before control, for the flow to develop");
+    controller.describeDescent(v);
+    v.choice("perturbation", perturbation, {"moved", "placed"},
+             "how a derivative evaluation reaches its pose: moved over one frame of coupled steps (§4.3) | placed at "
+             "once, joint velocities zero (§3.3's steady state)");
+    v.choice("objective_bodies", objective_bodies, {"moved", "creature"},
+             "the bodies whose fluid force a joint's drag objective takes: moved (those the joint moves) | creature "
+             "(every body but the world; §7.1: 'maximize drag (F_d) on the body')");
+    v.integer("settle_steps", settle_steps, 0, 100000,
+              "§4.3 validation mode: coupled steps with the perturbed pose held before the force is taken (0: off)");
+    v.integer("average_steps", average_steps, 1, 100000, "the objective: mean force over an evaluation's last this many steps");
+    controller.describeMeasures(v);
+    v.text("stroke_sense", stroke_sense, "",
+           "§7.1: 'controlled = [+|-]inboard, ...': the joint has its given sense while the inboard joint's pattern "
+           "angle rises (+) or falls (-)");
+    v.real("flap_period_s", flap_period_s, "s", 1e-6, 1e4, "period of the flap, a whole number of frames");
+    v.integer("force_cycles", force_cycles, 1, 100000, "mean_up_force_n: whole flap cycles at the end averaged");
+    v.real("controlled_limit_deg", controlled_limit_deg, "deg", 0, 360,
+           "controlled angles kept within +-this (0: no limit; the paper gives none)");
+    describeFluid(v);
+    describeCoupling(v);
+  }
+  // The fluid (src/fluid3d): a box of cubic cells, z up.
+  template <class V>
+  void describeFluid(V& v) {
+    v.real("domain_x_m", fluid.domain_x_m, "m", 1e-3, 1e3, "box length along x (the span; the paper gives none)");
+    v.real("domain_y_m", fluid.domain_y_m, "m", 1e-3, 1e3, "box length along y (the chord)");
+    v.real("domain_z_m", fluid.domain_z_m, "m", 1e-3, 1e3, "box height (z up)");
+    v.integer("cells", fluid.cells_x, 4, 1024, "cells along x; along y and z from the box's proportions (cubic cells)");
+    v.real("density_kg_per_m3", fluid.density_kg_per_m3, "kg/m^3", 1e-3, 1e6, "fluid density (air: 1.2)");
+    v.real("kinematic_viscosity_m2_per_s", fluid.kinematic_viscosity_m2_per_s, "m^2/s", 0, 10,
+           "0: the paper's inviscid Eq. 5 (the advection's numerical viscosity remains)");
+    fluid.describeSides(v);
+    fluid.describeSchemes(v);
+    v.integer("fluid_threads", fluid.threads, 1, 16,
+              "threads inside the frame's fluid steps, and the evaluations' when threads = 1 (bitwise the same "
+              "for any count)");
+    v.real("blowup_speed_m_per_s", fluid.blowup_speed_m_per_s, "m/s", 1e-6, 1e6, "a fluid faster than this stops the run (exit 3)");
+  }
+  // The coupling (src/coupling3d).
+  template <class V>
+  void describeCoupling(V& v) {
+    v.choice("forcing", coupling.forcing,
+             {{"projected", coupling3d::Forcing3::projected}, {"off", coupling3d::Forcing3::off}},
+             "projected: marker forces solved so that the projected flow meets the bodies; off: the bodies do not "
+             "touch the fluid (a breaking switch)");
+    v.choice("kernel", coupling.kernel, {ib::Kernel::bilinear, ib::Kernel::peskin4}, "IB kernel of the markers (Peskin 2002 §6)");
+    v.real("marker_spacing_cells", coupling.marker_spacing_cells, "cells", 1e-3, 1,
+           "surface marker spacing; at most 1 cell (leak)");
+    v.boolean("interior_markers", coupling.interior_markers,
+              "also markers inside each primitive geom, a kernel's half-width below its surface");
+    v.real("forcing_tolerance", coupling.forcing_tolerance, "", 1e-12, 1,
+           "projected forcing: CG tolerance, fraction of the largest speed");
+    v.integer("max_forcing_iterations", coupling.max_forcing_iterations, 1, 10000,
+              "projected forcing: CG iterations at most per step");
+    v.real("forcing_regularisation", coupling.forcing_regularisation, "", 0, 1,
+           "projected forcing: Tikhonov weight on the marker forces (relative to the direct-forcing mass)");
+    v.real("origin_x_m", coupling.origin_m[0], "m", -1e4, 1e4, "world x of the fluid box's corner");
+    v.real("origin_y_m", coupling.origin_m[1], "m", -1e4, 1e4, "world y of the fluid box's corner");
+    v.real("origin_z_m", coupling.origin_m[2], "m", -1e4, 1e4, "world z of the fluid box's floor");
+    v.real("max_marker_cells_per_step", coupling.max_marker_cells_per_step, "cells", 1e-6, 2,
+           "coupled stability limit: a marker moving farther in one step stops the point (exit 3)");
+  }
+
+  // The solvers' parameters: the box's cells from its proportions with the fixed coupled step
+  // (frame_s / substeps); the coupling; the evaluations'.
+  fluid3d::FluidParams3 fluidParams() const;
+  control::FluidControlParams fluidControlParams() const;
+  std::vector<std::pair<std::string, double>> initialRad() const;
+  // Ranges, then against the model: the controller, the fluid and coupling, the bodies inside the box,
+  // the flap cycles within frames.
+  std::string validate() const;
+};
+
+// The driven flyer of Lentine et al. 2010 §7.1 (Figs. 11-13, without flesh) in the 3-D fluid: the
+// controller of kind control_fluid over the two-way coupled 3-D fluid (coupling3d).
+class ControlFluid3dKind : public DescribedKind<ControlFluid3dParams> {
+ public:
+  ControlFluid3dKind();
+  std::string name() const override { return "control_fluid3d"; }
+  std::string doc() const override;
+  Result run(const Params& params) const override;
+  CostEstimate estimateCost(const Params& params) const override;
+};
+
+}  // namespace creaturelab::kinds
