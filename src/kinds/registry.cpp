@@ -1,6 +1,7 @@
 #include "kinds/charlotte.hpp"
 #include "kinds/control.hpp"
 #include "kinds/control_fluid.hpp"
+#include "kinds/control_fluid3d.hpp"
 #include "kinds/fish.hpp"
 #include "kinds/fluid.hpp"
 #include "kinds/fluid3d.hpp"
@@ -26,6 +27,7 @@ Registry defaultRegistry() {
   r.add(std::make_unique<ControlFluidKind>());
   r.add(std::make_unique<FishKind>());
   r.add(std::make_unique<Fluid3dKind>());
+  r.add(std::make_unique<ControlFluid3dKind>());
   return r;
 }
 
