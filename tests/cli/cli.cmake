@@ -71,3 +71,5 @@ creaturelab_cli_test(jellyfish_paper_stagger_checks_fail TIMEOUT 600)
 creaturelab_cli_test(fluid3d)
 # the 3-D Taylor-Green claim's convergence checks FAIL with backward Euler in place of Crank-Nicolson or no viscosity; 7.4 s CPU
 creaturelab_cli_test(fluid3d_checks_fail)
+# the 3-D driven flyer (control_fluid3d) on 16 x 8 x 16 over twelve frames: series, the §7.1 check inconclusive with the controller off, exit 2; 10.9 s CPU
+creaturelab_cli_test(flyer3d)
