@@ -71,5 +71,7 @@ creaturelab_cli_test(jellyfish_paper_stagger_checks_fail TIMEOUT 600)
 creaturelab_cli_test(fluid3d)
 # the 3-D Taylor-Green claim's convergence checks FAIL with backward Euler in place of Crank-Nicolson or no viscosity; 7.4 s CPU
 creaturelab_cli_test(fluid3d_checks_fail)
+# the fluid3d kind's whole box (stored_fields = "volume"): (frames, nz, ny, nx) datasets and their XDMF opened by pvbatch; 3.4 s CPU
+creaturelab_cli_test(fluid3d_volume SKIP_RETURN_CODE 77)
 # the 3-D driven flyer (control_fluid3d) on 16 x 8 x 16 over twelve frames: series, the §7.1 check inconclusive with the controller off, exit 2; 10.9 s CPU
 creaturelab_cli_test(flyer3d)
