@@ -3,8 +3,10 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 #include "fluid3d/fluid_recorder3.hpp"
 #include "fluid3d/fluid_solver3.hpp"
@@ -32,6 +34,11 @@ std::optional<fluid3d::ExactFlow3> exactFlow(const Fluid3dKindParams& q) {
   return std::nullopt;
 }
 
+// Output frames of a run: the start and every output_interval_s to end_time_s (the last one shorter).
+double outputFrames(const Fluid3dKindParams& q) {
+  return 1 + std::ceil(q.end_time_s / q.output_interval_s * (1 - 1e-12));
+}
+
 // The initial field on the faces, made divergence-free (and the known faces set).
 void start(const std::optional<fluid3d::ExactFlow3>& exact, fluid3d::FluidSolver3& solver) {
   if (exact) fluid3d::setFlow(solver.grid(), *exact, 0.0);
@@ -49,6 +56,63 @@ Result recorded(const fluid3d::FluidRecorder3& recorder, const fluid3d::MacGrid3
   frames.dx_m = frames.dy_m = g.dx_m;
   frames.time_s = recorder.frameTimes();
   for (const auto& f : recorder.fields()) frames.fields[f.name] = {f.values, f.unit};
+  return result;
+}
+
+// The whole box's cell-centred fields, appended frame by frame in the recorder's names and units
+// (Array3 runs x fastest, so each frame is (nz, ny, nx) row-major).
+class VolumeFrames {
+ public:
+  // Room for `expected_frames` frames (at most 1000) from the start: no copies as they arrive.
+  VolumeFrames(const fluid3d::MacGrid3& g, double expected_frames) {
+    frames_.nx = g.n[0], frames_.ny = g.n[1], frames_.nz = g.n[2];
+    frames_.dx_m = frames_.dy_m = frames_.dz_m = g.dx_m;
+    const std::size_t cells = std::size_t(g.n[0]) * std::size_t(g.n[1]) * std::size_t(g.n[2]);
+    for (const auto& [name, unit] : kNames) frames_.fields[name].data.reserve(cells * std::size_t(std::min(expected_frames, 1000.0)));
+  }
+  void sample(const fluid3d::FluidSolver3& solver) {
+    observables_.update(solver.grid());
+    const fluid3d::Array3* arrays[] = {&observables_.cellVelocity_m_per_s(0), &observables_.cellVelocity_m_per_s(1),
+                                       &observables_.cellVelocity_m_per_s(2), &solver.grid().pressure_pa,
+                                       &observables_.vorticityMagnitude_per_s(), &observables_.q_per_s2()};
+    for (std::size_t f = 0; f < std::size(kNames); ++f) {
+      Field& field = frames_.fields[kNames[f][0]];
+      field.unit = kNames[f][1];
+      field.data.insert(field.data.end(), arrays[f]->data(), arrays[f]->data() + arrays[f]->size());
+    }
+    frames_.time_s.push_back(solver.time_s());
+  }
+  FieldFrames take() { return std::move(frames_); }
+
+ private:
+  static constexpr const char* kNames[6][2] = {{"u_m_per_s", "m/s"},   {"v_m_per_s", "m/s"},
+                                               {"w_m_per_s", "m/s"},   {"pressure_pa", "Pa"},
+                                               {"vorticity_magnitude_per_s", "1/s"}, {"q_per_s2", "1/s^2"}};
+  FieldFrames frames_;
+  fluid3d::FlowObservables3 observables_;
+};
+
+// fluid3d::advanceRecorded's steps and output times, the volume sampled beside the recorder.
+void advanceRecordedVolume(fluid3d::FluidSolver3& solver, double end_s, double interval_s,
+                           fluid3d::FluidRecorder3& recorder, VolumeFrames& volume) {
+  recorder.sample(solver);
+  volume.sample(solver);
+  for (int next = 1; solver.time_s() < end_s * (1 - 1e-12);) {
+    const double t_out = std::min(end_s, next * interval_s);
+    const double dt = std::min(solver.nextTimeStep_s(), t_out - solver.time_s());
+    recorder.step(solver.step(dt), solver);
+    if (solver.time_s() >= t_out * (1 - 1e-12)) {
+      recorder.sample(solver);
+      volume.sample(solver);
+      ++next;
+    }
+  }
+}
+
+// The recorded series, with the recorder's plane or the volume (moved out) as the fields.
+Result recorded(const fluid3d::FluidRecorder3& recorder, const fluid3d::MacGrid3& g, VolumeFrames* volume) {
+  Result result = recorded(recorder, g);
+  if (volume) result.fields = volume->take();
   return result;
 }
 
@@ -118,21 +182,22 @@ std::string Fluid3dKind::doc() const {
 }
 
 // Memory: about 600 B per cell for the solver (seven face and cell arrays, the MG-PCG or spectral
-// work arrays, advection scratch, the observables), 6 planes x 8 B per stored frame and plane cell,
-// and 32 MiB for the process.
+// work arrays, advection scratch, the observables), 6 fields x 8 B per stored frame and plane (or
+// volume) cell, and 32 MiB for the process.
 CostEstimate Fluid3dKind::estimateCost(const Params& p) const {
   try {
     const Fluid3dKindParams q = readParams<Fluid3dKindParams>(p);
     const fluid3d::FluidParams3 f = q.solverParams();
     const double cells = double(f.cells_x) * double(f.cells_y) * double(f.cells_z);
-    const double frames = 1 + std::ceil(q.end_time_s / q.output_interval_s * (1 - 1e-12));
-    const double plane = cells / double(std::min({f.cells_x, f.cells_y, f.cells_z}));
+    const double frames = outputFrames(q);
+    const double stored = q.stored_fields == "volume" ? cells : cells / double(std::min({f.cells_x, f.cells_y, f.cells_z}));
     CostEstimate cost;
-    cost.memory_bytes = 32.0 * (1 << 20) + cells * 600 + plane * 48 * frames;
+    cost.memory_bytes = 32.0 * (1 << 20) + cells * 600 + stored * 48 * frames;
     if (!q.dt_s.is_auto) cost.steps = std::ceil(q.end_time_s / q.dt_s.value);
     char detail[160];
-    std::snprintf(detail, sizeof detail, "%lld x %lld x %lld cells, %.0f stored planes of 6 fields",
-                  (long long)f.cells_x, (long long)f.cells_y, (long long)f.cells_z, frames);
+    std::snprintf(detail, sizeof detail, "%lld x %lld x %lld cells, %.0f stored %s of 6 fields",
+                  (long long)f.cells_x, (long long)f.cells_y, (long long)f.cells_z, frames,
+                  q.stored_fields == "volume" ? "volumes" : "planes");
     cost.detail = detail;
     return cost;
   } catch (const std::exception&) {
@@ -147,12 +212,16 @@ Result Fluid3dKind::run(const Params& p) const {
   start(exact, solver);
   const int normal = q.slice_normal == "x" ? 0 : q.slice_normal == "y" ? 1 : 2;
   fluid3d::FluidRecorder3 recorder(solver, normal, exact);
+  std::optional<VolumeFrames> volume;
+  if (q.stored_fields == "volume") volume.emplace(solver.grid(), outputFrames(q));
+  VolumeFrames* stored = volume ? &*volume : nullptr;
   try {
-    fluid3d::advanceRecorded(solver, q.end_time_s, q.output_interval_s, recorder);
+    if (stored) advanceRecordedVolume(solver, q.end_time_s, q.output_interval_s, recorder, *stored);
+    else fluid3d::advanceRecorded(solver, q.end_time_s, q.output_interval_s, recorder);
   } catch (const fluid3d::FluidBlowUpError3& e) {
-    throw RunFailure(e.what(), recorded(recorder, solver.grid()));
+    throw RunFailure(e.what(), recorded(recorder, solver.grid(), stored));
   }
-  Result result = recorded(recorder, solver.grid());
+  Result result = recorded(recorder, solver.grid(), stored);
   for (const auto& m : recorder.measure(solver)) result.metrics[m.name] = {m.value, m.unit};
   return result;
 }

@@ -8,7 +8,7 @@
 namespace creaturelab::kinds {
 
 // The fluid3d kind's parameters: the 3-D solver's own (fluid3d::FluidParams3, whose in-class defaults
-// are this kind's), the step, the span and output, the initial field and the recorded plane.
+// are this kind's), the step, the span and output, the initial field and the stored plane or volume.
 struct Fluid3dKindParams {
   fluid3d::FluidParams3 fluid;
   std::int64_t cells = 0;  // > 0: cells_x, and cells_y, cells_z from the box's proportions
@@ -18,6 +18,7 @@ struct Fluid3dKindParams {
   std::string initial = "rest";
   double amplitude_m_per_s = 1.0;
   std::string slice_normal = "y";
+  std::string stored_fields = "plane";
 
   template <class V>
   void describe(V& v) {
@@ -35,6 +36,9 @@ struct Fluid3dKindParams {
            "Taylor-Green amplitude A, or the ABC flow's A (B = 0.8 A, C = 0.6 A)");
     v.choice("slice_normal", slice_normal, {"x", "y", "z"},
              "axis normal to the stored plane of fields, through the box's centre cell layer");
+    v.choice("stored_fields", stored_fields, {"plane", "volume"},
+             "fields stored per output frame, cell-centred u, v, w, pressure, |vorticity| and Q: the plane of "
+             "slice_normal (frames, rows, columns), or the whole box (frames, nz, ny, nx: 48 B per cell and frame)");
   }
 
   // The solver's parameters: the grid from cells, the step policy from dt_s.
@@ -46,7 +50,7 @@ struct Fluid3dKindParams {
 
 // The 3-D incompressible fluid alone (Lentine, Grafe & Fedkiw 2010 §4.1, Eqs. 5-8; Stam 1999 stable
 // fluids on a MAC grid): decaying Taylor-Green and ABC flows for convergence, an updraft from an
-// inflow floor through an open top (their §7.1), with vorticity and Q on a plane.
+// inflow floor through an open top (their §7.1), with vorticity and Q on a plane or in the whole box.
 class Fluid3dKind : public DescribedKind<Fluid3dKindParams> {
  public:
   Fluid3dKind();

@@ -1,7 +1,8 @@
 """Opens every .xdmf of the given run folders with the XDMF readers this machine has and compares
 what they read with the HDF5 files: meshio's xdmf.TimeSeriesReader (the triangle-mesh series) and
 ParaView's pvbatch (every file; one pvbatch process for all). Fails on a reader's error line, a
-wrong count of points, cells or time steps, or a frame's values that differ from the HDF5.
+wrong count of points, cells or time steps, or a frame's values that differ from the HDF5; for a 3D
+grid of fields also on its bounds and on a value placed in another cell than the HDF5's.
 
 usage: /usr/bin/python3 xdmf_readers.py PVBATCH|- FOLDER...   (- : no pvbatch)
 Under pvbatch (called by this script): xdmf_readers.py --paraview FILE...: one JSON line per reader
@@ -38,9 +39,30 @@ def paraview_side(files):
                     "bounds": list(info.GetBounds()),
                     "point_ranges": {a.GetName(): list(a.GetRange(-1)) for a in reader.PointData},
                     "cell_ranges": {a.GetName(): list(a.GetRange(0)) for a in reader.CellData},
+                    "cell_moments": cell_moments(reader),
                 })
             print(json.dumps({"file": path, "reader": name, "frames": frames}), flush=True)
             pv.Delete(reader)
+
+
+def cell_moments(reader):
+    """For each cell array of a 3D grid, sum over cells of value x cell centre (x, y, z), the centres
+    from ParaView's own geometry: the HDF5's only when ParaView placed every value in its own cell
+    and the cells where the grid's attributes put them. {} for other data."""
+    import numpy as np
+    from paraview import servermanager
+    from vtk.numpy_interface import dataset_adapter as dsa
+    from vtkmodules.vtkFiltersCore import vtkCellCenters
+
+    data = servermanager.Fetch(reader)
+    if data.IsA("vtkCompositeDataSet") or not data.IsA("vtkImageData") or min(data.GetDimensions()) < 2:
+        return {}
+    centres = vtkCellCenters()
+    centres.SetInputData(data)
+    centres.Update()
+    where = dsa.WrapDataObject(centres.GetOutput()).Points
+    cells = dsa.WrapDataObject(data).CellData
+    return {name: [float(v) for v in (np.asarray(cells[name])[:, None] * where).sum(axis=0)] for name in cells.keys()}
 
 
 def h5_of(xdmf):
@@ -67,11 +89,40 @@ def expected(xdmf):
                                                  "part": [r["part"][()].min(), r["part"][()].max()]},
                                 "cell_ranges": {}} for k in range(len(pos))]}
         names = [n for n in f["fields"] if n != "time_s"]
+        if f["fields"][names[0]].ndim == 4:
+            return expected_volume(f["fields"], names)
         nt, ny, nx = f["fields"][names[0]].shape
         return {"kind": "fields", "times": list(f["fields/time_s"][()]), "points": (ny + 1) * (nx + 1),
                 "cells": ny * nx,
                 "frames": [{"cell_ranges": {n: [f["fields"][n][k].min(), f["fields"][n][k].max()] for n in names},
                             "point_ranges": {}} for k in range(nt)]}
+
+
+def expected_volume(fields, names):
+    """A (frames, nz, ny, nx) field series: counts, the box's bounds from the grid's attributes, each
+    frame's ranges and sums of value x cell centre (cell_moments) with their scale for the tolerance."""
+    import numpy as np
+
+    nt, nz, ny, nx = fields[names[0]].shape
+    a = fields.attrs
+    bounds = []
+    for axis, n in (("x", nx), ("y", ny), ("z", nz)):
+        origin = float(a["origin_%s_m" % axis])
+        bounds += [origin, origin + n * float(a["d%s_m" % axis])]
+    centre = [bounds[2 * a] + (np.arange(n) + 0.5) * float(a_d) for a, (n, a_d) in
+              enumerate(((nx, a["dx_m"]), (ny, a["dy_m"]), (nz, a["dz_m"])))]
+    z, y, x = np.meshgrid(centre[2], centre[1], centre[0], indexing="ij")
+    where = np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1)
+    frames = []
+    for k in range(nt):
+        values = {n: fields[n][k].ravel() for n in names}
+        frames.append({"bounds": bounds,
+                       "cell_ranges": {n: [v.min(), v.max()] for n, v in values.items()},
+                       "cell_moments": {n: [list((v[:, None] * where).sum(axis=0)), (abs(v) * abs(where).sum(axis=1)).sum()]
+                                        for n, v in values.items()},
+                       "point_ranges": {}})
+    return {"kind": "volume", "times": list(fields["time_s"][()]), "points": (nz + 1) * (ny + 1) * (nx + 1),
+            "cells": nz * ny * nx, "frames": frames}
 
 
 def close(a, b):
@@ -113,6 +164,11 @@ def check_paraview(pvbatch, files, expect, failures):
                         where, k, got["points"], got["cells"], want["points"], want["cells"]))
                 if "bounds" in frame and not all(map(close, got["bounds"], frame["bounds"])):
                     failures.append("%s frame %d: bounds %s, HDF5 %s" % (where, k, got["bounds"], frame["bounds"]))
+                for name, (moment, scale) in frame.get("cell_moments", {}).items():
+                    have = got["cell_moments"].get(name)
+                    if have is None or max(abs(h - m) for h, m in zip(have, moment)) > 1e-9 * scale:
+                        failures.append("%s frame %d: %s's cells hold other values or sit elsewhere (moment %r, "
+                                        "HDF5 %r)" % (where, k, name, have, moment))
                 for group in ("point_ranges", "cell_ranges"):
                     for name, span in frame[group].items():
                         have = got[group].get(name)
@@ -125,7 +181,7 @@ def check_meshio(files, expect, failures):
     count = 0
     for path in files:
         if expect[path]["kind"] != "mesh":
-            continue  # meshio has no 2D co-rectilinear grids
+            continue  # meshio reads no co-rectilinear grids (2D or 3D)
         count += 1
         try:
             read_with_meshio(path, failures)

@@ -73,6 +73,41 @@ TEST(Fluid3dKind, UpdraftFromAnInflowFloor) {
   EXPECT_LT(r.metrics.at("flux_balance_rel").value, 1e-8);
 }
 
+// stored_fields = "volume": the whole box (frames, nz, ny, nx) in a box of unequal sides, the same steps
+// and series as the plane, and its layer y = ny/2 the plane (columns x, rows z) value for value.
+TEST(Fluid3dKind, VolumeHoldsThePlaneAndTheSameSeries) {
+  const Fluid3dKind kind;
+  Params p = with(kind, {{"cells", std::int64_t(4)}, {"domain_y_m", 0.6}, {"domain_z_m", 0.8},
+                         {"side_z_low", std::string("inflow")}, {"inflow_z_low_m_per_s", 0.02},
+                         {"side_z_high", std::string("open")}, {"side_x_low", std::string("no_slip")},
+                         {"side_x_high", std::string("no_slip")}, {"end_time_s", 0.5}, {"output_interval_s", 0.25},
+                         {"kinematic_viscosity_m2_per_s", 1e-4}});
+  ASSERT_EQ(kind.validate(p), "");
+  const Result plane = kind.run(p);
+  p["stored_fields"] = std::string("volume");
+  const Result volume = kind.run(p);
+  const FieldFrames& v = volume.fields;
+  ASSERT_EQ(std::vector<int>({v.frames(), v.nz, v.ny, v.nx}), std::vector<int>({3, 8, 6, 4}));
+  EXPECT_EQ(v.dz_m, 0.1);
+  for (const auto& [name, series] : plane.timeseries) EXPECT_EQ(series.values, volume.timeseries.at(name).values) << name;
+  EXPECT_EQ(plane.metrics.at("steps").value, volume.metrics.at("steps").value);
+  ASSERT_EQ(plane.fields.fields.size(), v.fields.size());
+  double largest = 0;
+  for (const auto& [name, field] : plane.fields.fields) {
+    const std::vector<double>& all = v.fields.at(name).data;
+    ASSERT_EQ(all.size(), 3u * 8 * 6 * 4) << name;
+    EXPECT_EQ(v.fields.at(name).unit, field.unit);
+    for (int f = 0; f < 3; ++f)
+      for (int k = 0; k < 8; ++k)
+        for (int i = 0; i < 4; ++i) {
+          const double want = field.data[(f * 8 + k) * 4 + i];
+          ASSERT_EQ(all[((f * 8 + k) * 6 + 3) * 4 + i], want) << name << " frame " << f << " k " << k << " i " << i;
+          largest = std::max(largest, std::fabs(want));
+        }
+  }
+  EXPECT_GT(largest, 0.0);
+}
+
 TEST(Fluid3dKind, BadInputIsRefusedInWords) {
   const Fluid3dKind kind;
   Params p = with(kind, periodicTaylorGreen(0));
