@@ -10,6 +10,7 @@ if __package__ in (None, ""):  # run as a script: make `figures` importable
 
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from figures import runs  # noqa: E402
+from figures.fluid3d_fields import plane  # noqa: E402
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
@@ -60,7 +61,7 @@ def draw(run, out):
 
     # (c) Q on the stored plane of the finest grid, last frame.
     finest = points[-1]
-    q = finest["fields/q_per_s2"][-1]
+    q = plane(finest, "q_per_s2")
     dx = float(finest["fields"].attrs.get("dx_m", 1.0))
     extent = [0, q.shape[1] * dx, 0, q.shape[0] * dx]
     lim = float(np.abs(q).max()) or 1.0

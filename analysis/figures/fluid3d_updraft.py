@@ -9,6 +9,7 @@ if __package__ in (None, ""):  # run as a script: make `figures` importable
 
     sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from figures import runs  # noqa: E402
+from figures.fluid3d_fields import plane  # noqa: E402
 import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
@@ -32,14 +33,14 @@ def draw(run, out):
         across, up = _AXES[normal]
         dx = float(f["fields"].attrs.get("dx_m", 1.0))
         t = float(f["fields/time_s"][-1])
-        along = f["fields/" + _COMPONENT[across]][-1]
-        vertical = f["fields/" + _COMPONENT[up]][-1]
+        along = plane(f, _COMPONENT[across])
+        vertical = plane(f, _COMPONENT[up])
         rows, cols = vertical.shape
         extent = [0, cols * dx, 0, rows * dx]
         fig, axes = style.subplots(1, 3, height=4.4)
         panels = [(vertical, f"{up}-velocity (m/s)", "viridis", None),
-                  (f["fields/vorticity_magnitude_per_s"][-1], "|vorticity| (1/s)", "magma", None),
-                  (f["fields/q_per_s2"][-1], "Q (1/s^2)", "RdBu_r", "symmetric")]
+                  (plane(f, "vorticity_magnitude_per_s"), "|vorticity| (1/s)", "magma", None),
+                  (plane(f, "q_per_s2"), "Q (1/s^2)", "RdBu_r", "symmetric")]
         for ax, (field, label, cmap, scale) in zip(axes, panels):
             kw = {}
             if scale == "symmetric":
