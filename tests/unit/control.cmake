@@ -16,3 +16,9 @@ creaturelab_test(control_params_unit_test unit
           ${CMAKE_CURRENT_LIST_DIR}/control_swimmer_run_test.cpp
   LIBS cl_control
 )
+# The controller over the 3-D coupled fluid (control/coupled_fluid3.hpp): determinism across thread
+# counts with one fluid copy per evaluation, the snapshot's grid.
+creaturelab_test(control_fluid3_unit_test unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/control_fluid3_test.cpp
+  LIBS cl_control
+)
