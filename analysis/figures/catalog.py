@@ -165,6 +165,10 @@ FIGURES = [
            "The driven flyer's outer wing joints maximise drag on the down-stroke and minimise it on the "
            "up-stroke, and the flyer's animation closely matches that of many flying creatures (§7.1).",
            "flyer", None, None),
+    Figure("lentine", "Figs. 11-13 (3-D, without flesh)",
+           "The same in the paper's own setting, a 3-D fluid: the controlled outer wing joints (bending, Fig. 13) "
+           "against held ones, the fluid's mean upward force on the flyer over whole flaps (§7.1).",
+           "flyer3d", None, None),
     Figure("lentine", "§4.1 (3-D fluid)",
            "The paper's 3-D creatures move in an incompressible fluid (§4.1, Eqs. 5-8); our 3-D solver of them "
            "converges at second order to the decaying Taylor-Green vortex (Stokes limit), as the 2-D one is checked.",
