@@ -143,14 +143,19 @@ VelocityError3 velocityError(const MacGrid3& g, const ExactFlow3& exact, double 
   return out;
 }
 
-void advanceRecorded(FluidSolver3& solver, double end_s, double interval_s, FluidRecorder3& recorder) {
-  recorder.sample(solver);
+void advanceRecorded(FluidSolver3& solver, double end_s, double interval_s, FluidRecorder3& recorder,
+                     const std::function<void(const FluidSolver3&)>& on_frame) {
+  const auto frame = [&] {
+    recorder.sample(solver);
+    if (on_frame) on_frame(solver);
+  };
+  frame();
   for (int next = 1; solver.time_s() < end_s * (1 - 1e-12);) {
     const double t_out = std::min(end_s, next * interval_s);
     const double dt = std::min(solver.nextTimeStep_s(), t_out - solver.time_s());
     recorder.step(solver.step(dt), solver);
     if (solver.time_s() >= t_out * (1 - 1e-12)) {
-      recorder.sample(solver);
+      frame();
       ++next;
     }
   }

@@ -82,7 +82,9 @@ VelocityError3 velocityError(const MacGrid3& grid, const ExactFlow3& exact, doub
 
 /// Steps `solver` to end_s, each step shortened to land exactly on the next multiple of interval_s,
 /// and samples there; samples the start first. Throws what FluidSolver3::step throws
-/// (FluidBlowUpError3), the recorder holding the frames before it.
-void advanceRecorded(FluidSolver3& solver, double end_s, double interval_s, FluidRecorder3& recorder);
+/// (FluidBlowUpError3), the recorder holding the frames before it. `on_frame`, when given, is
+/// called with the solver at every frame the recorder samples (e.g. to copy out the whole box).
+void advanceRecorded(FluidSolver3& solver, double end_s, double interval_s, FluidRecorder3& recorder,
+                     const std::function<void(const FluidSolver3&)>& on_frame = {});
 
 }  // namespace creaturelab::fluid3d

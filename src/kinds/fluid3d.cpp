@@ -92,23 +92,6 @@ class VolumeFrames {
   fluid3d::FlowObservables3 observables_;
 };
 
-// fluid3d::advanceRecorded's steps and output times, the volume sampled beside the recorder.
-void advanceRecordedVolume(fluid3d::FluidSolver3& solver, double end_s, double interval_s,
-                           fluid3d::FluidRecorder3& recorder, VolumeFrames& volume) {
-  recorder.sample(solver);
-  volume.sample(solver);
-  for (int next = 1; solver.time_s() < end_s * (1 - 1e-12);) {
-    const double t_out = std::min(end_s, next * interval_s);
-    const double dt = std::min(solver.nextTimeStep_s(), t_out - solver.time_s());
-    recorder.step(solver.step(dt), solver);
-    if (solver.time_s() >= t_out * (1 - 1e-12)) {
-      recorder.sample(solver);
-      volume.sample(solver);
-      ++next;
-    }
-  }
-}
-
 // The recorded series, with the recorder's plane or the volume (moved out) as the fields.
 Result recorded(const fluid3d::FluidRecorder3& recorder, const fluid3d::MacGrid3& g, VolumeFrames* volume) {
   Result result = recorded(recorder, g);
@@ -216,8 +199,10 @@ Result Fluid3dKind::run(const Params& p) const {
   if (q.stored_fields == "volume") volume.emplace(solver.grid(), outputFrames(q));
   VolumeFrames* stored = volume ? &*volume : nullptr;
   try {
-    if (stored) advanceRecordedVolume(solver, q.end_time_s, q.output_interval_s, recorder, *stored);
-    else fluid3d::advanceRecorded(solver, q.end_time_s, q.output_interval_s, recorder);
+    fluid3d::advanceRecorded(solver, q.end_time_s, q.output_interval_s, recorder,
+                             [stored](const fluid3d::FluidSolver3& s) {
+                               if (stored) stored->sample(s);
+                             });
   } catch (const fluid3d::FluidBlowUpError3& e) {
     throw RunFailure(e.what(), recorded(recorder, solver.grid(), stored));
   }
