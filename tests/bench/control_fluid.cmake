@@ -3,3 +3,6 @@
 # swimmer (swimmer.toml).
 creaturelab_bench(bench_control_fluid SOURCES ${CMAKE_CURRENT_LIST_DIR}/bench_control_fluid.cpp LIBS cl_control)
 target_compile_definitions(bench_control_fluid PRIVATE CREATURELAB_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+# The driven flyer in the 3-D fluid (flyer3d.toml's setting) against Fig. 14's 3.2 s per frame.
+creaturelab_bench(bench_control_fluid3d SOURCES ${CMAKE_CURRENT_LIST_DIR}/bench_control_fluid3d.cpp LIBS cl_kinds cl_control)
+target_compile_definitions(bench_control_fluid3d PRIVATE CREATURELAB_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
