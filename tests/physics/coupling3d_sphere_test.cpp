@@ -167,8 +167,8 @@ double effectiveRadius_m(double K_measured, double radius_m) {
 
 // The cheap grid of the drag check: 16³ cells, a = 4 cells (c = 0.065), steps of 1 s (ν dt / dx² = 256:
 // each step is nearly the steady Stokes solve, the forces solved through it), until U changes by less
-// than 1e-4 per step. On finer grids (study in the commit message) the offset stays about half a cell
-// and K converges to the reference at first order.
+// than 1e-4 per step. Refined at a = L/4 (study in the commit message) the offset stays near 0.8 cells
+// and K converges to the reference at first order in dx.
 ArrayDrag cheapArrayDrag(const std::filesystem::path& dir, Forcing3 forcing) {
   return arrayDrag(dir, 16, 0.25, 1.0, 1e-4, 30, forcing, true, 0.5, 1e-6, RigidFluidParams3{}.forcing_regularisation);
 }
