@@ -28,6 +28,7 @@ SCRIPTS = {
     "charlotte": ["charlotte_sheet.py"],
     "control": ["plot_control.py"],
     "control_fluid": ["plot_control_fluid.py", "plot_flyer.py"],
+    "control_fluid3d": ["plot_flyer.py"],
     "fish": ["plot_fish.py"],
 }
 

@@ -39,7 +39,13 @@ def is_flyer(f):
 
 
 def resolution(f):
-    return f"{int(f.attrs['cells'])}^2, {int(f.attrs['substeps'])} steps/frame, {text(f, 'advection')}"
+    n = int(f.attrs["cells"])
+    if "domain_y_m" in f.attrs:  # the 3-D box: cells along x, the other axes in the box's proportions
+        dx = float(f.attrs["domain_x_m"]) / n
+        grid = "x".join(str(round(float(f.attrs[f"domain_{a}_m"]) / dx)) for a in "xyz") + " cells"
+    else:
+        grid = f"{n}^2"
+    return f"{grid}, {int(f.attrs['substeps'])} steps/frame, {text(f, 'advection')}"
 
 
 def angles_figure(points, png):
