@@ -17,8 +17,9 @@ creaturelab_test(control_params_unit_test unit
   LIBS cl_control
 )
 # The controller over the 3-D coupled fluid (control/coupled_fluid3.hpp): determinism across thread
-# counts with one fluid copy per evaluation, the snapshot's grid.
-creaturelab_test(control_fluid3_unit_test unit
+# counts with one fluid copy per evaluation, the snapshot's grid. Seconds of coupled 3-D steps, so
+# labelled physics: Release only (the sanitizer tree's -O0 control library makes it 20 s).
+creaturelab_test(control_fluid3_unit_test physics
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/control_fluid3_test.cpp
   LIBS cl_control
 )
