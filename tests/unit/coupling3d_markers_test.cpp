@@ -81,8 +81,12 @@ TEST_F(SurfaceMarkers3Test, InteriorMarkersFillTheInside) {
     EXPECT_EQ(k.area_m2, 0.0);
     EXPECT_NEAR(k.volume_m3, h * h * h, 1e-18);
     volume[k.geom] += k.volume_m3;
-    if (k.geom == 1) EXPECT_LE(std::hypot(k.local_m[0], k.local_m[1], k.local_m[2]), 0.1 - margin + 1e-12);
-    if (k.geom == 0) EXPECT_LE(std::abs(k.local_m[2]), 0.05 - margin + 1e-12);
+    if (k.geom == 1) {
+      EXPECT_LE(std::hypot(k.local_m[0], k.local_m[1], k.local_m[2]), 0.1 - margin + 1e-12);
+    }
+    if (k.geom == 0) {
+      EXPECT_LE(std::abs(k.local_m[2]), 0.05 - margin + 1e-12);
+    }
   }
   // The lattice counts the inner box (0.09 × 0.19 × 0.04 half sizes: 19 × 39 × 9 points) exactly and the
   // inner ball (radius 0.09) to within the lattice's resolution; the thin capsule (radius under the margin) has none.
