@@ -67,6 +67,8 @@ creaturelab_cli_test(jellyfish_resonance_checks_fail TIMEOUT 600 COST 1000)
 creaturelab_cli_test(jellyfish_paper_checks_fail TIMEOUT 600)
 # the paper model's "unison still swims" (Fig. 4) FAILs with its muscles held at rest length; 19 s CPU
 creaturelab_cli_test(jellyfish_paper_stagger_checks_fail TIMEOUT 600)
+# the Reynolds study's checks (the bell alone's speed falls with Re, collapses below Re ~ 10) FAIL with the muscles off; 22 s CPU
+creaturelab_cli_test(jellyfish_reynolds_checks_fail TIMEOUT 600)
 # the fluid3d kind on 8^3: --jobs and threads determinism, the plane of fields and its XDMF, exit 2 and 3; 2.4 s CPU
 creaturelab_cli_test(fluid3d)
 # the 3-D Taylor-Green claim's convergence checks FAIL with backward Euler in place of Crank-Nicolson or no viscosity; 7.4 s CPU
