@@ -2,13 +2,16 @@
 
 #include <numbers>
 
+#include "control/coupled_fluid3.hpp"
+
 namespace creaturelab::control {
 namespace {
 constexpr double kRun3Deg = 180.0 / std::numbers::pi;
 }  // namespace
 
-FluidRunRecorder3::FluidRunRecorder3(const rigid::RigidModel& model, const ControllerParams& p)
-    : common_(series_, p.controlled) {
+FluidRunRecorder3::FluidRunRecorder3(const rigid::RigidModel& model, const ControllerParams& p,
+                                     FluidRecording3 recording)
+    : common_(series_, p.controlled), recording_(recording) {
   for (const auto& j : p.controlled) {
     angle_.push_back(&series_.add("angle_deg_" + j, "deg"));
     target_.push_back(&series_.add("target_deg_" + j, "deg"));
@@ -22,6 +25,12 @@ FluidRunRecorder3::FluidRunRecorder3(const rigid::RigidModel& model, const Contr
   for (const auto& j : p.pd_driven) {
     pd_angle_.push_back(&series_.add("pd_angle_deg_" + j, "deg"));
     pd_qpos_.push_back(model.joint(model.findJoint(j)).qpos);
+  }
+  for (int g = 0; g < model.geoms(); ++g) {
+    geoms_.type.push_back(model.geomType(g));
+    geoms_.body.push_back(model.geomBody(g));
+    const Vec3 size = model.geomSize(g);
+    geoms_.size_m.insert(geoms_.size_m.end(), size.begin(), size.end());
   }
 }
 
@@ -39,6 +48,46 @@ void FluidRunRecorder3::record(const FrameRecord& fr, FluidController& controlle
   body_fz_->push_back(f[2]);
   for (std::size_t k = 0; k < pd_angle_.size(); ++k)
     pd_angle_[k]->push_back(controller.data().qpos()[pd_qpos_[k]] * kRun3Deg);
+  const long frame = long(geoms_.time_s.size());
+  recordGeoms(fr.time_s, controller.data());
+  if (recording_.stored != StoredFields3::none && frame % recording_.field_every == 0) recordFluid(fr.time_s, controller);
+}
+
+void FluidRunRecorder3::recordGeoms(double time_s, const rigid::RigidData& data) {
+  geoms_.time_s.push_back(time_s);
+  for (int g = 0; g < geoms_.geoms(); ++g) {
+    const double* x = data.geomPosition(g);
+    const double* r = data.geomRotation(g);
+    geoms_.position_m.insert(geoms_.position_m.end(), x, x + 3);
+    geoms_.rotation.insert(geoms_.rotation.end(), r, r + 9);
+  }
+}
+
+void FluidRunRecorder3::recordFluid(double time_s, const FluidController& controller) {
+  const auto& grid = dynamic_cast<const CoupledFluid3&>(controller.coupledFluid()).coupling().fluid().grid();
+  observables_.update(grid);
+  const fluid3d::Array3* arrays[] = {&observables_.cellVelocity_m_per_s(0), &observables_.cellVelocity_m_per_s(1),
+                                     &observables_.cellVelocity_m_per_s(2), &grid.pressure_pa,
+                                     &observables_.vorticityMagnitude_per_s(), &observables_.q_per_s2()};
+  if (fluid_.fields.empty()) {
+    fluid_.n = {grid.n[0], grid.n[1], grid.n[2]};
+    fluid_.dx_m = grid.dx_m;
+    if (recording_.stored == StoredFields3::plane) fluid_.plane_layer = grid.n[1] / 2;
+    fluid_.fields = {{"u_m_per_s", "m/s", {}},      {"v_m_per_s", "m/s", {}},
+                     {"w_m_per_s", "m/s", {}},      {"pressure_pa", "Pa", {}},
+                     {"vorticity_magnitude_per_s", "1/s", {}}, {"q_per_s2", "1/s^2", {}}};
+  }
+  fluid_.time_s.push_back(time_s);
+  for (std::size_t f = 0; f < fluid_.fields.size(); ++f) {
+    std::vector<double>& out = fluid_.fields[f].values;
+    const fluid3d::Array3& a = *arrays[f];
+    if (fluid_.plane_layer < 0) {
+      out.insert(out.end(), a.data(), a.data() + a.size());
+      continue;
+    }
+    for (int k = 0; k < fluid_.n[2]; ++k)
+      for (int i = 0; i < fluid_.n[0]; ++i) out.push_back(a(i, fluid_.plane_layer, k));
+  }
 }
 
 std::vector<NamedValue> FluidRunRecorder3::measure(int frames_per_cycle, int force_cycles, int markers,
