@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "control/fluid_controller.hpp"
+#include "control/fluid_run3.hpp"
 #include "coupling3d/rigid_fluid_coupling3.hpp"
 #include "fluid3d/fluid_params3.hpp"
 #include "kinds/control_params.hpp"
@@ -78,6 +79,8 @@ struct ControlFluid3dParams {
   double controlled_limit_deg = 90;
   fluid3d::FluidParams3 fluid = flyer3dFluid();
   coupling3d::RigidFluidParams3 coupling = flyer3dCoupling();
+  std::string stored_fields = "none";
+  std::int64_t field_every = 10;
 
   template <class V>
   void describe(V& v) {
@@ -104,6 +107,15 @@ struct ControlFluid3dParams {
            "controlled angles kept within +-this (0: no limit; the paper gives none)");
     describeFluid(v);
     describeCoupling(v);
+    describeRecording(v);
+  }
+  // What the run stores for renders beside every geom's pose per frame (always).
+  template <class V>
+  void describeRecording(V& v) {
+    v.choice("stored_fields", stored_fields, {"none", "plane", "volume"},
+             "fluid fields stored every field_every frames, cell-centred u, v, w, pressure, |vorticity| and Q: none, "
+             "the centre plane normal to y (frames, nz, nx), or the whole box (frames, nz, ny, nx: 48 B per cell)");
+    v.integer("field_every", field_every, 1, 1000000, "frames between stored fields (the first after frame 1)");
   }
   // The fluid (src/fluid3d): a box of cubic cells, z up.
   template <class V>
@@ -151,6 +163,7 @@ struct ControlFluid3dParams {
   // (frame_s / substeps); the coupling; the evaluations'.
   fluid3d::FluidParams3 fluidParams() const;
   control::FluidControlParams fluidControlParams() const;
+  control::FluidRecording3 recording() const;
   std::vector<std::pair<std::string, double>> initialRad() const;
   // Ranges, then against the model: the controller, the fluid and coupling, the bodies inside the box,
   // the flap cycles within frames.
