@@ -9,6 +9,39 @@
 namespace creaturelab::kinds {
 namespace {
 constexpr double kDeg3 = 180.0 / std::numbers::pi;
+
+// Every geom's pose per frame as /lagrangian tracks (its size too: /topology holds integers only) and
+// its type and body as /topology; the stored fluid frames as /fields, placed in the world.
+void addRecorded(Result& result, const control::FluidRunRecorder3& recorder, const std::array<double, 3>& origin_m) {
+  const control::GeomPoses3& g = recorder.geoms();
+  result.topology["geom_type"] = g.type;
+  result.topology["geom_body"] = g.body;
+  const auto track = [&](const std::string& name, std::vector<double> data, int dim, const std::string& unit) {
+    Tracks& t = result.lagrangian[name];
+    t.time_s = g.time_s, t.data = std::move(data), t.points = g.geoms(), t.dim = dim, t.unit = unit;
+  };
+  track("geom_position_m", g.position_m, 3, "m");
+  track("geom_rotation", g.rotation, 9, "");
+  std::vector<double> size;
+  for (std::size_t f = 0; f < g.time_s.size(); ++f) size.insert(size.end(), g.size_m.begin(), g.size_m.end());
+  track("geom_size_m", std::move(size), 3, "m");
+  const control::FluidFrames3& fluid = recorder.fluid();
+  if (fluid.time_s.empty()) return;
+  FieldFrames& out = result.fields;
+  out.time_s = fluid.time_s;
+  out.dx_m = out.dy_m = fluid.dx_m;
+  out.nx = fluid.n[0];
+  out.origin_x_m = origin_m[0];
+  if (fluid.plane_layer >= 0) {  // rows along z
+    out.ny = fluid.n[2];
+    out.origin_y_m = origin_m[2];
+  } else {
+    out.ny = fluid.n[1], out.nz = fluid.n[2];
+    out.dz_m = fluid.dx_m;
+    out.origin_y_m = origin_m[1], out.origin_z_m = origin_m[2];
+  }
+  for (const auto& f : fluid.fields) out.fields[f.name] = {f.values, f.unit};
+}
 }  // namespace
 
 ControlFluid3dKind::ControlFluid3dKind() {
@@ -46,6 +79,15 @@ control::FluidControlParams ControlFluid3dParams::fluidControlParams() const {
   f.stroke = parseStrokeSense(stroke_sense, splitList(controller.controlled, ','));
   f.planar_fluid = false;
   return f;
+}
+
+control::FluidRecording3 ControlFluid3dParams::recording() const {
+  control::FluidRecording3 r;
+  r.stored = stored_fields == "volume"  ? control::StoredFields3::volume
+             : stored_fields == "plane" ? control::StoredFields3::plane
+                                        : control::StoredFields3::none;
+  r.field_every = int(field_every);
+  return r;
 }
 
 std::vector<std::pair<std::string, double>> ControlFluid3dParams::initialRad() const {
@@ -91,7 +133,10 @@ CostEstimate ControlFluid3dKind::estimateCost(const Params& params) const {
     const double per_frame = double(k.substeps) * (1 + 2 * joints) + 2 * joints * double(q.settle_steps);
     c.steps = double(k.frames) * per_frame + double(q.warmup_frames * k.substeps);
     const double cells = double(f.cells_x) * f.cells_y * f.cells_z;
-    c.memory_bytes = 64.0 * (1 << 20) + (1 + 2 * joints) * cells * 8 * 24;
+    // Stored fields: 6 x 8 B per cell (volume) or per cell of the y plane, every field_every frames.
+    const double stored = q.stored_fields == "volume" ? cells : q.stored_fields == "plane" ? cells / f.cells_y : 0;
+    const double stored_frames = std::ceil(double(k.frames) / double(q.field_every));
+    c.memory_bytes = 64.0 * (1 << 20) + (1 + 2 * joints) * cells * 8 * 24 + stored * 48 * stored_frames;
     c.detail = std::to_string(k.frames) + " frames x " + std::to_string(int(per_frame)) + " coupled steps";
     return c;
   } catch (const std::exception&) {
@@ -106,7 +151,7 @@ Result ControlFluid3dKind::run(const Params& params) const {
   const control::ControllerParams p = k.controllerParams();
   control::FluidController controller(model, p, q.fluidControlParams(), q.initialRad(),
                                       control::spatialFluid(q.fluidParams(), q.coupling));
-  control::FluidRunRecorder3 recorder(model, p);
+  control::FluidRunRecorder3 recorder(model, p, q.recording());
   const auto& fluid3 = dynamic_cast<const control::CoupledFluid3&>(controller.coupledFluid());
   Result result;
   try {
@@ -114,9 +159,11 @@ Result ControlFluid3dKind::run(const Params& params) const {
     for (long f = 0; f < k.frames; ++f) recorder.record(controller.frame(), controller);
   } catch (const std::exception& e) {
     addSeries(result, recorder.series());
+    addRecorded(result, recorder, q.coupling.origin_m);
     throw RunFailure("control_fluid3d at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what(), result);
   }
   addSeries(result, recorder.series());
+  addRecorded(result, recorder, q.coupling.origin_m);
   addMetrics(result, recorder.measure(framesPerCycle(q.flap_period_s, k.frame_s), int(q.force_cycles),
                                       int(fluid3.coupling().markers().size()), controller.maxForcingIterations()));
   return result;
