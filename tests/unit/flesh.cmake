@@ -7,3 +7,9 @@ creaturelab_test(flesh_unit_test unit
     ${CMAKE_CURRENT_LIST_DIR}/flesh_export_test.cpp
   LIBS cl_flesh cl_render
 )
+# The flesh as the 3-D fluid's boundary (coupling3d/flesh_fluid_coupling3.hpp): momentum of fluid, flesh
+# and bone, energy in a still fluid, bitwise snapshots, bad input. About 2 s of CPU in all.
+creaturelab_test(flesh_fluid_unit_test unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/flesh_fluid_test.cpp
+  LIBS cl_coupling3d cl_flesh
+)
