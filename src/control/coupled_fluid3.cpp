@@ -3,18 +3,17 @@
 namespace creaturelab::control {
 namespace {
 struct FluidSnapshot3 final : FluidSnapshot {
-  fluid3d::MacGrid3 grid;
+  coupling3d::CouplingState3 state;
 };
 }  // namespace
 
 void CoupledFluid3::save(std::unique_ptr<FluidSnapshot>& s) const {
   if (!dynamic_cast<FluidSnapshot3*>(s.get())) s = std::make_unique<FluidSnapshot3>();
-  static_cast<FluidSnapshot3&>(*s).grid = c_.fluid().grid();
+  c_.save(static_cast<FluidSnapshot3&>(*s).state);
 }
 
-void CoupledFluid3::restore(const FluidSnapshot& s, const rigid::RigidData& data) {
-  c_.fluid().grid() = dynamic_cast<const FluidSnapshot3&>(s).grid;
-  c_.placeMarkers(data);
+void CoupledFluid3::restore(const FluidSnapshot& s, const rigid::RigidData&) {
+  c_.restore(dynamic_cast<const FluidSnapshot3&>(s).state);
 }
 
 CoupledFluidFactory spatialFluid(const fluid3d::FluidParams3& fluid, const coupling3d::RigidFluidParams3& p) {

@@ -1,9 +1,9 @@
 #pragma once
 // The 3-D fluid as the controller's coupled fluid (coupled_fluid.hpp): coupling3d's
 // RigidFluidCoupling3 (projected direct forcing on surface markers; its forceFluid projects).
-// A snapshot holds the fluid's grid (velocity and pressure); restore places the markers at the
-// restored pose. The last step's reaction and the forcing's warm start are the coupling's own and
-// not restored (exactSnapshot false): the controller then keeps one copy per derivative evaluation.
+// A snapshot holds everything the coupling's next step reads (coupling3d::CouplingState3: the fluid's
+// grid, the markers' positions, the forcing's warm start, the last reaction), so restore is exact and
+// the controller keeps one copy per evaluation thread.
 #include "control/coupled_fluid.hpp"
 #include "coupling3d/rigid_fluid_coupling3.hpp"
 
@@ -22,7 +22,7 @@ class CoupledFluid3 final : public CoupledFluid {
   void placeMarkers(const rigid::RigidData& data) override { c_.placeMarkers(data); }
   void save(std::unique_ptr<FluidSnapshot>& s) const override;
   void restore(const FluidSnapshot& s, const rigid::RigidData& data) override;
-  bool exactSnapshot() const override { return false; }
+  bool exactSnapshot() const override { return true; }
   const coupling3d::RigidFluidCoupling3& coupling() const { return c_; }
 
  private:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 namespace creaturelab::coupling3d {
@@ -18,10 +19,18 @@ std::string RigidFluidParams3::validate(const fluid3d::FluidParams3& fluid) cons
     if (!std::isfinite(x)) return "origin_m must be a finite point";
   if (!(max_marker_cells_per_step > 0 && max_marker_cells_per_step <= 2))
     return "max_marker_cells_per_step must be in (0, 2]";
+  for (const Mouth3& m : mouths) {
+    if (m.geom < 0) return "a mouth needs the geom that carries it";
+    if (!(m.radius_m > 0 && std::isfinite(m.radius_m))) return "a mouth's radius_m must be positive";
+    const double n = std::hypot(m.normal_geom[0], m.normal_geom[1], m.normal_geom[2]);
+    if (!(n > 0 && std::isfinite(n))) return "a mouth's normal_geom must be a nonzero direction";
+  }
   return "";
 }
 
 namespace {
+
+constexpr double kPi = std::numbers::pi;
 
 const fluid3d::FluidParams3& checked(const RigidFluidParams3& p, const fluid3d::FluidParams3& f) {
   if (auto e = p.validate(f); !e.empty()) throw std::invalid_argument("coupling3d: " + e);
@@ -47,6 +56,43 @@ double dot(const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
   return s;
 }
 
+// A disc of markers (mouth m) in its geom's frame: a centre marker and rings about it, no two neighbours
+// farther apart than spacing_m, their areas summing to the disc's.
+std::vector<SurfaceMarker3> mouthMarkers(const rigid::RigidModel& model, const Mouth3& m, double spacing_m) {
+  if (m.geom >= model.geoms())
+    throw std::invalid_argument("coupling3d: a mouth's geom " + std::to_string(m.geom) + " is not in the model " + model.path());
+  const double len = std::hypot(m.normal_geom[0], m.normal_geom[1], m.normal_geom[2]);
+  const Vec3 n{m.normal_geom[0] / len, m.normal_geom[1] / len, m.normal_geom[2] / len};
+  // Two tangents: n × (the axis least along n), and n × t1.
+  Vec3 e{0.0, 0.0, 0.0};
+  e[std::abs(n[0]) <= std::abs(n[1]) && std::abs(n[0]) <= std::abs(n[2]) ? 0 : std::abs(n[1]) <= std::abs(n[2]) ? 1 : 2] = 1;
+  Vec3 t1{n[1] * e[2] - n[2] * e[1], n[2] * e[0] - n[0] * e[2], n[0] * e[1] - n[1] * e[0]};
+  const double l1 = std::hypot(t1[0], t1[1], t1[2]);
+  for (double& x : t1) x /= l1;
+  const Vec3 t2{n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
+  // Ring i (1..rings) at radius i w stands for the annulus (i − ½) w..(i + ½) w, the centre marker for
+  // the disc of radius w/2; w = radius / (rings + ½), so the last annulus ends at the rim.
+  const int rings = std::max(1, static_cast<int>(std::ceil(m.radius_m / spacing_m - 0.5 - 1e-12)));
+  const double w = m.radius_m / (rings + 0.5);
+  std::vector<SurfaceMarker3> out;
+  SurfaceMarker3 mk;
+  mk.geom = m.geom;
+  mk.body = model.geomBody(m.geom);
+  for (int i = 0; i <= rings; ++i) {
+    const double r = i * w;
+    const int count = i == 0 ? 1 : static_cast<int>(std::ceil(2.0 * kPi * r / spacing_m - 1e-12));
+    const double outer = (i + 0.5) * w, inner = i == 0 ? 0.0 : (i - 0.5) * w;
+    for (int c = 0; c < count; ++c) {
+      const double a = 2.0 * kPi * c / count;
+      for (int d = 0; d < 3; ++d)
+        mk.local_m[d] = m.centre_geom_m[d] + r * (std::cos(a) * t1[d] + std::sin(a) * t2[d]);
+      mk.area_m2 = kPi * (outer * outer - inner * inner) / count;
+      out.push_back(mk);
+    }
+  }
+  return out;
+}
+
 double maxAbs(const std::vector<Vec3>& x) {
   double m = 0.0;
   for (const Vec3& v : x) m = std::max({m, std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
@@ -57,7 +103,7 @@ double maxAbs(const std::vector<Vec3>& x) {
 
 RigidFluidCoupling3::RigidFluidCoupling3(const rigid::RigidData& data, const fluid3d::FluidParams3& f,
                                          const RigidFluidParams3& p)
-    : p_(p), fluid_(checked(p, f)) {
+    : p_(p), fluid_(checked(p, f)), mobility_(data.model(), p.held_joints) {
   const fluid3d::MacGrid3& g = fluid_.grid();
   markers_ = modelSurfaceMarkers(data.model(), p_.marker_spacing_cells * g.dx_m);
   if (p_.interior_markers) {
@@ -66,6 +112,13 @@ RigidFluidCoupling3::RigidFluidCoupling3(const rigid::RigidData& data, const flu
     const std::vector<SurfaceMarker3> inside = interiorMarkers(data.model(), g.dx_m, margin);
     markers_.insert(markers_.end(), inside.begin(), inside.end());
   }
+  mouth_of_.assign(markers_.size(), -1);
+  for (std::size_t m = 0; m < p_.mouths.size(); ++m) {
+    const std::vector<SurfaceMarker3> disc = mouthMarkers(data.model(), p_.mouths[m], p_.marker_spacing_cells * g.dx_m);
+    markers_.insert(markers_.end(), disc.begin(), disc.end());
+    mouth_of_.resize(markers_.size(), static_cast<int>(m));
+  }
+  mouth_flux_m_per_s_.assign(p_.mouths.size(), 0.0);
   mass_.resize(markers_.size());
   for (std::size_t k = 0; k < markers_.size(); ++k)
     mass_[k] = f.density_kg_per_m3 * (markers_[k].area_m2 * g.dx_m + markers_[k].volume_m3);
@@ -118,17 +171,68 @@ void RigidFluidCoupling3::respond(fluid3d::FaceField3& velocity, double dt) {
 }
 
 void RigidFluidCoupling3::forceFluid(const rigid::RigidData& data, double dt) {
+  if (p_.forcing == Forcing3::coupled)
+    throw std::logic_error("coupling3d: the coupled forcing changes the bodies' velocities: pass them as non-const");
+  force(data, dt);
+}
+
+void RigidFluidCoupling3::forceFluid(rigid::RigidData& data, double dt) {
+  if (p_.forcing != Forcing3::coupled) {
+    force(data, dt);
+    return;
+  }
+  mobility_.update(data);
+  force(data, dt);
+  // The impulse −dt J_bᵀ F the solve gave each body, on its velocities and (as MuJoCo's Euler step would
+  // have with it) its positions; the markers' next displacement starts from there.
+  mobility_.velocityChange(body_force_n_, body_torque_n_m_, dt, dv_);
+  mobility_.apply(data, dv_, dt);
+  place(data, previous_);
+}
+
+void RigidFluidCoupling3::setMouthFlux(std::size_t mouth, double flux_m_per_s) {
+  if (mouth >= mouth_flux_m_per_s_.size())
+    throw std::invalid_argument("coupling3d: mouth " + std::to_string(mouth) + " of " +
+                                std::to_string(mouth_flux_m_per_s_.size()));
+  if (!std::isfinite(flux_m_per_s)) throw std::invalid_argument("coupling3d: a mouth's flux must be finite");
+  mouth_flux_m_per_s_[mouth] = flux_m_per_s;
+}
+
+// The markers' velocity V (m/s): their displacement over the step, or with the coupled forcing the
+// bodies' velocity at data's state (the solid's v* before the fluid's impulse); a mouth's adds its flux.
+void RigidFluidCoupling3::markerVelocities(const rigid::RigidData& data, double dt) {
+  const std::size_t n = markers_.size();
+  velocity_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const int b = markers_[k].body;
+    if (p_.forcing == Forcing3::coupled) {
+      velocity_[k] = b == 0 ? Vec3{} : data.pointVelocity(b, {current_[k][0] + p_.origin_m[0], current_[k][1] + p_.origin_m[1],
+                                                             current_[k][2] + p_.origin_m[2]});
+    } else {
+      for (int a = 0; a < 3; ++a) velocity_[k][a] = (current_[k][a] - previous_[k][a]) / dt;
+    }
+    const int m = mouth_of_[k];
+    if (m < 0) continue;
+    const Mouth3& mouth = p_.mouths[static_cast<std::size_t>(m)];
+    const double* R = data.geomRotation(mouth.geom);  // row-major, columns the geom's axes
+    const double len = std::hypot(mouth.normal_geom[0], mouth.normal_geom[1], mouth.normal_geom[2]);
+    for (int a = 0; a < 3; ++a) {
+      const double nw = R[3 * a] * mouth.normal_geom[0] + R[3 * a + 1] * mouth.normal_geom[1] + R[3 * a + 2] * mouth.normal_geom[2];
+      velocity_[k][a] += mouth_flux_m_per_s_[static_cast<std::size_t>(m)] * nw / len;
+    }
+  }
+}
+
+void RigidFluidCoupling3::force(const rigid::RigidData& data, double dt) {
   if (!(dt > 0 && std::isfinite(dt))) throw std::invalid_argument("coupling3d: the time step must be positive");
   const double dx = fluid_.grid().dx_m;
   const std::size_t n = markers_.size();
   place(data, current_);
-  velocity_.resize(n);
   cells_per_step_ = 0.0;
   for (std::size_t k = 0; k < n; ++k) {
     double d2 = 0.0;
     for (int a = 0; a < 3; ++a) {
       const double d = current_[k][a] - previous_[k][a];
-      velocity_[k][a] = d / dt;
       d2 += d * d;
     }
     cells_per_step_ = std::max(cells_per_step_, std::sqrt(d2) / dx);
@@ -144,8 +248,9 @@ void RigidFluidCoupling3::forceFluid(const rigid::RigidData& data, double dt) {
     throw CouplingError3(std::string("coupling3d: a body left the fluid box (or came within the kernel's reach of a "
                                      "wall): ") + e.what());
   }
+  markerVelocities(data, dt);
   std::swap(previous_, current_);
-  if (p_.forcing == Forcing3::projected) {
+  if (p_.forcing != Forcing3::off) {
     projectedForcing(dt);
   } else {
     std::fill(force_.begin(), force_.end(), Vec3{});
@@ -164,6 +269,48 @@ void RigidFluidCoupling3::forceFluid(const rigid::RigidData& data, double dt) {
                                      std::to_string(speed) + " m/s");
 }
 
+// With the coupled forcing, the velocity change of the markers that forces f (N) on them cause through
+// the bodies within the step: out_k = J_k dt A⁻¹ Σ_b J_bᵀ (Σ f, Σ r × f) (solid_mobility3.hpp), r from the
+// body's centre of mass to the marker; zero on the world body's and the held bodies' markers.
+void RigidFluidCoupling3::solidResponse(const std::vector<Vec3>& f, std::vector<Vec3>& out, double dt) {
+  const std::size_t nb = body_force_n_.size();
+  wrench_force_.assign(nb, Vec3{});
+  wrench_torque_.assign(nb, Vec3{});
+  for (std::size_t k = 0; k < markers_.size(); ++k) {
+    const int b = markers_[k].body;
+    if (b == 0) continue;
+    const Vec3 r = markerArm(k);
+    Vec3& F = wrench_force_[static_cast<std::size_t>(b)];
+    Vec3& T = wrench_torque_[static_cast<std::size_t>(b)];
+    for (int a = 0; a < 3; ++a) F[a] += f[k][a];
+    T[0] += r[1] * f[k][2] - r[2] * f[k][1];
+    T[1] += r[2] * f[k][0] - r[0] * f[k][2];
+    T[2] += r[0] * f[k][1] - r[1] * f[k][0];
+  }
+  mobility_.velocityChange(wrench_force_, wrench_torque_, dt, dv_);
+  body_linear_.assign(nb, Vec3{});
+  body_angular_.assign(nb, Vec3{});
+  for (std::size_t b = 1; b < nb; ++b) mobility_.bodyVelocity(static_cast<int>(b), dv_, body_linear_[b], body_angular_[b]);
+  out.resize(markers_.size());
+  for (std::size_t k = 0; k < markers_.size(); ++k) {
+    const int b = markers_[k].body;
+    if (b == 0) {
+      out[k] = Vec3{};
+      continue;
+    }
+    const Vec3 r = markerArm(k);
+    const Vec3& v = body_linear_[static_cast<std::size_t>(b)];
+    const Vec3& w = body_angular_[static_cast<std::size_t>(b)];
+    out[k] = {v[0] + w[1] * r[2] - w[2] * r[1], v[1] + w[2] * r[0] - w[0] * r[2], v[2] + w[0] * r[1] - w[1] * r[0]};
+  }
+}
+
+Vec3 RigidFluidCoupling3::markerArm(std::size_t k) const {
+  const Vec3& c = mobility_.bodyPoint_m(markers_[k].body);
+  return {previous_[k][0] + p_.origin_m[0] - c[0], previous_[k][1] + p_.origin_m[1] - c[1],
+          previous_[k][2] + p_.origin_m[2] - c[2]};
+}
+
 // The marker forces F (N) for which the projected velocity meets the markers' velocity V,
 //   I P (u~ + dt/ρ S F) = V,
 // by conjugate gradients on A F = I P S F dt/ρ + ε D F = V − I P u~ (A symmetric positive
@@ -172,6 +319,8 @@ void RigidFluidCoupling3::forceFluid(const rigid::RigidData& data, double dt) {
 // the fluid cannot feel; the equation holds for the total F, so the warm start's share is damped too.
 // Warm start: the last step's forces (a steady flow needs the same ones again), spread before the
 // first projection, which therefore costs nothing extra.
+// Forcing3::coupled adds the bodies' answer within the step, dt J A⁻¹ Jᵀ F (solidResponse), to A: the
+// markers' velocity is then the bodies' v* less what the forces take from them (Eq. 9, header).
 void RigidFluidCoupling3::projectedForcing(double dt) {
   fluid3d::MacGrid3& g = fluid_.grid();
   const double rho = fluid_.params().density_kg_per_m3;
@@ -197,6 +346,12 @@ void RigidFluidCoupling3::projectedForcing(double dt) {
   for (std::size_t k = 0; k < n; ++k)
     for (int a = 0; a < 3; ++a)
       residual_[k][a] = velocity_[k][a] - residual_[k][a] - eps * mobility * dt / mass_[k] * force_[k][a];
+  const bool coupled = p_.forcing == Forcing3::coupled;
+  if (coupled) {
+    solidResponse(force_, solid_, dt);
+    for (std::size_t k = 0; k < n; ++k)
+      for (int a = 0; a < 3; ++a) residual_[k][a] -= solid_[k][a];
+  }
   z_.resize(n);
   direction_.resize(n);
   applied_.resize(n);
@@ -223,6 +378,11 @@ void RigidFluidCoupling3::projectedForcing(double dt) {
     transfer_.interpolate(spread_, applied_);
     for (std::size_t k = 0; k < n; ++k)
       for (int a = 0; a < 3; ++a) applied_[k][a] += eps * mobility * dt / mass_[k] * direction_[k][a];
+    if (coupled) {
+      solidResponse(direction_, solid_, dt);
+      for (std::size_t k = 0; k < n; ++k)
+        for (int a = 0; a < 3; ++a) applied_[k][a] += solid_[k][a];
+    }
     const double pap = dot(direction_, applied_);
     if (!(pap > 0)) break;
     const double alpha = rz / pap;
@@ -265,8 +425,34 @@ void RigidFluidCoupling3::reaction(const rigid::RigidData& data) {
 }
 
 void RigidFluidCoupling3::applyReaction(rigid::RigidData& data) const {
+  if (p_.forcing == Forcing3::coupled) return;
   for (std::size_t b = 1; b < body_force_n_.size(); ++b)
     data.applyWrenchAt(static_cast<int>(b), body_force_n_[b], body_torque_n_m_[b], body_point_m_[b]);
+}
+
+void RigidFluidCoupling3::save(CouplingState3& s) const {
+  s.grid = fluid_.grid();
+  s.positions_m = previous_;
+  s.forces_n = force_;
+  s.body_force_n = body_force_n_;
+  s.body_torque_n_m = body_torque_n_m_;
+  s.body_point_m = body_point_m_;
+  s.mouth_flux_m_per_s = mouth_flux_m_per_s_;
+}
+
+void RigidFluidCoupling3::restore(const CouplingState3& s) {
+  const fluid3d::MacGrid3& g = fluid_.grid();
+  if (s.grid.n != g.n || s.positions_m.size() != markers_.size() || s.forces_n.size() != markers_.size() ||
+      s.body_force_n.size() != body_force_n_.size() || s.mouth_flux_m_per_s.size() != mouth_flux_m_per_s_.size())
+    throw std::invalid_argument("coupling3d: restore: the state is of another coupling (grid or markers differ)");
+  transfer_.locate(g, p_.kernel, s.positions_m);
+  fluid_.grid() = s.grid;
+  previous_ = s.positions_m;
+  force_ = s.forces_n;
+  body_force_n_ = s.body_force_n;
+  body_torque_n_m_ = s.body_torque_n_m;
+  body_point_m_ = s.body_point_m;
+  mouth_flux_m_per_s_ = s.mouth_flux_m_per_s;
 }
 
 }  // namespace creaturelab::coupling3d

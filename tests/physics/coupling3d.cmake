@@ -3,3 +3,8 @@
 creaturelab_test(coupling3d_physics_tests physics
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/coupling3d_sphere_test.cpp
   LIBS cl_coupling3d)
+# the added-mass limit: a free sphere thrown through a closed box at density ratios 1 and 10, projected
+# against coupled forcing (Lentine et al. 2010 Eq. 9)
+creaturelab_test(coupling3d_added_mass_tests physics
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/coupling3d_added_mass_test.cpp
+  LIBS cl_coupling3d)
