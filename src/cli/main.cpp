@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cli/commands.hpp"
+#include "cli/creature_glb_command.hpp"
 #include "cli/fit_commands.hpp"
 #include "cli/render_commands.hpp"
 #include "runner/cluster.hpp"
@@ -90,6 +91,9 @@ int main(int argc, char** argv) {
 
   cli::FitSplineArgs fsa;
   cli::FitControllerArgs fca;
+  cli::CreatureGlbArgs glb_args;
+  auto* creature_glb = cli::addCreatureGlbCommand(app, glb_args);
+
   auto* fit = app.add_subcommand("fit", "fit the contraction spline to data, or tune controller parameters");
   fit->require_subcommand(1);
   auto* fit_spline = fit->add_subcommand("spline", "fit the jellyfish's Hermite contraction curve to a profile");
@@ -132,6 +136,7 @@ int main(int argc, char** argv) {
       ren.glb = !no_glb;
       return cli::render(ren);
     }
+    if (*creature_glb) return cli::creatureGlb(glb_args);
     if (*show) return commands.show(file, overrides);
     if (*check) return commands.check(run_dir, !check_no_verify);
     if (*compare) return commands.compare(cmp);
