@@ -50,6 +50,21 @@ struct FleshParams {
 
   // "" when usable; otherwise a sentence naming the first bad field, its value and what it must be.
   std::string validate() const;
+
+  // The parameters a kind offers, each named flesh_<field> (kinds/describe.hpp's visitor). max_edge_m is
+  // left out: a fluid coupling sets it from the markers' spacing.
+  template <class V>
+  void describe(V& v) {
+    v.real("flesh_thickness_m", thickness_m, "m", 1e-6, 10, "flesh layer over the skeleton's geoms (the paper gives none)");
+    v.integer("flesh_slices", slices, 3, 1024, "segments around each round geom of the flesh");
+    v.real("flesh_density_kg_per_m3", density_kg_per_m3, "kg/m^3", 1e-3, 1e5, "flesh density (skeletal muscle: 1050)");
+    v.real("flesh_youngs_modulus_pa", youngs_modulus_pa, "Pa", 1e-3, 1e12,
+           "stretch springs' membrane modulus (Van Gelder 1998); soft tissue 1-100 kPa");
+    v.real("flesh_stretch_damping_ratio", stretch_damping_ratio, "", 0, 100, "edge damping, 1 = critical");
+    v.real("flesh_binding_hz", binding_hz, "Hz", 1e-6, 1e6, "frequency of a vertex on its binding spring to the skeleton");
+    v.real("flesh_binding_damping_ratio", binding_damping_ratio, "", 0, 100, "binding damping, 1 = critical");
+    v.real("flesh_cg_tolerance", cg_tolerance, "", 1e-16, 0.5, "backward Euler's linear solve: relative residual");
+  }
 };
 
 }  // namespace creaturelab::flesh
