@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "control/coupled_flesh_fluid3.hpp"
 #include "control/coupled_fluid3.hpp"
 #include "control/fluid_run3.hpp"
 
@@ -111,7 +112,15 @@ std::string ControlFluid3dParams::validate() const {
     rigid::RigidData data(model);
     for (const auto& [joint, rad] : initialRad()) data.qpos()[model.joint(model.findJoint(joint)).qpos] = rad;
     data.kinematics();
-    coupling3d::RigidFluidCoupling3 probe(data, f, coupling);  // a body outside the box
+    if (flesh) {
+      if (auto e = flesh_params.validate(); !e.empty()) return e;
+      if (stored_fields != "none") return "stored_fields: not yet recorded with flesh = true (give none)";
+      coupling3d::RigidFluidParams3 c = coupling;
+      c.forcing_regularisation = flesh_forcing_regularisation;
+      coupling3d::FleshFluidCoupling3 probe(data, f, c, flesh_params);  // the flesh outside the box
+    } else {
+      coupling3d::RigidFluidCoupling3 probe(data, f, coupling);  // a body outside the box
+    }
     if (controller.average_frames > controller.frames) return "average_frames is larger than frames";
     if (framesPerCycle(flap_period_s, controller.frame_s) * force_cycles > controller.frames)
       return "force_cycles x flap_period_s is longer than frames";
@@ -121,6 +130,13 @@ std::string ControlFluid3dParams::validate() const {
     return e.what();
   }
   return "";
+}
+
+control::CoupledFluidFactory ControlFluid3dParams::coupledFluid() const {
+  if (!flesh) return control::spatialFluid(fluidParams(), coupling);
+  coupling3d::RigidFluidParams3 c = coupling;
+  c.forcing_regularisation = flesh_forcing_regularisation;
+  return control::fleshFluid(fluidParams(), c, flesh_params);
 }
 
 CostEstimate ControlFluid3dKind::estimateCost(const Params& params) const {
@@ -150,9 +166,11 @@ Result ControlFluid3dKind::run(const Params& params) const {
   const rigid::RigidModel model = k.loadModel();
   const control::ControllerParams p = k.controllerParams();
   control::FluidController controller(model, p, q.fluidControlParams(), q.initialRad(),
-                                      control::spatialFluid(q.fluidParams(), q.coupling));
+                                      q.coupledFluid());
   control::FluidRunRecorder3 recorder(model, p, q.recording());
-  const auto& fluid3 = dynamic_cast<const control::CoupledFluid3&>(controller.coupledFluid());
+  const auto* rigid3 = dynamic_cast<const control::CoupledFluid3*>(&controller.coupledFluid());
+  const auto* flesh3 = dynamic_cast<const control::CoupledFleshFluid3*>(&controller.coupledFluid());
+  const int markers = rigid3 ? int(rigid3->coupling().markers().size()) : flesh3->coupling().markers();
   Result result;
   try {
     controller.hold(int(q.warmup_frames * k.substeps));
@@ -165,7 +183,7 @@ Result ControlFluid3dKind::run(const Params& params) const {
   addSeries(result, recorder.series());
   addRecorded(result, recorder, q.coupling.origin_m);
   addMetrics(result, recorder.measure(framesPerCycle(q.flap_period_s, k.frame_s), int(q.force_cycles),
-                                      int(fluid3.coupling().markers().size()), controller.maxForcingIterations()));
+                                      markers, controller.maxForcingIterations()));
   return result;
 }
 

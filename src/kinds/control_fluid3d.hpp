@@ -7,6 +7,7 @@
 #include "control/fluid_controller.hpp"
 #include "control/fluid_run3.hpp"
 #include "coupling3d/rigid_fluid_coupling3.hpp"
+#include "flesh/flesh_params.hpp"
 #include "fluid3d/fluid_params3.hpp"
 #include "kinds/control_params.hpp"
 #include "kinds/describe_kind.hpp"
@@ -81,6 +82,11 @@ struct ControlFluid3dParams {
   coupling3d::RigidFluidParams3 coupling = flyer3dCoupling();
   std::string stored_fields = "none";
   std::int64_t field_every = 10;
+  // Lentine et al. 2010 Fig. 13: the creature wrapped in flesh (src/flesh/), its vertices the fluid's
+  // markers (coupling3d/flesh_fluid_coupling3.hpp), with the flesh's forcing regularisation.
+  bool flesh = false;
+  double flesh_forcing_regularisation = 3e-2;
+  flesh::FleshParams flesh_params;
 
   template <class V>
   void describe(V& v) {
@@ -108,6 +114,17 @@ struct ControlFluid3dParams {
     describeFluid(v);
     describeCoupling(v);
     describeRecording(v);
+    describeFlesh(v);
+  }
+  template <class V>
+  void describeFlesh(V& v) {
+    v.boolean("flesh", flesh,
+              "Fig. 13: the creature wrapped in flesh bound to its geoms, the flesh's vertices the fluid's markers "
+              "(forcing projected or off)");
+    v.real("flesh_forcing_regularisation", flesh_forcing_regularisation, "", 0, 1,
+           "with flesh, the forcing's Tikhonov weight in place of forcing_regularisation (the vertices' own "
+           "vibrations need more than a rigid surface's)");
+    flesh_params.describe(v);
   }
   // What the run stores for renders beside every geom's pose per frame (always).
   template <class V>
@@ -168,6 +185,8 @@ struct ControlFluid3dParams {
   // Ranges, then against the model: the controller, the fluid and coupling, the bodies inside the box,
   // the flap cycles within frames.
   std::string validate() const;
+  // The coupled fluid of the run: the geoms' surfaces as markers, or with flesh its vertices.
+  control::CoupledFluidFactory coupledFluid() const;
 };
 
 // The driven flyer of Lentine et al. 2010 §7.1 (Figs. 11-13, without flesh) in the 3-D fluid: the
