@@ -77,3 +77,5 @@ creaturelab_cli_test(fluid3d_checks_fail)
 creaturelab_cli_test(fluid3d_volume SKIP_RETURN_CODE 77)
 # the 3-D driven flyer (control_fluid3d) on 16 x 8 x 16 over twelve frames: series, the §7.1 check inconclusive with the controller off, exit 2; 10.9 s CPU
 creaturelab_cli_test(flyer3d)
+# the 3-D driven flyer wrapped in flesh (control_fluid3d, flesh = true) on 16 x 8 x 16 over twelve frames: series, the §7.1 check inconclusive with the controller off (the breaking test), exit 2; 6.2 s CPU
+creaturelab_cli_test(flyer3d_flesh)
