@@ -148,6 +148,10 @@ class RigidFluidCoupling3 {
   /// Forcing3::coupled: forceFluid applied it in its own step).
   void applyReaction(rigid::RigidData& data) const;
 
+  /// Forcing3::coupled: the DOFs (MuJoCo's qvel indices) the caller prescribes from the next forceFluid on,
+  /// in place of held_joints' (a controller whose servo holds a different set in each evaluation).
+  void setHeldDofs(const std::vector<int>& dofs) { mobility_.setHeldDofs(dofs); }
+
   /// The flux speed (m/s, + expels along the normal) of mouth `mouth` from the next forceFluid on.
   void setMouthFlux(std::size_t mouth, double flux_m_per_s);
 

@@ -9,18 +9,29 @@ namespace creaturelab::coupling3d {
 
 SolidMobility3::SolidMobility3(const rigid::RigidModel& model, const std::vector<std::string>& held_joints)
     : model_(&model) {
-  std::vector<bool> held(static_cast<std::size_t>(model.dofs()), false);
+  std::vector<int> held;
   for (const std::string& name : held_joints) {
     const int j = model.findJoint(name);
     if (j < 0) throw std::invalid_argument("coupling3d: held_joints: the model " + model.path() + " has no joint '" + name + "'");
     const rigid::JointInfo info = model.joint(j);
     const int n = info.type == rigid::JointType::free ? 6 : info.type == rigid::JointType::ball ? 3 : 1;
-    for (int d = 0; d < n; ++d) held[static_cast<std::size_t>(info.dof + d)] = true;
+    for (int d = 0; d < n; ++d) held.push_back(info.dof + d);
   }
-  for (int d = 0; d < model.dofs(); ++d)
-    if (!held[static_cast<std::size_t>(d)]) free_.push_back(d);
-  jac_.assign(static_cast<std::size_t>(model.bodies()), std::vector<double>(6 * free_.size(), 0.0));
+  setHeldDofs(held);
   com_.assign(static_cast<std::size_t>(model.bodies()), Vec3{});
+}
+
+void SolidMobility3::setHeldDofs(const std::vector<int>& dofs) {
+  std::vector<bool> held(static_cast<std::size_t>(model_->dofs()), false);
+  for (int d : dofs) {
+    if (d < 0 || d >= model_->dofs())
+      throw std::invalid_argument("coupling3d: held DOF " + std::to_string(d) + " is not in the model " + model_->path());
+    held[static_cast<std::size_t>(d)] = true;
+  }
+  free_.clear();
+  for (int d = 0; d < model_->dofs(); ++d)
+    if (!held[static_cast<std::size_t>(d)]) free_.push_back(d);
+  jac_.assign(static_cast<std::size_t>(model_->bodies()), std::vector<double>(6 * free_.size(), 0.0));
 }
 
 void SolidMobility3::update(rigid::RigidData& data) {

@@ -21,6 +21,10 @@ class SolidMobility3 {
   /// Throws std::invalid_argument naming a held joint the model does not have.
   SolidMobility3(const rigid::RigidModel& model, const std::vector<std::string>& held_joints);
 
+  /// Replaces the held DOFs (MuJoCo's qvel indices; the constructor's held joints' included only if listed);
+  /// throws std::invalid_argument for an index out of range.
+  void setHeldDofs(const std::vector<int>& dofs);
+
   /// Jacobians and the factor at data's pose and velocities (kinematics done). data's velocities are
   /// probed and put back (its kinematics recomputed: the same as before).
   void update(rigid::RigidData& data);

@@ -301,5 +301,45 @@ TEST_F(Coupling3Test, MouthPushesFluidAndTheBodyFeelsTheThrust) {
   EXPECT_NE(p.validate(testing::cube(16, 0.4, Boundaries3::allPeriodic(), 1e-4)), "");
 }
 
+// Forcing3::coupled with the sphere's joint held (held_joints, or setHeldDofs): the fluid's impulse does not
+// move it, the fluid still feels it; not held, the same step slows it.
+TEST_F(Coupling3Test, CoupledForcingLeavesHeldJointsAlone) {
+  const double dt = 0.01;
+  const auto model = testing::loadScene(
+      dir_, "scene", "<body pos=\"0.2 0.2 0.2\"><freejoint name=\"root\"/><geom type=\"sphere\" size=\"0.06\"/></body>", dt);
+  auto step = [&](const std::vector<std::string>& held, const std::vector<int>* held_dofs) {
+    rigid::RigidData data(model);
+    data.qvel()[0] = 0.1;
+    data.kinematics();
+    RigidFluidParams3 p;
+    p.forcing = Forcing3::coupled;
+    p.held_joints = held;
+    RigidFluidCoupling3 c(data, testing::cube(16, 0.4, Boundaries3::allPeriodic(), 1e-4), p);
+    if (held_dofs) c.setHeldDofs(*held_dofs);
+    c.advanceFluid(dt);
+    data.step();
+    data.kinematics();
+    const std::vector<double> qpos(data.qpos(), data.qpos() + model.positions());
+    c.forceFluid(data, dt);
+    EXPECT_LT(c.bodyForce_n()[1][0], -1e-3);  // the fluid resists
+    return std::pair{data.qvel()[0], std::vector<double>(data.qpos(), data.qpos() + model.positions()) == qpos};
+  };
+  const auto held = step({"root"}, nullptr);
+  EXPECT_EQ(held.first, 0.1);
+  EXPECT_TRUE(held.second);
+  const std::vector<int> all{0, 1, 2, 3, 4, 5};
+  const auto set = step({}, &all);
+  EXPECT_EQ(set.first, 0.1);
+  EXPECT_TRUE(set.second);
+  const auto free = step({}, nullptr);
+  EXPECT_LT(free.first, 0.09);
+  EXPECT_FALSE(free.second);
+  RigidFluidParams3 p;
+  p.held_joints = {"no_such_joint"};
+  rigid::RigidData data(model);
+  data.kinematics();
+  EXPECT_THROW(RigidFluidCoupling3(data, testing::cube(16, 0.4, Boundaries3::allPeriodic(), 1e-4), p), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace creaturelab::coupling3d
