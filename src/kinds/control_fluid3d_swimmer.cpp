@@ -1,0 +1,165 @@
+#include "kinds/control_fluid3d_swimmer.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "control/coupled_fluid3.hpp"
+#include "kinds/control_fluid_swimmer.hpp"
+
+namespace creaturelab::kinds {
+namespace {
+constexpr double kDegSwim3 = 180.0 / std::numbers::pi;
+
+// The 2-D swimmer's settings without a mouth: they parse and check the phases and the rise's body and
+// cycles the same way (the same keys in their messages).
+SwimmerSettings phaseSettings(const ControlFluid3dSwimmerParams& q) {
+  SwimmerSettings s;
+  s.cycle_s = q.cycle_s;
+  s.phase_fractions = q.phase_fractions;
+  s.phase_senses = q.phase_senses;
+  s.phase_strength_rad_per_s = q.phase_strength_rad_per_s;
+  s.rise_body = q.rise_body;
+  s.rise_cycles = q.rise_cycles;
+  return s;
+}
+}  // namespace
+
+ControlFluid3dSwimmerKind::ControlFluid3dSwimmerKind() {
+  metrics_ = {
+      {"rise_per_cycle_m", "m", "§7.2: rise of rise_body's subtree centre of mass per cycle, mean over the last rise_cycles"},
+      {"rise_per_cycle_m_stderr", "m", "standard error of rise_per_cycle_m from the scatter of its cycles' rises "
+                                       "(NaN with one cycle)"},
+      {"rise_total_m", "m", "rise of that centre of mass over the run"},
+      {"drift_m", "m", "horizontal distance of that centre of mass from its start at the end"},
+      {"creature_density_ratio", "", "creature mass over the fluid mass its geoms displace"},
+      {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
+      {"forcing_iterations_most", "", "most CG iterations of the projected forcing in any coupled step"},
+      {"markers", "", "surface and interior markers"},
+  };
+}
+
+std::string ControlFluid3dSwimmerKind::doc() const {
+  return "creature controller in the two-way coupled 3-D fluid: the aqueous swimmer (Lentine et al. 2010 §7.2)";
+}
+
+fluid3d::FluidParams3 ControlFluid3dSwimmerParams::fluidParams() const {
+  fluid3d::FluidParams3 f = fluid;
+  f.cells_y = int(std::lround(double(f.cells_x) * f.domain_y_m / f.domain_x_m));
+  f.cells_z = int(std::lround(double(f.cells_x) * f.domain_z_m / f.domain_x_m));
+  // The coupled step is fixed; a fluid running away is caught as a blow-up.
+  f.time_step_policy = fluid3d::TimeStepPolicy3::fixed;
+  f.fixed_step_s = controller.frame_s / double(controller.substeps);
+  return f;
+}
+
+control::FluidControlParams ControlFluid3dSwimmerParams::fluidControlParams() const {
+  control::FluidControlParams f;
+  f.perturbation = perturbation == "placed" ? control::Perturbation::placed : control::Perturbation::moved;
+  f.settle_steps = int(settle_steps);
+  f.average_steps = int(average_steps);
+  f.limit_rad = controlled_limit_deg / kDegSwim3;
+  f.armature_added_mass = armature_added_mass;
+  f.planar_fluid = false;
+  return f;
+}
+
+control::SwimmerPhases ControlFluid3dSwimmerParams::swimmerPhases(int joints) const {
+  return phaseSettings(*this).swimmerPhases(joints);
+}
+
+control::RiseSettings3 ControlFluid3dSwimmerParams::riseSettings(const rigid::RigidModel& model) const {
+  const control::RiseSettings r = phaseSettings(*this).riseSettings(model, controller.frame_s);
+  return {r.body, r.mouth.schedule, r.frames_per_cycle, r.cycles};
+}
+
+std::vector<std::pair<std::string, double>> ControlFluid3dSwimmerParams::initialRad() const {
+  std::vector<std::pair<std::string, double>> a;
+  for (const auto& pose : controller.initialPoses()) {
+    if (pose.deg.size() != 1) throw std::invalid_argument("initial_deg: '" + pose.joint + "' needs one angle (hinges only)");
+    a.push_back({pose.joint, pose.deg[0] / kDegSwim3});
+  }
+  return a;
+}
+
+std::string ControlFluid3dSwimmerParams::validate() const {
+  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
+  if (rise_body.empty()) return "rise_body: give the body whose rise is measured";
+  try {
+    const auto model = controller.loadModel();
+    if (auto e = fluidControlParams().validate(controller.controllerParams(), model); !e.empty()) return e;
+    if (auto e = phaseSettings(*this).validate(model, controller.frame_s, controller.frames); !e.empty()) return e;
+    if (auto e = controller.checkInitialPoses(model, true); !e.empty()) return e;
+    const auto f = fluidParams();
+    if (auto e = f.validate(); !e.empty()) return e;
+    if (auto e = coupling.validate(f); !e.empty()) return e;
+    rigid::RigidData data(model);
+    for (const auto& [joint, rad] : initialRad()) data.qpos()[model.joint(model.findJoint(joint)).qpos] = rad;
+    data.kinematics();
+    coupling3d::RigidFluidCoupling3 probe(data, f, coupling);  // a body outside the box
+    if (controller.average_frames > controller.frames) return "average_frames is larger than frames";
+  } catch (const rigid::RigidError& e) {
+    return std::string("model_file: ") + e.what();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+CostEstimate ControlFluid3dSwimmerKind::estimateCost(const Params& params) const {
+  try {
+    const ControlFluid3dSwimmerParams q = readParams<ControlFluid3dSwimmerParams>(params);
+    const ControllerSettings& k = q.controller;
+    const fluid3d::FluidParams3 f = q.fluidParams();
+    CostEstimate c;
+    const double joints = double(splitList(k.controlled, ',').size());
+    const double per_frame = double(k.substeps) * (1 + 2 * joints) + 2 * joints * double(q.settle_steps);
+    c.steps = double(k.frames) * per_frame + double(q.warmup_frames * k.substeps);
+    const double cells = double(f.cells_x) * f.cells_y * f.cells_z;
+    c.memory_bytes = 64.0 * (1 << 20) + (1 + 2 * joints) * cells * 8 * 24;
+    c.detail = std::to_string(k.frames) + " frames x " + std::to_string(int(per_frame)) + " coupled steps";
+    return c;
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
+Result ControlFluid3dSwimmerKind::run(const Params& params) const {
+  const ControlFluid3dSwimmerParams q = readParams<ControlFluid3dSwimmerParams>(params);
+  const ControllerSettings& k = q.controller;
+  const rigid::RigidModel model = k.loadModel();
+  const control::ControllerParams p = k.controllerParams();
+  control::FluidController controller(model, p, q.fluidControlParams(), q.initialRad(),
+                                      control::spatialFluid(q.fluidParams(), q.coupling));
+  control::FluidRunRecorder3 recorder(model, p);
+  // §7.2: the legs' senses and strengths follow the phases; the rise.
+  const control::SwimmerPhases phases = q.swimmerPhases(int(p.controlled.size()));
+  control::RiseRecorder3 rise(q.riseSettings(model));
+  const double density_ratio = control::densityRatio3(model, q.fluid.density_kg_per_m3);
+  const auto& fluid3 = dynamic_cast<const control::CoupledFluid3&>(controller.coupledFluid());
+  Result result;
+  try {
+    controller.hold(int(q.warmup_frames * k.substeps));
+    rise.start(controller.data());
+    for (long f = 0; f < k.frames; ++f) {
+      phases.apply(controller);
+      const control::FrameRecord fr = controller.frame();
+      rise.record(controller.data());
+      recorder.record(fr, controller);
+    }
+  } catch (const std::exception& e) {
+    addSeries(result, recorder.series());
+    addSeries(result, rise.series());
+    throw RunFailure("control_fluid3d_swimmer at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what() +
+                         control::stabilityHint3(density_ratio),
+                     result);
+  }
+  addSeries(result, recorder.series());
+  addSeries(result, rise.series());
+  addMetrics(result, rise.measure(density_ratio));
+  // The recorder's servo residual, forcing iterations and markers (its upward force is the flyer's reading).
+  for (const auto& v : recorder.measure(1, 1, int(fluid3.coupling().markers().size()), controller.maxForcingIterations()))
+    if (v.name != "mean_up_force_n" && v.name != "mean_up_force_n_stderr") addMetrics(result, {v});
+  return result;
+}
+
+}  // namespace creaturelab::kinds

@@ -1,0 +1,186 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "control/fluid_controller.hpp"
+#include "control/swimmer_run.hpp"
+#include "control/swimmer_run3.hpp"
+#include "coupling3d/rigid_fluid_coupling3.hpp"
+#include "fluid3d/fluid_params3.hpp"
+#include "kinds/control_params.hpp"
+#include "kinds/describe_kind.hpp"
+
+namespace creaturelab::kinds {
+
+// The swimmer's controller (Lentine et al. 2010 §7.2; the 2-D swimmer's experiments/control/swimmer.toml):
+// the five legs of models/swimmer3d.xml controlled for the fluid's downward force on each (Eq. 10,
+// w = -z), the sense and strength following the phases; 1/60 s frames of two coupled steps, the
+// evaluations moved over one frame (§4.3: in still water a placed pose feels no force) with the force
+// over both steps, as in 2-D; no gravity.
+inline ControllerSettings swimmer3dControllerDefaults() {
+  ControllerSettings c;
+  c.model_file = "experiments/control/models/swimmer3d.xml";
+  c.controlled = "leg0, leg1, leg2, leg3, leg4";
+  c.objectives = "drag_along, drag_along, drag_along, drag_along, drag_along";
+  c.senses = "min, min, min, min, min";
+  c.drag_direction_x = 0;
+  c.drag_direction_z = -1;
+  c.gravity_m_per_s2 = 0;
+  c.frame_s = 1.0 / 60;
+  c.substeps = 2;
+  c.frames = 240;
+  c.strength_rad_per_s = 1.0;
+  c.delta_rad = 0.02;
+  c.average_frames = 60;
+  return c;
+}
+
+// §7.2's water "open at the top and closed elsewhere" (the paper gives no box): a 1.5 m cube round the
+// creature's 0.9 m span, free-slip sides and floor, an open top; inviscid (Eq. 5) as the 2-D swimmer;
+// 16 cells along each side (0.094 m cubes: the legs are half a cell thick, the body 3.2 cells across),
+// the exact FFT pressure solve.
+inline fluid3d::FluidParams3 swimmer3dFluid() {
+  fluid3d::FluidParams3 f;
+  f.domain_x_m = 1.5;
+  f.domain_y_m = 1.5;
+  f.domain_z_m = 1.5;
+  f.cells_x = 16;
+  f.density_kg_per_m3 = 1000.0;
+  f.kinematic_viscosity_m2_per_s = 0.0;
+  f.boundaries.axis[2].high = fluid3d::BoundaryType3::open;
+  f.pressure_solver = fluid3d::PressureSolverType3::spectral;
+  f.blowup_speed_m_per_s = 20.0;
+  return f;
+}
+
+// The fluid box's corner in the world: the creature (at the origin) centred across, 0.6 m above the floor.
+inline coupling3d::RigidFluidParams3 swimmer3dCoupling() {
+  coupling3d::RigidFluidParams3 c;
+  c.origin_m = {-0.75, -0.75, -0.6};
+  return c;
+}
+
+// The control_fluid3d_swimmer kind's parameters: the controller's (ControllerSettings), the derivative
+// evaluations', the phases (§7.2's three), the rise's reading, the 3-D fluid box (fluid3d::FluidParams3)
+// and the coupling (coupling3d::RigidFluidParams3).
+struct ControlFluid3dSwimmerParams {
+  ControllerSettings controller = swimmer3dControllerDefaults();
+  std::int64_t warmup_frames = 0;
+  std::string perturbation = "moved";
+  std::int64_t settle_steps = 0;
+  std::int64_t average_steps = 2;
+  double controlled_limit_deg = 60;
+  double cycle_s = 1.0;
+  std::string phase_fractions = "0.2, 0.1, 0.7";
+  std::string phase_senses = "min, min, max";
+  std::string phase_strength_rad_per_s = "2.0, 2.0, 0.8571428571428571";
+  std::string rise_body = "body";
+  std::int64_t rise_cycles = 3;
+  bool armature_added_mass = true;
+  fluid3d::FluidParams3 fluid = swimmer3dFluid();
+  coupling3d::RigidFluidParams3 coupling = swimmer3dCoupling();
+
+  template <class V>
+  void describe(V& v) {
+    controller.describeCreature(v);
+    controller.describeRun(v);
+    v.integer("warmup_frames", warmup_frames, 0, 10000000, "frames with the pose held before control");
+    controller.describeDescent(v);
+    v.choice("perturbation", perturbation, {"moved", "placed"},
+             "how a derivative evaluation reaches its pose: moved over one frame of coupled steps (§4.3) | placed at "
+             "once, joint velocities zero (§3.3's steady state)");
+    v.integer("settle_steps", settle_steps, 0, 100000,
+              "§4.3 validation mode: coupled steps with the perturbed pose held before the force is taken (0: off)");
+    v.integer("average_steps", average_steps, 1, 100000, "the objective: mean force over an evaluation's last this many steps");
+    controller.describeMeasures(v);
+    v.real("controlled_limit_deg", controlled_limit_deg, "deg", 0, 360,
+           "controlled angles kept within +-this (0: no limit; the paper gives none; 60 keeps the legs from crossing "
+           "under the body)");
+    describeSwimmer(v);
+    describeFluid(v);
+    describeCoupling(v);
+  }
+  // The phases (§7.2: draw in and minimise drag, expel and minimise, maximise without propulsion) and the rise.
+  template <class V>
+  void describeSwimmer(V& v) {
+    v.real("cycle_s", cycle_s, "s", 1e-6, 1e6, "period of the phases (§7.2's three; the paper gives none), whole frames");
+    v.text("phase_fractions", phase_fractions, "", "share of cycle_s of each phase, comma-separated, summing to 1");
+    v.text("phase_senses", phase_senses, "", "sense of every controlled joint per phase: min | max, comma-separated");
+    v.text("phase_strength_rad_per_s", phase_strength_rad_per_s, "rad/s",
+           "strength of the controlled joints per phase (§2.1's step per frame; the paper gives one); empty: "
+           "strength_rad_per_s throughout");
+    v.text("rise_body", rise_body, "", "body whose subtree's centre of mass is tracked for the rise");
+    v.integer("rise_cycles", rise_cycles, 1, 100000, "rise per cycle: mean over the last this many whole cycles");
+    v.boolean("armature_added_mass", armature_added_mass,
+              "the root's MJCF armature (slides and hinges) as the fluid's added mass, its lagged force given back "
+              "(stabilises the staggered coupling of a creature near the water's density; fluid_controller.hpp)");
+  }
+  // The fluid (src/fluid3d): a box of cubic cells, z up.
+  template <class V>
+  void describeFluid(V& v) {
+    v.real("domain_x_m", fluid.domain_x_m, "m", 1e-3, 1e3, "box length along x (the paper gives none)");
+    v.real("domain_y_m", fluid.domain_y_m, "m", 1e-3, 1e3, "box length along y");
+    v.real("domain_z_m", fluid.domain_z_m, "m", 1e-3, 1e3, "box height (z up)");
+    v.integer("cells", fluid.cells_x, 4, 1024, "cells along x; along y and z from the box's proportions (cubic cells)");
+    v.real("density_kg_per_m3", fluid.density_kg_per_m3, "kg/m^3", 1e-3, 1e6, "fluid density (§7: 'similar to water')");
+    v.real("kinematic_viscosity_m2_per_s", fluid.kinematic_viscosity_m2_per_s, "m^2/s", 0, 10,
+           "0: the paper's inviscid Eq. 5 (the advection's numerical viscosity remains)");
+    fluid.describeSides(v);
+    fluid.describeSchemes(v);
+    v.integer("fluid_threads", fluid.threads, 1, 16,
+              "threads inside the frame's fluid steps, and the evaluations' when threads = 1 (bitwise the same "
+              "for any count)");
+    v.real("blowup_speed_m_per_s", fluid.blowup_speed_m_per_s, "m/s", 1e-6, 1e6, "a fluid faster than this stops the run (exit 3)");
+  }
+  // The coupling (src/coupling3d).
+  template <class V>
+  void describeCoupling(V& v) {
+    v.choice("forcing", coupling.forcing,
+             {{"projected", coupling3d::Forcing3::projected}, {"off", coupling3d::Forcing3::off}},
+             "projected: marker forces solved so that the projected flow meets the bodies; off: the bodies do not "
+             "touch the fluid (a breaking switch)");
+    v.choice("kernel", coupling.kernel, {ib::Kernel::bilinear, ib::Kernel::peskin4}, "IB kernel of the markers (Peskin 2002 §6)");
+    v.real("marker_spacing_cells", coupling.marker_spacing_cells, "cells", 1e-3, 1,
+           "surface marker spacing; at most 1 cell (leak)");
+    v.boolean("interior_markers", coupling.interior_markers,
+              "also markers inside each primitive geom, a kernel's half-width below its surface");
+    v.real("forcing_tolerance", coupling.forcing_tolerance, "", 1e-12, 1,
+           "projected forcing: CG tolerance, fraction of the largest speed");
+    v.integer("max_forcing_iterations", coupling.max_forcing_iterations, 1, 10000,
+              "projected forcing: CG iterations at most per step");
+    v.real("forcing_regularisation", coupling.forcing_regularisation, "", 0, 1,
+           "projected forcing: Tikhonov weight on the marker forces (relative to the direct-forcing mass)");
+    v.real("origin_x_m", coupling.origin_m[0], "m", -1e4, 1e4, "world x of the fluid box's corner");
+    v.real("origin_y_m", coupling.origin_m[1], "m", -1e4, 1e4, "world y of the fluid box's corner");
+    v.real("origin_z_m", coupling.origin_m[2], "m", -1e4, 1e4, "world z of the fluid box's floor");
+    v.real("max_marker_cells_per_step", coupling.max_marker_cells_per_step, "cells", 1e-6, 2,
+           "coupled stability limit: a marker moving farther in one step stops the point (exit 3)");
+  }
+
+  // The solvers' parameters: the box's cells from its proportions with the fixed coupled step
+  // (frame_s / substeps); the evaluations'; the phases; what the rise tracks.
+  fluid3d::FluidParams3 fluidParams() const;
+  control::FluidControlParams fluidControlParams() const;
+  control::SwimmerPhases swimmerPhases(int joints) const;
+  control::RiseSettings3 riseSettings(const rigid::RigidModel& model) const;
+  std::vector<std::pair<std::string, double>> initialRad() const;
+  // Ranges, then against the model: the controller, the phases, the rise's cycles within frames, the
+  // fluid and coupling, the bodies inside the box.
+  std::string validate() const;
+};
+
+// The aqueous swimmer of Lentine et al. 2010 §7.2 (Fig. 7, without flesh and, for now, without the
+// mouth) in the 3-D fluid: the controller of kind control_fluid over the two-way coupled 3-D fluid
+// (coupling3d), a free creature whose legs follow §7.2's phases.
+class ControlFluid3dSwimmerKind : public DescribedKind<ControlFluid3dSwimmerParams> {
+ public:
+  ControlFluid3dSwimmerKind();
+  std::string name() const override { return "control_fluid3d_swimmer"; }
+  std::string doc() const override;
+  Result run(const Params& params) const override;
+  CostEstimate estimateCost(const Params& params) const override;
+};
+
+}  // namespace creaturelab::kinds
