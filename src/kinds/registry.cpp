@@ -2,6 +2,7 @@
 #include "kinds/control.hpp"
 #include "kinds/control_fluid.hpp"
 #include "kinds/control_fluid3d.hpp"
+#include "kinds/control_fluid3d_swimmer.hpp"
 #include "kinds/fish.hpp"
 #include "kinds/fluid.hpp"
 #include "kinds/fluid3d.hpp"
@@ -28,6 +29,7 @@ Registry defaultRegistry() {
   r.add(std::make_unique<FishKind>());
   r.add(std::make_unique<Fluid3dKind>());
   r.add(std::make_unique<ControlFluid3dKind>());
+  r.add(std::make_unique<ControlFluid3dSwimmerKind>());
   return r;
 }
 
