@@ -16,3 +16,15 @@ creaturelab_test(render_hook_test unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/render_hook_test.cpp
   LIBS cl_kinds cl_render
 )
+# A 3-D creature's render chain (Lentine et al. 2010 Figs. 11, 13): primitive geom meshes, the creature
+# .glb reloaded by tinygltf. Well under 1 s.
+creaturelab_test(render_creature_test unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/render_creature_test.cpp
+  LIBS cl_render
+)
+# The 3-D run recorder's poses and Q against MuJoCo's and the fluid's: three coupled frames of a
+# 16 x 8 x 12 box, about 1 s of CPU, so labelled physics (Release only) as control_fluid3_unit_test.
+creaturelab_test(render_creature_record_test physics
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/render_creature_record_test.cpp
+  LIBS cl_control
+)
