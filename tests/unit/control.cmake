@@ -23,3 +23,8 @@ creaturelab_test(control_fluid3_unit_test physics
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/control_fluid3_test.cpp
   LIBS cl_control
 )
+# The 3-D swimmer's rise (control/swimmer_run3.hpp): rise per cycle and its standard error, geom volumes.
+creaturelab_test(control_swimmer3_unit_test unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/control_swimmer3_test.cpp
+  LIBS cl_control
+)
