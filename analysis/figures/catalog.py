@@ -169,6 +169,14 @@ FIGURES = [
            "The same in the paper's own setting, a 3-D fluid: the controlled outer wing joints (bending, Fig. 13) "
            "against held ones, the fluid's mean upward force on the flyer over whole flaps (§7.1).",
            "flyer3d", None, None),
+    Figure("lentine", "Fig. 13 (3-D render)",
+           "The driven flyer with bending outer joints sheds vortices as it flaps (§7.1, Fig. 13): the Q-criterion "
+           "isosurface of the flow with the creature over its last flap.",
+           "flyer3d", "lentine_q3d", []),
+    Figure("lentine", "Fig. 11 (3-D render)",
+           "The driven flyer with twisting outer joints (§7.1, Fig. 11): the Q-criterion isosurface of the flow "
+           "with the creature over its last flap.",
+           "flyer3d_twist", "lentine_q3d", []),
     Figure("lentine", "§4.1 (3-D fluid)",
            "The paper's 3-D creatures move in an incompressible fluid (§4.1, Eqs. 5-8); our 3-D solver of them "
            "converges at second order to the decaying Taylor-Green vortex (Stokes limit), as the 2-D one is checked.",
