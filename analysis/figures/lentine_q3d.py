@@ -124,6 +124,12 @@ def draw(run, out):
         label = labels[k] if k < len(labels) else str(k)
         pngs.append(draw_point(f, f"{run.title} ({label})",
                                os.path.join(out, "lentine_q3d" + (f"_{k}" if k else ""))))
+    if not pngs:  # say so in the report rather than leave the figure out
+        fig = style.figure(height=1.2)
+        fig.text(0.5, 0.5, style.wrap(f"{run.title}: no point stored the fluid's volume with the geoms' poses, so "
+                                      "there is no Q-criterion render; rerun it with params.stored_fields=volume "
+                                      "(control_fluid3d).", 110), ha="center", va="center")
+        pngs.append(style.save(fig, os.path.join(out, "lentine_q3d")))
     return pngs
 
 
