@@ -54,10 +54,10 @@ std::vector<std::uint8_t> fleshBytes(const io::Group& root, const std::string& n
   for (std::size_t t = 0; t < flat.size(); t += 3)
     triangles.push_back({std::int32_t(flat[t]), std::int32_t(flat[t + 1]), std::int32_t(flat[t + 2])});
   const std::vector<double> times = io::readVectorDouble(root.openGroup("lagrangian"), "time_s");
-  const std::vector<hsize_t> shape = io::datasetShape(root.openGroup("lagrangian"), "flesh_vertices_m");
+  const std::vector<hsize_t> shape = io::datasetShape(root.openGroup("lagrangian"), "flesh_position_m");
   if (shape.size() != 3 || shape[0] != times.size() || shape[2] != 3)
-    throw std::runtime_error("/lagrangian/flesh_vertices_m is not (frames, vertices, 3)");
-  const std::vector<double> xyz = io::readArrayDouble(root.openGroup("lagrangian"), "flesh_vertices_m");
+    throw std::runtime_error("/lagrangian/flesh_position_m is not (frames, vertices, 3)");
+  const std::vector<double> xyz = io::readArrayDouble(root.openGroup("lagrangian"), "flesh_position_m");
   render::SkinAnimation skin(std::move(triangles));
   const std::size_t per = std::size_t(shape[1]) * 3;
   for (std::size_t f = 0; f < times.size(); ++f)
@@ -88,7 +88,7 @@ int creatureGlb(const CreatureGlbArgs& args) {
     const io::Group root = h5.root();
     try {
       outputs.push_back({stem + "_creature.glb", creatureBytes(root, stem)});
-      if (root.has("lagrangian/flesh_vertices_m") && root.has("topology/flesh_triangles"))
+      if (root.has("lagrangian/flesh_position_m") && root.has("topology/flesh_triangles"))
         outputs.push_back({stem + "_flesh.glb", fleshBytes(root, stem + " flesh")});
     } catch (const std::exception& e) {
       throw std::runtime_error(file.string() + ": " + e.what());

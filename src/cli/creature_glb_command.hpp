@@ -2,7 +2,7 @@
 // `creaturelab creature-glb`: a 3-D creature run's animation as .glb files from its point file alone
 // (render/creature_gltf.hpp): the geoms' meshes moved by their recorded poses (/topology/geom_type,
 // /lagrangian/geom_size_m, geom_position_m, geom_rotation, as control_fluid3d records them) into
-// point_NNNNNN_creature.glb, and, when the run recorded its flesh (/lagrangian/flesh_vertices_m,
+// point_NNNNNN_creature.glb, and, when the run recorded its flesh (/lagrangian/flesh_position_m,
 // /topology/flesh_triangles), the skin into point_NNNNNN_flesh.glb, beside the point file.
 #include <string>
 
