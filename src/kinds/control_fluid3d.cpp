@@ -43,6 +43,18 @@ void addRecorded(Result& result, const control::FluidRunRecorder3& recorder, con
   }
   for (const auto& f : fluid.fields) out.fields[f.name] = {f.values, f.unit};
 }
+// The flesh's skin for its .glb (Fig. 13): each vertex's world position per frame as
+// /lagrangian/flesh_position_m, the triangles (three vertex indices each) and each vertex's body as /topology.
+void addFlesh(Result& result, const control::CoupledFleshFluid3* flesh, std::vector<double> time_s,
+              std::vector<double> position_m) {
+  if (!flesh) return;
+  const flesh::FleshMesh& mesh = flesh->coupling().flesh().mesh();
+  std::vector<std::int64_t>& tri = result.topology["flesh_triangles"];
+  for (const auto& t : mesh.triangles) tri.insert(tri.end(), t.begin(), t.end());
+  result.topology["flesh_vertex_body"].assign(mesh.body.begin(), mesh.body.end());
+  Tracks& x = result.lagrangian["flesh_position_m"];
+  x.time_s = std::move(time_s), x.data = std::move(position_m), x.points = mesh.vertices(), x.dim = 3, x.unit = "m";
+}
 }  // namespace
 
 ControlFluid3dKind::ControlFluid3dKind() {
@@ -171,17 +183,26 @@ Result ControlFluid3dKind::run(const Params& params) const {
   const auto* rigid3 = dynamic_cast<const control::CoupledFluid3*>(&controller.coupledFluid());
   const auto* flesh3 = dynamic_cast<const control::CoupledFleshFluid3*>(&controller.coupledFluid());
   const int markers = rigid3 ? int(rigid3->coupling().markers().size()) : flesh3->coupling().markers();
+  std::vector<double> flesh_time_s, flesh_m;  // with flesh: its vertices per frame
   Result result;
   try {
     controller.hold(int(q.warmup_frames * k.substeps));
-    for (long f = 0; f < k.frames; ++f) recorder.record(controller.frame(), controller);
+    for (long f = 0; f < k.frames; ++f) {
+      recorder.record(controller.frame(), controller);
+      if (!flesh3) continue;
+      const Eigen::Matrix3Xd& x = flesh3->coupling().flesh().positions_m();
+      flesh_time_s.push_back(controller.data().time_s());
+      flesh_m.insert(flesh_m.end(), x.data(), x.data() + x.size());
+    }
   } catch (const std::exception& e) {
     addSeries(result, recorder.series());
     addRecorded(result, recorder, q.coupling.origin_m);
+    addFlesh(result, flesh3, std::move(flesh_time_s), std::move(flesh_m));
     throw RunFailure("control_fluid3d at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what(), result);
   }
   addSeries(result, recorder.series());
   addRecorded(result, recorder, q.coupling.origin_m);
+  addFlesh(result, flesh3, std::move(flesh_time_s), std::move(flesh_m));
   addMetrics(result, recorder.measure(framesPerCycle(q.flap_period_s, k.frame_s), int(q.force_cycles),
                                       markers, controller.maxForcingIterations()));
   return result;
