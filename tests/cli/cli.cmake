@@ -79,3 +79,5 @@ creaturelab_cli_test(fluid3d_volume SKIP_RETURN_CODE 77)
 creaturelab_cli_test(flyer3d)
 # the 3-D driven flyer wrapped in flesh (control_fluid3d, flesh = true) on 16 x 8 x 16 over twelve frames: series, the §7.1 check inconclusive with the controller off (the breaking test), exit 2; 6.2 s CPU
 creaturelab_cli_test(flyer3d_flesh)
+# the 3-D driven flyer's renders from its HDF5 (Lentine et al. 2010 Figs. 11, 13): stored_fields = volume on 16 x 8 x 16 over twelve frames, the poses against the hinges' kinematics, lentine_q3d's Q-criterion strips in the house style, creature-glb's .glb, exit 2; 14 s CPU
+creaturelab_cli_test(flyer3d_render)
