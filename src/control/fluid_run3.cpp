@@ -2,11 +2,18 @@
 
 #include <numbers>
 
+#include "control/coupled_flesh_fluid3.hpp"
 #include "control/coupled_fluid3.hpp"
 
 namespace creaturelab::control {
 namespace {
 constexpr double kRun3Deg = 180.0 / std::numbers::pi;
+
+// The 3-D fluid's grid under the controller's coupled fluid, bare bodies or flesh.
+const fluid3d::MacGrid3& recordedGrid(const CoupledFluid& fluid) {
+  if (const auto* flesh = dynamic_cast<const CoupledFleshFluid3*>(&fluid)) return flesh->coupling().fluid().grid();
+  return dynamic_cast<const CoupledFluid3&>(fluid).coupling().fluid().grid();
+}
 }  // namespace
 
 FluidRunRecorder3::FluidRunRecorder3(const rigid::RigidModel& model, const ControllerParams& p,
@@ -64,7 +71,7 @@ void FluidRunRecorder3::recordGeoms(double time_s, const rigid::RigidData& data)
 }
 
 void FluidRunRecorder3::recordFluid(double time_s, const FluidController& controller) {
-  const auto& grid = dynamic_cast<const CoupledFluid3&>(controller.coupledFluid()).coupling().fluid().grid();
+  const fluid3d::MacGrid3& grid = recordedGrid(controller.coupledFluid());
   observables_.update(grid);
   const fluid3d::Array3* arrays[] = {&observables_.cellVelocity_m_per_s(0), &observables_.cellVelocity_m_per_s(1),
                                      &observables_.cellVelocity_m_per_s(2), &grid.pressure_pa,
