@@ -5,19 +5,26 @@
 #include <stdexcept>
 
 #include "control/central_difference.hpp"
+#include "control/coupled_fluid3.hpp"
 #include "control/prescription.hpp"
 
 namespace creaturelab::control {
 namespace {
 
-// The fluid's reaction of the last coupled step as the servo's external-force stage.
+// The fluid's reaction of the last coupled step as the servo's external-force stage (nothing with the 3-D
+// coupled solve, whose step applied it), or, `measuring`, the fluid's force of the last step whatever the
+// forcing (the measurements' inverse dynamics).
 class CouplingReaction final : public ForceModel {
  public:
-  CouplingReaction(const CoupledFluid* c, std::vector<double> armature)
-      : c_(c), armature_(std::move(armature)) {}
+  CouplingReaction(const CoupledFluid* c, std::vector<double> armature, bool measuring = false)
+      : c_(c), armature_(std::move(armature)), measuring_(measuring) {}
   void apply(rigid::RigidData& data, std::vector<Vec3>& body_force_n) const override {
     body_force_n = c_->bodyForce_n();
-    c_->applyReaction(data);
+    const auto* spatial = dynamic_cast<const CoupledFluid3*>(c_);
+    if (measuring_ && spatial)
+      spatial->applyFluidForce(data);
+    else
+      c_->applyReaction(data);
     addArmatureForce(data);
   }
 
@@ -31,7 +38,15 @@ class CouplingReaction final : public ForceModel {
   }
   const CoupledFluid* c_;
   std::vector<double> armature_;  // per DOF; empty: off
+  bool measuring_;
 };
+
+// The DOFs the servo prescribes in pr (scalars, then the balls' three each): the coupled solve's held ones.
+void prescribedDofs(const Prescribed& pr, std::vector<int>& out) {
+  out.assign(pr.dof.begin(), pr.dof.end());
+  for (const PrescribedBall& b : pr.balls)
+    for (int a = 0; a < 3; ++a) out.push_back(b.dof + a);
+}
 
 // Armature per DOF of the joints not prescribed (the stabilised ones), or empty when off.
 std::vector<double> stabilisedArmature(const rigid::RigidModel& m, const ControllerParams& p, bool on) {
@@ -76,15 +91,20 @@ std::string FluidControlParams::validate(const ControllerParams& p, const rigid:
 struct FluidController::World {
   World(const rigid::RigidModel& m, const std::vector<std::pair<std::string, double>>& initial,
         const CoupledFluidFactory& make, bool single_threaded, std::vector<double> armature)
-      : data(m), force(nullptr, {}) {
+      : data(m), force(nullptr, {}), measured(nullptr, {}) {
     for (const auto& [name, rad] : initial) data.qpos()[m.joint(m.findJoint(name)).qpos] = rad;
     data.kinematics();
     coupling = make(data, single_threaded);
+    measured = CouplingReaction(coupling.get(), armature, true);
     force = CouplingReaction(coupling.get(), std::move(armature));
+    spatial = dynamic_cast<CoupledFluid3*>(coupling.get());
+    if (spatial && !spatial->coupledSolve()) spatial = nullptr;
   }
   rigid::RigidData data;
   std::unique_ptr<CoupledFluid> coupling;
-  CouplingReaction force;
+  CoupledFluid3* spatial = nullptr;  // the 3-D coupled solve (Eq. 9), else null
+  CouplingReaction force, measured;
+  std::vector<int> held_dofs;
   ServoScratch servo;
   Prescribed pr, step;
   std::vector<Vec3> forces;     // per step of an evaluation: the joint's force
@@ -144,14 +164,21 @@ FluidController::World& FluidController::evaluationWorld(int part, int joint, do
 }
 
 // One coupled step (rigid_fluid_coupling.hpp): fluid to u~, the solid to x^{n+1} with the servo
-// reaching pr's targets under the fluid's last reaction, forcing at x^{n+1}, projection.
+// reaching pr's targets under the fluid's last reaction, forcing at x^{n+1}, projection. With the 3-D
+// coupled solve (Eq. 9) the servo steps without the fluid's force and the forcing gives the DOFs the
+// servo does not prescribe this step's fluid impulse.
 void FluidController::coupledStep(World& w, const Prescribed& pr) {
   const double dt = model_.timestep_s();
   w.coupling->advanceFluid(dt);
   const ServoReport s = advanceFrame(w.data, pr, w.force, 1, p_.servo_iterations, p_.servo_tolerance_rad, w.servo);
   w.residual_rad = std::max(w.residual_rad, s.residual_rad);
   w.data.kinematics();
-  w.coupling->forceAndProject(w.data, dt);
+  if (w.spatial) {
+    prescribedDofs(pr, w.held_dofs);
+    w.spatial->forceAndCorrect(w.data, dt, w.held_dofs);
+  } else {
+    w.coupling->forceAndProject(w.data, dt);
+  }
   w.forcing_iterations = std::max(w.forcing_iterations, w.coupling->forcingIterations());
   const auto& body = w.coupling->bodyForce_n();
   for (std::size_t b = 1; b < body.size(); ++b)
@@ -170,7 +197,7 @@ Vec3 FluidController::jointForce(const World& w, int joint) const {
 // Eq. 1's actuator torque of each controlled joint after a coupled step: inverse dynamics at
 // qacc = 0 under the fluid's reaction of that step (objectives.hpp, measure), appended to `out`.
 void FluidController::jointTorques(World& w, std::vector<double>& out) const {
-  measure(w.data, layout_, w.force, w.measure_scratch, w.measures);
+  measure(w.data, layout_, w.measured, w.measure_scratch, w.measures);
   out.insert(out.end(), w.measures.torque_n_m.begin(), w.measures.torque_n_m.end());
 }
 

@@ -425,7 +425,10 @@ void RigidFluidCoupling3::reaction(const rigid::RigidData& data) {
 }
 
 void RigidFluidCoupling3::applyReaction(rigid::RigidData& data) const {
-  if (p_.forcing == Forcing3::coupled) return;
+  if (p_.forcing != Forcing3::coupled) applyFluidForce(data);
+}
+
+void RigidFluidCoupling3::applyFluidForce(rigid::RigidData& data) const {
   for (std::size_t b = 1; b < body_force_n_.size(); ++b)
     data.applyWrenchAt(static_cast<int>(b), body_force_n_[b], body_torque_n_m_[b], body_point_m_[b]);
 }

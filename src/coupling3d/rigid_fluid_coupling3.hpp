@@ -147,6 +147,9 @@ class RigidFluidCoupling3 {
   /// Adds the last forceFluid's reaction on every moving body to data's applied forces (nothing with
   /// Forcing3::coupled: forceFluid applied it in its own step).
   void applyReaction(rigid::RigidData& data) const;
+  /// Adds the last forceFluid's force on every moving body to data's applied forces, whatever the forcing
+  /// (for measurements: e.g. the actuator torques that hold the joints under it).
+  void applyFluidForce(rigid::RigidData& data) const;
 
   /// Forcing3::coupled: the DOFs (MuJoCo's qvel indices) the caller prescribes from the next forceFluid on,
   /// in place of held_joints' (a controller whose servo holds a different set in each evaluation).
