@@ -1,6 +1,7 @@
 """The 3-D creatures and their flow as triangles, from a point file alone: the geoms' surfaces from
 their recorded type, size and pose (/topology/geom_type, /lagrangian/geom_size_m, geom_position_m,
-geom_rotation: MuJoCo's geom_size, geom_xpos and row-major geom_xmat), and isosurfaces of a stored
+geom_rotation: MuJoCo's geom_size, geom_xpos and row-major geom_xmat), the flesh's skin when recorded
+(/lagrangian/flesh_position_m, /topology/flesh_triangles), and isosurfaces of a stored
 cell-centred field (/fields/<name>, (frames, nz, ny, nx)) by marching tetrahedra: each cube of eight
 neighbouring cell centres cut into six tetrahedra along its main diagonal (Kuhn's triangulation, so
 that neighbouring cubes share their faces' cuts), the surface linear along each tetrahedron's edges.
@@ -83,6 +84,15 @@ def creature_triangles(point, frame):
             continue
         out.append(local @ rot[g].T + pos[g])
     return (np.concatenate(out) if out else np.zeros((0, 3, 3))), skipped
+
+
+def flesh_triangles(point, frame):
+    """World triangles (n, 3, 3) of the flesh's skin at lagrangian frame `frame`
+    (/lagrangian/flesh_position_m, /topology/flesh_triangles), or None when the run has no flesh."""
+    if "lagrangian/flesh_position_m" not in point or "topology/flesh_triangles" not in point:
+        return None
+    x = point["lagrangian/flesh_position_m"][frame]
+    return x[point["topology/flesh_triangles"][()].reshape(-1, 3)]
 
 
 def cell_centres(point):

@@ -1,10 +1,11 @@
 """Lentine et al. 2010 Figs. 11 and 13 in 3-D: the driven flyer (control_fluid3d, stored_fields =
 "volume") in a strip of frames over its last flap, each the isosurface of the Q-criterion
 (Q = (|Omega|^2 - |S|^2) / 2 > 0 where rotation outweighs strain: the vortices the wings shed)
-coloured by the vertical velocity there, with the creature's geoms at that frame. The level is a
-stated fraction of the largest Q in the drawn frames outside the bodies (Q inside and next to a
-turning rigid body is its own rotation, not a vortex). Drawn from the point files alone: the geoms
-from their recorded type, size and pose, the surface by marching tetrahedra (figures/creature3d.py).
+coloured by the vertical velocity there, with the creature's geoms (or its flesh, when recorded) at
+that frame. The level is a stated fraction of the largest Q in the drawn frames outside the bodies
+(Q inside and next to a turning rigid body is its own rotation, not a vortex). Drawn from the point
+files alone: the geoms from their recorded type, size and pose, the surface by marching tetrahedra
+(figures/creature3d.py).
 """
 if __package__ in (None, ""):  # run as a script: make `figures` importable
     import os
@@ -27,6 +28,7 @@ import style  # noqa: E402
 Q_FRACTION = 0.1  # the isosurface's level: this fraction of the largest Q outside the bodies
 PANELS = 4  # frames in the strip, spread over the last flap period
 GEOM_RGBA = (0.55, 0.55, 0.58, 1.0)
+FLESH_RGBA = (0.85, 0.75, 0.35, 1.0)  # a gold apart from the colour map's reds and blues
 
 
 def drawn_frames(times, period_s, panels=PANELS):
@@ -89,10 +91,14 @@ def draw_point(f, title, out_path):
         ax = fig.add_subplot(1, len(frames), n + 1, projection="3d")
         panels.append(ax)
         body, s = creature3d.creature_triangles(f, p)
+        skin = creature3d.flesh_triangles(f, p)
+        if skin is not None:  # the flesh wraps the geoms
+            body = skin
         skipped = max(skipped, s)
         allt = np.concatenate([tris, body])
         if len(allt):
-            rgba = np.concatenate([cmap(norm(c)).reshape(-1, 4), np.tile(GEOM_RGBA, (len(body), 1))])
+            look = GEOM_RGBA if skin is None else FLESH_RGBA
+            rgba = np.concatenate([cmap(norm(c)).reshape(-1, 4), np.tile(look, (len(body), 1))])
             ax.add_collection3d(Poly3DCollection(allt, facecolors=creature3d.shade(allt, rgba), edgecolors="none"))
         ax.set_xlim(lo[0], hi[0])
         ax.set_ylim(lo[1], hi[1])
@@ -106,7 +112,9 @@ def draw_point(f, title, out_path):
         ax.set_title(f"t = {times[k]:.2f} s")
     fig.colorbar(cm.ScalarMappable(norm=norm, cmap=cmap), ax=panels, shrink=0.7,
                  label="vertical velocity w on the Q surface (m/s)")
-    handles = [Patch(color=GEOM_RGBA, label="the flyer's geoms" + (f" ({skipped} mesh geoms not drawn)" if skipped else "")),
+    creature = (Patch(color=FLESH_RGBA, label="the flyer's flesh") if creature3d.flesh_triangles(f, 0) is not None else
+                Patch(color=GEOM_RGBA, label="the flyer's geoms" + (f" ({skipped} mesh geoms not drawn)" if skipped else "")))
+    handles = [creature,
                Patch(color=cmap(0.7), label=f"the surface Q = {level:.3g} 1/s^2, coloured by w")]
     fig.legend(handles=handles, loc="lower center", ncols=2, frameon=False)
     fig.suptitle(style.wrap(f"{title}: Q-criterion isosurface at {Q_FRACTION:g} x the largest Q outside the bodies "
