@@ -13,3 +13,10 @@ creaturelab_test(flesh_fluid_unit_test unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/flesh_fluid_test.cpp
   LIBS cl_coupling3d cl_flesh
 )
+# The controller with the creature in flesh in the 3-D fluid: bitwise the same frames for any evaluation
+# and fluid thread count, moved and placed perturbations. Seconds of coupled 3-D steps, so labelled
+# physics (Release only), as control_fluid3_unit_test.
+creaturelab_test(control_flesh_unit_test physics
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/control_flesh_test.cpp
+  LIBS cl_control
+)
