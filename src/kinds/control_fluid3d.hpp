@@ -155,9 +155,11 @@ struct ControlFluid3dParams {
   template <class V>
   void describeCoupling(V& v) {
     v.choice("forcing", coupling.forcing,
-             {{"projected", coupling3d::Forcing3::projected}, {"off", coupling3d::Forcing3::off}},
-             "projected: marker forces solved so that the projected flow meets the bodies; off: the bodies do not "
-             "touch the fluid (a breaking switch)");
+             {{"projected", coupling3d::Forcing3::projected}, {"coupled", coupling3d::Forcing3::coupled},
+              {"off", coupling3d::Forcing3::off}},
+             "projected: marker forces solved so that the projected flow meets the bodies, the bodies feel them a "
+             "step later; coupled: solved with the bodies' velocities, felt in the same step (Eq. 9; stable for "
+             "bodies lighter than the fluid); off: the bodies do not touch the fluid (a breaking switch)");
     v.choice("kernel", coupling.kernel, {ib::Kernel::bilinear, ib::Kernel::peskin4}, "IB kernel of the markers (Peskin 2002 §6)");
     v.real("marker_spacing_cells", coupling.marker_spacing_cells, "cells", 1e-3, 1,
            "surface marker spacing; at most 1 cell (leak)");
