@@ -81,3 +81,5 @@ creaturelab_cli_test(flyer3d)
 creaturelab_cli_test(flyer3d_flesh)
 # the 3-D driven flyer's renders from its HDF5 (Lentine et al. 2010 Figs. 11, 13): stored_fields = volume on 16 x 8 x 16 over twelve frames, the poses against the hinges' kinematics, lentine_q3d's Q-criterion strips in the house style, creature-glb's .glb, exit 2; 14 s CPU
 creaturelab_cli_test(flyer3d_render)
+# the 3-D swimmer (control_fluid3d_swimmer) with its legs held in both cases over two cycles: the claim that it rises with the controller FAILs (the breaking test), series and metrics written, bad phases and a body outside the box exit 2; 4.4 s CPU
+creaturelab_cli_test(swimmer3d)
