@@ -37,15 +37,15 @@ inline ControllerSettings swimmer3dControllerDefaults() {
   return c;
 }
 
-// §7.2's water "open at the top and closed elsewhere" (the paper gives no box): a 1.5 m cube round the
-// creature's 0.9 m span, free-slip sides and floor, an open top; inviscid (Eq. 5) as the 2-D swimmer;
-// 16 cells along each side (0.094 m cubes: the legs are half a cell thick, the body 3.2 cells across),
-// the exact FFT pressure solve.
+// §7.2's water "open at the top and closed elsewhere" (the paper gives no box): 1.5 m x 1.5 m round the
+// creature's 0.9 m span and 3 m high, so that it can rise for cycles; free-slip sides and floor, an open
+// top; inviscid (Eq. 5) as the 2-D swimmer; 16 cells across (0.094 m cubes: the legs are half a cell
+// thick, the body 3.2 cells across), the exact FFT pressure solve.
 inline fluid3d::FluidParams3 swimmer3dFluid() {
   fluid3d::FluidParams3 f;
   f.domain_x_m = 1.5;
   f.domain_y_m = 1.5;
-  f.domain_z_m = 1.5;
+  f.domain_z_m = 3.0;
   f.cells_x = 16;
   f.density_kg_per_m3 = 1000.0;
   f.kinematic_viscosity_m2_per_s = 0.0;
