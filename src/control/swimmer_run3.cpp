@@ -7,6 +7,46 @@
 
 namespace creaturelab::control {
 
+namespace {
+struct SwimmerSnapshot3 final : FluidSnapshot {
+  coupling3d::CouplingState3 state;
+};
+}  // namespace
+
+SwimmerFluid3::SwimmerFluid3(const rigid::RigidData& data, const fluid3d::FluidParams3& fluid,
+                             const coupling3d::RigidFluidParams3& p, coupling::PhaseSchedule schedule,
+                             std::vector<double> flux_m_per_s)
+    : c_(data, fluid, p), schedule_(std::move(schedule)), flux_m_per_s_(std::move(flux_m_per_s)) {}
+
+double SwimmerFluid3::flux_m_per_s(double t_s) const {
+  return flux_m_per_s_.empty() ? 0.0 : flux_m_per_s_[coupling::phaseAt(schedule_, t_s)];
+}
+
+void SwimmerFluid3::forceAndProject(const rigid::RigidData& data, double dt_s) {
+  // The bodies' time is the step's end: the flux of the step's middle.
+  const double flux = flux_m_per_s(data.time_s() - 0.5 * dt_s);
+  for (std::size_t m = 0; m < c_.params().mouths.size(); ++m) c_.setMouthFlux(m, flux);
+  c_.forceFluid(data, dt_s);
+}
+
+void SwimmerFluid3::save(std::unique_ptr<FluidSnapshot>& s) const {
+  if (!dynamic_cast<SwimmerSnapshot3*>(s.get())) s = std::make_unique<SwimmerSnapshot3>();
+  c_.save(static_cast<SwimmerSnapshot3&>(*s).state);
+}
+
+void SwimmerFluid3::restore(const FluidSnapshot& s, const rigid::RigidData&) {
+  c_.restore(dynamic_cast<const SwimmerSnapshot3&>(s).state);
+}
+
+CoupledFluidFactory swimmerFluid(const fluid3d::FluidParams3& fluid, const coupling3d::RigidFluidParams3& p,
+                                 const coupling::PhaseSchedule& schedule, const std::vector<double>& flux_m_per_s) {
+  return [=](const rigid::RigidData& data, bool single_threaded) -> std::unique_ptr<CoupledFluid> {
+    fluid3d::FluidParams3 f = fluid;
+    if (single_threaded) f.threads = 1;
+    return std::make_unique<SwimmerFluid3>(data, f, p, schedule, flux_m_per_s);
+  };
+}
+
 double geomVolume_m3(int type, const Vec3& s) {
   constexpr double pi = std::numbers::pi;
   switch (type) {
@@ -56,6 +96,7 @@ RiseRecorder3::RiseRecorder3(RiseSettings3 s) : s_(std::move(s)) {
   y_ = &series_.add("com_y_m", "m");
   z_ = &series_.add("rise_z_m", "m");
   phase_ = &series_.add("phase", "");
+  flux_ = &series_.add("mouth_flux_m_per_s", "m/s");
 }
 
 void RiseRecorder3::start(const rigid::RigidData& data) {
@@ -69,7 +110,10 @@ void RiseRecorder3::record(const rigid::RigidData& data) {
   y_->push_back(c[1]);
   z_->push_back(c[2]);
   // The phase the frame ran in: that at its start (time_s is its end).
-  phase_->push_back(coupling::phaseAt(s_.schedule, data.time_s() - data.model().timestep_s() * 0.5));
+  const double t = data.time_s() - data.model().timestep_s() * 0.5;
+  const int phase = coupling::phaseAt(s_.schedule, t);
+  phase_->push_back(phase);
+  flux_->push_back(s_.flux_m_per_s.empty() ? 0.0 : s_.flux_m_per_s[phase]);
 }
 
 std::vector<NamedValue> RiseRecorder3::measure(double density_ratio) const {

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <numbers>
 
-#include "control/coupled_fluid3.hpp"
 #include "kinds/control_fluid_swimmer.hpp"
 
 namespace creaturelab::kinds {
@@ -20,6 +19,9 @@ SwimmerSettings phaseSettings(const ControlFluid3dSwimmerParams& q) {
   s.phase_strength_rad_per_s = q.phase_strength_rad_per_s;
   s.rise_body = q.rise_body;
   s.rise_cycles = q.rise_cycles;
+  s.mouth_body = q.mouth_body;
+  s.phase_flux_m_per_s = q.phase_flux_m_per_s;
+  s.mouth_width_m = 2 * q.mouth_radius_m;
   return s;
 }
 }  // namespace
@@ -69,7 +71,26 @@ control::SwimmerPhases ControlFluid3dSwimmerParams::swimmerPhases(int joints) co
 
 control::RiseSettings3 ControlFluid3dSwimmerParams::riseSettings(const rigid::RigidModel& model) const {
   const control::RiseSettings r = phaseSettings(*this).riseSettings(model, controller.frame_s);
-  return {r.body, r.mouth.schedule, r.frames_per_cycle, r.cycles};
+  return {r.body, r.mouth.schedule, mouth_body.empty() ? std::vector<double>{} : r.mouth.flux_m_per_s,
+          r.frames_per_cycle, r.cycles};
+}
+
+coupling3d::RigidFluidParams3 ControlFluid3dSwimmerParams::rigidFluidParams(const rigid::RigidModel& model) const {
+  coupling3d::RigidFluidParams3 c = coupling;
+  if (mouth_body.empty()) return c;
+  int body = -1;
+  for (int b = 1; b < model.bodies(); ++b)
+    if (model.bodyName(b) == mouth_body) body = b;
+  if (body < 0) throw std::invalid_argument("mouth_body: the model " + model.path() + " has no body '" + mouth_body + "'");
+  coupling3d::Mouth3 m;
+  for (int g = 0; g < model.geoms() && m.geom < 0; ++g)
+    if (model.geomBody(g) == body) m.geom = g;
+  if (m.geom < 0) throw std::invalid_argument("mouth_body: body '" + mouth_body + "' has no geom");
+  m.centre_geom_m = {0.0, 0.0, mouth_centre_z_m};
+  m.normal_geom = {0.0, 0.0, -1.0};
+  m.radius_m = mouth_radius_m;
+  c.mouths.push_back(m);
+  return c;
 }
 
 std::vector<std::pair<std::string, double>> ControlFluid3dSwimmerParams::initialRad() const {
@@ -91,11 +112,12 @@ std::string ControlFluid3dSwimmerParams::validate() const {
     if (auto e = controller.checkInitialPoses(model, true); !e.empty()) return e;
     const auto f = fluidParams();
     if (auto e = f.validate(); !e.empty()) return e;
-    if (auto e = coupling.validate(f); !e.empty()) return e;
+    const auto c = rigidFluidParams(model);
+    if (auto e = c.validate(f); !e.empty()) return e;
     rigid::RigidData data(model);
     for (const auto& [joint, rad] : initialRad()) data.qpos()[model.joint(model.findJoint(joint)).qpos] = rad;
     data.kinematics();
-    coupling3d::RigidFluidCoupling3 probe(data, f, coupling);  // a body outside the box
+    coupling3d::RigidFluidCoupling3 probe(data, f, c);  // a body or the mouth outside the box
     if (controller.average_frames > controller.frames) return "average_frames is larger than frames";
   } catch (const rigid::RigidError& e) {
     return std::string("model_file: ") + e.what();
@@ -128,14 +150,17 @@ Result ControlFluid3dSwimmerKind::run(const Params& params) const {
   const ControllerSettings& k = q.controller;
   const rigid::RigidModel model = k.loadModel();
   const control::ControllerParams p = k.controllerParams();
-  control::FluidController controller(model, p, q.fluidControlParams(), q.initialRad(),
-                                      control::spatialFluid(q.fluidParams(), q.coupling));
+  // §7.2: the mouth's flux follows the phases.
+  const control::RiseSettings3 rs = q.riseSettings(model);
+  control::FluidController controller(
+      model, p, q.fluidControlParams(), q.initialRad(),
+      control::swimmerFluid(q.fluidParams(), q.rigidFluidParams(model), rs.schedule, rs.flux_m_per_s));
   control::FluidRunRecorder3 recorder(model, p);
   // §7.2: the legs' senses and strengths follow the phases; the rise.
   const control::SwimmerPhases phases = q.swimmerPhases(int(p.controlled.size()));
-  control::RiseRecorder3 rise(q.riseSettings(model));
+  control::RiseRecorder3 rise(rs);
   const double density_ratio = control::densityRatio3(model, q.fluid.density_kg_per_m3);
-  const auto& fluid3 = dynamic_cast<const control::CoupledFluid3&>(controller.coupledFluid());
+  const auto& fluid3 = dynamic_cast<const control::SwimmerFluid3&>(controller.coupledFluid());
   Result result;
   try {
     controller.hold(int(q.warmup_frames * k.substeps));

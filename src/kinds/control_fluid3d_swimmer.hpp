@@ -76,6 +76,10 @@ struct ControlFluid3dSwimmerParams {
   std::string phase_fractions = "0.2, 0.1, 0.7";
   std::string phase_senses = "min, min, max";
   std::string phase_strength_rad_per_s = "2.0, 2.0, 0.8571428571428571";
+  std::string mouth_body;
+  double mouth_centre_z_m = -0.34;
+  double mouth_radius_m = 0.07;
+  std::string phase_flux_m_per_s = "-0.25, 0.5, 0.0";
   std::string rise_body = "body";
   std::int64_t rise_cycles = 3;
   bool armature_added_mass = true;
@@ -111,6 +115,15 @@ struct ControlFluid3dSwimmerParams {
     v.text("phase_strength_rad_per_s", phase_strength_rad_per_s, "rad/s",
            "strength of the controlled joints per phase (§2.1's step per frame; the paper gives one); empty: "
            "strength_rad_per_s throughout");
+    v.text("mouth_body", mouth_body, "",
+           "§7.2: body carrying the mouth on its first geom (coupling3d's Mouth3: a disc of markers whose fluid is "
+           "driven along the geom's -z); empty: no mouth");
+    v.real("mouth_centre_z_m", mouth_centre_z_m, "m", -1e3, 1e3,
+           "the mouth disc's centre on the geom's z axis, in its frame (keep it a kernel's half-width outside the "
+           "surface: 0.15 m + 2 cells of 0.094 m)");
+    v.real("mouth_radius_m", mouth_radius_m, "m", 1e-6, 1e3, "the mouth disc's radius (the 2-D swimmer's 0.14 m mouth)");
+    v.text("phase_flux_m_per_s", phase_flux_m_per_s, "m/s",
+           "mouth flux per phase (+ expels downwards, - draws in; the 2-D swimmer's: the same volume in and out)");
     v.text("rise_body", rise_body, "", "body whose subtree's centre of mass is tracked for the rise");
     v.integer("rise_cycles", rise_cycles, 1, 100000, "rise per cycle: mean over the last this many whole cycles");
     v.boolean("armature_added_mass", armature_added_mass,
@@ -165,6 +178,9 @@ struct ControlFluid3dSwimmerParams {
   control::FluidControlParams fluidControlParams() const;
   control::SwimmerPhases swimmerPhases(int joints) const;
   control::RiseSettings3 riseSettings(const rigid::RigidModel& model) const;
+  // The coupling with the mouth (mouth_body's first geom) when one is given; throws std::invalid_argument
+  // naming the key.
+  coupling3d::RigidFluidParams3 rigidFluidParams(const rigid::RigidModel& model) const;
   std::vector<std::pair<std::string, double>> initialRad() const;
   // Ranges, then against the model: the controller, the phases, the rise's cycles within frames, the
   // fluid and coupling, the bodies inside the box.

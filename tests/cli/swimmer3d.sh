@@ -2,7 +2,8 @@
 # The 3-D swimmer (experiments/control/swimmer3d.toml, Lentine et al. 2010 §7.2) with its legs held in both
 # cases (the breaking test: the controller off), two cycles of 1 s: both cases write the rise and phase
 # series and the rise metrics, the creature does not rise, and the claim's checks that it rises with the
-# controller FAIL; bad input (phases not adding up, a body outside the fluid box) exits 2, nothing written.
+# controller FAIL; bad input (phases not adding up, a body outside the fluid box, a mouth on no body) exits 2,
+# nothing written.
 # usage: swimmer3d.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 source "$(dirname "${BASH_SOURCE[0]}")/checks_fail_lib.sh"  # status, broken, also
@@ -34,3 +35,4 @@ echo "ok   controller off: both cases written, no rise"
 source "$(dirname "${BASH_SOURCE[0]}")/expect_bad.sh"
 expect_bad phases "phase_fractions must sum to 1" 'params.phase_fractions="0.5, 0.1, 0.7"'
 expect_bad outside_box "outside the fluid box" 'params.origin_z_m=0.0'
+expect_bad mouth "has no body 'jaw'" 'params.mouth_body=jaw'

@@ -58,7 +58,7 @@ TEST_F(Swimmer3Test, RecorderOnAFallingBox) {
   EXPECT_NEAR(densityRatio3(model, 1000.0), 2.0 / 8.0, 1e-12);
   rigid::RigidData data(model);
   data.kinematics();
-  RiseRecorder3 rec({1, {0.1, {0.5, 0.5}}, 10, 2});
+  RiseRecorder3 rec({1, {0.1, {0.5, 0.5}}, {-0.25, 0.5}, 10, 2});
   rec.start(data);
   for (int f = 0; f < 30; ++f) {
     data.step();
@@ -79,6 +79,9 @@ TEST_F(Swimmer3Test, RecorderOnAFallingBox) {
   const auto& phase = rec.series().all()[3].values;
   EXPECT_EQ(phase[4], 0.0);
   EXPECT_EQ(phase[5], 1.0);
+  const auto& flux = rec.series().all()[4].values;
+  EXPECT_EQ(flux[4], -0.25);
+  EXPECT_EQ(flux[5], 0.5);
 }
 
 }  // namespace
