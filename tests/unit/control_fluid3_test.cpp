@@ -1,7 +1,7 @@
 // The controller over the 3-D coupled fluid (control/coupled_fluid3.hpp; Lentine et al. 2010 §4.3,
-// §5): its snapshot is not exact (the coupling keeps its last reaction and warm start), so each
-// derivative evaluation has its own copy of the fluid; the frames are then bitwise the same for any
-// evaluation and fluid thread count. The snapshot brings the grid back.
+// §5): its snapshot is exact (grid, markers, warm start, pending reaction), so the derivative
+// evaluations share one fluid copy per thread; the frames are bitwise the same for any evaluation and
+// fluid thread count. The snapshot brings the grid back.
 #include <gtest/gtest.h>
 
 #include <cstring>
