@@ -126,7 +126,6 @@ std::string ControlFluid3dParams::validate() const {
     data.kinematics();
     if (flesh) {
       if (auto e = flesh_params.validate(); !e.empty()) return e;
-      if (stored_fields != "none") return "stored_fields: not yet recorded with flesh = true (give none)";
       coupling3d::RigidFluidParams3 c = coupling;
       c.forcing_regularisation = flesh_forcing_regularisation;
       coupling3d::FleshFluidCoupling3 probe(data, f, c, flesh_params);  // the flesh outside the box
