@@ -12,6 +12,9 @@ std::string RigidFluidParams3::validate(const fluid3d::FluidParams3& fluid) cons
   if (!(marker_spacing_cells > 0 && marker_spacing_cells <= 1.0))
     return "marker_spacing_cells must be in (0, 1]: markers farther apart than a cell leave gaps the kernel does "
            "not close and the fluid leaks through the body (got " + std::to_string(marker_spacing_cells) + ")";
+  if (!(marker_retraction_cells >= 0 && marker_retraction_cells < 2.0))
+    return "marker_retraction_cells must be in [0, 2): 2 cells inside, the kernel no longer reaches the surface (got " +
+           std::to_string(marker_retraction_cells) + ")";
   if (!(forcing_tolerance > 0 && forcing_tolerance < 1)) return "forcing_tolerance must be in (0, 1)";
   if (max_forcing_iterations < 1 || max_forcing_iterations > 10000) return "max_forcing_iterations must be 1..10000";
   if (!(forcing_regularisation >= 0 && forcing_regularisation < 1)) return "forcing_regularisation must be in [0, 1)";
@@ -105,7 +108,7 @@ RigidFluidCoupling3::RigidFluidCoupling3(const rigid::RigidData& data, const flu
                                          const RigidFluidParams3& p)
     : p_(p), fluid_(checked(p, f)), mobility_(data.model(), p.held_joints) {
   const fluid3d::MacGrid3& g = fluid_.grid();
-  markers_ = modelSurfaceMarkers(data.model(), p_.marker_spacing_cells * g.dx_m);
+  markers_ = modelSurfaceMarkers(data.model(), p_.marker_spacing_cells * g.dx_m, p_.marker_retraction_cells * g.dx_m);
   if (p_.interior_markers) {
     // At least the kernel's half-width inside, so that no interior marker's stencil reaches past the surface.
     const double margin = 0.5 * ib::kernelSupportCells(p_.kernel) * g.dx_m;

@@ -80,6 +80,14 @@ struct RigidFluidParams3 {
   /// Surface markers per cell: no two neighbours farther apart than marker_spacing_cells dx. At most
   /// 1: farther apart, fluid slips between markers the kernel no longer joins.
   double marker_spacing_cells = 0.5;
+  /// Surface markers moved this many cells (dx) inward along their facet's normal, the retracted Lagrangian
+  /// grid of Breugem 2012 (J. Comput. Phys. 231, 4469; r_d = 0.3 dx for his 3-point kernel; Höfler &
+  /// Schwarzer 2000, Phys. Rev. E 61, 7146): the kernel spreads each marker's forcing about 2 cells on
+  /// either side, so a body forced on its surface drags and carries fluid like one about 0.8 cells larger.
+  /// 1 cancels that for the Stokes drag with peskin4, the default regularisation and interior markers
+  /// (chosen on one sphere array, checked on others); it removes only part of the excess added mass.
+  /// 0 (default): markers on the surface. In [0, 2).
+  double marker_retraction_cells = 0.0;
   /// Also markers inside each primitive geom, on a lattice of one cell at least the kernel's half-width
   /// (2 cells for peskin4) below the surface (interiorMarkers): the fluid inside then moves with the
   /// body instead of lagging it (the kernel constrains only the averaged velocity at the surface markers).

@@ -21,21 +21,34 @@ double area(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 }  // namespace
 
-std::vector<SurfaceMarker3> surfaceMarkers(const std::vector<rigid::GeomSurface>& surfaces, double spacing_m) {
+std::vector<SurfaceMarker3> surfaceMarkers(const std::vector<rigid::GeomSurface>& surfaces, double spacing_m,
+                                           double retraction_m) {
   if (!(spacing_m > 0) || !std::isfinite(spacing_m))
     throw std::invalid_argument("marker spacing must be a positive length");
+  if (!(retraction_m >= 0) || !std::isfinite(retraction_m))
+    throw std::invalid_argument("marker retraction must be a length of at least 0");
   std::vector<SurfaceMarker3> out;
   for (const rigid::GeomSurface& s : surfaces)
     for (const rigid::Triangle& t : s.triangles) {
       const double edge = std::max({distance(t.a, t.b), distance(t.b, t.c), distance(t.c, t.a)});
       const int m = std::max(1, static_cast<int>(std::ceil(edge / spacing_m - 1e-12)));
-      const double piece = area(t.a, t.b, t.c) / (static_cast<double>(m) * m);
+      const double whole = area(t.a, t.b, t.c), piece = whole / (static_cast<double>(m) * m);
+      // The inward shift: −retraction times the unit outward normal (b − a) × (c − a) / (2 area).
+      Vec3 shift{};
+      if (retraction_m > 0 && whole > 0) {
+        const double u[3] = {t.b[0] - t.a[0], t.b[1] - t.a[1], t.b[2] - t.a[2]};
+        const double v[3] = {t.c[0] - t.a[0], t.c[1] - t.a[1], t.c[2] - t.a[2]};
+        const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        for (int d = 0; d < 3; ++d) shift[d] = -retraction_m * n[d] / (2 * whole);
+      }
       // Barycentric lattice: point (i, j) = a + (i/m)(b − a) + (j/m)(c − a). Upward pieces (i, j),
       // (i+1, j), (i, j+1) have centroid (i + 1/3, j + 1/3); downward ones (i+1, j), (i+1, j+1),
       // (i, j+1) for i + j ≤ m − 2 have centroid (i + 2/3, j + 2/3).
       auto at = [&](double i, double j) {
         Vec3 p;
         for (int d = 0; d < 3; ++d) p[d] = t.a[d] + (i / m) * (t.b[d] - t.a[d]) + (j / m) * (t.c[d] - t.a[d]);
+        if (retraction_m > 0)
+          for (int d = 0; d < 3; ++d) p[d] += shift[d];
         return p;
       };
       for (int i = 0; i < m; ++i)
@@ -47,7 +60,7 @@ std::vector<SurfaceMarker3> surfaceMarkers(const std::vector<rigid::GeomSurface>
   return out;
 }
 
-std::vector<SurfaceMarker3> modelSurfaceMarkers(const rigid::RigidModel& model, double spacing_m) {
+std::vector<SurfaceMarker3> modelSurfaceMarkers(const rigid::RigidModel& model, double spacing_m, double retraction_m) {
   if (!(spacing_m > 0) || !std::isfinite(spacing_m))
     throw std::invalid_argument("marker spacing must be a positive length");
   double radius = 0.0;  // the largest radius of a round geom (sphere, capsule, cylinder, ellipsoid)
@@ -60,7 +73,7 @@ std::vector<SurfaceMarker3> modelSurfaceMarkers(const rigid::RigidModel& model, 
   // A chord of 2π r / slices at most the spacing; slices a multiple of 4 (whole rings per hemisphere).
   const int needed = static_cast<int>(std::ceil(2 * std::numbers::pi * radius / spacing_m));
   const int slices = std::min(4096, std::max(16, (needed + 3) / 4 * 4));
-  return surfaceMarkers(rigid::geomSurfaces(model, slices), spacing_m);
+  return surfaceMarkers(rigid::geomSurfaces(model, slices), spacing_m, retraction_m);
 }
 
 std::vector<SurfaceMarker3> interiorMarkers(const rigid::RigidModel& model, double spacing_m, double margin_m) {

@@ -22,13 +22,17 @@ struct SurfaceMarker3 {
   double volume_m3 = 0.0;  ///< volume an interior marker stands for (0 on the surface)
 };
 
-/// Markers of the given surfaces, in surface and triangle order. Throws std::invalid_argument
-/// for a spacing that is not a positive length.
-std::vector<SurfaceMarker3> surfaceMarkers(const std::vector<rigid::GeomSurface>& surfaces, double spacing_m);
+/// Markers of the given surfaces, in surface and triangle order, each moved `retraction_m` inward along
+/// its triangle's normal (0: on the surface; see RigidFluidParams3::marker_retraction_cells); the areas
+/// stay the surface's. Throws std::invalid_argument for a spacing that is not a positive length or a
+/// negative retraction.
+std::vector<SurfaceMarker3> surfaceMarkers(const std::vector<rigid::GeomSurface>& surfaces, double spacing_m,
+                                           double retraction_m = 0.0);
 
 /// Markers of every geom with a volume of the model (rigid::geomSurfaces), its round geoms
 /// tessellated finely enough that a facet's chord is at most the spacing (and at least 16 slices).
-std::vector<SurfaceMarker3> modelSurfaceMarkers(const rigid::RigidModel& model, double spacing_m);
+std::vector<SurfaceMarker3> modelSurfaceMarkers(const rigid::RigidModel& model, double spacing_m,
+                                                double retraction_m = 0.0);
 
 /// Interior markers of the model's primitive geoms (sphere, capsule, ellipsoid, cylinder, box; not
 /// meshes): the points of a cubic lattice of side `spacing_m` centred on the geom that lie at least

@@ -8,3 +8,7 @@ creaturelab_test(coupling3d_physics_tests physics
 creaturelab_test(coupling3d_added_mass_tests physics
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/coupling3d_added_mass_test.cpp
   LIBS cl_coupling3d)
+# the retracted surface markers (marker_retraction_cells): a sphere's added mass against potential flow
+creaturelab_test(coupling3d_retraction_tests physics
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/coupling3d_retraction_test.cpp
+  LIBS cl_coupling3d)
