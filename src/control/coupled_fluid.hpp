@@ -7,6 +7,7 @@
 // CoupledFluid3 (coupling3d::RigidFluidCoupling3, coupled_fluid3.hpp).
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "coupling/rigid_fluid_coupling.hpp"
@@ -29,8 +30,20 @@ class CoupledFluid {
   // §6 step 4: the markers at data's pose force the fluid with the solid's effective velocity, and
   // the projection gives u^{n+1}; the bodies' reaction is kept for the next step.
   virtual void forceAndProject(const rigid::RigidData& data, double dt_s) = 0;
+  // True when the step's forcing is Eq. 9's coupled solve (Lentine et al. 2010 §5): then the caller steps
+  // the solid without the fluid's force and calls forceAndCorrect in place of forceAndProject.
+  virtual bool coupledSolve() const { return false; }
+  // The coupled solve at data's pose: the forcing solved with the bodies' velocities, the DOFs in
+  // held_dofs (the servo's prescribed ones) of infinite mass; data gets the fluid's impulse. Only when
+  // coupledSolve() (else std::logic_error).
+  virtual void forceAndCorrect(rigid::RigidData&, double, const std::vector<int>&) {
+    throw std::logic_error("forceAndCorrect: this fluid's forcing is not the coupled solve");
+  }
   // Adds the last step's reaction on every moving body to data's applied forces.
   virtual void applyReaction(rigid::RigidData& data) const = 0;
+  // Adds the last step's fluid force on every moving body to data's applied forces, whatever the forcing
+  // (the controller's measurements); the reaction unless the adapter says otherwise.
+  virtual void applyFluidForce(rigid::RigidData& data) const { applyReaction(data); }
   // Per body (world body 0 included), the force (N, world) the fluid exerted in the last step.
   virtual const std::vector<Vec3>& bodyForce_n() const = 0;
   virtual int forcingIterations() const = 0;

@@ -20,13 +20,13 @@ class CoupledFluid3 final : public CoupledFluid {
   void forceAndProject(const rigid::RigidData& data, double dt_s) override { c_.forceFluid(data, dt_s); }
   /// Forcing3::coupled (Lentine et al. 2010 Eq. 9): the forcing solved with the bodies' velocities, the
   /// DOFs in held_dofs (the servo's prescribed ones) of infinite mass; data gets the fluid's impulse.
-  bool coupledSolve() const { return c_.params().forcing == coupling3d::Forcing3::coupled; }
-  void forceAndCorrect(rigid::RigidData& data, double dt_s, const std::vector<int>& held_dofs) {
+  bool coupledSolve() const override { return c_.params().forcing == coupling3d::Forcing3::coupled; }
+  void forceAndCorrect(rigid::RigidData& data, double dt_s, const std::vector<int>& held_dofs) override {
     c_.setHeldDofs(held_dofs);
     c_.forceFluid(data, dt_s);
   }
   /// The last step's fluid force on the bodies, whatever the forcing (the controller's measurements).
-  void applyFluidForce(rigid::RigidData& data) const { c_.applyFluidForce(data); }
+  void applyFluidForce(rigid::RigidData& data) const override { c_.applyFluidForce(data); }
   void applyReaction(rigid::RigidData& data) const override { c_.applyReaction(data); }
   const std::vector<Vec3>& bodyForce_n() const override { return c_.bodyForce_n(); }
   int forcingIterations() const override { return c_.forcingIterations(); }

@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "control/central_difference.hpp"
-#include "control/coupled_fluid3.hpp"
 #include "control/prescription.hpp"
 
 namespace creaturelab::control {
@@ -20,9 +19,8 @@ class CouplingReaction final : public ForceModel {
       : c_(c), armature_(std::move(armature)), measuring_(measuring) {}
   void apply(rigid::RigidData& data, std::vector<Vec3>& body_force_n) const override {
     body_force_n = c_->bodyForce_n();
-    const auto* spatial = dynamic_cast<const CoupledFluid3*>(c_);
-    if (measuring_ && spatial)
-      spatial->applyFluidForce(data);
+    if (measuring_)
+      c_->applyFluidForce(data);
     else
       c_->applyReaction(data);
     addArmatureForce(data);
@@ -97,12 +95,9 @@ struct FluidController::World {
     coupling = make(data, single_threaded);
     measured = CouplingReaction(coupling.get(), armature, true);
     force = CouplingReaction(coupling.get(), std::move(armature));
-    spatial = dynamic_cast<CoupledFluid3*>(coupling.get());
-    if (spatial && !spatial->coupledSolve()) spatial = nullptr;
   }
   rigid::RigidData data;
   std::unique_ptr<CoupledFluid> coupling;
-  CoupledFluid3* spatial = nullptr;  // the 3-D coupled solve (Eq. 9), else null
   CouplingReaction force, measured;
   std::vector<int> held_dofs;
   ServoScratch servo;
@@ -173,9 +168,9 @@ void FluidController::coupledStep(World& w, const Prescribed& pr) {
   const ServoReport s = advanceFrame(w.data, pr, w.force, 1, p_.servo_iterations, p_.servo_tolerance_rad, w.servo);
   w.residual_rad = std::max(w.residual_rad, s.residual_rad);
   w.data.kinematics();
-  if (w.spatial) {
+  if (w.coupling->coupledSolve()) {
     prescribedDofs(pr, w.held_dofs);
-    w.spatial->forceAndCorrect(w.data, dt, w.held_dofs);
+    w.coupling->forceAndCorrect(w.data, dt, w.held_dofs);
   } else {
     w.coupling->forceAndProject(w.data, dt);
   }

@@ -22,10 +22,20 @@ double SwimmerFluid3::flux_m_per_s(double t_s) const {
   return flux_m_per_s_.empty() ? 0.0 : flux_m_per_s_[coupling::phaseAt(schedule_, t_s)];
 }
 
-void SwimmerFluid3::forceAndProject(const rigid::RigidData& data, double dt_s) {
+void SwimmerFluid3::setFlux(double time_s, double dt_s) {
   // The bodies' time is the step's end: the flux of the step's middle.
-  const double flux = flux_m_per_s(data.time_s() - 0.5 * dt_s);
+  const double flux = flux_m_per_s(time_s - 0.5 * dt_s);
   for (std::size_t m = 0; m < c_.params().mouths.size(); ++m) c_.setMouthFlux(m, flux);
+}
+
+void SwimmerFluid3::forceAndProject(const rigid::RigidData& data, double dt_s) {
+  setFlux(data.time_s(), dt_s);
+  c_.forceFluid(data, dt_s);
+}
+
+void SwimmerFluid3::forceAndCorrect(rigid::RigidData& data, double dt_s, const std::vector<int>& held_dofs) {
+  setFlux(data.time_s(), dt_s);
+  c_.setHeldDofs(held_dofs);
   c_.forceFluid(data, dt_s);
 }
 
@@ -70,8 +80,8 @@ double densityRatio3(const rigid::RigidModel& model, double rho) {
 std::string stabilityHint3(double ratio) {
   return " [creature mass / displaced fluid mass = " + std::to_string(ratio) +
          "; free bodies coupled explicitly (the staggered step) are unstable when too light for the fluid they "
-         "move (added mass): give the root's DOFs more armature with armature_added_mass, make the creature "
-         "denser or hold its root]";
+         "move (added mass): use forcing = coupled (Eq. 9), or with projected forcing give the root's DOFs more "
+         "armature with armature_added_mass, make the creature denser or hold its root]";
 }
 
 CycleRise cycleRise(const std::vector<double>& z, int per_cycle, int cycles) {

@@ -24,8 +24,12 @@ class SwimmerFluid3 final : public CoupledFluid {
   SwimmerFluid3(const rigid::RigidData& data, const fluid3d::FluidParams3& fluid, const coupling3d::RigidFluidParams3& p,
                 coupling::PhaseSchedule schedule, std::vector<double> flux_m_per_s);
   void advanceFluid(double dt_s) override { c_.advanceFluid(dt_s); }
+  // Projected or off forcing (the coupled solve changes data: forceAndCorrect); both set the mouths' flux first.
   void forceAndProject(const rigid::RigidData& data, double dt_s) override;
+  bool coupledSolve() const override { return c_.params().forcing == coupling3d::Forcing3::coupled; }
+  void forceAndCorrect(rigid::RigidData& data, double dt_s, const std::vector<int>& held_dofs) override;
   void applyReaction(rigid::RigidData& data) const override { c_.applyReaction(data); }
+  void applyFluidForce(rigid::RigidData& data) const override { c_.applyFluidForce(data); }
   const std::vector<Vec3>& bodyForce_n() const override { return c_.bodyForce_n(); }
   int forcingIterations() const override { return c_.forcingIterations(); }
   void placeMarkers(const rigid::RigidData& data) override { c_.placeMarkers(data); }
@@ -37,6 +41,7 @@ class SwimmerFluid3 final : public CoupledFluid {
   double flux_m_per_s(double t_s) const;
 
  private:
+  void setFlux(double time_s, double dt_s);  // the mouths' flux of the step ending at time_s
   coupling3d::RigidFluidCoupling3 c_;
   coupling::PhaseSchedule schedule_;
   std::vector<double> flux_m_per_s_;
