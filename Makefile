@@ -64,7 +64,8 @@ reproduce-build:
 	    && cmake --build $(BUILD) -j $(JOBS) --target creaturelab; } >$(REPRO_LOG) 2>&1 \
 	  || { tail -n 40 $(REPRO_LOG) >&2; echo "reproduce: the build failed (whole log: $(REPRO_LOG))" >&2; exit 1; }
 
-# The runs; the contraction spline fitted to the reproduced bell; every figure drawn from the HDF5
+# The runs; the contraction spline fitted to the reproduced bell; the 3-D creatures' controlled
+# points as .glb (creature-glb: geoms, and flesh when recorded); every figure drawn from the HDF5
 # alone (analysis/draw_runs.py); report.html + REPORT.md (analysis/report.py), whose paths are the
 # last lines printed. The runs' exit code stands (4 when only drawing or the report failed).
 REPRO_OUT ?= results/runs/reproduce
@@ -78,6 +79,8 @@ define reproduce_in
 	  if [ -f $(2)/stagger/index.h5 ]; then rm -rf $(2)/fit_spline; \
 	    $(BUILD)/creaturelab $(FIT_SPLINE) $(2)/stagger $(FIT_SPLINE_ARGS) --out $(2)/fit_spline >/dev/null \
 	      || status=$$((status ? status : 4)); fi; \
+	  for run in flyer3d flyer3d_twist flyer3d_flesh; do if [ -f $(2)/$$run/index.h5 ]; then \
+	    $(BUILD)/creaturelab creature-glb $(2)/$$run --point 0 >/dev/null || status=$$((status ? status : 4)); fi; done; \
 	  /usr/bin/python3 analysis/draw_runs.py $(2) >/dev/null || status=$$((status ? status : 4)); \
 	  /usr/bin/python3 analysis/report.py $(2) || status=$$((status ? status : 4)); \
 	  exit $$status
