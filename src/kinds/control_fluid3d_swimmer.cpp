@@ -35,7 +35,7 @@ ControlFluid3dSwimmerKind::ControlFluid3dSwimmerKind() {
       {"drift_m", "m", "horizontal distance of that centre of mass from its start at the end"},
       {"creature_density_ratio", "", "creature mass over the fluid mass its geoms displace"},
       {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
-      {"forcing_iterations_most", "", "most CG iterations of the projected forcing in any coupled step"},
+      {"forcing_iterations_most", "", "most CG iterations of the forcing in any coupled step"},
       {"markers", "", "surface and interior markers"},
   };
 }
@@ -105,6 +105,9 @@ std::vector<std::pair<std::string, double>> ControlFluid3dSwimmerParams::initial
 std::string ControlFluid3dSwimmerParams::validate() const {
   if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
   if (rise_body.empty()) return "rise_body: give the body whose rise is measured";
+  if (armature_added_mass && coupling.forcing == coupling3d::Forcing3::coupled)
+    return "armature_added_mass: only with forcing = projected (forcing = coupled solves the fluid's added mass "
+           "itself; the armature would count it twice)";
   try {
     const auto model = controller.loadModel();
     if (auto e = fluidControlParams().validate(controller.controllerParams(), model); !e.empty()) return e;

@@ -55,10 +55,13 @@ inline fluid3d::FluidParams3 swimmer3dFluid() {
   return f;
 }
 
-// The fluid box's corner in the world: the creature (at the origin) centred across, 0.6 m above the floor.
+// The fluid box's corner in the world: the creature (at the origin) centred across, 0.6 m above the floor;
+// Eq. 9's coupled solve (the fluid's added mass felt in the step: stable for a free creature this close to
+// the water's density).
 inline coupling3d::RigidFluidParams3 swimmer3dCoupling() {
   coupling3d::RigidFluidParams3 c;
   c.origin_m = {-0.75, -0.75, -0.6};
+  c.forcing = coupling3d::Forcing3::coupled;
   return c;
 }
 
@@ -82,7 +85,7 @@ struct ControlFluid3dSwimmerParams {
   std::string phase_flux_m_per_s = "-0.25, 0.5, 0.0";
   std::string rise_body = "body";
   std::int64_t rise_cycles = 3;
-  bool armature_added_mass = true;
+  bool armature_added_mass = false;
   fluid3d::FluidParams3 fluid = swimmer3dFluid();
   coupling3d::RigidFluidParams3 coupling = swimmer3dCoupling();
 
@@ -128,7 +131,8 @@ struct ControlFluid3dSwimmerParams {
     v.integer("rise_cycles", rise_cycles, 1, 100000, "rise per cycle: mean over the last this many whole cycles");
     v.boolean("armature_added_mass", armature_added_mass,
               "the root's MJCF armature (slides and hinges) as the fluid's added mass, its lagged force given back "
-              "(stabilises the staggered coupling of a creature near the water's density; fluid_controller.hpp)");
+              "(stabilises projected forcing's staggered coupling of a creature near the water's density; "
+              "fluid_controller.hpp); not with forcing = coupled, which solves the added mass");
   }
   // The fluid (src/fluid3d): a box of cubic cells, z up.
   template <class V>
@@ -151,18 +155,20 @@ struct ControlFluid3dSwimmerParams {
   template <class V>
   void describeCoupling(V& v) {
     v.choice("forcing", coupling.forcing,
-             {{"projected", coupling3d::Forcing3::projected}, {"off", coupling3d::Forcing3::off}},
-             "projected: marker forces solved so that the projected flow meets the bodies; off: the bodies do not "
-             "touch the fluid (a breaking switch)");
+             {{"projected", coupling3d::Forcing3::projected}, {"coupled", coupling3d::Forcing3::coupled},
+              {"off", coupling3d::Forcing3::off}},
+             "coupled: marker forces solved with the bodies' velocities, felt in the same step (Eq. 9); projected: "
+             "solved so that the projected flow meets the bodies, felt a step later (here needs armature_added_mass "
+             "and a model with the root's armature); off: the bodies do not touch the fluid (a breaking switch)");
     v.choice("kernel", coupling.kernel, {ib::Kernel::bilinear, ib::Kernel::peskin4}, "IB kernel of the markers (Peskin 2002 §6)");
     v.real("marker_spacing_cells", coupling.marker_spacing_cells, "cells", 1e-3, 1,
            "surface marker spacing; at most 1 cell (leak)");
     v.boolean("interior_markers", coupling.interior_markers,
               "also markers inside each primitive geom, a kernel's half-width below its surface");
     v.real("forcing_tolerance", coupling.forcing_tolerance, "", 1e-12, 1,
-           "projected forcing: CG tolerance, fraction of the largest speed");
+           "projected and coupled forcing: CG tolerance, fraction of the largest speed");
     v.integer("max_forcing_iterations", coupling.max_forcing_iterations, 1, 10000,
-              "projected forcing: CG iterations at most per step");
+              "projected and coupled forcing: CG iterations at most per step");
     v.real("forcing_regularisation", coupling.forcing_regularisation, "", 0, 1,
            "projected forcing: Tikhonov weight on the marker forces (relative to the direct-forcing mass)");
     v.real("origin_x_m", coupling.origin_m[0], "m", -1e4, 1e4, "world x of the fluid box's corner");
@@ -187,8 +193,8 @@ struct ControlFluid3dSwimmerParams {
   std::string validate() const;
 };
 
-// The aqueous swimmer of Lentine et al. 2010 §7.2 (Fig. 7, without flesh and, for now, without the
-// mouth) in the 3-D fluid: the controller of kind control_fluid over the two-way coupled 3-D fluid
+// The aqueous swimmer of Lentine et al. 2010 §7.2 (Fig. 7, without flesh; the mouth with mouth_body) in
+// the 3-D fluid: the controller of kind control_fluid over the two-way coupled 3-D fluid
 // (coupling3d), a free creature whose legs follow §7.2's phases.
 class ControlFluid3dSwimmerKind : public DescribedKind<ControlFluid3dSwimmerParams> {
  public:
