@@ -33,7 +33,7 @@ def draw(run, out):
     amplitude = np.array([float(f.attrs["amplitude_m_per_s"]) for f in points])
     rate = np.array([_metric(f, "decay_rate_error") for f in points])
     velocity = np.array([_metric(f, "velocity_error_rms_m_per_s") for f in points]) / amplitude
-    fig, (conv, energy, plane) = style.subplots(1, 3, height=4.0)
+    fig, (conv, energy, q_axes) = style.subplots(1, 3, height=4.0)
 
     # (a) errors against the grid, the discrete Laplacian's rate error 1 - (sin(k dx/2) / (k dx/2))^2
     # (one wavelength across the box: k dx = 2 pi / cells) and a slope of two through the finest point.
@@ -65,14 +65,14 @@ def draw(run, out):
     dx = float(finest["fields"].attrs.get("dx_m", 1.0))
     extent = [0, q.shape[1] * dx, 0, q.shape[0] * dx]
     lim = float(np.abs(q).max()) or 1.0
-    image = plane.imshow(q, origin="lower", extent=extent, cmap="RdBu_r", vmin=-lim, vmax=lim)
-    fig.colorbar(image, ax=plane, label="Q (1/s^2)", shrink=0.8)
+    image = q_axes.imshow(q, origin="lower", extent=extent, cmap="RdBu_r", vmin=-lim, vmax=lim)
+    fig.colorbar(image, ax=q_axes, label="Q (1/s^2)", shrink=0.8)
     t_last = float(finest["fields/time_s"][-1])
     normal = runs.text(finest.attrs.get("slice_normal", "z"))
     axes = {"x": ("y", "z"), "y": ("x", "z"), "z": ("x", "y")}[normal]
-    plane.set_xlabel(f"{axes[0]} (m)")
-    plane.set_ylabel(f"{axes[1]} (m)")
-    plane.set_title(f"(c) Q, {cells[-1]}^3, t = {t_last:.3g} s")
+    q_axes.set_xlabel(f"{axes[0]} (m)")
+    q_axes.set_ylabel(f"{axes[1]} (m)")
+    q_axes.set_title(f"(c) Q, {cells[-1]}^3, t = {t_last:.3g} s")
 
     nu = float(points[0].attrs["kinematic_viscosity_m2_per_s"])
     k = 2 * np.pi / float(points[0].attrs["domain_x_m"])
