@@ -8,10 +8,11 @@
 
 #include <Eigen/Geometry>
 
+#include "coupling3d/forcing_cg3.hpp"
 #include "flesh/binding.hpp"
 
 namespace creaturelab::coupling3d {
-// Named, not anonymous: the unity build joins this file with rigid_fluid_coupling3.cpp's helpers.
+// Named, not anonymous: the unity build joins this file with rigid_fluid_coupling3.cpp's.
 namespace flesh_forcing {
 
 const fluid3d::FluidParams3& checked(const RigidFluidParams3& p, const fluid3d::FluidParams3& f) {
@@ -27,30 +28,6 @@ const fluid3d::FluidParams3& checked(const RigidFluidParams3& p, const fluid3d::
 flesh::FleshParams fitted(flesh::FleshParams f, double spacing_m) {
   if (f.max_edge_m == 0 || f.max_edge_m > spacing_m) f.max_edge_m = spacing_m;
   return f;
-}
-
-void zero(fluid3d::FaceField3& field) {
-  for (fluid3d::Array3& a : field) a.fill(0.0);
-}
-
-void addScaled(fluid3d::FaceField3& a, double s, const fluid3d::FaceField3& b) {
-  for (int c = 0; c < 3; ++c) {
-    double* p = a[c].data();
-    const double* q = b[c].data();
-    for (std::size_t t = 0; t < a[c].size(); ++t) p[t] += s * q[t];
-  }
-}
-
-double dot(const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
-  double s = 0.0;
-  for (std::size_t k = 0; k < x.size(); ++k) s += x[k][0] * y[k][0] + x[k][1] * y[k][1] + x[k][2] * y[k][2];
-  return s;
-}
-
-double maxAbs(const std::vector<Vec3>& x) {
-  double m = 0.0;
-  for (const Vec3& v : x) m = std::max({m, std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
-  return m;
 }
 
 }  // namespace flesh_forcing
@@ -198,33 +175,21 @@ void FleshFluidCoupling3::projectedForcing(double dt) {
   const double eps = p_.forcing_regularisation;
   const std::size_t n = position_.size();
   const bool pressure = fluid_.stages().pressure;
-  flesh_forcing::zero(spread_);
+  forcing::zero(spread_);
   transfer_.spread(force_, spread_);
-  flesh_forcing::addScaled(g.velocity_m_per_s, to_velocity, spread_);
+  forcing::addScaled(g.velocity_m_per_s, to_velocity, spread_);
   if (pressure) fluid_.project(dt);
   const fluid3d::Array3 pressure_pa = g.pressure_pa;
   residual_.resize(n);
   transfer_.interpolate(g.velocity_m_per_s, residual_);
-  const double scale = std::max(flesh_forcing::maxAbs(velocity_), fluid_.maxVelocityComponent_m_per_s());
+  const double scale = std::max(forcing::maxAbs(velocity_), fluid_.maxVelocityComponent_m_per_s());
   for (std::size_t k = 0; k < n; ++k)
     for (int a = 0; a < 3; ++a)
       residual_[k][a] = velocity_[k][a] - residual_[k][a] - eps * dt / mass_[k] * force_[k][a];
-  z_.resize(n);
-  direction_.resize(n);
-  applied_.resize(n);
-  auto precondition = [&]() {
-    for (std::size_t k = 0; k < n; ++k)
-      for (int a = 0; a < 3; ++a) z_[k][a] = mass_[k] / dt * residual_[k][a];
-    return flesh_forcing::dot(z_, residual_);
-  };
-  double rz = precondition();
-  direction_ = z_;
-  iterations_ = 0;
   const double tol = p_.forcing_tolerance * (scale > 0 ? scale : 1.0);
-  while (flesh_forcing::maxAbs(residual_) > tol && iterations_ < p_.max_forcing_iterations && rz > 0) {
-    ++iterations_;
-    flesh_forcing::zero(spread_);
-    transfer_.spread(direction_, spread_);
+  auto apply = [&](const std::vector<Vec3>& d, std::vector<Vec3>& out) {
+    forcing::zero(spread_);
+    transfer_.spread(d, spread_);
     for (int a = 0; a < 3; ++a) {
       double* q = spread_[a].data();
       for (std::size_t t = 0; t < spread_[a].size(); ++t) q[t] *= to_velocity;
@@ -235,25 +200,18 @@ void FleshFluidCoupling3::projectedForcing(double dt) {
       fluid_.project(dt);
       std::swap(g.velocity_m_per_s, spread_);
     }
-    transfer_.interpolate(spread_, applied_);
+    transfer_.interpolate(spread_, out);
     for (std::size_t k = 0; k < n; ++k)
-      for (int a = 0; a < 3; ++a) applied_[k][a] += eps * dt / mass_[k] * direction_[k][a];
-    const double pap = flesh_forcing::dot(direction_, applied_);
-    if (!(pap > 0)) break;
-    const double alpha = rz / pap;
+      for (int a = 0; a < 3; ++a) out[k][a] += eps * dt / mass_[k] * d[k][a];
+  };
+  auto advance = [&](double alpha) { forcing::addScaled(g.velocity_m_per_s, alpha, spread_); };
+  auto precondition = [&](const std::vector<Vec3>& r, std::vector<Vec3>& z) {
     for (std::size_t k = 0; k < n; ++k)
-      for (int a = 0; a < 3; ++a) {
-        force_[k][a] += alpha * direction_[k][a];
-        residual_[k][a] -= alpha * applied_[k][a];
-      }
-    flesh_forcing::addScaled(g.velocity_m_per_s, alpha, spread_);
-    const double rz_old = rz;
-    rz = precondition();
-    const double beta = rz / rz_old;
-    for (std::size_t k = 0; k < n; ++k)
-      for (int a = 0; a < 3; ++a) direction_[k][a] = z_[k][a] + beta * direction_[k][a];
-  }
-  residual_m_per_s_ = flesh_forcing::maxAbs(residual_);
+      for (int a = 0; a < 3; ++a) z[k][a] = mass_[k] / dt * r[k][a];
+  };
+  iterations_ = forcing::conjugateGradients(force_, residual_, work_, tol, p_.max_forcing_iterations, apply, advance,
+                                            precondition);
+  residual_m_per_s_ = forcing::maxAbs(residual_);
   g.pressure_pa = pressure_pa;
 }
 

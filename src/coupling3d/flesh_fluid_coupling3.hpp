@@ -36,6 +36,7 @@
 
 #include <Eigen/Core>
 
+#include "coupling3d/forcing_cg3.hpp"
 #include "coupling3d/rigid_fluid_coupling3.hpp"
 #include "coupling3d/surface_markers3.hpp"
 #include "coupling3d/transfer3.hpp"
@@ -111,7 +112,8 @@ class FleshFluidCoupling3 {
   std::vector<SurfaceMarker3> interior_;
   Transfer3 transfer_;
   std::vector<double> mass_;  // direct-forcing mass: ρ (dA dx + dV) (kg)
-  std::vector<Vec3> position_, velocity_, residual_, z_, direction_, applied_, force_;
+  std::vector<Vec3> position_, velocity_, residual_, force_;
+  forcing::ForcingWork3 work_;
   fluid3d::FaceField3 spread_;
   Eigen::VectorXd area_m2_;
   std::vector<Vec3> body_force_n_;

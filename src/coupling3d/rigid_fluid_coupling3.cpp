@@ -5,7 +5,13 @@
 #include <numbers>
 #include <utility>
 
+#include "coupling3d/forcing_cg3.hpp"
+
 namespace creaturelab::coupling3d {
+
+using forcing::addScaled;
+using forcing::maxAbs;
+using forcing::zero;
 
 std::string RigidFluidParams3::validate(const fluid3d::FluidParams3& fluid) const {
   if (auto e = fluid.validate(); !e.empty()) return e;
@@ -38,25 +44,6 @@ constexpr double kPi = std::numbers::pi;
 const fluid3d::FluidParams3& checked(const RigidFluidParams3& p, const fluid3d::FluidParams3& f) {
   if (auto e = p.validate(f); !e.empty()) throw std::invalid_argument("coupling3d: " + e);
   return f;
-}
-
-void zero(fluid3d::FaceField3& field) {
-  for (fluid3d::Array3& a : field) a.fill(0.0);
-}
-
-// a += s b, component by component.
-void addScaled(fluid3d::FaceField3& a, double s, const fluid3d::FaceField3& b) {
-  for (int c = 0; c < 3; ++c) {
-    double* p = a[c].data();
-    const double* q = b[c].data();
-    for (std::size_t t = 0; t < a[c].size(); ++t) p[t] += s * q[t];
-  }
-}
-
-double dot(const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
-  double s = 0.0;
-  for (std::size_t k = 0; k < x.size(); ++k) s += x[k][0] * y[k][0] + x[k][1] * y[k][1] + x[k][2] * y[k][2];
-  return s;
 }
 
 // A disc of markers (mouth m) in its geom's frame: a centre marker and rings about it, no two neighbours
@@ -94,12 +81,6 @@ std::vector<SurfaceMarker3> mouthMarkers(const rigid::RigidModel& model, const M
     }
   }
   return out;
-}
-
-double maxAbs(const std::vector<Vec3>& x) {
-  double m = 0.0;
-  for (const Vec3& v : x) m = std::max({m, std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
-  return m;
 }
 
 }  // namespace
@@ -355,52 +336,33 @@ void RigidFluidCoupling3::projectedForcing(double dt) {
     for (std::size_t k = 0; k < n; ++k)
       for (int a = 0; a < 3; ++a) residual_[k][a] -= solid_[k][a];
   }
-  z_.resize(n);
-  direction_.resize(n);
-  applied_.resize(n);
-  auto precondition = [&]() {
-    for (std::size_t k = 0; k < n; ++k)
-      for (int a = 0; a < 3; ++a) z_[k][a] = mass_[k] / (mobility * dt) * residual_[k][a];
-    return dot(z_, residual_);
-  };
-  double rz = precondition();
-  direction_ = z_;
-  iterations_ = 0;
   const double tol = p_.forcing_tolerance * (scale > 0 ? scale : 1.0);
-  while (maxAbs(residual_) > tol && iterations_ < p_.max_forcing_iterations && rz > 0) {
-    ++iterations_;
-    // q = P S p dt/ρ (P H P S p dt/ρ with viscosity_in_forcing), in spread_.
+  auto apply = [&](const std::vector<Vec3>& d, std::vector<Vec3>& out) {
+    // q = P S d dt/ρ (P H P S d dt/ρ with viscosity_in_forcing), in spread_.
     zero(spread_);
-    transfer_.spread(direction_, spread_);
+    transfer_.spread(d, spread_);
     for (int a = 0; a < 3; ++a) {
       double* p = spread_[a].data();
       for (std::size_t t = 0; t < spread_[a].size(); ++t) p[t] *= to_velocity;
     }
     g.pressure_pa.fill(0.0);  // the projection's warm start: the increment's pressure is not the flow's
     respond(spread_, dt);
-    transfer_.interpolate(spread_, applied_);
+    transfer_.interpolate(spread_, out);
     for (std::size_t k = 0; k < n; ++k)
-      for (int a = 0; a < 3; ++a) applied_[k][a] += eps * mobility * dt / mass_[k] * direction_[k][a];
+      for (int a = 0; a < 3; ++a) out[k][a] += eps * mobility * dt / mass_[k] * d[k][a];
     if (coupled) {
-      solidResponse(direction_, solid_, dt);
+      solidResponse(d, solid_, dt);
       for (std::size_t k = 0; k < n; ++k)
-        for (int a = 0; a < 3; ++a) applied_[k][a] += solid_[k][a];
+        for (int a = 0; a < 3; ++a) out[k][a] += solid_[k][a];
     }
-    const double pap = dot(direction_, applied_);
-    if (!(pap > 0)) break;
-    const double alpha = rz / pap;
+  };
+  auto advance = [&](double alpha) { addScaled(g.velocity_m_per_s, alpha, spread_); };
+  auto precondition = [&](const std::vector<Vec3>& r, std::vector<Vec3>& z) {
     for (std::size_t k = 0; k < n; ++k)
-      for (int a = 0; a < 3; ++a) {
-        force_[k][a] += alpha * direction_[k][a];
-        residual_[k][a] -= alpha * applied_[k][a];
-      }
-    addScaled(g.velocity_m_per_s, alpha, spread_);
-    const double rz_old = rz;
-    rz = precondition();
-    const double beta = rz / rz_old;
-    for (std::size_t k = 0; k < n; ++k)
-      for (int a = 0; a < 3; ++a) direction_[k][a] = z_[k][a] + beta * direction_[k][a];
-  }
+      for (int a = 0; a < 3; ++a) z[k][a] = mass_[k] / (mobility * dt) * r[k][a];
+  };
+  iterations_ = forcing::conjugateGradients(force_, residual_, work_, tol, p_.max_forcing_iterations, apply, advance,
+                                            precondition);
   residual_m_per_s_ = maxAbs(residual_);
   g.pressure_pa = pressure_pa;
 }

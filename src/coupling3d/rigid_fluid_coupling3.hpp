@@ -46,6 +46,7 @@
 #include <string>
 #include <vector>
 
+#include "coupling3d/forcing_cg3.hpp"
 #include "coupling3d/solid_mobility3.hpp"
 #include "coupling3d/surface_markers3.hpp"
 #include "coupling3d/transfer3.hpp"
@@ -207,7 +208,8 @@ class RigidFluidCoupling3 {
   std::vector<SurfaceMarker3> markers_;
   Transfer3 transfer_;
   std::vector<double> mass_;  // direct-forcing mass times dt: ρ (dA dx + dV) (kg)
-  std::vector<Vec3> previous_, current_, velocity_, residual_, z_, direction_, applied_, force_;
+  std::vector<Vec3> previous_, current_, velocity_, residual_, force_;
+  forcing::ForcingWork3 work_;
   fluid3d::FaceField3 spread_;
   std::vector<Vec3> body_force_n_, body_torque_n_m_, body_point_m_;
   SolidMobility3 mobility_;
