@@ -1,16 +1,14 @@
 #include "kinds/control_fluid3d.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "control/coupled_flesh_fluid3.hpp"
 #include "control/coupled_fluid3.hpp"
 #include "control/fluid_run3.hpp"
+#include "kinds/fluid3_box.hpp"
 
 namespace creaturelab::kinds {
 namespace {
-constexpr double kDeg3 = 180.0 / std::numbers::pi;
-
 // Every geom's pose per frame as /lagrangian tracks (its size too: /topology holds integers only) and
 // its type and body as /topology; the stored fluid frames as /fields, placed in the world.
 void addRecorded(Result& result, const control::FluidRunRecorder3& recorder, const std::array<double, 3>& origin_m) {
@@ -73,24 +71,13 @@ std::string ControlFluid3dKind::doc() const {
 }
 
 fluid3d::FluidParams3 ControlFluid3dParams::fluidParams() const {
-  fluid3d::FluidParams3 f = fluid;
-  f.cells_y = int(std::lround(double(f.cells_x) * f.domain_y_m / f.domain_x_m));
-  f.cells_z = int(std::lround(double(f.cells_x) * f.domain_z_m / f.domain_x_m));
-  // The coupled step is fixed; a fluid running away is caught as a blow-up.
-  f.time_step_policy = fluid3d::TimeStepPolicy3::fixed;
-  f.fixed_step_s = controller.frame_s / double(controller.substeps);
-  return f;
+  return coupledFluidBox3(fluid, controller.frame_s, controller.substeps);
 }
 
 control::FluidControlParams ControlFluid3dParams::fluidControlParams() const {
-  control::FluidControlParams f;
-  f.perturbation = perturbation == "placed" ? control::Perturbation::placed : control::Perturbation::moved;
-  f.settle_steps = int(settle_steps);
+  control::FluidControlParams f = fluidControlParams3(*this);
   f.creature_force = objective_bodies == "creature";
-  f.average_steps = int(average_steps);
-  f.limit_rad = controlled_limit_deg / kDeg3;
   f.stroke = parseStrokeSense(stroke_sense, splitList(controller.controlled, ','));
-  f.planar_fluid = false;
   return f;
 }
 
@@ -104,12 +91,7 @@ control::FluidRecording3 ControlFluid3dParams::recording() const {
 }
 
 std::vector<std::pair<std::string, double>> ControlFluid3dParams::initialRad() const {
-  std::vector<std::pair<std::string, double>> a;
-  for (const auto& pose : controller.initialPoses()) {
-    if (pose.deg.size() != 1) throw std::invalid_argument("initial_deg: '" + pose.joint + "' needs one angle (hinges only)");
-    a.push_back({pose.joint, pose.deg[0] / kDeg3});
-  }
-  return a;
+  return initialHingeRad3(controller);
 }
 
 std::string ControlFluid3dParams::validate() const {

@@ -1,14 +1,11 @@
 #include "kinds/control_fluid3d_swimmer.hpp"
 
-#include <cmath>
-#include <numbers>
 
 #include "kinds/control_fluid_swimmer.hpp"
+#include "kinds/fluid3_box.hpp"
 
 namespace creaturelab::kinds {
 namespace {
-constexpr double kDegSwim3 = 180.0 / std::numbers::pi;
-
 // The 2-D swimmer's settings without a mouth: they parse and check the phases and the rise's body and
 // cycles the same way (the same keys in their messages).
 SwimmerSettings phaseSettings(const ControlFluid3dSwimmerParams& q) {
@@ -45,23 +42,12 @@ std::string ControlFluid3dSwimmerKind::doc() const {
 }
 
 fluid3d::FluidParams3 ControlFluid3dSwimmerParams::fluidParams() const {
-  fluid3d::FluidParams3 f = fluid;
-  f.cells_y = int(std::lround(double(f.cells_x) * f.domain_y_m / f.domain_x_m));
-  f.cells_z = int(std::lround(double(f.cells_x) * f.domain_z_m / f.domain_x_m));
-  // The coupled step is fixed; a fluid running away is caught as a blow-up.
-  f.time_step_policy = fluid3d::TimeStepPolicy3::fixed;
-  f.fixed_step_s = controller.frame_s / double(controller.substeps);
-  return f;
+  return coupledFluidBox3(fluid, controller.frame_s, controller.substeps);
 }
 
 control::FluidControlParams ControlFluid3dSwimmerParams::fluidControlParams() const {
-  control::FluidControlParams f;
-  f.perturbation = perturbation == "placed" ? control::Perturbation::placed : control::Perturbation::moved;
-  f.settle_steps = int(settle_steps);
-  f.average_steps = int(average_steps);
-  f.limit_rad = controlled_limit_deg / kDegSwim3;
+  control::FluidControlParams f = fluidControlParams3(*this);
   f.armature_added_mass = armature_added_mass;
-  f.planar_fluid = false;
   return f;
 }
 
@@ -94,12 +80,7 @@ coupling3d::RigidFluidParams3 ControlFluid3dSwimmerParams::rigidFluidParams(cons
 }
 
 std::vector<std::pair<std::string, double>> ControlFluid3dSwimmerParams::initialRad() const {
-  std::vector<std::pair<std::string, double>> a;
-  for (const auto& pose : controller.initialPoses()) {
-    if (pose.deg.size() != 1) throw std::invalid_argument("initial_deg: '" + pose.joint + "' needs one angle (hinges only)");
-    a.push_back({pose.joint, pose.deg[0] / kDegSwim3});
-  }
-  return a;
+  return initialHingeRad3(controller);
 }
 
 std::string ControlFluid3dSwimmerParams::validate() const {
