@@ -17,8 +17,7 @@ namespace flesh_forcing {
 
 const fluid3d::FluidParams3& checked(const RigidFluidParams3& p, const fluid3d::FluidParams3& f) {
   if (auto e = p.validate(f); !e.empty()) throw std::invalid_argument("coupling3d: " + e);
-  if (p.forcing != Forcing3::projected && p.forcing != Forcing3::off)
-    throw std::invalid_argument("coupling3d: the flesh couples to the fluid by projected forcing (or off) only");
+  if (!p.mouths.empty()) throw std::invalid_argument("coupling3d: mouths are not available with flesh");
   if (p.viscosity_in_forcing)
     throw std::invalid_argument("coupling3d: viscosity_in_forcing is not available with flesh");
   return f;
@@ -30,14 +29,35 @@ flesh::FleshParams fitted(flesh::FleshParams f, double spacing_m) {
   return f;
 }
 
+const flesh::FleshParams& implicitFlesh(const RigidFluidParams3& p, const flesh::FleshParams& f) {
+  if (p.forcing == Forcing3::coupled && !f.implicit_skeleton)
+    throw std::invalid_argument("coupling3d: the coupled forcing with flesh needs the flesh's implicit_skeleton");
+  return f;
+}
+
+// MuJoCo's qvel indices of the named joints.
+std::vector<int> jointDofs(const rigid::RigidModel& model, const std::vector<std::string>& joints) {
+  std::vector<int> dofs;
+  for (const std::string& name : joints) {
+    const int j = model.findJoint(name);
+    if (j < 0) throw std::invalid_argument("coupling3d: held_joints: the model " + model.path() + " has no joint '" + name + "'");
+    const rigid::JointInfo info = model.joint(j);
+    const int n = info.type == rigid::JointType::free ? 6 : info.type == rigid::JointType::ball ? 3 : 1;
+    for (int d = 0; d < n; ++d) dofs.push_back(info.dof + d);
+  }
+  return dofs;
+}
+
 }  // namespace flesh_forcing
 
 FleshFluidCoupling3::FleshFluidCoupling3(const rigid::RigidData& data, const fluid3d::FluidParams3& f,
                                          const RigidFluidParams3& p, const flesh::FleshParams& fp)
     : p_(p),
       fluid_(flesh_forcing::checked(p, f)),
-      flesh_(data.model(), flesh_forcing::fitted(fp, p.marker_spacing_cells * fluid_.grid().dx_m)),
-      skeleton_(data.model()) {
+      flesh_(data.model(), flesh_forcing::fitted(flesh_forcing::implicitFlesh(p, fp), p.marker_spacing_cells * fluid_.grid().dx_m)),
+      skeleton_(data.model()),
+      held_dofs_(flesh_forcing::jointDofs(data.model(), p.held_joints)),
+      mover_(data.model(), {}) {
   const fluid3d::MacGrid3& g = fluid_.grid();
   if (p_.interior_markers)
     interior_ = interiorMarkers(data.model(), g.dx_m, 0.5 * ib::kernelSupportCells(p_.kernel) * g.dx_m);
@@ -47,6 +67,13 @@ FleshFluidCoupling3::FleshFluidCoupling3(const rigid::RigidData& data, const flu
   force_.assign(n, Vec3{});
   body_force_n_.assign(data.model().bodies(), Vec3{});
   reaction_.assign(data.model().dofs(), 0.0);
+  if (p_.forcing == Forcing3::coupled) {
+    std::vector<bool> fleshed(std::size_t(data.model().bodies()), false);
+    for (int b : flesh_.mesh().body) fleshed[std::size_t(b)] = true;
+    for (const SurfaceMarker3& m : interior_)
+      if (m.body != 0 && !fleshed[std::size_t(m.body)])
+        throw std::invalid_argument("coupling3d: body " + std::to_string(m.body) + " has interior markers but no flesh");
+  }
   for (int a = 0; a < 3; ++a) {
     const std::array<int, 3> e = g.faceExtents(a);
     spread_[a] = fluid3d::Array3(e[0], e[1], e[2]);
@@ -113,6 +140,7 @@ void FleshFluidCoupling3::advanceFluid(double dt) {
   if (stages.external_forces) fluid_.applyExternalForces(dt);
   if (stages.advection) fluid_.advectVelocity(dt);
   if (stages.viscosity) fluid_.applyViscosity(dt);
+  if (p_.forcing == Forcing3::coupled) return;  // the flesh steps in forceFluid, with the forces
   // The flesh's step with the fluid's last reaction, against the skeleton as forceFluid left it; the
   // binding's reactions on the bones are what the scratch skeleton's applied forces collect.
   Eigen::Matrix3Xd& load = flesh_.externalForces_n();
@@ -138,11 +166,17 @@ void FleshFluidCoupling3::advanceFluid(double dt) {
 }
 
 void FleshFluidCoupling3::applyReaction(rigid::RigidData& data) const {
+  if (p_.forcing != Forcing3::coupled) applyFluidForce(data);
+}
+
+void FleshFluidCoupling3::applyFluidForce(rigid::RigidData& data) const {
   double* f = data.appliedForces();
   for (std::size_t d = 0; d < reaction_.size(); ++d) f[d] += reaction_[d];
 }
 
 void FleshFluidCoupling3::forceFluid(const rigid::RigidData& data, double dt) {
+  if (p_.forcing == Forcing3::coupled)
+    throw std::logic_error("coupling3d: the coupled forcing changes the bodies' velocities: pass them as non-const");
   if (!(dt > 0 && std::isfinite(dt))) throw std::invalid_argument("coupling3d: the time step must be positive");
   sync(data);
   try {
@@ -167,8 +201,181 @@ void FleshFluidCoupling3::forceFluid(const rigid::RigidData& data, double dt) {
                                      std::to_string(speed) + " m/s");
 }
 
+void FleshFluidCoupling3::forceFluid(rigid::RigidData& data, double dt) {
+  if (p_.forcing != Forcing3::coupled) {
+    forceFluid(static_cast<const rigid::RigidData&>(data), dt);
+    return;
+  }
+  if (!(dt > 0 && std::isfinite(dt))) throw std::invalid_argument("coupling3d: the time step must be positive");
+  coupledStep(data, dt);
+  const double speed = fluid_.maxVelocityComponent_m_per_s();
+  if (!(speed <= fluid_.params().blowup_speed_m_per_s))
+    throw fluid3d::FluidBlowUpError3("coupling3d: the fluid blew up in the forcing stage at t = " +
+                                     std::to_string(fluid_.time_s()) + " s: max velocity component " +
+                                     std::to_string(speed) + " m/s");
+}
+
+void FleshFluidCoupling3::setHeldDofs(const std::vector<int>& dofs) {
+  for (int d : dofs)
+    if (d < 0 || d >= skeleton_.model().dofs())
+      throw std::invalid_argument("coupling3d: held DOF " + std::to_string(d) + " is not in the model " +
+                                  skeleton_.model().path());
+  held_dofs_ = dofs;
+}
+
+// The coupled step (header): the flesh's backward Euler system K y = b0 against the skeleton at the step's
+// start (skeleton_), the markers where the step without the fluid's force takes them, the forces solved with
+// the flesh's and bones' answer h G K⁻¹ Gᵀ, then the flesh's step and the bones' velocity change with them.
+void FleshFluidCoupling3::coupledStep(rigid::RigidData& data, double dt) {
+  flesh_.externalForces_n().setZero();
+  flesh_.beginStep(skeleton_, dt, held_dofs_);
+  try {
+    placeCoupled(data, dt);
+  } catch (const std::invalid_argument& e) {
+    throw CouplingError3(std::string("coupling3d: the flesh left the fluid box (or came within the kernel's reach of "
+                                     "a wall): ") + e.what());
+  }
+  projectedForcing(dt);
+  // y = K⁻¹ (b0 − h Gᵀ F): the flesh and the bones take exactly −dt Σ F (momentum to K's round-off).
+  toSystem(force_, system_b_);
+  system_b_ = flesh_.stepRightHandSide() - dt * system_b_;
+  flesh_.solveStep(system_b_, system_y_);
+  const int dofs = skeleton_.model().dofs();
+  std::fill(skeleton_.appliedForces(), skeleton_.appliedForces() + dofs, 0.0);
+  flesh_.endStep(skeleton_, dt, system_y_);
+  if (!flesh_.lastStep().cg_converged) throw CouplingError3("coupling3d: the flesh's step gave a non-finite state");
+  // The generalised forces on the bones (binding at the step's end, interior markers' −F), for applyFluidForce.
+  const int nv = flesh_.vertices();
+  for (std::size_t k = 0; k < interior_.size(); ++k) {
+    if (interior_[k].body == 0) continue;
+    const Vec3& F = force_[nv + k];
+    const Vec3 x = markerWorld(skeleton_, interior_[k]);
+    skeleton_.applyForceAt(interior_[k].body, {-F[0], -F[1], -F[2]}, x);
+  }
+  reaction_.assign(skeleton_.appliedForces(), skeleton_.appliedForces() + dofs);
+  const std::vector<double> du(system_y_.data() + 3 * nv, system_y_.data() + 3 * nv + dofs);
+  mover_.apply(data, du, dt);
+  reaction();
+  const double cells = cells_per_step_;
+  sync(data);
+  place(dt, false);
+  cells_per_step_ = cells;
+}
+
+// Markers and their velocities for the coupled solve: vertex i at x_i + h (v_i + dv0_i) moving at v_i + dv0_i
+// (the flesh's step without the fluid's force, y0 = K⁻¹ b0), the interior markers at data's pose moving with
+// data's velocity plus the bones' du0; their arms from their bodies' centres of mass at the step's start.
+void FleshFluidCoupling3::placeCoupled(const rigid::RigidData& data, double dt) {
+  flesh_.solveStep(flesh_.stepRightHandSide(), system_y_);
+  const int nv = flesh_.vertices();
+  const std::size_t n = std::size_t(nv) + interior_.size();
+  const Eigen::Matrix3Xd& x = flesh_.positions_m();
+  const Eigen::Matrix3Xd& v = flesh_.velocities_m_per_s();
+  arm_.resize(n);
+  for (std::size_t k = 0; k < interior_.size(); ++k) {
+    const int b = interior_[k].body;
+    const Vec3 w = markerWorld(skeleton_, interior_[k]);
+    const double* c = skeleton_.bodyComPosition(b);
+    arm_[nv + k] = {w[0] - c[0], w[1] - c[1], w[2] - c[2]};
+  }
+  std::vector<Vec3> base;
+  fromSystem(system_y_, base);  // dv0 at the vertices, the bones' du0 at the interior markers
+  std::vector<Vec3> now(n);
+  velocity_.resize(n);
+  for (int i = 0; i < nv; ++i)
+    for (int a = 0; a < 3; ++a) {
+      velocity_[i][a] = v(a, i) + base[i][a];
+      now[i][a] = x(a, i) + dt * velocity_[i][a] - p_.origin_m[a];
+    }
+  for (std::size_t k = 0; k < interior_.size(); ++k) {
+    const Vec3 w = markerWorld(data, interior_[k]);
+    const Vec3 u = data.pointVelocity(interior_[k].body, w);
+    for (int a = 0; a < 3; ++a) {
+      now[nv + k][a] = w[a] - p_.origin_m[a];
+      velocity_[nv + k][a] = u[a] + base[nv + k][a];
+    }
+  }
+  const double dx = fluid_.grid().dx_m;
+  cells_per_step_ = 0.0;
+  if (position_.size() == n)
+    for (std::size_t k = 0; k < n; ++k)
+      cells_per_step_ = std::max(cells_per_step_, std::hypot(now[k][0] - position_[k][0], now[k][1] - position_[k][1],
+                                                             now[k][2] - position_[k][2]) / dx);
+  if (!(cells_per_step_ <= p_.max_marker_cells_per_step))
+    throw CouplingError3("coupling3d: time step beyond the coupled stability limit: a flesh marker moved " +
+                         std::to_string(cells_per_step_) + " cells in one step of " + std::to_string(dt) +
+                         " s (limit max_marker_cells_per_step = " + std::to_string(p_.max_marker_cells_per_step) +
+                         "); take a smaller step");
+  transfer_.locate(fluid_.grid(), p_.kernel, now);
+  position_ = std::move(now);
+  // The preconditioner's weights: 1 / (dt/(ρ dV) + h / K_ii), K_ii the vertex's diagonal in the flesh's system
+  // (the bones, much heavier than a marker's fluid, add nothing).
+  const Eigen::VectorXd& diag = flesh_.stepDiagonal();
+  weight_.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    for (int a = 0; a < 3; ++a)
+      weight_[k][a] = 1.0 / (dt / mass_[k] + (int(k) < nv ? dt / diag[3 * int(k) + a] : 0.0));
+}
+
+// b = Gᵀ f: the vertices' forces on their rows, the interior markers' as generalised forces J_bᵀ (f, r × f).
+void FleshFluidCoupling3::toSystem(const std::vector<Vec3>& f, Eigen::VectorXd& b) const {
+  const int nv = flesh_.vertices();
+  const int dofs = skeleton_.model().dofs();
+  b.setZero(3 * nv + dofs);
+  for (int i = 0; i < nv; ++i)
+    for (int a = 0; a < 3; ++a) b[3 * i + a] = f[std::size_t(i)][a];
+  std::vector<Eigen::Matrix<double, 6, 1>> wrench(std::size_t(skeleton_.model().bodies()), Eigen::Matrix<double, 6, 1>::Zero());
+  for (std::size_t k = 0; k < interior_.size(); ++k) {
+    const int body = interior_[k].body;
+    if (body == 0) continue;
+    const Vec3& F = f[nv + k];
+    const Vec3& r = arm_[nv + k];
+    Eigen::Matrix<double, 6, 1>& w = wrench[std::size_t(body)];
+    for (int a = 0; a < 3; ++a) w[a] += F[a];
+    w[3] += r[1] * F[2] - r[2] * F[1];
+    w[4] += r[2] * F[0] - r[0] * F[2];
+    w[5] += r[0] * F[1] - r[1] * F[0];
+  }
+  for (std::size_t body = 1; body < wrench.size(); ++body) {
+    const Eigen::MatrixXd& J = flesh_.bodyJacobian(int(body));
+    if (J.size() == 0) continue;
+    b.tail(dofs).noalias() += J.transpose() * wrench[body];
+  }
+}
+
+// v = G y: the vertices' rows; at an interior marker its body's velocity J_b du at the marker's arm.
+void FleshFluidCoupling3::fromSystem(const Eigen::VectorXd& y, std::vector<Vec3>& v) const {
+  const int nv = flesh_.vertices();
+  const int dofs = skeleton_.model().dofs();
+  v.resize(std::size_t(nv) + interior_.size());
+  for (int i = 0; i < nv; ++i)
+    for (int a = 0; a < 3; ++a) v[std::size_t(i)][a] = y[3 * i + a];
+  std::vector<Eigen::Matrix<double, 6, 1>> twist(std::size_t(skeleton_.model().bodies()), Eigen::Matrix<double, 6, 1>::Zero());
+  for (std::size_t body = 1; body < twist.size(); ++body) {
+    const Eigen::MatrixXd& J = flesh_.bodyJacobian(int(body));
+    if (J.size() > 0) twist[body].noalias() = J * y.tail(dofs);
+  }
+  for (std::size_t k = 0; k < interior_.size(); ++k) {
+    const int body = interior_[k].body;
+    const Eigen::Matrix<double, 6, 1>& t = twist[std::size_t(body)];
+    const Vec3& r = arm_[nv + k];
+    v[nv + k] = {t[0] + t[4] * r[2] - t[5] * r[1], t[1] + t[5] * r[0] - t[3] * r[2], t[2] + t[3] * r[1] - t[4] * r[0]};
+  }
+}
+
+// out = h G K⁻¹ Gᵀ f: the markers' velocity change, through the flesh's step and the bones, that the forces
+// −f on them cause within the step (the sign taken by the caller). Symmetric positive semi-definite.
+void FleshFluidCoupling3::solidResponse(const std::vector<Vec3>& f, std::vector<Vec3>& out, double dt) {
+  toSystem(f, system_b_);
+  flesh_.solveStep(system_b_, system_y_);
+  system_y_ *= dt;
+  fromSystem(system_y_, out);
+}
+
 // RigidFluidCoupling3::projectedForcing's solve (its comment derives it) on the flesh's markers:
-// A F = I P S F dt/ρ + ε D F = V − I P u~ by preconditioned CG, warm-started from the last forces.
+// A F = I P S F dt/ρ + ε D F = V − I P u~ by preconditioned CG, warm-started from the last forces; with
+// Forcing3::coupled A adds the flesh's and bones' answer h G K⁻¹ Gᵀ (solidResponse) and the preconditioner
+// the flesh's diagonal.
 void FleshFluidCoupling3::projectedForcing(double dt) {
   fluid3d::MacGrid3& g = fluid_.grid();
   const double to_velocity = dt / fluid_.params().density_kg_per_m3;
@@ -186,6 +393,12 @@ void FleshFluidCoupling3::projectedForcing(double dt) {
   for (std::size_t k = 0; k < n; ++k)
     for (int a = 0; a < 3; ++a)
       residual_[k][a] = velocity_[k][a] - residual_[k][a] - eps * dt / mass_[k] * force_[k][a];
+  const bool coupled = p_.forcing == Forcing3::coupled;
+  if (coupled) {
+    solidResponse(force_, solid_, dt);
+    for (std::size_t k = 0; k < n; ++k)
+      for (int a = 0; a < 3; ++a) residual_[k][a] -= solid_[k][a];
+  }
   const double tol = p_.forcing_tolerance * (scale > 0 ? scale : 1.0);
   auto apply = [&](const std::vector<Vec3>& d, std::vector<Vec3>& out) {
     forcing::zero(spread_);
@@ -203,9 +416,19 @@ void FleshFluidCoupling3::projectedForcing(double dt) {
     transfer_.interpolate(spread_, out);
     for (std::size_t k = 0; k < n; ++k)
       for (int a = 0; a < 3; ++a) out[k][a] += eps * dt / mass_[k] * d[k][a];
+    if (coupled) {
+      solidResponse(d, solid_, dt);
+      for (std::size_t k = 0; k < n; ++k)
+        for (int a = 0; a < 3; ++a) out[k][a] += solid_[k][a];
+    }
   };
   auto advance = [&](double alpha) { forcing::addScaled(g.velocity_m_per_s, alpha, spread_); };
   auto precondition = [&](const std::vector<Vec3>& r, std::vector<Vec3>& z) {
+    if (coupled) {
+      for (std::size_t k = 0; k < n; ++k)
+        for (int a = 0; a < 3; ++a) z[k][a] = weight_[k][a] * r[k][a];
+      return;
+    }
     for (std::size_t k = 0; k < n; ++k)
       for (int a = 0; a < 3; ++a) z[k][a] = mass_[k] / dt * r[k][a];
   };

@@ -7,7 +7,7 @@
 // RigidFluidParams3::interior_markers), moving with their bodies, so that the fluid inside the
 // creature moves with it.
 //
-// The forcing is RigidFluidCoupling3's projected direct forcing (Taira & Colonius 2007), solved for
+// Forcing3::projected is RigidFluidCoupling3's projected direct forcing (Taira & Colonius 2007), solved for
 // the markers' forces F with I P (u~ + dt S F/ρ) = V. A coupled step of dt, in the caller's order:
 //   1. advanceFluid   the fluid's stages to u~, then the flesh's backward Euler step against the
 //                     skeleton as forceFluid last saw it, with the fluid's last reaction −F on its
@@ -20,7 +20,7 @@
 // carries ρ_flesh t A against the fluid's ρ A dx within the kernel's reach, a ratio of about 1e-2 for
 // the flyer's 1 cm of flesh at 1050 kg/m^3 in air on 0.125 m cells (the added-mass amplification of
 // the staggered step, −m_a/m per step; Causin, Gerbeau & Nobile 2005). In water the ratio is near 1:
-// there the staggered step is unstable.
+// there the staggered step is unstable (Forcing3::coupled below is not).
 // The regularisation: unlike a rigid surface, the flesh's vertices move with velocities of their own,
 // with patterns on the scale of the vertex spacing (half a cell or less) that the kernel cannot resolve;
 // the solve asks forces of them that grow as 1/forcing_regularisation, and handed back to the vertices
@@ -31,6 +31,29 @@
 // Momentum: the fluid receives dt Σ F at step n, the flesh's vertices and the bones −dt Σ F at step
 // n + 1 (the vertices' share through the flesh's step, the interior markers' through applyReaction),
 // and the binding passes momentum between flesh and bones to the flesh's linear solve's tolerance.
+//
+// Forcing3::coupled: the flesh in the coupled solve, stable for flesh as dense as the water. Lentine et al.
+// 2010 §5 Eq. 9 in its symmetric positive definite form (Robinson-Mosher, Schroeder & Fedkiw 2011), as
+// RigidFluidCoupling3's coupled forcing, with the flesh's backward Euler step (flesh.hpp: flesh and skeleton
+// in one SPD system K y = b, y = (dv, du)) as the markers' mobility. With G the markers' velocity in y (a
+// vertex's dv; an interior marker's J_b du at its arm) the forces −F on the markers add −h Gᵀ F to b, so
+//   (I P S dt/ρ + h G K⁻¹ Gᵀ + ε D) F = G y0 + V* − I P u~,   y0 = K⁻¹ b0,
+// V* the interior markers' velocity after MuJoCo's step without these forces (the vertices': v0), solved by
+// the same conjugate gradients with K factorised once per step (sparse LDLT: an exact inner solve per outer
+// iteration, so the operator is a fixed SPD one) and the preconditioner 1 / (dt/(ρ dV) + h/K_ii). Then
+// y = K⁻¹ (b0 − h Gᵀ F): the flesh steps with it and the bones' free DOFs get du (velocities += du, positions
+// += h du, as MuJoCo's Euler step would have with the forces). A step of dt, in the caller's order:
+//   1. advanceFluid   the fluid's stages to u~ only
+//   2. (solid)        MuJoCo's step from the pose forceFluid last saw, without the flesh's and fluid's forces
+//                     (applyReaction adds nothing), kinematics
+//   3. forceFluid     (non-const data) K at the step's start, the markers where y0 takes them (vertices at
+//                     x0 + h (v0 + dv0), interior markers at data's pose), F solved, the flesh stepped and
+//                     data corrected; the DOFs of held_joints or setHeldDofs (a servo) have infinite mass
+// So fluid, flesh and bones take dt Σ F and −dt Σ F within the step (momentum to K's round-off, whatever the
+// CG's tolerance). Where it differs from Eq. 9: the interface is the markers' kernel-smoothed one; the markers
+// and K are at the step's start or y0's end, not at the corrected end (lagged: first order); the flesh's
+// binding sees the skeleton's velocity at the step's start plus du, not MuJoCo's own change over the step
+// (as in the staggered step). Needs the flesh's implicit_skeleton. Mouths are not available with flesh.
 // Deterministic, no I/O.
 #include <vector>
 
@@ -38,6 +61,7 @@
 
 #include "coupling3d/forcing_cg3.hpp"
 #include "coupling3d/rigid_fluid_coupling3.hpp"
+#include "coupling3d/solid_mobility3.hpp"
 #include "coupling3d/surface_markers3.hpp"
 #include "coupling3d/transfer3.hpp"
 #include "flesh/flesh.hpp"
@@ -62,15 +86,27 @@ class FleshFluidCoupling3 {
   /// The flesh of `data`'s model (FleshParams), placed on the skeleton at data's pose
   /// (data.kinematics() done), its vertices the fluid's markers; the fluid at rest. The flesh's
   /// longest edge is made at most marker_spacing_cells dx (FleshParams::max_edge_m, when larger or 0).
-  /// Throws std::invalid_argument for unusable parameters (a forcing other than projected or off,
-  /// viscosity_in_forcing) or a vertex outside the fluid box.
+  /// Throws std::invalid_argument for unusable parameters (viscosity_in_forcing, mouths, the coupled forcing
+  /// without the flesh's implicit_skeleton, a held joint the model lacks) or a vertex outside the fluid box.
   FleshFluidCoupling3(const rigid::RigidData& data, const fluid3d::FluidParams3& fluid, const RigidFluidParams3& p,
                       const flesh::FleshParams& flesh);
 
   void advanceFluid(double dt_s);
-  /// Adds the bones' reactions pending for this step (binding and interior markers) to data's applied forces.
+  /// Adds the bones' reactions pending for this step (binding and interior markers) to data's applied forces
+  /// (nothing with Forcing3::coupled: forceFluid gave them to the bones in its own step).
   void applyReaction(rigid::RigidData& data) const;
+  /// Adds the generalised forces the last step's flesh and fluid exerted on the bones to data's applied
+  /// forces, whatever the forcing (for measurements: the actuator torques that hold the joints under them).
+  void applyFluidForce(rigid::RigidData& data) const;
+  /// Projected or off forcing (throws std::logic_error for coupled: it changes data).
   void forceFluid(const rigid::RigidData& data, double dt_s);
+  /// Forcing3::coupled: the flesh's step and the marker forces solved together (above); data (MuJoCo's step
+  /// without the flesh's and the fluid's forces) gets their impulse on its free DOFs. Other forcings: as the
+  /// const overload.
+  void forceFluid(rigid::RigidData& data, double dt_s);
+  /// Forcing3::coupled: the DOFs (MuJoCo's qvel indices) the caller prescribes from the next forceFluid on, in
+  /// place of held_joints'; throws std::invalid_argument for an index out of range.
+  void setHeldDofs(const std::vector<int>& dofs);
   /// The skeleton moved to data's pose without a step: every vertex moved rigidly with its body (its
   /// velocity relative to its anchor kept, turned with the body), the markers placed there.
   void placeMarkers(const rigid::RigidData& data);
@@ -104,6 +140,11 @@ class FleshFluidCoupling3 {
   void place(double dt_s, bool step);  // markers at the flesh and bones; with step, their velocities and the check
   void projectedForcing(double dt_s);
   void reaction();
+  void coupledStep(rigid::RigidData& data, double dt_s);
+  void placeCoupled(const rigid::RigidData& data, double dt_s);
+  void toSystem(const std::vector<Vec3>& f, Eigen::VectorXd& b) const;   // b = Gᵀ f
+  void fromSystem(const Eigen::VectorXd& y, std::vector<Vec3>& v) const; // v = G y
+  void solidResponse(const std::vector<Vec3>& f, std::vector<Vec3>& out, double dt_s);
 
   RigidFluidParams3 p_;
   fluid3d::FluidSolver3 fluid_;
@@ -118,6 +159,13 @@ class FleshFluidCoupling3 {
   Eigen::VectorXd area_m2_;
   std::vector<Vec3> body_force_n_;
   std::vector<double> reaction_;  // generalised forces on the skeleton for the next MuJoCo step
+  // Forcing3::coupled: held DOFs, the applier of the bones' velocity change (no DOF held), each marker's
+  // arm from its body's centre of mass at the step's start (interior markers), the preconditioner's
+  // weights, the flesh system's vectors.
+  std::vector<int> held_dofs_;
+  SolidMobility3 mover_;
+  std::vector<Vec3> arm_, solid_, weight_;
+  Eigen::VectorXd system_b_, system_y_;
   double cells_per_step_ = 0.0;
   int iterations_ = 0;
   double residual_m_per_s_ = 0.0;

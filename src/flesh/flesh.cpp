@@ -86,7 +86,8 @@ void Flesh::anchorJacobians(rigid::RigidData& skeleton) {
   double* applied = skeleton.appliedForces();
   const std::vector<double> keep(applied, applied + dofs_);
   const int bodies = skeleton.model().bodies();
-  std::vector<Eigen::MatrixXd> body_jacobian(bodies);  // 6 x dofs: linear at c, then angular
+  body_jacobian_.assign(bodies, Eigen::MatrixXd());
+  std::vector<Eigen::MatrixXd>& body_jacobian = body_jacobian_;  // 6 x dofs: linear at c, then angular
   for (int b : mesh_.body) {
     if (body_jacobian[b].size() > 0) continue;
     body_jacobian[b].setZero(6, dofs_);
@@ -202,6 +203,51 @@ void Flesh::bindingReactions(double h, rigid::RigidData& skeleton) {
                               binding_c_[i] * (state_.v_m_per_s.col(i) - anchor_v1.col(i));
   summary_.binding_impulse_on_flesh_ns = h * binding_force_n_.rowwise().sum();
   applyReactions(mesh_, binding_force_n_, anchor_m_, skeleton);
+}
+
+void Flesh::beginStep(rigid::RigidData& skeleton, double h_s, const std::vector<int>& held_dofs) {
+  if (!(h_s > 0) || !std::isfinite(h_s)) throw std::invalid_argument("flesh: step needs a positive time step (s)");
+  if (!params_.implicit_skeleton)
+    throw std::invalid_argument("flesh: a step solved with outside impulses needs implicit_skeleton");
+  if (skeleton.model().bodies() != model_bodies_)
+    throw std::invalid_argument("flesh: stepped against a skeleton of " + std::to_string(skeleton.model().bodies()) +
+                                " bodies, built on one of " + std::to_string(model_bodies_));
+  if (external_n_.cols() != vertices())
+    throw std::invalid_argument("flesh: externalForces_n() must keep its 3 x " + std::to_string(vertices()) + " shape");
+  skeleton.kinematics();
+  anchorStates(mesh_, skeleton, anchor_m_, anchor_v_);
+  anchorJacobians(skeleton);
+  for (int d : held_dofs) {
+    if (d < 0 || d >= dofs_) throw std::invalid_argument("flesh: held DOF " + std::to_string(d) + " is not the skeleton's");
+    anchor_jacobian_.col(d).setZero();
+    for (Eigen::MatrixXd& j : body_jacobian_)
+      if (j.size() > 0) j.col(d).setZero();
+    euler_matrix_.row(d).setZero();
+    euler_matrix_.col(d).setZero();
+    euler_matrix_(d, d) = 1.0;
+  }
+  forcesAtStart();
+  rightHandSide(h_s);
+  assembleMatrix(h_s);
+  diagonal_ = a_.diagonal();
+  ldlt_.compute(a_);
+  if (ldlt_.info() != Eigen::Success) throw std::invalid_argument("flesh: the step's matrix could not be factorised");
+}
+
+void Flesh::solveStep(const Eigen::VectorXd& b, Eigen::VectorXd& y) const {
+  if (b.size() != a_.rows()) throw std::invalid_argument("flesh: solveStep with a right-hand side of the wrong size");
+  y = ldlt_.solve(b);
+}
+
+void Flesh::endStep(rigid::RigidData& skeleton, double h_s, const Eigen::VectorXd& y) {
+  if (y.size() != a_.rows()) throw std::invalid_argument("flesh: endStep with a solution of the wrong size");
+  dv_ = y;
+  summary_.cg_iterations = 0;
+  summary_.cg_relative_residual = 0;
+  summary_.cg_converged = y.allFinite();
+  integrate(h_s);
+  bindingReactions(h_s, skeleton);
+  external_n_.setZero();
 }
 
 double Flesh::kineticEnergy_j() const { return edges_.kineticEnergy(state_); }

@@ -37,6 +37,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include "flesh/flesh_mesh.hpp"
@@ -85,6 +86,26 @@ class Flesh {
   void step(rigid::RigidData& skeleton, double h_s);
   const FleshStepSummary& lastStep() const { return summary_; }
 
+  // The same step split for a caller that solves impulses on the vertices and on the skeleton's DOFs
+  // together with it (the fluid's coupled solve, coupling3d/flesh_fluid_coupling3.hpp). beginStep assembles
+  // the system above against the skeleton's current state (external forces included as they stand),
+  // K y = b with y = (dv, du) over every DOF, those in held_dofs (MuJoCo qvel indices) of infinite mass: their
+  // rows and columns of K are the identity's and their Jacobian columns zero, so du = 0 there; and factorises
+  // K (sparse LDLT: solveStep is exact to round-off, so K⁻¹ is a fixed symmetric operator an outer solve can
+  // use). An impulse J on the vertices (N s, per vertex) and the DOFs (N m s, generalised) adds (J_v, J_q) to b.
+  // endStep(y) sets v1 = v0 + dv, x1 = x0 + h v1, adds the binding's reactions at the step's end to the
+  // skeleton's applied forces and clears the external forces, as step() does. Needs implicit_skeleton.
+  // Throws std::invalid_argument for a held DOF out of range, a wrong size or a failed factorisation.
+  void beginStep(rigid::RigidData& skeleton, double h_s, const std::vector<int>& held_dofs);
+  const Eigen::VectorXd& stepRightHandSide() const { return rhs_; }
+  // The diagonal of K (vertex rows first).
+  const Eigen::VectorXd& stepDiagonal() const { return diagonal_; }
+  void solveStep(const Eigen::VectorXd& b, Eigen::VectorXd& y) const;
+  // Body b's Jacobian at beginStep's state: 6 x DOFs, the linear velocity of its centre of mass then its
+  // angular velocity (world), zero columns for the held DOFs; empty for a body without flesh.
+  const Eigen::MatrixXd& bodyJacobian(int b) const { return body_jacobian_[b]; }
+  void endStep(rigid::RigidData& skeleton, double h_s, const Eigen::VectorXd& y);
+
   // Measures. Binding energy at the skeleton's pose as its kinematics last computed it.
   double kineticEnergy_j() const;
   double stretchEnergy_j() const;  // edges' 0.5 k (|l| - r)^2
@@ -117,6 +138,9 @@ class Flesh {
   Eigen::Matrix3Xd anchor_m_, anchor_v_, force_n_, binding_force_n_;
   Eigen::MatrixXd anchor_jacobian_;   // 3 vertices x dofs: J_i stacked
   Eigen::MatrixXd euler_matrix_;      // B = M + h D, dofs x dofs
+  std::vector<Eigen::MatrixXd> body_jacobian_;  // per body: 6 x dofs (linear at the centre of mass, angular)
+  Eigen::VectorXd diagonal_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
   std::vector<Eigen::Triplet<double>> stiffness_, damping_, entries_;
   Eigen::SparseMatrix<double> a_;
   Eigen::VectorXd rhs_, dv_;
