@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "coupling3d/forcing_cg3.hpp"
+#include "coupling3d/mouth_markers3.hpp"
 #include "flesh/binding.hpp"
 
 namespace creaturelab::coupling3d {
@@ -17,7 +18,6 @@ namespace flesh_forcing {
 
 const fluid3d::FluidParams3& checked(const RigidFluidParams3& p, const fluid3d::FluidParams3& f) {
   if (auto e = p.validate(f); !e.empty()) throw std::invalid_argument("coupling3d: " + e);
-  if (!p.mouths.empty()) throw std::invalid_argument("coupling3d: mouths are not available with flesh");
   if (p.viscosity_in_forcing)
     throw std::invalid_argument("coupling3d: viscosity_in_forcing is not available with flesh");
   return f;
@@ -61,6 +61,13 @@ FleshFluidCoupling3::FleshFluidCoupling3(const rigid::RigidData& data, const flu
   const fluid3d::MacGrid3& g = fluid_.grid();
   if (p_.interior_markers)
     interior_ = interiorMarkers(data.model(), g.dx_m, 0.5 * ib::kernelSupportCells(p_.kernel) * g.dx_m);
+  mouth_of_.assign(interior_.size(), -1);
+  for (std::size_t m = 0; m < p_.mouths.size(); ++m) {
+    const std::vector<SurfaceMarker3> disc = mouthMarkers(data.model(), p_.mouths[m], p_.marker_spacing_cells * g.dx_m);
+    interior_.insert(interior_.end(), disc.begin(), disc.end());
+    mouth_of_.resize(interior_.size(), int(m));
+  }
+  mouth_flux_m_per_s_.assign(p_.mouths.size(), 0.0);
   sync(data);
   flesh_.placeOnSkeleton(skeleton_);
   const std::size_t n = std::size_t(flesh_.vertices()) + interior_.size();
@@ -108,7 +115,9 @@ void FleshFluidCoupling3::place(double dt, bool step) {
     }
   for (std::size_t k = 0; k < interior_.size(); ++k) {
     const Vec3 w = markerWorld(skeleton_, interior_[k]);
-    const Vec3 u = skeleton_.pointVelocity(interior_[k].body, w);
+    Vec3 u = skeleton_.pointVelocity(interior_[k].body, w);
+    if (mouth_of_[k] >= 0)
+      addMouthFlux(skeleton_, p_.mouths[std::size_t(mouth_of_[k])], mouth_flux_m_per_s_[std::size_t(mouth_of_[k])], u);
     for (int a = 0; a < 3; ++a) {
       now[nv + k][a] = w[a] - p_.origin_m[a];
       velocity_[nv + k][a] = u[a];
@@ -131,7 +140,8 @@ void FleshFluidCoupling3::place(double dt, bool step) {
   const double rho = fluid_.params().density_kg_per_m3;
   mass_.resize(n);
   for (int i = 0; i < nv; ++i) mass_[i] = rho * area_m2_[i] * dx;
-  for (std::size_t k = 0; k < interior_.size(); ++k) mass_[nv + k] = rho * interior_[k].volume_m3;
+  for (std::size_t k = 0; k < interior_.size(); ++k)
+    mass_[nv + k] = rho * (interior_[k].area_m2 * dx + interior_[k].volume_m3);  // a mouth's: ρ dA dx
 }
 
 void FleshFluidCoupling3::advanceFluid(double dt) {
@@ -215,6 +225,14 @@ void FleshFluidCoupling3::forceFluid(rigid::RigidData& data, double dt) {
                                      std::to_string(speed) + " m/s");
 }
 
+void FleshFluidCoupling3::setMouthFlux(std::size_t mouth, double flux_m_per_s) {
+  if (mouth >= mouth_flux_m_per_s_.size())
+    throw std::invalid_argument("coupling3d: mouth " + std::to_string(mouth) + " of " +
+                                std::to_string(mouth_flux_m_per_s_.size()));
+  if (!std::isfinite(flux_m_per_s)) throw std::invalid_argument("coupling3d: a mouth's flux must be finite");
+  mouth_flux_m_per_s_[mouth] = flux_m_per_s;
+}
+
 void FleshFluidCoupling3::setHeldDofs(const std::vector<int>& dofs) {
   for (int d : dofs)
     if (d < 0 || d >= skeleton_.model().dofs())
@@ -289,7 +307,9 @@ void FleshFluidCoupling3::placeCoupled(const rigid::RigidData& data, double dt) 
     }
   for (std::size_t k = 0; k < interior_.size(); ++k) {
     const Vec3 w = markerWorld(data, interior_[k]);
-    const Vec3 u = data.pointVelocity(interior_[k].body, w);
+    Vec3 u = data.pointVelocity(interior_[k].body, w);
+    if (mouth_of_[k] >= 0)
+      addMouthFlux(data, p_.mouths[std::size_t(mouth_of_[k])], mouth_flux_m_per_s_[std::size_t(mouth_of_[k])], u);
     for (int a = 0; a < 3; ++a) {
       now[nv + k][a] = w[a] - p_.origin_m[a];
       velocity_[nv + k][a] = u[a] + base[nv + k][a];
@@ -481,6 +501,7 @@ void FleshFluidCoupling3::save(FleshFluidState3& s) const {
   s.force_n = force_;
   s.body_force_n = body_force_n_;
   s.reaction = reaction_;
+  s.mouth_flux_m_per_s = mouth_flux_m_per_s_;
 }
 
 void FleshFluidCoupling3::restore(const FleshFluidState3& s, const rigid::RigidData& data) {
@@ -489,6 +510,7 @@ void FleshFluidCoupling3::restore(const FleshFluidState3& s, const rigid::RigidD
   force_ = s.force_n;
   body_force_n_ = s.body_force_n;
   reaction_ = s.reaction;
+  if (s.mouth_flux_m_per_s.size() == mouth_flux_m_per_s_.size()) mouth_flux_m_per_s_ = s.mouth_flux_m_per_s;
   sync(data);
   place(0.0, false);
 }

@@ -53,7 +53,10 @@
 // CG's tolerance). Where it differs from Eq. 9: the interface is the markers' kernel-smoothed one; the markers
 // and K are at the step's start or y0's end, not at the corrected end (lagged: first order); the flesh's
 // binding sees the skeleton's velocity at the step's start plus du, not MuJoCo's own change over the step
-// (as in the staggered step). Needs the flesh's implicit_skeleton. Mouths are not available with flesh.
+// (as in the staggered step). Needs the flesh's implicit_skeleton.
+//
+// Mouths (RigidFluidParams3::mouths, Lentine et al. 2010 §7.2): their discs of markers ride with their geoms'
+// bodies as the interior markers do, their velocity the body's plus the flux along the disc's normal.
 // Deterministic, no I/O.
 #include <vector>
 
@@ -79,6 +82,7 @@ struct FleshFluidState3 {
   std::vector<Vec3> force_n;
   std::vector<Vec3> body_force_n;
   std::vector<double> reaction;
+  std::vector<double> mouth_flux_m_per_s;
 };
 
 class FleshFluidCoupling3 {
@@ -86,7 +90,7 @@ class FleshFluidCoupling3 {
   /// The flesh of `data`'s model (FleshParams), placed on the skeleton at data's pose
   /// (data.kinematics() done), its vertices the fluid's markers; the fluid at rest. The flesh's
   /// longest edge is made at most marker_spacing_cells dx (FleshParams::max_edge_m, when larger or 0).
-  /// Throws std::invalid_argument for unusable parameters (viscosity_in_forcing, mouths, the coupled forcing
+  /// Throws std::invalid_argument for unusable parameters (viscosity_in_forcing, the coupled forcing
   /// without the flesh's implicit_skeleton, a held joint the model lacks) or a vertex outside the fluid box.
   FleshFluidCoupling3(const rigid::RigidData& data, const fluid3d::FluidParams3& fluid, const RigidFluidParams3& p,
                       const flesh::FleshParams& flesh);
@@ -107,6 +111,9 @@ class FleshFluidCoupling3 {
   /// Forcing3::coupled: the DOFs (MuJoCo's qvel indices) the caller prescribes from the next forceFluid on, in
   /// place of held_joints'; throws std::invalid_argument for an index out of range.
   void setHeldDofs(const std::vector<int>& dofs);
+  /// The flux speed (m/s, + expels along the normal) of mouth `mouth` (RigidFluidParams3::mouths) from the next
+  /// forceFluid on.
+  void setMouthFlux(std::size_t mouth, double flux_m_per_s);
   /// The skeleton moved to data's pose without a step: every vertex moved rigidly with its body (its
   /// velocity relative to its anchor kept, turned with the body), the markers placed there.
   void placeMarkers(const rigid::RigidData& data);
@@ -118,7 +125,8 @@ class FleshFluidCoupling3 {
   /// Per body (world body 0 included), of the last forceFluid: the force (N) the fluid exerts on the
   /// body's flesh and interior.
   const std::vector<Vec3>& bodyForce_n() const { return body_force_n_; }
-  /// Force on the fluid per marker (N): the flesh's vertices first, then the bones' interior markers.
+  /// Force on the fluid per marker (N): the flesh's vertices first, then the bones' interior markers, then the
+  /// mouths'.
   const std::vector<Vec3>& markerForce_n() const { return force_; }
   const std::vector<Vec3>& markerPosition_m() const { return position_; }  ///< fluid frame
   int surfaceMarkers() const { return flesh_.vertices(); }
@@ -150,7 +158,9 @@ class FleshFluidCoupling3 {
   fluid3d::FluidSolver3 fluid_;
   flesh::Flesh flesh_;
   rigid::RigidData skeleton_;
-  std::vector<SurfaceMarker3> interior_;
+  std::vector<SurfaceMarker3> interior_;  // the bones' markers: inside the geoms, then the mouths' discs
+  std::vector<int> mouth_of_;             // per bone marker: its mouth, −1 for none
+  std::vector<double> mouth_flux_m_per_s_;
   Transfer3 transfer_;
   std::vector<double> mass_;  // direct-forcing mass: ρ (dA dx + dV) (kg)
   std::vector<Vec3> position_, velocity_, residual_, force_;
