@@ -7,6 +7,7 @@
 #include "control/fluid_run.hpp"
 #include "kinds/control_params.hpp"
 #include "kinds/control_fluid_swimmer.hpp"
+#include "kinds/validate_fluid3.hpp"
 
 namespace creaturelab::kinds {
 namespace {
@@ -107,30 +108,19 @@ std::vector<std::pair<std::string, double>> ControlFluidParams::initialRad() con
 }
 
 std::string ControlFluidParams::validate() const {
-  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
-  try {
-    const auto model = controller.loadModel();
-    if (auto e = fluidControlParams().validate(controller.controllerParams(), model); !e.empty()) return e;
+  const auto against = [&](const rigid::RigidModel& model) -> std::string {
     if (auto e = swimmer.validate(model, controller.frame_s, controller.frames); !e.empty()) return e;
     const auto f = fluidParams();
     const auto c = rigidFluidParams();
     if (auto e = c.validate(f); !e.empty()) return e;
-    rigid::RigidData data(model);
-    for (const auto& [joint, rad] : initialRad()) {
-      if (model.findJoint(joint) < 0) return "initial_deg: joint '" + joint + "' is not in the model " + model.path();
-      data.qpos()[model.joint(model.findJoint(joint)).qpos] = rad;
-    }
-    data.kinematics();
+    const auto rad = initialRad();
+    for (const auto& pose : rad)
+      if (model.findJoint(pose.first) < 0) return "initial_deg: joint '" + pose.first + "' is not in the model " + model.path();
+    const rigid::RigidData data = posedData(model, rad);
     coupling::RigidFluidCoupling probe(data, f, c);  // a body outside the box, a geom without outline
-    if (controller.average_frames > controller.frames) return "average_frames is larger than frames";
-    if (flap_period_s > 0 && framesPerCycle(flap_period_s, controller.frame_s) * force_cycles > controller.frames)
-      return "force_cycles x flap_period_s is longer than frames";
-  } catch (const rigid::RigidError& e) {
-    return std::string("model_file: ") + e.what();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
+    return "";
+  };
+  return validateControlInFluid(*this, noCheck, against, [&] { return checkFlapCycles(*this); });
 }
 
 CostEstimate ControlFluidKind::estimateCost(const Params& params) const {

@@ -6,6 +6,7 @@
 #include "control/coupled_fluid3.hpp"
 #include "control/fluid_run3.hpp"
 #include "kinds/fluid3_box.hpp"
+#include "kinds/validate_fluid3.hpp"
 
 namespace creaturelab::kinds {
 namespace {
@@ -95,41 +96,32 @@ std::vector<std::pair<std::string, double>> ControlFluid3dParams::initialRad() c
 }
 
 std::string ControlFluid3dParams::validate() const {
-  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
-  try {
-    const auto model = controller.loadModel();
-    if (auto e = fluidControlParams().validate(controller.controllerParams(), model); !e.empty()) return e;
-    if (auto e = controller.checkInitialPoses(model, true); !e.empty()) return e;
-    const auto f = fluidParams();
-    if (auto e = f.validate(); !e.empty()) return e;
-    if (auto e = coupling.validate(f); !e.empty()) return e;
-    rigid::RigidData data(model);
-    for (const auto& [joint, rad] : initialRad()) data.qpos()[model.joint(model.findJoint(joint)).qpos] = rad;
-    data.kinematics();
-    if (flesh) {
-      if (auto e = flesh_params.validate(); !e.empty()) return e;
-      coupling3d::RigidFluidParams3 c = coupling;
-      c.forcing_regularisation = flesh_forcing_regularisation;
-      coupling3d::FleshFluidCoupling3 probe(data, f, c, flesh_params);  // the flesh outside the box
-    } else {
-      coupling3d::RigidFluidCoupling3 probe(data, f, coupling);  // a body outside the box
+  // The geoms' markers, or with flesh its vertices, built in the box: a body or the flesh outside it throws.
+  const auto probe = [&](const rigid::RigidData& data, const fluid3d::FluidParams3& box,
+                         const coupling3d::RigidFluidParams3& c) -> std::string {
+    if (!flesh) {
+      coupling3d::RigidFluidCoupling3 markers(data, box, c);
+      return "";
     }
-    if (controller.average_frames > controller.frames) return "average_frames is larger than frames";
-    if (framesPerCycle(flap_period_s, controller.frame_s) * force_cycles > controller.frames)
-      return "force_cycles x flap_period_s is longer than frames";
-  } catch (const rigid::RigidError& e) {
-    return std::string("model_file: ") + e.what();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
+    if (auto e = flesh_params.validate(); !e.empty()) return e;
+    coupling3d::FleshFluidCoupling3 flesh_markers(data, box, fleshCoupling(), flesh_params);
+    return "";
+  };
+  const auto against = [&](const rigid::RigidModel& model) {
+    return checkInBox3(*this, model, [&] { return coupling; }, probe);
+  };
+  return validateControlInFluid(*this, noCheck, against, [&] { return checkFlapCycles(*this); });
+}
+
+coupling3d::RigidFluidParams3 ControlFluid3dParams::fleshCoupling() const {
+  coupling3d::RigidFluidParams3 c = coupling;
+  c.forcing_regularisation = flesh_forcing_regularisation;
+  return c;
 }
 
 control::CoupledFluidFactory ControlFluid3dParams::coupledFluid() const {
   if (!flesh) return control::spatialFluid(fluidParams(), coupling);
-  coupling3d::RigidFluidParams3 c = coupling;
-  c.forcing_regularisation = flesh_forcing_regularisation;
-  return control::fleshFluid(fluidParams(), c, flesh_params);
+  return control::fleshFluid(fluidParams(), fleshCoupling(), flesh_params);
 }
 
 CostEstimate ControlFluid3dKind::estimateCost(const Params& params) const {

@@ -159,6 +159,8 @@ struct ControlFluid3dParams {
   std::string validate() const;
   // The coupled fluid of the run: the geoms' surfaces as markers, or with flesh its vertices.
   control::CoupledFluidFactory coupledFluid() const;
+  // With flesh, the coupling with flesh_forcing_regularisation in place of forcing_regularisation.
+  coupling3d::RigidFluidParams3 fleshCoupling() const;
 };
 
 // The driven flyer of Lentine et al. 2010 §7.1 (Figs. 11-13, without flesh) in the 3-D fluid: the

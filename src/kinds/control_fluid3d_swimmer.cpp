@@ -3,6 +3,7 @@
 
 #include "kinds/control_fluid_swimmer.hpp"
 #include "kinds/fluid3_box.hpp"
+#include "kinds/validate_fluid3.hpp"
 
 namespace creaturelab::kinds {
 namespace {
@@ -84,31 +85,24 @@ std::vector<std::pair<std::string, double>> ControlFluid3dSwimmerParams::initial
 }
 
 std::string ControlFluid3dSwimmerParams::validate() const {
-  if (std::string problems = rangeProblems(*this); !problems.empty()) return problems;
-  if (rise_body.empty()) return "rise_body: give the body whose rise is measured";
-  if (armature_added_mass && coupling.forcing == coupling3d::Forcing3::coupled)
-    return "armature_added_mass: only with forcing = projected (forcing = coupled solves the fluid's added mass "
-           "itself; the armature would count it twice)";
-  try {
-    const auto model = controller.loadModel();
-    if (auto e = fluidControlParams().validate(controller.controllerParams(), model); !e.empty()) return e;
+  const auto keys = [&]() -> std::string {
+    if (rise_body.empty()) return "rise_body: give the body whose rise is measured";
+    if (armature_added_mass && coupling.forcing == coupling3d::Forcing3::coupled)
+      return "armature_added_mass: only with forcing = projected (forcing = coupled solves the fluid's added mass "
+             "itself; the armature would count it twice)";
+    return "";
+  };
+  const auto against = [&](const rigid::RigidModel& model) -> std::string {
     if (auto e = phaseSettings(*this).validate(model, controller.frame_s, controller.frames); !e.empty()) return e;
-    if (auto e = controller.checkInitialPoses(model, true); !e.empty()) return e;
-    const auto f = fluidParams();
-    if (auto e = f.validate(); !e.empty()) return e;
-    const auto c = rigidFluidParams(model);
-    if (auto e = c.validate(f); !e.empty()) return e;
-    rigid::RigidData data(model);
-    for (const auto& [joint, rad] : initialRad()) data.qpos()[model.joint(model.findJoint(joint)).qpos] = rad;
-    data.kinematics();
-    coupling3d::RigidFluidCoupling3 probe(data, f, c);  // a body or the mouth outside the box
-    if (controller.average_frames > controller.frames) return "average_frames is larger than frames";
-  } catch (const rigid::RigidError& e) {
-    return std::string("model_file: ") + e.what();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
+    // The markers and the mouth built in the box: a body or the mouth outside it throws.
+    const auto probe = [](const rigid::RigidData& data, const fluid3d::FluidParams3& box,
+                          const coupling3d::RigidFluidParams3& c) {
+      coupling3d::RigidFluidCoupling3 markers(data, box, c);
+      return std::string();
+    };
+    return checkInBox3(*this, model, [&] { return rigidFluidParams(model); }, probe);
+  };
+  return validateControlInFluid(*this, keys, against, noCheck);
 }
 
 CostEstimate ControlFluid3dSwimmerKind::estimateCost(const Params& params) const {

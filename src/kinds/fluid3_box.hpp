@@ -1,7 +1,8 @@
 #pragma once
 // What the kinds over the 3-D coupled fluid (control_fluid3d, control_fluid3d_swimmer) build alike from
 // their parameters, written once: the box as the coupled run steps it, the evaluations' common
-// parameters and the initial hinge angles. Each kind adds what is its own.
+// parameters, the initial hinge angles and the checks of the box and the coupling against the model.
+// Each kind adds what is its own.
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -11,8 +12,11 @@
 #include <vector>
 
 #include "control/fluid_controller.hpp"
+#include "coupling3d/rigid_fluid_coupling3.hpp"
 #include "fluid3d/fluid_params3.hpp"
 #include "kinds/control_params.hpp"
+#include "kinds/validate_fluid3.hpp"
+#include "rigid/rigid_model.hpp"
 
 namespace creaturelab::kinds {
 
@@ -49,6 +53,21 @@ inline std::vector<std::pair<std::string, double>> initialHingeRad3(const Contro
     a.push_back({pose.joint, pose.deg[0] / (180.0 / std::numbers::pi)});
   }
   return a;
+}
+
+// A 3-D kind's checks against the model, in this order: q's initial poses (hinges), its box
+// (q.fluidParams()), the coupling `coupling()` in the box; then, with the creature posed at its initial
+// angles, `probe(data, box, coupling)` builds the kind's coupling there (which throws
+// std::invalid_argument when a body is outside the box) and returns "" or what else is wrong.
+template <class P, class Coupling, class Probe>
+std::string checkInBox3(const P& q, const rigid::RigidModel& model, Coupling&& coupling, Probe&& probe) {
+  if (auto e = q.controller.checkInitialPoses(model, true); !e.empty()) return e;
+  const fluid3d::FluidParams3 box = q.fluidParams();
+  if (auto e = box.validate(); !e.empty()) return e;
+  const coupling3d::RigidFluidParams3 c = coupling();
+  if (auto e = c.validate(box); !e.empty()) return e;
+  const rigid::RigidData data = posedData(model, q.initialRad());
+  return probe(data, box, c);
 }
 
 }  // namespace creaturelab::kinds
