@@ -8,7 +8,7 @@
 
 #include "control/coupled_fluid3.hpp"
 #include "control/fluid_controller.hpp"
-#include "control_models.hpp"
+#include "control_fluid3_scene.hpp"
 
 namespace creaturelab::control {
 namespace {
@@ -18,52 +18,16 @@ class ControlFluid3Test : public testing::ScratchDirTest {
   ControlFluid3Test() : ScratchDirTest("control_fluid3") {}
 };
 
-// The chain's two hinged capsules (0.4 m, along +x from the origin) in a 0.5 m/s stream entering
-// at x low, a 1.6 x 0.8 x 1.2 m box of 16 x 8 x 12 cells, 60 frames a second.
-fluid3d::FluidParams3 stream3(int fluid_threads) {
-  fluid3d::FluidParams3 f;
-  f.domain_x_m = 1.6;
-  f.domain_y_m = 0.8;
-  f.domain_z_m = 1.2;
-  f.cells_x = 16;
-  f.cells_y = 8;
-  f.cells_z = 12;
-  f.kinematic_viscosity_m2_per_s = 0;
-  f.boundaries.axis[0].low = fluid3d::BoundaryType3::inflow;
-  f.boundaries.axis[0].low_inflow_m_per_s = 0.5;
-  f.boundaries.axis[0].high = fluid3d::BoundaryType3::open;
-  f.time_step_policy = fluid3d::TimeStepPolicy3::fixed;
-  f.fixed_step_s = 1.0 / 60;
-  f.threads = fluid_threads;
-  return f;
-}
-
-// Three frames: angles, derivatives and objectives, then the fluid's u.
+// Three frames of the chain in the stream (control_fluid3_scene.hpp): angles, derivatives and objectives,
+// then the fluid's u.
 std::vector<double> run3(const std::string& xml, int threads, int fluid_threads) {
-  rigid::RigidModel model = rigid::RigidModel::load(xml);
-  model.setGravity({0, 0, 0});
-  model.setTimestep(1.0 / 60);
-  coupling3d::RigidFluidParams3 cp;
-  cp.origin_m = {-0.4, -0.4, -0.6};
-  ControllerParams p;
-  p.controlled = {"j0", "j1"};
-  p.objectives = {Objective::drag_along, Objective::drag};
-  p.senses = {Sense::minimize, Sense::maximize};
-  p.threads = threads;
-  p.delta_rad = 0.02;
-  FluidControlParams f;
-  f.settle_steps = 1;
-  f.planar_fluid = false;
-  FluidController c(model, p, f, {{"j0", -0.3}, {"j1", 0.2}}, spatialFluid(stream3(fluid_threads), cp));
+  const rigid::RigidModel model = testing::chainModel3(xml);
+  FluidController c(model, testing::chainController3(threads), testing::chainEvaluations3(), testing::chainInitialRad3(),
+                    spatialFluid(testing::chainStream3(fluid_threads), testing::chainCoupling3()));
   std::vector<double> out;
-  for (int k = 0; k < 3; ++k) {
-    const FrameRecord r = c.frame();
-    out.insert(out.end(), r.angle_rad.begin(), r.angle_rad.end());
-    out.insert(out.end(), r.derivative.begin(), r.derivative.end());
-    out.insert(out.end(), r.objective.begin(), r.objective.end());
-  }
-  const auto& u = dynamic_cast<const CoupledFluid3&>(c.coupledFluid()).coupling().fluid().grid().velocity_m_per_s[0];
-  out.insert(out.end(), u.data(), u.data() + u.size());
+  testing::recordFrames(c, 3, out);
+  testing::appendValues(dynamic_cast<const CoupledFluid3&>(c.coupledFluid()).coupling().fluid().grid().velocity_m_per_s[0],
+                        out);
   return out;
 }
 
@@ -88,9 +52,7 @@ TEST_F(ControlFluid3Test, SnapshotRestoresTheGrid) {
   rigid::RigidModel model = rigid::RigidModel::load(xml);
   rigid::RigidData data(model);
   data.kinematics();
-  coupling3d::RigidFluidParams3 cp;
-  cp.origin_m = {-0.4, -0.4, -0.6};
-  CoupledFluid3 fluid(data, stream3(1), cp);
+  CoupledFluid3 fluid(data, testing::chainStream3(1), testing::chainCoupling3());
   const double dt = 1.0 / 60;
   fluid.advanceFluid(dt);
   fluid.forceAndProject(data, dt);
