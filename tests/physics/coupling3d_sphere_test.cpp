@@ -17,6 +17,7 @@
 #include <numbers>
 
 #include "../unit/coupling3d_scenes.hpp"
+#include "moving_sphere3.hpp"
 #include "coupling3d/rigid_fluid_coupling3.hpp"
 
 namespace creaturelab::coupling3d {
@@ -97,48 +98,19 @@ struct Leak {
   int markers = 0;
 };
 
-// A sphere of radius 0.15 m moved at 0.05 m/s along x through a closed no-slip box of side 0.6 m
-// (n³ cells, water-like density, ν = 1e-3 m²/s: Re = 15) for `steps` steps of 0.05 s.
+// The leak scene (moving_sphere3.hpp) in water, `steps` steps on n³ cells.
 Leak sphereLeak(const std::filesystem::path& dir, int n, int steps, bool interior = true) {
-  const double dt = 0.05, U = 0.05, r = 0.15;
-  const auto model = testing::loadScene(
-      dir, "moving_" + std::to_string(n),
-      "<body pos=\"0.25 0.3 0.3\"><freejoint/><geom type=\"sphere\" size=\"0.15\"/></body>", dt);
+  const double U = testing::MovingSphere::speed_m_per_s, r = testing::MovingSphere::radius_m;
+  const auto model = testing::movingSphereModel(dir, "moving_" + std::to_string(n));
   rigid::RigidData data(model);
   data.kinematics();
   RigidFluidParams3 p;
   p.interior_markers = interior;
-  RigidFluidCoupling3 c(data, testing::cube(n, 0.6, fluid3d::Boundaries3::allWalls(fluid3d::BoundaryType3::no_slip), 1e-3),
-                        p);
-  for (int s = 0; s < steps; ++s) {
-    c.advanceFluid(dt);
-    data.qpos()[0] += U * dt;
-    data.kinematics();
-    c.forceFluid(data, dt);
-  }
+  RigidFluidCoupling3 c(data, testing::movingSphereBox(n), p);
+  testing::moveSphere(c, data, steps);
   Leak out;
   out.markers = static_cast<int>(c.markers().size());
-  // The interior's mean velocity: with no flux through the surface it is the body's (∫ u dV = ∫ x (u·n) dA
-  // = V vol), whatever the flow inside; averaged over the faces more than the kernel's reach (2 cells) inside.
-  const double* centre = data.bodyPosition(1);
-  const fluid3d::MacGrid3& g = c.fluid().grid();
-  const double inner = r - 2 * g.dx_m;
-  Vec3 mean{};
-  for (int a = 0; a < 3; ++a) {
-    const auto e = g.faceExtents(a);
-    int count = 0;
-    for (int k = 0; k < e[2]; ++k)
-      for (int j = 0; j < e[1]; ++j)
-        for (int i = 0; i < e[0]; ++i) {
-          const auto x = g.facePosition_m(a, i, j, k);
-          if (std::hypot(x[0] - centre[0], x[1] - centre[1], x[2] - centre[2]) < inner) {
-            mean[a] += g.velocity_m_per_s[a](i, j, k);
-            ++count;
-          }
-        }
-    mean[a] /= count;
-  }
-  out.interior = std::hypot(mean[0] - U, mean[1], mean[2]) / U;
+  out.interior = testing::interiorDeficit(c.fluid().grid(), data.bodyPosition(1));
   Transfer3 t;
   std::vector<Vec3> u;
   t.locate(c.fluid().grid(), ib::Kernel::peskin4, c.markerPosition_m());

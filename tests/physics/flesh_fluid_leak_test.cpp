@@ -10,13 +10,14 @@
 #include <filesystem>
 #include <numbers>
 
-#include "../unit/control_models.hpp"
+#include "../unit/scratch_dir_test.hpp"
 #include "coupling3d/flesh_fluid_coupling3.hpp"
+#include "moving_sphere3.hpp"
 
 namespace creaturelab::coupling3d {
 namespace {
 
-class FleshLeakTest : public testing::ScratchDirTest {
+class FleshLeakTest : public creaturelab::testing::ScratchDirTest {
  protected:
   FleshLeakTest() : ScratchDirTest("flesh_leak") {}
 };
@@ -26,55 +27,24 @@ struct Leak {
   double interior = 0;  // |mean u inside - U| / U
 };
 
-// A bone of radius 0.15 m in 1 cm of flesh at (0.25, 0.3, 0.3) m of a 0.6 m box of n^3 cells with no-slip
-// walls (nu 1e-3 m^2/s, 10 kg/m^3: the staggered step needs the flesh much heavier than the fluid it
-// drags), moved along x at U = 0.05 m/s by steps of 0.05 s.
+// The leak scene (moving_sphere3.hpp) with the sphere a bone in 1 cm of flesh, the fluid 10 kg/m³ (the
+// staggered step needs the flesh much heavier than the fluid it drags), `steps` steps on n³ cells.
 Leak fleshLeak(const std::filesystem::path& dir, int n, int steps, Forcing3 forcing) {
-  const double dt = 0.05, U = 0.05, r = 0.15;
-  const auto model = rigid::RigidModel::load(testing::writeText(
-      dir / "sphere.xml",
-      "<mujoco><option timestep=\"0.05\" gravity=\"0 0 0\"/><worldbody><body pos=\"0.25 0.3 0.3\"><freejoint/>"
-      "<geom type=\"sphere\" size=\"0.15\" contype=\"0\" conaffinity=\"0\"/></body></worldbody></mujoco>"));
+  const double U = testing::MovingSphere::speed_m_per_s, r = testing::MovingSphere::radius_m;
+  const auto model = testing::movingSphereModel(dir, "sphere");
   rigid::RigidData data(model);
   data.qvel()[0] = U;
   data.kinematics();
-  fluid3d::FluidParams3 f;
-  f.domain_x_m = f.domain_y_m = f.domain_z_m = 0.6;
-  f.cells_x = f.cells_y = f.cells_z = n;
-  f.boundaries = fluid3d::Boundaries3::allWalls(fluid3d::BoundaryType3::no_slip);
+  fluid3d::FluidParams3 f = testing::movingSphereBox(n);
   f.density_kg_per_m3 = 10.0;
-  f.kinematic_viscosity_m2_per_s = 1e-3;
-  f.pressure_solver = fluid3d::PressureSolverType3::spectral;
   RigidFluidParams3 p;
   p.forcing = forcing;
   p.forcing_regularisation = 3e-2;  // the flesh's (flesh_fluid_coupling3.hpp)
   FleshFluidCoupling3 c(data, f, p, {});
-  for (int s = 0; s < steps; ++s) {
-    c.advanceFluid(dt);
-    data.qpos()[0] += U * dt;  // the bone moved kinematically: the flesh's reaction is not applied
-    data.kinematics();
-    c.forceFluid(data, dt);
-  }
+  testing::moveSphere(c, data, steps);
   Leak out;
-  const double* centre = data.bodyPosition(1);
   const fluid3d::MacGrid3& g = c.fluid().grid();
-  const double inner = r - 2 * g.dx_m;
-  Vec3 mean{};
-  for (int a = 0; a < 3; ++a) {
-    const auto e = g.faceExtents(a);
-    int count = 0;
-    for (int k = 0; k < e[2]; ++k)
-      for (int j = 0; j < e[1]; ++j)
-        for (int i = 0; i < e[0]; ++i) {
-          const auto x = g.facePosition_m(a, i, j, k);
-          if (std::hypot(x[0] - centre[0], x[1] - centre[1], x[2] - centre[2]) < inner) {
-            mean[a] += g.velocity_m_per_s[a](i, j, k);
-            ++count;
-          }
-        }
-    mean[a] /= count;
-  }
-  out.interior = std::hypot(mean[0] - U, mean[1], mean[2]) / U;
+  out.interior = testing::interiorDeficit(g, data.bodyPosition(1));
   // Each vertex's outward area vector: a third of each adjacent triangle's.
   const flesh::Flesh& fl = c.flesh();
   const Eigen::Matrix3Xd& x = fl.positions_m();
