@@ -96,16 +96,10 @@ std::vector<std::pair<std::string, double>> ControlFluid3dParams::initialRad() c
 }
 
 std::string ControlFluid3dParams::validate() const {
-  // The geoms' markers, or with flesh its vertices, built in the box: a body or the flesh outside it throws.
+  // With flesh, its vertices under the flesh's forcing regularisation.
   const auto probe = [&](const rigid::RigidData& data, const fluid3d::FluidParams3& box,
-                         const coupling3d::RigidFluidParams3& c) -> std::string {
-    if (!flesh) {
-      coupling3d::RigidFluidCoupling3 markers(data, box, c);
-      return "";
-    }
-    if (auto e = flesh_params.validate(); !e.empty()) return e;
-    coupling3d::FleshFluidCoupling3 flesh_markers(data, box, fleshCoupling(), flesh_params);
-    return "";
+                         const coupling3d::RigidFluidParams3& c) {
+    return flesh ? buildMarkers3(data, box, fleshCoupling(), &flesh_params) : buildMarkers3(data, box, c, nullptr);
   };
   const auto against = [&](const rigid::RigidModel& model) {
     return checkInBox3(*this, model, [&] { return coupling; }, probe);

@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "control/fluid_controller.hpp"
+#include "coupling3d/flesh_fluid_coupling3.hpp"
 #include "coupling3d/rigid_fluid_coupling3.hpp"
+#include "flesh/flesh_params.hpp"
 #include "fluid3d/fluid_params3.hpp"
 #include "kinds/control_params.hpp"
 #include "kinds/validate_fluid3.hpp"
@@ -68,6 +70,20 @@ std::string checkInBox3(const P& q, const rigid::RigidModel& model, Coupling&& c
   if (auto e = c.validate(box); !e.empty()) return e;
   const rigid::RigidData data = posedData(model, q.initialRad());
   return probe(data, box, c);
+}
+
+// A 3-D kind's probe for checkInBox3: the markers built in the box from the posed creature, the geoms'
+// surfaces or, with `flesh` (its parameters checked first), the flesh's vertices; a body or the flesh
+// outside the box throws std::invalid_argument. "" or what is wrong with the flesh.
+inline std::string buildMarkers3(const rigid::RigidData& data, const fluid3d::FluidParams3& box,
+                                 const coupling3d::RigidFluidParams3& coupling, const flesh::FleshParams* flesh) {
+  if (!flesh) {
+    coupling3d::RigidFluidCoupling3 markers(data, box, coupling);
+    return "";
+  }
+  if (auto e = flesh->validate(); !e.empty()) return e;
+  coupling3d::FleshFluidCoupling3 flesh_markers(data, box, coupling, *flesh);
+  return "";
 }
 
 }  // namespace creaturelab::kinds
