@@ -1,6 +1,8 @@
 #include "kinds/control_fluid3d_swimmer.hpp"
 
 
+#include "control/coupled_flesh_fluid3.hpp"
+#include "coupling3d/flesh_fluid_coupling3.hpp"
 #include "kinds/control_fluid_swimmer.hpp"
 #include "kinds/fluid3_box.hpp"
 #include "kinds/validate_fluid3.hpp"
@@ -94,15 +96,27 @@ std::string ControlFluid3dSwimmerParams::validate() const {
   };
   const auto against = [&](const rigid::RigidModel& model) -> std::string {
     if (auto e = phaseSettings(*this).validate(model, controller.frame_s, controller.frames); !e.empty()) return e;
-    // The markers and the mouth built in the box: a body or the mouth outside it throws.
-    const auto probe = [](const rigid::RigidData& data, const fluid3d::FluidParams3& box,
-                          const coupling3d::RigidFluidParams3& c) {
-      coupling3d::RigidFluidCoupling3 markers(data, box, c);
-      return std::string();
+    // The markers (with flesh its vertices) and the mouth built in the box: a body, the flesh or the mouth
+    // outside it throws.
+    const auto probe = [&](const rigid::RigidData& data, const fluid3d::FluidParams3& box,
+                           const coupling3d::RigidFluidParams3& c) -> std::string {
+      if (!flesh) {
+        coupling3d::RigidFluidCoupling3 markers(data, box, c);
+        return "";
+      }
+      if (auto e = flesh_params.validate(); !e.empty()) return e;
+      coupling3d::FleshFluidCoupling3 flesh_markers(data, box, c, flesh_params);
+      return "";
     };
     return checkInBox3(*this, model, [&] { return rigidFluidParams(model); }, probe);
   };
   return validateControlInFluid(*this, keys, against, noCheck);
+}
+
+control::CoupledFluidFactory ControlFluid3dSwimmerParams::coupledFluid(const rigid::RigidModel& model,
+                                                                      const control::RiseSettings3& rs) const {
+  if (!flesh) return control::swimmerFluid(fluidParams(), rigidFluidParams(model), rs.schedule, rs.flux_m_per_s);
+  return control::fleshFluid(fluidParams(), rigidFluidParams(model), flesh_params, {rs.schedule, rs.flux_m_per_s});
 }
 
 CostEstimate ControlFluid3dSwimmerKind::estimateCost(const Params& params) const {
@@ -130,15 +144,15 @@ Result ControlFluid3dSwimmerKind::run(const Params& params) const {
   const control::ControllerParams p = k.controllerParams();
   // §7.2: the mouth's flux follows the phases.
   const control::RiseSettings3 rs = q.riseSettings(model);
-  control::FluidController controller(
-      model, p, q.fluidControlParams(), q.initialRad(),
-      control::swimmerFluid(q.fluidParams(), q.rigidFluidParams(model), rs.schedule, rs.flux_m_per_s));
+  control::FluidController controller(model, p, q.fluidControlParams(), q.initialRad(), q.coupledFluid(model, rs));
   control::FluidRunRecorder3 recorder(model, p);
   // §7.2: the legs' senses and strengths follow the phases; the rise.
   const control::SwimmerPhases phases = q.swimmerPhases(int(p.controlled.size()));
   control::RiseRecorder3 rise(rs);
   const double density_ratio = control::densityRatio3(model, q.fluid.density_kg_per_m3);
-  const auto& fluid3 = dynamic_cast<const control::SwimmerFluid3&>(controller.coupledFluid());
+  const auto* rigid3 = dynamic_cast<const control::SwimmerFluid3*>(&controller.coupledFluid());
+  const auto* flesh3 = dynamic_cast<const control::CoupledFleshFluid3*>(&controller.coupledFluid());
+  const int markers = rigid3 ? int(rigid3->coupling().markers().size()) : flesh3->coupling().markers();
   Result result;
   try {
     controller.hold(int(q.warmup_frames * k.substeps));
@@ -160,7 +174,7 @@ Result ControlFluid3dSwimmerKind::run(const Params& params) const {
   addSeries(result, rise.series());
   addMetrics(result, rise.measure(density_ratio));
   // The recorder's servo residual, forcing iterations and markers (its upward force is the flyer's reading).
-  for (const auto& v : recorder.measure(1, 1, int(fluid3.coupling().markers().size()), controller.maxForcingIterations()))
+  for (const auto& v : recorder.measure(1, 1, markers, controller.maxForcingIterations()))
     if (v.name != "mean_up_force_n" && v.name != "mean_up_force_n_stderr") addMetrics(result, {v});
   return result;
 }

@@ -8,6 +8,7 @@
 #include "control/swimmer_run.hpp"
 #include "control/swimmer_run3.hpp"
 #include "coupling3d/rigid_fluid_coupling3.hpp"
+#include "flesh/flesh_params.hpp"
 #include "fluid3d/fluid_params3.hpp"
 #include "kinds/control_params.hpp"
 #include "kinds/describe_fluid3.hpp"
@@ -89,6 +90,10 @@ struct ControlFluid3dSwimmerParams {
   bool armature_added_mass = false;
   fluid3d::FluidParams3 fluid = swimmer3dFluid();
   coupling3d::RigidFluidParams3 coupling = swimmer3dCoupling();
+  // §7.2: the creature wrapped in flesh (src/flesh/), its vertices the fluid's markers
+  // (coupling3d/flesh_fluid_coupling3.hpp); the flesh's parameters are FleshParams' own (as control_fluid3d).
+  bool flesh = false;
+  flesh::FleshParams flesh_params;
 
   template <class V>
   void describe(V& v) {
@@ -109,6 +114,14 @@ struct ControlFluid3dSwimmerParams {
     describeSwimmer(v);
     describeFluid(v);
     describeCoupling(v);
+    describeFlesh(v);
+  }
+  template <class V>
+  void describeFlesh(V& v) {
+    v.boolean("flesh", flesh,
+              "§7.2: the swimmer wrapped in flesh bound to its geoms, the flesh's vertices the fluid's markers (with "
+              "forcing = coupled: the flesh's backward Euler step in the coupled solve, stable in water)");
+    flesh_params.describe(v);
   }
   // The phases (§7.2: draw in and minimise drag, expel and minimise, maximise without propulsion) and the rise.
   template <class V>
@@ -157,13 +170,16 @@ struct ControlFluid3dSwimmerParams {
   // The coupling with the mouth (mouth_body's first geom) when one is given; throws std::invalid_argument
   // naming the key.
   coupling3d::RigidFluidParams3 rigidFluidParams(const rigid::RigidModel& model) const;
+  // The coupled fluid of the run: the geoms' surfaces as markers, or with flesh its vertices; the mouth's
+  // flux following the phases (rs: riseSettings).
+  control::CoupledFluidFactory coupledFluid(const rigid::RigidModel& model, const control::RiseSettings3& rs) const;
   std::vector<std::pair<std::string, double>> initialRad() const;
   // Ranges, then against the model: the controller, the phases, the rise's cycles within frames, the
   // fluid and coupling, the bodies inside the box.
   std::string validate() const;
 };
 
-// The aqueous swimmer of Lentine et al. 2010 §7.2 (Fig. 7, without flesh; the mouth with mouth_body) in
+// The aqueous swimmer of Lentine et al. 2010 §7.2 (Fig. 7; the mouth with mouth_body, the flesh with flesh) in
 // the 3-D fluid: the controller of kind control_fluid over the two-way coupled 3-D fluid
 // (coupling3d), a free creature whose legs follow §7.2's phases.
 class ControlFluid3dSwimmerKind : public DescribedKind<ControlFluid3dSwimmerParams> {
