@@ -27,3 +27,9 @@ creaturelab_test(flesh_fluid_coupled_test physics
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/flesh_fluid_coupled_test.cpp
   LIBS cl_coupling3d cl_flesh
 )
+# The controller with the creature in flesh in the coupled solve: bitwise the same frames for any evaluation
+# and fluid thread count. Seconds of coupled 3-D steps, so labelled physics (Release only).
+creaturelab_test(control_flesh_coupled_test physics
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/control_flesh_coupled_test.cpp
+  LIBS cl_control
+)
