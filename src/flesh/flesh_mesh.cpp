@@ -5,6 +5,7 @@
 #include <map>
 #include <queue>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -15,6 +16,9 @@
 
 namespace creaturelab::flesh {
 namespace {
+
+// The most vertices one geom's refined surface may take (a few hundred megabytes of work space).
+constexpr std::size_t kMaxVerticesPerGeom = 200000;
 
 using V3 = Eigen::Vector3d;
 
@@ -152,8 +156,16 @@ FleshMesh buildFleshMesh(const rigid::RigidModel& model, const FleshParams& para
     // The flesh's edges are longer than the geom's by up to (r + t) / r: refine the geom's surface to
     // shorter edges until the flesh's are short enough.
     for (double limit = params.max_edge_m; params.max_edge_m > 0 && longestOffsetEdge(m, t) > params.max_edge_m;
-         limit *= 0.9)
+         limit *= 0.9) {
       m = bisectLongEdges(std::move(m), limit);
+      // A flesh far thicker than its geom's curvature allows needs ever shorter edges: refuse it before it
+      // fills the memory.
+      if (m.x.size() > kMaxVerticesPerGeom)
+        throw std::invalid_argument("flesh: geom " + std::to_string(surface.geom) + " would need more than " +
+                                    std::to_string(kMaxVerticesPerGeom) + " vertices for edges of at most " +
+                                    std::to_string(params.max_edge_m) + " m under " + std::to_string(t) +
+                                    " m of flesh: a thinner flesh or longer edges (a coarser fluid grid)");
+    }
 
     // Stage: the geom's surface in the world at the reference configuration, and the flesh's.
     std::vector<V3> inner(m.x.size()), outer(m.x.size()), middle(m.x.size());

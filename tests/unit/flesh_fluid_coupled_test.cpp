@@ -266,6 +266,7 @@ TEST_F(FleshCoupledTest, SnapshotAndThreadsAreBitwise) {
   EXPECT_TRUE(std::get<2>(once) == std::get<2>(threaded));
 }
 
+// About 6 s of CPU (the thick flesh refined up to the cap).
 TEST_F(FleshCoupledTest, BadInputIsRefused) {
   const auto model = load(testing::freeSphereXml(kRadius, kNeutralBone));
   rigid::RigidData data(model);
@@ -277,6 +278,11 @@ TEST_F(FleshCoupledTest, BadInputIsRefused) {
   RigidFluidParams3 held = centred(0.4, Forcing3::coupled);
   held.held_joints = {"no such joint"};
   EXPECT_THROW(FleshFluidCoupling3(data, f, held, {}), std::invalid_argument);
+  // A flesh far thicker than the bone's curvature allows at the markers' spacing: refused before it fills the
+  // memory (flesh_mesh.cpp's vertex cap), not built.
+  flesh::FleshParams thick;
+  thick.thickness_m = 2.0;
+  EXPECT_THROW(FleshFluidCoupling3(data, f, centred(0.4, Forcing3::coupled), thick), std::invalid_argument);
   FleshFluidCoupling3 c(data, f, centred(0.4, Forcing3::coupled), {});
   EXPECT_THROW(c.setHeldDofs({6}), std::invalid_argument);
   EXPECT_THROW(c.forceFluid(static_cast<const rigid::RigidData&>(data), 0.01), std::logic_error);
