@@ -99,14 +99,8 @@ std::string ControlFluid3dSwimmerParams::validate() const {
     // The markers (with flesh its vertices) and the mouth built in the box: a body, the flesh or the mouth
     // outside it throws.
     const auto probe = [&](const rigid::RigidData& data, const fluid3d::FluidParams3& box,
-                           const coupling3d::RigidFluidParams3& c) -> std::string {
-      if (!flesh) {
-        coupling3d::RigidFluidCoupling3 markers(data, box, c);
-        return "";
-      }
-      if (auto e = flesh_params.validate(); !e.empty()) return e;
-      coupling3d::FleshFluidCoupling3 flesh_markers(data, box, c, flesh_params);
-      return "";
+                           const coupling3d::RigidFluidParams3& c) {
+      return buildMarkers3(data, box, c, flesh ? &flesh_params : nullptr);
     };
     return checkInBox3(*this, model, [&] { return rigidFluidParams(model); }, probe);
   };
