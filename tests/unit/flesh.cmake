@@ -21,8 +21,8 @@ creaturelab_test(control_flesh_unit_test physics
   LIBS cl_control
 )
 # The flesh in the coupled solve (Forcing3::coupled): flesh as dense as the water stable where the staggered
-# forcing grows, momentum of fluid, flesh and bone, bitwise snapshots and fluid threads. Seconds of coupled
-# 3-D steps, so labelled physics (Release only).
+# forcing grows, momentum of fluid, flesh and bone, bitwise snapshots and fluid threads, a flesh too thick
+# refused. About 12 s of CPU, so labelled physics (Release only).
 creaturelab_test(flesh_fluid_coupled_test physics
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/flesh_fluid_coupled_test.cpp
   LIBS cl_coupling3d cl_flesh
