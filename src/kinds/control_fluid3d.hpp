@@ -121,7 +121,7 @@ struct ControlFluid3dParams {
   void describeFlesh(V& v) {
     v.boolean("flesh", flesh,
               "Fig. 13: the creature wrapped in flesh bound to its geoms, the flesh's vertices the fluid's markers "
-              "(forcing projected or off)");
+              "(with forcing = coupled, the flesh's backward Euler step inside the coupled solve)");
     v.real("flesh_forcing_regularisation", flesh_forcing_regularisation, "", 0, 1,
            "with flesh, the forcing's Tikhonov weight in place of forcing_regularisation (the vertices' own "
            "vibrations need more than a rigid surface's)");
