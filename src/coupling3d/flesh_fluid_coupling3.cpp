@@ -98,6 +98,31 @@ void FleshFluidCoupling3::sync(const rigid::RigidData& data) {
   skeleton_.kinematics();
 }
 
+// The interior (and mouth) markers after the nv vertices: positions in the fluid's frame and velocities, their
+// bodies' at the point (plus a mouth's flux) as `bodies` has them.
+void FleshFluidCoupling3::placeInterior(const rigid::RigidData& bodies, int nv, std::vector<Vec3>& now) {
+  for (std::size_t k = 0; k < interior_.size(); ++k) {
+    const Vec3 w = markerWorld(bodies, interior_[k]);
+    Vec3 u = bodies.pointVelocity(interior_[k].body, w);
+    if (mouth_of_[k] >= 0)
+      addMouthFlux(bodies, p_.mouths[std::size_t(mouth_of_[k])], mouth_flux_m_per_s_[std::size_t(mouth_of_[k])], u);
+    for (int a = 0; a < 3; ++a) {
+      now[std::size_t(nv) + k][a] = w[a] - p_.origin_m[a];
+      velocity_[std::size_t(nv) + k][a] = u[a];
+    }
+  }
+}
+
+// The farthest any marker moved from its last position to `now`, in cells (0 before the first placement).
+double FleshFluidCoupling3::cellsMoved(const std::vector<Vec3>& now, double dx_m) const {
+  double most = 0.0;
+  if (position_.size() == now.size())
+    for (std::size_t k = 0; k < now.size(); ++k)
+      most = std::max(most, std::hypot(now[k][0] - position_[k][0], now[k][1] - position_[k][1],
+                                       now[k][2] - position_[k][2]) / dx_m);
+  return most;
+}
+
 // Markers: the flesh's vertices, then the bones' interior markers, in the fluid's frame; with `step`,
 // their velocities (the flesh's; the bodies' at the point) and the coupled stability limit.
 void FleshFluidCoupling3::place(double dt, bool step) {
@@ -113,21 +138,8 @@ void FleshFluidCoupling3::place(double dt, bool step) {
       now[i][a] = x(a, i) - p_.origin_m[a];
       velocity_[i][a] = v(a, i);
     }
-  for (std::size_t k = 0; k < interior_.size(); ++k) {
-    const Vec3 w = markerWorld(skeleton_, interior_[k]);
-    Vec3 u = skeleton_.pointVelocity(interior_[k].body, w);
-    if (mouth_of_[k] >= 0)
-      addMouthFlux(skeleton_, p_.mouths[std::size_t(mouth_of_[k])], mouth_flux_m_per_s_[std::size_t(mouth_of_[k])], u);
-    for (int a = 0; a < 3; ++a) {
-      now[nv + k][a] = w[a] - p_.origin_m[a];
-      velocity_[nv + k][a] = u[a];
-    }
-  }
-  cells_per_step_ = 0.0;
-  if (step && position_.size() == n)
-    for (std::size_t k = 0; k < n; ++k)
-      cells_per_step_ = std::max(cells_per_step_, std::hypot(now[k][0] - position_[k][0], now[k][1] - position_[k][1],
-                                                             now[k][2] - position_[k][2]) / dx);
+  placeInterior(skeleton_, nv, now);
+  cells_per_step_ = step ? cellsMoved(now, dx) : 0.0;
   if (step && !(cells_per_step_ <= p_.max_marker_cells_per_step))
     throw CouplingError3("coupling3d: time step beyond the coupled stability limit: a flesh marker moved " +
                          std::to_string(cells_per_step_) + " cells in one step of " + std::to_string(dt) +
@@ -305,22 +317,10 @@ void FleshFluidCoupling3::placeCoupled(const rigid::RigidData& data, double dt) 
       velocity_[i][a] = v(a, i) + base[i][a];
       now[i][a] = x(a, i) + dt * velocity_[i][a] - p_.origin_m[a];
     }
-  for (std::size_t k = 0; k < interior_.size(); ++k) {
-    const Vec3 w = markerWorld(data, interior_[k]);
-    Vec3 u = data.pointVelocity(interior_[k].body, w);
-    if (mouth_of_[k] >= 0)
-      addMouthFlux(data, p_.mouths[std::size_t(mouth_of_[k])], mouth_flux_m_per_s_[std::size_t(mouth_of_[k])], u);
-    for (int a = 0; a < 3; ++a) {
-      now[nv + k][a] = w[a] - p_.origin_m[a];
-      velocity_[nv + k][a] = u[a] + base[nv + k][a];
-    }
-  }
-  const double dx = fluid_.grid().dx_m;
-  cells_per_step_ = 0.0;
-  if (position_.size() == n)
-    for (std::size_t k = 0; k < n; ++k)
-      cells_per_step_ = std::max(cells_per_step_, std::hypot(now[k][0] - position_[k][0], now[k][1] - position_[k][1],
-                                                             now[k][2] - position_[k][2]) / dx);
+  placeInterior(data, nv, now);
+  for (std::size_t k = std::size_t(nv); k < n; ++k)
+    for (int a = 0; a < 3; ++a) velocity_[k][a] += base[k][a];
+  cells_per_step_ = cellsMoved(now, fluid_.grid().dx_m);
   if (!(cells_per_step_ <= p_.max_marker_cells_per_step))
     throw CouplingError3("coupling3d: time step beyond the coupled stability limit: a flesh marker moved " +
                          std::to_string(cells_per_step_) + " cells in one step of " + std::to_string(dt) +

@@ -58,8 +58,10 @@ void Flesh::placeOnSkeleton(rigid::RigidData& skeleton) {
   anchorStates(mesh_, skeleton, state_.x_m, state_.v_m_per_s);
 }
 
-void Flesh::step(rigid::RigidData& skeleton, double h_s) {
+void Flesh::startStep(rigid::RigidData& skeleton, double h_s, bool solved_with_impulses) {
   if (!(h_s > 0) || !std::isfinite(h_s)) throw std::invalid_argument("flesh: step needs a positive time step (s)");
+  if (solved_with_impulses && !params_.implicit_skeleton)
+    throw std::invalid_argument("flesh: a step solved with outside impulses needs implicit_skeleton");
   if (skeleton.model().bodies() != model_bodies_)
     throw std::invalid_argument("flesh: stepped against a skeleton of " + std::to_string(skeleton.model().bodies()) +
                                 " bodies, built on one of " + std::to_string(model_bodies_));
@@ -68,6 +70,10 @@ void Flesh::step(rigid::RigidData& skeleton, double h_s) {
   skeleton.kinematics();
   anchorStates(mesh_, skeleton, anchor_m_, anchor_v_);
   anchorJacobians(skeleton);
+}
+
+void Flesh::step(rigid::RigidData& skeleton, double h_s) {
+  startStep(skeleton, h_s, false);
   forcesAtStart();
   rightHandSide(h_s);
   assembleMatrix(h_s);
@@ -206,17 +212,7 @@ void Flesh::bindingReactions(double h, rigid::RigidData& skeleton) {
 }
 
 void Flesh::beginStep(rigid::RigidData& skeleton, double h_s, const std::vector<int>& held_dofs) {
-  if (!(h_s > 0) || !std::isfinite(h_s)) throw std::invalid_argument("flesh: step needs a positive time step (s)");
-  if (!params_.implicit_skeleton)
-    throw std::invalid_argument("flesh: a step solved with outside impulses needs implicit_skeleton");
-  if (skeleton.model().bodies() != model_bodies_)
-    throw std::invalid_argument("flesh: stepped against a skeleton of " + std::to_string(skeleton.model().bodies()) +
-                                " bodies, built on one of " + std::to_string(model_bodies_));
-  if (external_n_.cols() != vertices())
-    throw std::invalid_argument("flesh: externalForces_n() must keep its 3 x " + std::to_string(vertices()) + " shape");
-  skeleton.kinematics();
-  anchorStates(mesh_, skeleton, anchor_m_, anchor_v_);
-  anchorJacobians(skeleton);
+  startStep(skeleton, h_s, true);
   for (int d : held_dofs) {
     if (d < 0 || d >= dofs_) throw std::invalid_argument("flesh: held DOF " + std::to_string(d) + " is not the skeleton's");
     anchor_jacobian_.col(d).setZero();

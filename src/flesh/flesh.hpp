@@ -118,6 +118,9 @@ class Flesh {
  private:
   // Stages of step().
   void anchorJacobians(rigid::RigidData& skeleton);  // J_i and B (implicit_skeleton only)
+  // The step's checks (time step; with solved_with_impulses, implicit_skeleton; the skeleton's and the external
+  // forces' sizes), then the skeleton's kinematics and the anchors' states and Jacobians.
+  void startStep(rigid::RigidData& skeleton, double h_s, bool solved_with_impulses);
   void forcesAtStart();                         // f0 (edges, weight, binding, external) and the Jacobians
   void rightHandSide(double h);                 // b = h (f0 + h df/dx v0), the skeleton's rows
   void assembleMatrix(double h);                // the system above
