@@ -113,14 +113,20 @@ void FleshFluidCoupling3::placeInterior(const rigid::RigidData& bodies, int nv, 
   }
 }
 
-// The farthest any marker moved from its last position to `now`, in cells (0 before the first placement).
-double FleshFluidCoupling3::cellsMoved(const std::vector<Vec3>& now, double dx_m) const {
-  double most = 0.0;
+// cells_per_step_: the farthest any marker moved from its last position to `now` in a coupled step of dt,
+// in cells (0 before the first placement); CouplingError3 beyond max_marker_cells_per_step.
+void FleshFluidCoupling3::checkMoved(const std::vector<Vec3>& now, double dt) {
+  const double dx = fluid_.grid().dx_m;
+  cells_per_step_ = 0.0;
   if (position_.size() == now.size())
     for (std::size_t k = 0; k < now.size(); ++k)
-      most = std::max(most, std::hypot(now[k][0] - position_[k][0], now[k][1] - position_[k][1],
-                                       now[k][2] - position_[k][2]) / dx_m);
-  return most;
+      cells_per_step_ = std::max(cells_per_step_, std::hypot(now[k][0] - position_[k][0], now[k][1] - position_[k][1],
+                                                             now[k][2] - position_[k][2]) / dx);
+  if (!(cells_per_step_ <= p_.max_marker_cells_per_step))
+    throw CouplingError3("coupling3d: time step beyond the coupled stability limit: a flesh marker moved " +
+                         std::to_string(cells_per_step_) + " cells in one step of " + std::to_string(dt) +
+                         " s (limit max_marker_cells_per_step = " + std::to_string(p_.max_marker_cells_per_step) +
+                         "); take a smaller step");
 }
 
 // Markers: the flesh's vertices, then the bones' interior markers, in the fluid's frame; with `step`,
@@ -130,7 +136,6 @@ void FleshFluidCoupling3::place(double dt, bool step) {
   const std::size_t n = std::size_t(nv) + interior_.size();
   const Eigen::Matrix3Xd& x = flesh_.positions_m();
   const Eigen::Matrix3Xd& v = flesh_.velocities_m_per_s();
-  const double dx = fluid_.grid().dx_m;
   std::vector<Vec3> now(n);
   velocity_.resize(n);
   for (int i = 0; i < nv; ++i)
@@ -139,17 +144,14 @@ void FleshFluidCoupling3::place(double dt, bool step) {
       velocity_[i][a] = v(a, i);
     }
   placeInterior(skeleton_, nv, now);
-  cells_per_step_ = step ? cellsMoved(now, dx) : 0.0;
-  if (step && !(cells_per_step_ <= p_.max_marker_cells_per_step))
-    throw CouplingError3("coupling3d: time step beyond the coupled stability limit: a flesh marker moved " +
-                         std::to_string(cells_per_step_) + " cells in one step of " + std::to_string(dt) +
-                         " s (limit max_marker_cells_per_step = " + std::to_string(p_.max_marker_cells_per_step) +
-                         "); take a smaller step");
+  cells_per_step_ = 0.0;
+  if (step) checkMoved(now, dt);
   transfer_.locate(fluid_.grid(), p_.kernel, now);
   position_ = std::move(now);
   // Direct-forcing masses: ρ dA dx at a vertex (its share of the deformed surface), ρ dV inside.
   flesh_.vertexAreas(area_m2_);
   const double rho = fluid_.params().density_kg_per_m3;
+  const double dx = fluid_.grid().dx_m;
   mass_.resize(n);
   for (int i = 0; i < nv; ++i) mass_[i] = rho * area_m2_[i] * dx;
   for (std::size_t k = 0; k < interior_.size(); ++k)
@@ -320,12 +322,7 @@ void FleshFluidCoupling3::placeCoupled(const rigid::RigidData& data, double dt) 
   placeInterior(data, nv, now);
   for (std::size_t k = std::size_t(nv); k < n; ++k)
     for (int a = 0; a < 3; ++a) velocity_[k][a] += base[k][a];
-  cells_per_step_ = cellsMoved(now, fluid_.grid().dx_m);
-  if (!(cells_per_step_ <= p_.max_marker_cells_per_step))
-    throw CouplingError3("coupling3d: time step beyond the coupled stability limit: a flesh marker moved " +
-                         std::to_string(cells_per_step_) + " cells in one step of " + std::to_string(dt) +
-                         " s (limit max_marker_cells_per_step = " + std::to_string(p_.max_marker_cells_per_step) +
-                         "); take a smaller step");
+  checkMoved(now, dt);
   transfer_.locate(fluid_.grid(), p_.kernel, now);
   position_ = std::move(now);
   // The preconditioner's weights: 1 / (dt/(ρ dV) + h / K_ii), K_ii the vertex's diagonal in the flesh's system

@@ -147,7 +147,7 @@ class FleshFluidCoupling3 {
   void sync(const rigid::RigidData& data);
   void place(double dt_s, bool step);  // markers at the flesh and bones; with step, their velocities and the check
   void placeInterior(const rigid::RigidData& bodies, int nv, std::vector<Vec3>& now);
-  double cellsMoved(const std::vector<Vec3>& now, double dx_m) const;
+  void checkMoved(const std::vector<Vec3>& now, double dt_s);
   void projectedForcing(double dt_s);
   void reaction();
   void coupledStep(rigid::RigidData& data, double dt_s);

@@ -15,6 +15,7 @@
 #include "control_models.hpp"
 #include "coupling3d/flesh_fluid_coupling3.hpp"
 #include "flesh_models.hpp"
+#include "fluid3_momentum.hpp"
 #include "rigid/rigid_data.hpp"
 
 namespace creaturelab::coupling3d {
@@ -59,17 +60,6 @@ flesh::FleshParams neutralFlesh() {
   f.density_kg_per_m3 = kWater;
   f.stretch_damping_ratio = f.binding_damping_ratio = 0;
   return f;
-}
-
-// ρ dx³ Σ u over every face of a periodic box (kg m/s).
-Eigen::Vector3d fluidMomentum(const fluid3d::FluidSolver3& f) {
-  const fluid3d::MacGrid3& g = f.grid();
-  Eigen::Vector3d p = Eigen::Vector3d::Zero();
-  for (int a = 0; a < 3; ++a) {
-    for (std::size_t t = 0; t < g.velocity_m_per_s[a].size(); ++t) p[a] += g.velocity_m_per_s[a].data()[t];
-    p[a] *= f.params().density_kg_per_m3 * g.cellVolume_m3();
-  }
-  return p;
 }
 
 // Every vertex moving at up to v (deterministic).
