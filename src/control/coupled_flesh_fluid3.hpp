@@ -46,6 +46,7 @@ class CoupledFleshFluid3 final : public CoupledFluid {
   /// The last step's flesh and fluid forces on the bones, whatever the forcing (the controller's measurements).
   void applyFluidForce(rigid::RigidData& data) const override { c_.applyFluidForce(data); }
   const std::vector<Vec3>& bodyForce_n() const override { return c_.bodyForce_n(); }
+  const std::vector<Vec3>& boneForce_n() const override { return c_.boneForce_n(); }
   int forcingIterations() const override { return c_.forcingIterations(); }
   void placeMarkers(const rigid::RigidData& data) override { c_.placeMarkers(data); }
   void save(std::unique_ptr<FluidSnapshot>& s) const override;

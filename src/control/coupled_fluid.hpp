@@ -46,6 +46,9 @@ class CoupledFluid {
   virtual void applyFluidForce(rigid::RigidData& data) const { applyReaction(data); }
   // Per body (world body 0 included), the force (N, world) the fluid exerted in the last step.
   virtual const std::vector<Vec3>& bodyForce_n() const = 0;
+  // Per body, the force (N, world) its bone took in the last step: with flesh (coupled_flesh_fluid3.hpp) the
+  // flesh's binding reaction plus the fluid's force on the bone's interior; without flesh bodyForce_n.
+  virtual const std::vector<Vec3>& boneForce_n() const { return bodyForce_n(); }
   virtual int forcingIterations() const = 0;
   // Moves the markers to data's pose without a step (§3.3's placed perturbation).
   virtual void placeMarkers(const rigid::RigidData& data) = 0;

@@ -182,7 +182,8 @@ void FluidController::coupledStep(World& w, const Prescribed& pr) {
 
 Vec3 FluidController::jointForce(const World& w, int joint) const {
   Vec3 f{};
-  const auto& body = w.coupling->bodyForce_n();
+  const auto& body =
+      f_.objective_force == ObjectiveForce::flesh_on_bone ? w.coupling->boneForce_n() : w.coupling->bodyForce_n();
   for (int b = 0; b < int(body.size()); ++b)
     if (f_.creature_force ? b > 0 : layout_.moves[joint][b])
       for (int k = 0; k < 3; ++k) f[k] += body[b][k];

@@ -15,8 +15,8 @@
 //     coupled steps and settle_steps with it held: the objective sees the pose, not the
 //     pseudo-velocity of reaching it;
 //   - the objective is the force the fluid exerts on the bodies the joint moves (creature_force:
-//     on every body), from the coupling (its exchanged momentum), resolved along w (Eq. 10,
-//     drag_along) or its magnitude (drag),
+//     on every body), from the coupling (its exchanged momentum; with flesh, objective_force may take
+//     the force on the bones instead), resolved along w (Eq. 10, drag_along) or its magnitude (drag),
 //     averaged over the evaluation's last average_steps coupled steps;
 //   - the DOFs' evaluations run in parallel, each on its own worker's copy: results are bitwise
 //     the same for any thread count (§5, Fig. 10).
@@ -38,11 +38,18 @@ namespace creaturelab::control {
 // without a velocity (§3.3's "relative joint velocities" projected out, on the fluid's state).
 enum class Perturbation { moved, placed };
 
+// Which force on a body the objective reads. fluid_on_flesh: the fluid's on the body's surface (with flesh its
+// flesh, §4.3 Eq. 10's integral over "the surface of the creature") and interior; flesh_on_bone: the force its
+// bone takes, the flesh's binding reaction plus the fluid's on its interior (CoupledFluid::boneForce_n), which
+// differs by the flesh's rate of change of momentum. Without flesh the two are the same.
+enum class ObjectiveForce { fluid_on_flesh, flesh_on_bone };
+
 struct FluidControlParams {
   Perturbation perturbation = Perturbation::moved;
   // The objective's force: false, on the bodies the joint moves; true, on the whole creature
   // (every body but the world; §7.1: "maximize drag (F_d) on the body").
   bool creature_force = false;
+  ObjectiveForce objective_force = ObjectiveForce::fluid_on_flesh;
   int settle_steps = 0;   // §4.3 validation mode: coupled steps with the pose held after the move
   int average_steps = 1;  // the objective: mean force over an evaluation's last this many steps
   // §7.1: per controlled joint, the inboard pattern whose stroke flips its sense (empty: fixed senses).

@@ -73,6 +73,7 @@ FleshFluidCoupling3::FleshFluidCoupling3(const rigid::RigidData& data, const flu
   const std::size_t n = std::size_t(flesh_.vertices()) + interior_.size();
   force_.assign(n, Vec3{});
   body_force_n_.assign(data.model().bodies(), Vec3{});
+  bone_force_n_.assign(data.model().bodies(), Vec3{});
   reaction_.assign(data.model().dofs(), 0.0);
   if (p_.forcing == Forcing3::coupled) {
     std::vector<bool> fleshed(std::size_t(data.model().bodies()), false);
@@ -187,6 +188,7 @@ void FleshFluidCoupling3::advanceFluid(double dt) {
                            {x[0] + p_.origin_m[0], x[1] + p_.origin_m[1], x[2] + p_.origin_m[2]});
   }
   for (int d = 0; d < dofs; ++d) reaction_[d] += skeleton_.appliedForces()[d];
+  boneForces();
 }
 
 void FleshFluidCoupling3::applyReaction(rigid::RigidData& data) const {
@@ -285,6 +287,7 @@ void FleshFluidCoupling3::coupledStep(rigid::RigidData& data, double dt) {
     skeleton_.applyForceAt(interior_[k].body, {-F[0], -F[1], -F[2]}, x);
   }
   reaction_.assign(skeleton_.appliedForces(), skeleton_.appliedForces() + dofs);
+  boneForces();
   const std::vector<double> du(system_y_.data() + 3 * nv, system_y_.data() + 3 * nv + dofs);
   mover_.apply(data, du, dt);
   reaction();
@@ -465,6 +468,18 @@ void FleshFluidCoupling3::reaction() {
   }
 }
 
+// The force on each bone: −f_i(t + h) of its vertices' binding springs, −F of its interior and mouth markers.
+void FleshFluidCoupling3::boneForces() {
+  std::fill(bone_force_n_.begin(), bone_force_n_.end(), Vec3{});
+  const int nv = flesh_.vertices();
+  const Eigen::Matrix3Xd& binding = flesh_.bindingForces_n();
+  if (binding.cols() == nv)
+    for (int i = 0; i < nv; ++i)
+      for (int a = 0; a < 3; ++a) bone_force_n_[flesh_.mesh().body[i]][a] -= binding(a, i);
+  for (std::size_t k = 0; k < interior_.size(); ++k)
+    for (int a = 0; a < 3; ++a) bone_force_n_[interior_[k].body][a] -= force_[nv + k][a];
+}
+
 void FleshFluidCoupling3::placeMarkers(const rigid::RigidData& data) {
   // Each vertex turned and moved with its body from the last pose (skeleton_) to data's.
   Eigen::Matrix3Xd anchor0, anchor_v0, anchor1, anchor_v1;
@@ -497,6 +512,7 @@ void FleshFluidCoupling3::save(FleshFluidState3& s) const {
   s.flesh_v_m_per_s = flesh_.velocities_m_per_s();
   s.force_n = force_;
   s.body_force_n = body_force_n_;
+  s.bone_force_n = bone_force_n_;
   s.reaction = reaction_;
   s.mouth_flux_m_per_s = mouth_flux_m_per_s_;
 }
@@ -506,6 +522,7 @@ void FleshFluidCoupling3::restore(const FleshFluidState3& s, const rigid::RigidD
   flesh_.setState(s.flesh_x_m, s.flesh_v_m_per_s);
   force_ = s.force_n;
   body_force_n_ = s.body_force_n;
+  bone_force_n_ = s.bone_force_n;
   reaction_ = s.reaction;
   if (s.mouth_flux_m_per_s.size() == mouth_flux_m_per_s_.size()) mouth_flux_m_per_s_ = s.mouth_flux_m_per_s;
   sync(data);

@@ -80,7 +80,7 @@ struct FleshFluidState3 {
   fluid3d::MacGrid3 grid;
   Eigen::Matrix3Xd flesh_x_m, flesh_v_m_per_s;
   std::vector<Vec3> force_n;
-  std::vector<Vec3> body_force_n;
+  std::vector<Vec3> body_force_n, bone_force_n;
   std::vector<double> reaction;
   std::vector<double> mouth_flux_m_per_s;
 };
@@ -125,6 +125,11 @@ class FleshFluidCoupling3 {
   /// Per body (world body 0 included), of the last forceFluid: the force (N) the fluid exerts on the
   /// body's flesh and interior.
   const std::vector<Vec3>& bodyForce_n() const { return body_force_n_; }
+  /// Per body (world body 0 included), of the last step: the force (N) on the body's bone, the reaction of its
+  /// flesh's binding springs at the step's end (flesh.hpp's f_i(t + h), negated) plus the fluid's force on its
+  /// interior and mouth markers; with the forcing projected or off, the reaction the bones take in the step after
+  /// advanceFluid. It differs from bodyForce_n by the flesh's own rate of change of momentum.
+  const std::vector<Vec3>& boneForce_n() const { return bone_force_n_; }
   /// Force on the fluid per marker (N): the flesh's vertices first, then the bones' interior markers, then the
   /// mouths'.
   const std::vector<Vec3>& markerForce_n() const { return force_; }
@@ -150,6 +155,7 @@ class FleshFluidCoupling3 {
   void checkMoved(const std::vector<Vec3>& now, double dt_s);
   void projectedForcing(double dt_s);
   void reaction();
+  void boneForces();  // bone_force_n_ from the flesh's binding forces and the interior markers' force_
   void coupledStep(rigid::RigidData& data, double dt_s);
   void placeCoupled(const rigid::RigidData& data, double dt_s);
   void toSystem(const std::vector<Vec3>& f, Eigen::VectorXd& b) const;   // b = Gᵀ f
@@ -169,7 +175,7 @@ class FleshFluidCoupling3 {
   forcing::ForcingWork3 work_;
   fluid3d::FaceField3 spread_;
   Eigen::VectorXd area_m2_;
-  std::vector<Vec3> body_force_n_;
+  std::vector<Vec3> body_force_n_, bone_force_n_;
   std::vector<double> reaction_;  // generalised forces on the skeleton for the next MuJoCo step
   // Forcing3::coupled: held DOFs, the applier of the bones' velocity change (no DOF held), each marker's
   // arm from its body's centre of mass at the step's start (interior markers), the preconditioner's

@@ -106,6 +106,10 @@ class Flesh {
   const Eigen::MatrixXd& bodyJacobian(int b) const { return body_jacobian_[b]; }
   void endStep(rigid::RigidData& skeleton, double h_s, const Eigen::VectorXd& y);
 
+  // The binding springs' forces on the vertices (N, world, one column per vertex) at the last step's end,
+  // f_i(t + h) above: their negatives, at the anchors, are what the bones felt from the flesh in that step.
+  const Eigen::Matrix3Xd& bindingForces_n() const { return binding_force_n_; }
+
   // Measures. Binding energy at the skeleton's pose as its kinematics last computed it.
   double kineticEnergy_j() const;
   double stretchEnergy_j() const;  // edges' 0.5 k (|l| - r)^2

@@ -62,5 +62,51 @@ TEST_F(ControlFleshCoupledTest, BitwiseSameForAnyThreadCount) {
   }
 }
 
+// FluidControlParams::objective_force: a frame's force on j0's bodies (one coupled step a frame) is the sum of
+// the coupling's bodyForce_n over them with fluid_on_flesh, of its boneForce_n with flesh_on_bone, bitwise; the
+// two differ (the flesh's rate of change of momentum), so each check tells which force was read. Two frames of
+// the chain in flesh each, about 2 s of CPU.
+TEST_F(ControlFleshCoupledTest, ObjectiveForceReadsTheFleshOrTheBones) {
+  const std::string xml = testing::writeText(file("chain.xml"), testing::chainXml(2));
+  const rigid::RigidModel model = testing::chainModel3(xml);
+  coupling3d::RigidFluidParams3 cp = testing::chainCoupling3();
+  cp.forcing = coupling3d::Forcing3::coupled;
+  cp.forcing_regularisation = 3e-2;
+  ControllerParams p = testing::chainController3(1);
+  p.controlled.resize(1);
+  p.objectives.resize(1);
+  p.senses.resize(1);
+  std::vector<double> read[2], surface[2], bones[2];
+  for (const ObjectiveForce force : {ObjectiveForce::fluid_on_flesh, ObjectiveForce::flesh_on_bone}) {
+    FluidControlParams f = testing::chainEvaluations3();
+    f.objective_force = force;
+    FluidController c(model, p, f, testing::chainInitialRad3(), fleshFluid(testing::chainStream3(1), cp, {}));
+    const int k = force == ObjectiveForce::flesh_on_bone;
+    for (int frame = 0; frame < 2; ++frame) {
+      const FrameRecord r = c.frame();
+      const auto& coupling = dynamic_cast<const CoupledFleshFluid3&>(c.coupledFluid()).coupling();
+      Vec3 on_surface{}, on_bones{};
+      for (int b = 1; b < model.bodies(); ++b)  // j0 moves both capsules
+        for (int a = 0; a < 3; ++a) {
+          on_surface[a] += coupling.bodyForce_n()[b][a];
+          on_bones[a] += coupling.boneForce_n()[b][a];
+        }
+      read[k].insert(read[k].end(), r.measures.drag_vector_n[0].begin(), r.measures.drag_vector_n[0].end());
+      surface[k].insert(surface[k].end(), on_surface.begin(), on_surface.end());
+      bones[k].insert(bones[k].end(), on_bones.begin(), on_bones.end());
+    }
+  }
+  EXPECT_TRUE(read[0] == surface[0]);
+  EXPECT_TRUE(read[1] == bones[1]);
+  double differ = 0, scale = 0;
+  for (std::size_t i = 0; i < surface[0].size(); ++i) {
+    differ = std::max(differ, std::abs(surface[0][i] - bones[0][i]));
+    scale = std::max(scale, std::abs(surface[0][i]));
+  }
+  std::printf("objective force: |fluid on flesh| up to %.4e N, |fluid on flesh - on bones| up to %.4e N\n", scale,
+              differ);
+  EXPECT_GT(differ, 1e-3 * scale);
+}
+
 }  // namespace
 }  // namespace creaturelab::control
