@@ -7,6 +7,7 @@
 #include <string>
 
 #include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
 #include <Eigen/LU>
 
 namespace creaturelab::ib {
@@ -219,8 +220,9 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
 
   triplets_.clear();
   body_.stiffness(t1_s, markers_, 1.0, triplets_);
-  Eigen::SparseMatrix<double> stiffness(n, n);
-  stiffness.setFromTriplets(triplets_.begin(), triplets_.end());
+  stiffness_.resize(n, n);
+  stiffness_.setFromTriplets(triplets_.begin(), triplets_.end());
+  const Eigen::SparseMatrix<double>& stiffness = stiffness_;
   Eigen::VectorXd free(n), force(n);
   for (int i = 0; i < n / 2; ++i) {
     free[2 * i] = velocity_[i].x;
@@ -276,15 +278,68 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
   if (!predicted.allFinite())
     throw std::runtime_error("immersed boundary: the semi-implicit force is not finite at t = " + std::to_string(t1_s) + " s");
   const Eigen::VectorXd correction = theta_dt_s * (stiffness * predicted);
-  if (!porous_.empty()) {  // F_slip = F + dt K U*, the end of the step's force
-    const Eigen::VectorXd k_predicted = stiffness * predicted;
-    for (const PorousSlip& p : porous_)
-      slip_force_[p.marker] = {force_[p.marker].x + dt_s * k_predicted[2 * p.marker],
-                               force_[p.marker].y + dt_s * k_predicted[2 * p.marker + 1]};
-  }
   for (int i = 0; i < n / 2; ++i) {
     force_[i].x += correction[2 * i];
     force_[i].y += correction[2 * i + 1];
+  }
+}
+
+// The Darcy slip s of the porous markers, added to their fluid velocity v = I u^{n+1} (coupling.hpp).
+// Semi-implicit with the stencil mobility: backward Euler at the markers' end-of-step positions,
+// s = P F(X^n + dt (v + s)) linearised, i.e. (I − dt P K) s = P (F + dt K v) on the porous markers
+// (s is zero elsewhere); otherwise explicit, s = P F.
+void ImmersedBoundary2::addPorousSlip(double dt_s) {
+  const bool implicit_slip = params_.semi_implicit && params_.mobility == ImplicitMobility::stencil;
+  const int count = static_cast<int>(porous_.size());
+  Eigen::VectorXd rhs(2 * count);
+  for (int q = 0; q < count; ++q) {
+    const PorousSlip& p = porous_[q];
+    const double normal = p.mobility * (p.nx * slip_force_[p.marker].x + p.ny * slip_force_[p.marker].y);
+    rhs[2 * q] = normal * p.nx;
+    rhs[2 * q + 1] = normal * p.ny;
+  }
+  if (implicit_slip) {
+    const int n = 2 * static_cast<int>(markers_.size());
+    Eigen::VectorXd v(n);
+    for (int i = 0; i < n / 2; ++i) {
+      v[2 * i] = velocity_[i].x;
+      v[2 * i + 1] = velocity_[i].y;
+    }
+    const Eigen::VectorXd kv = stiffness_ * v;
+    std::vector<int> slot(markers_.size(), -1);  // marker -> its index among the porous ones
+    for (int q = 0; q < count; ++q) slot[porous_[q].marker] = q;
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int i = 0; i < 2 * count; ++i) entries.emplace_back(i, i, 1.0);
+    for (int j = 0; j < stiffness_.outerSize(); ++j) {  // − dt P K on the porous rows and columns
+      const int qc = slot[j / 2];
+      if (qc < 0) continue;
+      for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness_, j); k; ++k) {
+        const int qr = slot[k.row() / 2];
+        if (qr < 0) continue;
+        const PorousSlip& p = porous_[qr];
+        const double along = -dt_s * p.mobility * (k.row() % 2 == 0 ? p.nx : p.ny) * k.value();
+        entries.emplace_back(2 * qr, 2 * qc + j % 2, along * p.nx);
+        entries.emplace_back(2 * qr + 1, 2 * qc + j % 2, along * p.ny);
+      }
+    }
+    for (int q = 0; q < count; ++q) {  // + P dt K v
+      const PorousSlip& p = porous_[q];
+      const long i = 2L * p.marker;
+      const double normal = dt_s * p.mobility * (p.nx * kv[i] + p.ny * kv[i + 1]);
+      rhs[2 * q] += normal * p.nx;
+      rhs[2 * q + 1] += normal * p.ny;
+    }
+    Eigen::SparseMatrix<double> system(2 * count, 2 * count);
+    system.setFromTriplets(entries.begin(), entries.end());
+    slip_solver_.compute(system);
+    if (slip_solver_.info() != Eigen::Success)
+      throw std::runtime_error("immersed boundary: the porous slip system is singular at t = " +
+                               std::to_string(fluid_.time_s()) + " s");
+    rhs = slip_solver_.solve(rhs).eval();
+  }
+  for (int q = 0; q < count; ++q) {
+    velocity_[porous_[q].marker].x += rhs[2 * q];
+    velocity_[porous_[q].marker].y += rhs[2 * q + 1];
   }
 }
 
@@ -314,11 +369,8 @@ CouplingStepReport ImmersedBoundary2::step(double dt_s) {
                                   " of " + std::to_string(markers_.size()) + " or has a negative mobility");
   }
   slip_force_.assign(markers_.size(), {});
-  for (const PorousSlip& p : porous_) slip_force_[p.marker] = force_[p.marker];  // explicit unless replaced below
-  const bool implicit_slip = params_.semi_implicit && params_.mobility == ImplicitMobility::stencil;
+  for (const PorousSlip& p : porous_) slip_force_[p.marker] = force_[p.marker];  // F(X^n), before the correction
   if (params_.semi_implicit) semiImplicitForce(t1_s, dt_s);
-  if (params_.semi_implicit && !implicit_slip)
-    for (const PorousSlip& p : porous_) slip_force_[p.marker] = force_[p.marker];
 
   auto& density = fluid_.forceDensity_n_per_m3();
   density.fill(0.0);
@@ -328,12 +380,7 @@ CouplingStepReport ImmersedBoundary2::step(double dt_s) {
   report.fluid = fluid_.step(dt_s);
 
   transfer_.interpolate(fluid_.grid(), velocity_);
-  for (const PorousSlip& p : porous_) {  // the Darcy slip through the fluid, along the normal
-    const fluid::Vec2 f = slip_force_[p.marker];
-    const double slip = p.mobility * (p.nx * f.x + p.ny * f.y);
-    velocity_[p.marker].x += slip * p.nx;
-    velocity_[p.marker].y += slip * p.ny;
-  }
+  if (!porous_.empty()) addPorousSlip(dt_s);
   for (std::size_t k = 0; k < markers_.size(); ++k) {
     const fluid::Vec2 u = velocity_[k];
     markers_[k].x += dt_s * u.x;

@@ -11,14 +11,18 @@
 //   4. spread    f = S F                                              (Peskin 2002 Eq. 6.4)
 //   5. fluid     u^{n+1} = fluid step with the force density f        (Eq. 1)
 //   6. move      X^{n+1} = X^n + dt I u^{n+1}                          (Peskin 2002 Eq. 6.5)
-//                plus, for porous markers (PorousSlip), dt P F_slip with P = Σ (α/ds) n nᵀ
+//                plus, for porous markers (PorousSlip), dt s, their Darcy slip (below; P = Σ (α/ds) n nᵀ)
 //
-// Porous slip. P is a mobility like M, so the semi-implicit step takes it in too, at the end of the
-// step (backward Euler: a filament's slip relaxes its stiff bending modes at rates far beyond 1/dt,
-// which the trapezoidal θ = ½ would leave ringing):
-//   (I − dt (θ M + P) K) U* = I u^n + (M + P) F,   F_impl = F + θ dt K U*,   F_slip = F + dt K U*,
-// F_impl spread, the porous markers moved by I u^{n+1} + P F_slip. Without the semi-implicit step,
-// F_slip = F. P ⪰ 0, so the system's eigenvalues stay ≥ 1. local_mass: the slip is explicit.
+// Porous slip. P is a mobility like M, so the semi-implicit step takes it into the prediction:
+//   (I − dt (θ M + P) K) U* = I u^n + (M + P) F,   F_impl = F + θ dt K U*,
+// F_impl spread. The porous markers then move by v + s with v = I u^{n+1} and the slip taken by
+// backward Euler at their actual end positions (a filament's slip relaxes its stiff bending modes at
+// rates far beyond 1/dt, which the trapezoidal θ = ½ would leave ringing):
+//   (I − dt P K) s = P (F + dt K v)   on the porous markers.
+// Taking s from the fluid's actual v, not from U*, keeps the step stable where M over-predicts the
+// fluid's response (the projection lowers it): a slip from the predicted end force overshoots by the
+// difference, which θ = ½ does not damp. P ⪰ 0, K ⪯ 0, so both systems' eigenvalues stay ≥ 1. Without
+// the semi-implicit step, and with local_mass, the slip is explicit, s = P F.
 //
 // Stability. Explicit forces make the coupled step stiff (Stockie & Wetton 1999, the paper's ref.
 // [28]): a marker spring of stiffness k pushes about ρ dx² of fluid per metre of depth, so steps
@@ -71,6 +75,7 @@
 #include <vector>
 
 #include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 #include <Eigen/Dense>
 
 #include "fluid/fluid_solver2.hpp"
@@ -205,8 +210,12 @@ class ImmersedBoundary2 {
   std::vector<fluid::Vec2> markers_;
   CouplingParams params_;
   Transfer transfer_;
-  std::vector<fluid::Vec2> force_, velocity_, slip_force_;
+  std::vector<fluid::Vec2> force_, velocity_;
+  std::vector<fluid::Vec2> slip_force_;  // the porous markers' F(X^n), N/m
   std::vector<PorousSlip> porous_;
+  Eigen::SparseMatrix<double> stiffness_;  // K = ∂F/∂X at X^n (semi-implicit steps)
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> slip_solver_;
+  void addPorousSlip(double dt_s);
   void addPorous(const Eigen::VectorXd& x, Eigen::VectorXd& out, double factor) const;
   Eigen::SparseMatrix<double> porousMatrix(int n, double factor) const;  // factor P, 2n × 2n numbering
   std::vector<Eigen::Triplet<double>> triplets_;
