@@ -202,13 +202,25 @@ Eigen::VectorXd ImmersedBoundary2::solveWithoutAssembly(const Eigen::SparseMatri
   return predicted;
 }
 
+namespace {
+// A porous marker's 2 × 2 block of P: α n nᵀ + α_t t tᵀ over ds, with t = (n_y, −n_x).
+struct SlipBlock {
+  double xx, xy, yy;
+};
+SlipBlock slipBlock(const PorousSlip& p) {
+  return {p.mobility * p.nx * p.nx + p.axial_mobility * p.ny * p.ny,
+          (p.mobility - p.axial_mobility) * p.nx * p.ny,
+          p.mobility * p.ny * p.ny + p.axial_mobility * p.nx * p.nx};
+}
+}  // namespace
+
 // out += factor P x (numbering 2 marker + axis).
 void ImmersedBoundary2::addPorous(const Eigen::VectorXd& x, Eigen::VectorXd& out, double factor) const {
   for (const PorousSlip& p : porous_) {
     const long i = 2L * p.marker;
-    const double normal = factor * p.mobility * (p.nx * x[i] + p.ny * x[i + 1]);
-    out[i] += normal * p.nx;
-    out[i + 1] += normal * p.ny;
+    const SlipBlock b = slipBlock(p);
+    out[i] += factor * (b.xx * x[i] + b.xy * x[i + 1]);
+    out[i + 1] += factor * (b.xy * x[i] + b.yy * x[i + 1]);
   }
 }
 
@@ -291,12 +303,13 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
 void ImmersedBoundary2::addPorousSlip(double dt_s) {
   const bool implicit_slip = params_.semi_implicit && params_.mobility == ImplicitMobility::stencil;
   const int count = static_cast<int>(porous_.size());
+  std::vector<SlipBlock> blocks(porous_.size());
   Eigen::VectorXd rhs(2 * count);
   for (int q = 0; q < count; ++q) {
-    const PorousSlip& p = porous_[q];
-    const double normal = p.mobility * (p.nx * slip_force_[p.marker].x + p.ny * slip_force_[p.marker].y);
-    rhs[2 * q] = normal * p.nx;
-    rhs[2 * q + 1] = normal * p.ny;
+    const SlipBlock b = blocks[q] = slipBlock(porous_[q]);
+    const fluid::Vec2 f = slip_force_[porous_[q].marker];
+    rhs[2 * q] = b.xx * f.x + b.xy * f.y;
+    rhs[2 * q + 1] = b.xy * f.x + b.yy * f.y;
   }
   if (implicit_slip) {
     const int n = 2 * static_cast<int>(markers_.size());
@@ -316,18 +329,17 @@ void ImmersedBoundary2::addPorousSlip(double dt_s) {
       for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness_, j); k; ++k) {
         const int qr = slot[k.row() / 2];
         if (qr < 0) continue;
-        const PorousSlip& p = porous_[qr];
-        const double along = -dt_s * p.mobility * (k.row() % 2 == 0 ? p.nx : p.ny) * k.value();
-        entries.emplace_back(2 * qr, 2 * qc + j % 2, along * p.nx);
-        entries.emplace_back(2 * qr + 1, 2 * qc + j % 2, along * p.ny);
+        const SlipBlock& b = blocks[qr];  // column k.row() % 2 of P's block, times − dt K
+        const double scale = -dt_s * k.value();
+        entries.emplace_back(2 * qr, 2 * qc + j % 2, scale * (k.row() % 2 == 0 ? b.xx : b.xy));
+        entries.emplace_back(2 * qr + 1, 2 * qc + j % 2, scale * (k.row() % 2 == 0 ? b.xy : b.yy));
       }
     }
     for (int q = 0; q < count; ++q) {  // + P dt K v
-      const PorousSlip& p = porous_[q];
-      const long i = 2L * p.marker;
-      const double normal = dt_s * p.mobility * (p.nx * kv[i] + p.ny * kv[i + 1]);
-      rhs[2 * q] += normal * p.nx;
-      rhs[2 * q + 1] += normal * p.ny;
+      const SlipBlock& b = blocks[q];
+      const long i = 2L * porous_[q].marker;
+      rhs[2 * q] += dt_s * (b.xx * kv[i] + b.xy * kv[i + 1]);
+      rhs[2 * q + 1] += dt_s * (b.xy * kv[i] + b.yy * kv[i + 1]);
     }
     Eigen::SparseMatrix<double> system(2 * count, 2 * count);
     system.setFromTriplets(entries.begin(), entries.end());
@@ -347,11 +359,11 @@ Eigen::SparseMatrix<double> ImmersedBoundary2::porousMatrix(int n, double factor
   std::vector<Eigen::Triplet<double>> entries;
   for (const PorousSlip& p : porous_) {
     const int i = 2 * p.marker;
-    const double m = factor * p.mobility;
-    entries.emplace_back(i, i, m * p.nx * p.nx);
-    entries.emplace_back(i, i + 1, m * p.nx * p.ny);
-    entries.emplace_back(i + 1, i, m * p.ny * p.nx);
-    entries.emplace_back(i + 1, i + 1, m * p.ny * p.ny);
+    const SlipBlock b = slipBlock(p);
+    entries.emplace_back(i, i, factor * b.xx);
+    entries.emplace_back(i, i + 1, factor * b.xy);
+    entries.emplace_back(i + 1, i, factor * b.xy);
+    entries.emplace_back(i + 1, i + 1, factor * b.yy);
   }
   Eigen::SparseMatrix<double> out(n, n);
   out.setFromTriplets(entries.begin(), entries.end());
@@ -364,7 +376,7 @@ CouplingStepReport ImmersedBoundary2::step(double dt_s) {
   body_.forces(t1_s, markers_, force_);
   body_.porousSlips(markers_, porous_);
   for (const PorousSlip& p : porous_) {
-    if (p.marker < 0 || p.marker >= static_cast<int>(markers_.size()) || !(p.mobility >= 0))
+    if (p.marker < 0 || p.marker >= static_cast<int>(markers_.size()) || !(p.mobility >= 0) || !(p.axial_mobility >= 0))
       throw std::invalid_argument("immersed boundary: a porous slip names marker " + std::to_string(p.marker) +
                                   " of " + std::to_string(markers_.size()) + " or has a negative mobility");
   }

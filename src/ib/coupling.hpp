@@ -11,7 +11,7 @@
 //   4. spread    f = S F                                              (Peskin 2002 Eq. 6.4)
 //   5. fluid     u^{n+1} = fluid step with the force density f        (Eq. 1)
 //   6. move      X^{n+1} = X^n + dt I u^{n+1}                          (Peskin 2002 Eq. 6.5)
-//                plus, for porous markers (PorousSlip), dt s, their Darcy slip (below; P = Σ (α/ds) n nᵀ)
+//                plus, for porous markers (PorousSlip), dt s, their Darcy slip (below; P = Σ (α n nᵀ + α_t t tᵀ)/ds)
 //
 // Porous slip. P is a mobility like M, so the semi-implicit step takes it into the prediction:
 //   (I − dt (θ M + P) K) U* = I u^n + (M + P) F,   F_impl = F + θ dt K U*,
@@ -91,11 +91,14 @@ namespace creaturelab::ib {
 /// points as Miles & Battista 2019, Fluids 4:169, use them for tentacles): the marker moves through the
 /// fluid along its unit normal n at U_p = α (F · n) / ds, with F the force it spreads (N/m), ds its share
 /// of the chain's arc (m) and α the Darcy coefficient (m/(Pa s), slip velocity per pressure jump), so
-/// the fluid passes through the chain at α times the normal load per length; mobility = α / ds.
+/// the fluid passes through the chain at α times the normal load per length; mobility = α / ds. A chain
+/// that stands for sparse filaments also lets the fluid by along itself: U_t = α_t (F · t) / ds along the
+/// unit tangent t = (n_y, −n_x), axial_mobility = α_t / ds (0: a sheet, no slip along it).
 struct PorousSlip {
   int marker = 0;
   double nx = 0, ny = 0;      // unit normal
   double mobility = 0;        // α / ds, (m/s) per (N/m)
+  double axial_mobility = 0;  // α_t / ds, (m/s) per (N/m)
 };
 
 /// The elastic structure, seen by the coupling: forces and stiffness at given marker positions.

@@ -100,6 +100,7 @@ BellModel buildBell(const BellParams& p) {
     }
   model.tentacle_chains = tentacle_chains;
   model.tentacle_porosity_m_per_pa_s = p.tentacle_porosity_m_per_pa_s;
+  model.tentacle_axial_porosity_m_per_pa_s = p.tentacle_axial_porosity_m_per_pa_s;
 
   auto& net = model.network;
   for (std::size_t i = 0; i < model.rest_positions_m.size(); ++i) net.addParticle(1.0, false);

@@ -33,6 +33,7 @@ struct BellModel {
   std::vector<int> tentacle_markers;          // the rest: the left chains root → tip, then the right ones
   std::vector<std::vector<int>> tentacle_chains;  // each chain's markers from its root (a bell marker) to its tip
   double tentacle_porosity_m_per_pa_s = 0;    // Darcy coefficient of the chains (BellParams)
+  double tentacle_axial_porosity_m_per_pa_s = 0;  // the same along them (BellParams)
   double aperture_width_m = 0;                // drawn distance between the two aperture markers
   double bell_area_m2 = 0;                    // slice area of the bell's flesh (arc length × thickness)
   double segment_m = 0;                       // drawn length of every bell (and tentacle) segment

@@ -110,7 +110,8 @@ void JellyfishBody::forces(double t_s, std::span<const fluid::Vec2> x_m, std::sp
 void JellyfishBody::porousSlips(std::span<const fluid::Vec2> x, std::vector<ib::PorousSlip>& out) const {
   out.clear();
   const double alpha = model_.tentacle_porosity_m_per_pa_s;
-  if (!(alpha > 0)) return;
+  const double alpha_axial = model_.tentacle_axial_porosity_m_per_pa_s;
+  if (!(alpha > 0) && !(alpha_axial > 0)) return;
   for (const std::vector<int>& chain : model_.tentacle_chains)
     for (std::size_t m = 1; m < chain.size(); ++m) {
       const fluid::Vec2 here = x[chain[m]], before = x[chain[m - 1]];
@@ -120,7 +121,7 @@ void JellyfishBody::porousSlips(std::span<const fluid::Vec2> x, std::vector<ib::
       const double tx = after.x - before.x, ty = after.y - before.y, t = std::hypot(tx, ty);
       const double ds = 0.5 * (std::hypot(here.x - before.x, here.y - before.y) + std::hypot(after.x - here.x, after.y - here.y));
       if (!(t > 0 && ds > 0)) continue;  // a collapsed joint has no normal: impermeable this step
-      out.push_back({chain[m], -ty / t, tx / t, alpha / ds});
+      out.push_back({chain[m], -ty / t, tx / t, alpha / ds, alpha_axial / ds});
     }
 }
 

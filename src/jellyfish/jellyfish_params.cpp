@@ -42,6 +42,8 @@ std::string BellParams::validate() const {
     e.add("tentacle root spacing must be > 0");
   if (!(p.tentacle_porosity_m_per_pa_s >= 0) || !std::isfinite(p.tentacle_porosity_m_per_pa_s))
     e.add("tentacle porosity must be >= 0");
+  if (!(p.tentacle_axial_porosity_m_per_pa_s >= 0) || !std::isfinite(p.tentacle_axial_porosity_m_per_pa_s))
+    e.add("tentacle axial porosity must be >= 0");
   return e.str();
 }
 

@@ -127,6 +127,9 @@ struct BellParams {
   // normal load per length (ib::PorousSlip). A slice's chain stands for a ring of sparse filaments,
   // not a sheet; 0 is impermeable.
   double tentacle_porosity_m_per_pa_s = 0.0;
+  // The same along the chain, m/(Pa s): the fluid passes along the filaments at α_t times the tangential
+  // load per length; 0 is a sheet, with no slip along it.
+  double tentacle_axial_porosity_m_per_pa_s = 0.0;
   /// tentacles, tentacle_length_m, tentacle_area_factor, tentacles_per_side (root spacing and porosity
   /// are the kind's, from its kernel radius and a permeability).
   template <class V>

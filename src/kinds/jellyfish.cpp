@@ -145,6 +145,8 @@ jellyfish::SwimmerConfig JellyfishKindParams::setup() const {
   // Darcy: α = κ / μ, the permeability length over the dynamic viscosity ρ ν.
   b.tentacle_porosity_m_per_pa_s =
       tentacle_permeability_m / (swimmer.fluid.density_kg_per_m3 * swimmer.fluid.kinematic_viscosity_m2_per_s);
+  b.tentacle_axial_porosity_m_per_pa_s =
+      tentacle_axial_permeability_m / (swimmer.fluid.density_kg_per_m3 * swimmer.fluid.kinematic_viscosity_m2_per_s);
   c.activation.knots = knots.curve();
   // A tall box: the bell swims up its axis and must not meet the top within the window.
   c.fluid.cells_y = int(std::lround(box_aspect * c.fluid.cells_x));

@@ -21,6 +21,7 @@ struct JellyfishKindParams {
   double stiffness_scale = 1.0;
   double tentacle_kernel_radius_m = 0.004;
   double tentacle_permeability_m = 0.0;
+  double tentacle_axial_permeability_m = 0.0;
   double kernel_radius_m = 0.004;
   double box_aspect = 1.44;
   std::int64_t tracers_per_side = 0;
@@ -73,6 +74,10 @@ struct JellyfishKindParams {
            "Darcy permeability over thickness of a tentacle chain, slip = permeability / (rho nu) x normal load "
            "per length (Kim & Peskin's porous boundary); 0 = impermeable; 1.7e-3 estimates a ring of 16 "
            "filaments 0.5 mm thick in Stokes flow, h ln(h/d) / 4 pi");
+    v.real("tentacle_axial_permeability_m", tentacle_axial_permeability_m, "m", 0, 10,
+           "the same along the chain, slip = permeability / (rho nu) x tangential load per length: a slice's chain "
+           "stands for sparse filaments the flow passes along, not a sheet; 0 = none; slender filaments resist "
+           "axial flow about half as much as transverse (Cox 1970), so about twice tentacle_permeability_m");
     // --- fluid (§3.2, Fig. 12) and coupling (§3.2; Peskin 2002): the shared structs' own fields, with why
     // this kind's defaults (jellyfish::jellyfishFluid, jellyfishCoupling) differ from theirs.
     DefaultNotes noted(v, {

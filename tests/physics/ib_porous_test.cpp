@@ -32,12 +32,15 @@ void ringNormal(std::span<const fluid::Vec2> x, int k, double& nx, double& ny, d
 }
 
 // A porous ring: zero-rest-length springs of k (MembraneBody; k = 0: none) plus an outward load of
-// f per length, every marker porous with Darcy coefficient α.
+// f per length and a counter-clockwise one of g per length, every marker porous with Darcy coefficient α
+// across the ring and α_t along it.
 class PorousRing : public ElasticBody {
  public:
-  PorousRing(double stiffness_n_per_m, double load_n_per_m2, double alpha_m_per_pa_s)
+  PorousRing(double stiffness_n_per_m, double load_n_per_m2, double alpha_m_per_pa_s, double axial_load_n_per_m2 = 0,
+             double axial_alpha_m_per_pa_s = 0)
       : springs_(kMarkers, stiffness_n_per_m > 0 ? stiffness_n_per_m : 1.0),
-        has_springs_(stiffness_n_per_m > 0), load_(load_n_per_m2), alpha_(alpha_m_per_pa_s) {}
+        has_springs_(stiffness_n_per_m > 0), load_(load_n_per_m2), alpha_(alpha_m_per_pa_s),
+        axial_load_(axial_load_n_per_m2), axial_alpha_(axial_alpha_m_per_pa_s) {}
   int markerCount() const override { return kMarkers; }
   void forces(double t_s, std::span<const fluid::Vec2> x, std::span<fluid::Vec2> f) const override {
     if (has_springs_) springs_.forces(t_s, x, f);
@@ -46,8 +49,8 @@ class PorousRing : public ElasticBody {
     for (int k = 0; k < kMarkers; ++k) {
       double nx, ny, ds;
       ringNormal(x, k, nx, ny, ds);
-      f[k].x += load_ * ds * nx;
-      f[k].y += load_ * ds * ny;
+      f[k].x += (load_ * nx - axial_load_ * ny) * ds;  // counter-clockwise tangent: (−n_y, n_x)
+      f[k].y += (load_ * ny + axial_load_ * nx) * ds;
     }
   }
   void stiffness(double t_s, std::span<const fluid::Vec2> x, double scale,
@@ -56,18 +59,18 @@ class PorousRing : public ElasticBody {
   }
   void porousSlips(std::span<const fluid::Vec2> x, std::vector<PorousSlip>& out) const override {
     out.clear();
-    if (alpha_ == 0) return;
+    if (alpha_ == 0 && axial_alpha_ == 0) return;
     for (int k = 0; k < kMarkers; ++k) {
       double nx, ny, ds;
       ringNormal(x, k, nx, ny, ds);
-      out.push_back({k, nx, ny, alpha_ / ds});
+      out.push_back({k, nx, ny, alpha_ / ds, axial_alpha_ / ds});
     }
   }
 
  private:
   MembraneBody springs_;
   bool has_springs_;
-  double load_, alpha_;
+  double load_, alpha_, axial_load_, axial_alpha_;
 };
 
 struct Ring {
@@ -76,7 +79,8 @@ struct Ring {
   std::unique_ptr<ImmersedBoundary2> coupling;
 };
 
-Ring makeRing(double k, double load, double alpha, double dt_s, bool semi_implicit = true) {
+Ring makeRing(double k, double load, double alpha, double dt_s, bool semi_implicit = true, double axial_load = 0,
+              double axial_alpha = 0) {
   fluid::FluidParams f;
   f.domain_width_m = f.domain_height_m = 1.0;
   f.cells_x = f.cells_y = 64;
@@ -87,7 +91,7 @@ Ring makeRing(double k, double load, double alpha, double dt_s, bool semi_implic
   f.blowup_speed_m_per_s = 10.0;
   Ring r;
   r.fluid = std::make_unique<fluid::FluidSolver2>(f);
-  r.body = std::make_unique<PorousRing>(k, load, alpha);
+  r.body = std::make_unique<PorousRing>(k, load, alpha, axial_load, axial_alpha);
   MembraneParams m;
   m.centre_x_m = m.centre_y_m = 0.5;
   m.semi_axis_x_m = m.semi_axis_y_m = kRadius;
@@ -135,6 +139,42 @@ TEST(PorousBoundary, LoadedRingPassesDarcysFlux) {
     // 1 m box moving at 3% of the Darcy speed.
     EXPECT_LT(r.fluid->kineticEnergy_joule_per_m(), 0.5 * 1000.0 * std::pow(0.03 * alpha * load, 2));
   }
+}
+
+// The mean angle of the markers about the box's centre, rad (unwrapped against `previous`).
+double meanAngle(const Ring& r, double previous) {
+  double sum = 0;
+  for (const auto& p : r.coupling->markers_m()) {
+    double a = std::atan2(p.y - 0.5, p.x - 0.5);
+    const double start = std::atan2(std::sin(previous), std::cos(previous));
+    while (a - start > M_PI) a -= 2 * M_PI;
+    while (a - start < -M_PI) a += 2 * M_PI;
+    sum += a + (previous - start);
+  }
+  return sum / r.coupling->markers_m().size();
+}
+
+// A counter-clockwise load g per length spins the fluid the same way whatever the ring's porosity (the
+// same force is spread), so a ring porous along itself turns faster than a sheet by its slip α_t g, and
+// one porous only across turns with the sheet.
+TEST(PorousBoundary, RingPorousAlongItselfSlidesThroughTheFluidAtItsAxialSlip) {
+  const double g = 1.0, axial_alpha = 0.01, dt = 0.01;  // α_t g = 1 cm/s
+  const auto turn = [&](double alpha, double alpha_t) {
+    Ring r = makeRing(0.0, 0.0, alpha, dt, true, g, alpha_t);
+    double angle = meanAngle(r, 0.0);
+    const double start = angle;
+    for (int s = 0; s < 50; ++s) {
+      r.coupling->step(dt);
+      angle = meanAngle(r, angle);
+    }
+    return (angle - start) / (50 * dt);  // rad/s
+  };
+  const double sheet = turn(0.0, 0.0);
+  const double along = turn(0.0, axial_alpha);
+  const double across = turn(0.01, 0.0);
+  EXPECT_GT(sheet, 0.0);
+  EXPECT_NEAR((along - sheet) * kRadius / (axial_alpha * g), 1.0, 0.01);
+  EXPECT_NEAR((across - sheet) * kRadius, 0.0, 1e-3 * axial_alpha * g);
 }
 
 TEST(PorousBoundary, ImpermeableRingHoldsItsArea) {
