@@ -203,10 +203,6 @@ Eigen::VectorXd ImmersedBoundary2::solveWithoutAssembly(const Eigen::SparseMatri
 }
 
 namespace {
-// A porous marker's 2 × 2 block of P: α n nᵀ + α_t t tᵀ over ds, with t = (n_y, −n_x).
-struct SlipBlock {
-  double xx, xy, yy;
-};
 SlipBlock slipBlock(const PorousSlip& p) {
   return {p.mobility * p.nx * p.nx + p.axial_mobility * p.ny * p.ny,
           (p.mobility - p.axial_mobility) * p.nx * p.ny,
@@ -301,58 +297,60 @@ void ImmersedBoundary2::semiImplicitForce(double t1_s, double dt_s) {
 // s = P F(X^n + dt (v + s)) linearised, i.e. (I − dt P K) s = P (F + dt K v) on the porous markers
 // (s is zero elsewhere); otherwise explicit, s = P F.
 void ImmersedBoundary2::addPorousSlip(double dt_s) {
-  const bool implicit_slip = params_.semi_implicit && params_.mobility == ImplicitMobility::stencil;
   const int count = static_cast<int>(porous_.size());
   std::vector<SlipBlock> blocks(porous_.size());
-  Eigen::VectorXd rhs(2 * count);
+  for (int q = 0; q < count; ++q) blocks[q] = slipBlock(porous_[q]);
+  Eigen::VectorXd slip(2 * count);  // P F, then P (F + dt K v)
   for (int q = 0; q < count; ++q) {
-    const SlipBlock b = blocks[q] = slipBlock(porous_[q]);
+    const SlipBlock& b = blocks[q];
     const fluid::Vec2 f = slip_force_[porous_[q].marker];
-    rhs[2 * q] = b.xx * f.x + b.xy * f.y;
-    rhs[2 * q + 1] = b.xy * f.x + b.yy * f.y;
+    slip[2 * q] = b.xx * f.x + b.xy * f.y;
+    slip[2 * q + 1] = b.xy * f.x + b.yy * f.y;
   }
-  if (implicit_slip) {
-    const int n = 2 * static_cast<int>(markers_.size());
-    Eigen::VectorXd v(n);
-    for (int i = 0; i < n / 2; ++i) {
-      v[2 * i] = velocity_[i].x;
-      v[2 * i + 1] = velocity_[i].y;
-    }
+  if (params_.semi_implicit && params_.mobility == ImplicitMobility::stencil) {
+    Eigen::VectorXd v(2 * markers_.size());
+    for (std::size_t i = 0; i < markers_.size(); ++i) v[2 * i] = velocity_[i].x, v[2 * i + 1] = velocity_[i].y;
     const Eigen::VectorXd kv = stiffness_ * v;
-    std::vector<int> slot(markers_.size(), -1);  // marker -> its index among the porous ones
-    for (int q = 0; q < count; ++q) slot[porous_[q].marker] = q;
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int i = 0; i < 2 * count; ++i) entries.emplace_back(i, i, 1.0);
-    for (int j = 0; j < stiffness_.outerSize(); ++j) {  // − dt P K on the porous rows and columns
-      const int qc = slot[j / 2];
-      if (qc < 0) continue;
-      for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness_, j); k; ++k) {
-        const int qr = slot[k.row() / 2];
-        if (qr < 0) continue;
-        const SlipBlock& b = blocks[qr];  // column k.row() % 2 of P's block, times − dt K
-        const double scale = -dt_s * k.value();
-        entries.emplace_back(2 * qr, 2 * qc + j % 2, scale * (k.row() % 2 == 0 ? b.xx : b.xy));
-        entries.emplace_back(2 * qr + 1, 2 * qc + j % 2, scale * (k.row() % 2 == 0 ? b.xy : b.yy));
-      }
-    }
-    for (int q = 0; q < count; ++q) {  // + P dt K v
+    for (int q = 0; q < count; ++q) {
       const SlipBlock& b = blocks[q];
       const long i = 2L * porous_[q].marker;
-      rhs[2 * q] += dt_s * (b.xx * kv[i] + b.xy * kv[i + 1]);
-      rhs[2 * q + 1] += dt_s * (b.xy * kv[i] + b.yy * kv[i + 1]);
+      slip[2 * q] += dt_s * (b.xx * kv[i] + b.xy * kv[i + 1]);
+      slip[2 * q + 1] += dt_s * (b.xy * kv[i] + b.yy * kv[i + 1]);
     }
-    Eigen::SparseMatrix<double> system(2 * count, 2 * count);
-    system.setFromTriplets(entries.begin(), entries.end());
-    slip_solver_.compute(system);
+    slip_solver_.compute(porousSlipSystem(blocks, dt_s));
     if (slip_solver_.info() != Eigen::Success)
       throw std::runtime_error("immersed boundary: the porous slip system is singular at t = " +
                                std::to_string(fluid_.time_s()) + " s");
-    rhs = slip_solver_.solve(rhs).eval();
+    slip = slip_solver_.solve(slip).eval();
   }
   for (int q = 0; q < count; ++q) {
-    velocity_[porous_[q].marker].x += rhs[2 * q];
-    velocity_[porous_[q].marker].y += rhs[2 * q + 1];
+    velocity_[porous_[q].marker].x += slip[2 * q];
+    velocity_[porous_[q].marker].y += slip[2 * q + 1];
   }
+}
+
+// I − dt P K restricted to the porous markers (numbering 2 · porous index + axis); `blocks` are P's.
+Eigen::SparseMatrix<double> ImmersedBoundary2::porousSlipSystem(const std::vector<SlipBlock>& blocks, double dt_s) const {
+  const int count = static_cast<int>(porous_.size());
+  std::vector<int> slot(markers_.size(), -1);  // marker -> its index among the porous ones
+  for (int q = 0; q < count; ++q) slot[porous_[q].marker] = q;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < 2 * count; ++i) entries.emplace_back(i, i, 1.0);
+  for (int j = 0; j < stiffness_.outerSize(); ++j) {
+    const int qc = slot[j / 2];
+    if (qc < 0) continue;
+    for (Eigen::SparseMatrix<double>::InnerIterator k(stiffness_, j); k; ++k) {
+      const int qr = slot[k.row() / 2];
+      if (qr < 0) continue;
+      const SlipBlock& b = blocks[qr];  // column k.row() % 2 of P's block, times − dt K
+      const double scale = -dt_s * k.value();
+      entries.emplace_back(2 * qr, 2 * qc + j % 2, scale * (k.row() % 2 == 0 ? b.xx : b.xy));
+      entries.emplace_back(2 * qr + 1, 2 * qc + j % 2, scale * (k.row() % 2 == 0 ? b.xy : b.yy));
+    }
+  }
+  Eigen::SparseMatrix<double> system(2 * count, 2 * count);
+  system.setFromTriplets(entries.begin(), entries.end());
+  return system;
 }
 
 Eigen::SparseMatrix<double> ImmersedBoundary2::porousMatrix(int n, double factor) const {

@@ -101,6 +101,11 @@ struct PorousSlip {
   double axial_mobility = 0;  // α_t / ds, (m/s) per (N/m)
 };
 
+/// A porous marker's 2 × 2 block of P, α n nᵀ + α_t t tᵀ over ds ((m/s) per (N/m)), symmetric.
+struct SlipBlock {
+  double xx = 0, xy = 0, yy = 0;
+};
+
 /// The elastic structure, seen by the coupling: forces and stiffness at given marker positions.
 class ElasticBody {
  public:
@@ -219,6 +224,7 @@ class ImmersedBoundary2 {
   Eigen::SparseMatrix<double> stiffness_;  // K = ∂F/∂X at X^n (semi-implicit steps)
   Eigen::SparseLU<Eigen::SparseMatrix<double>> slip_solver_;
   void addPorousSlip(double dt_s);
+  Eigen::SparseMatrix<double> porousSlipSystem(const std::vector<SlipBlock>& blocks, double dt_s) const;
   void addPorous(const Eigen::VectorXd& x, Eigen::VectorXd& out, double factor) const;
   Eigen::SparseMatrix<double> porousMatrix(int n, double factor) const;  // factor P, 2n × 2n numbering
   std::vector<Eigen::Triplet<double>> triplets_;
