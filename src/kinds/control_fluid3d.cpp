@@ -78,8 +78,6 @@ fluid3d::FluidParams3 ControlFluid3dParams::fluidParams() const {
 control::FluidControlParams ControlFluid3dParams::fluidControlParams() const {
   control::FluidControlParams f = fluidControlParams3(*this);
   f.creature_force = objective_bodies == "creature";
-  f.objective_force = objective_force == "flesh_on_bone" ? control::ObjectiveForce::flesh_on_bone
-                                                     : control::ObjectiveForce::fluid_on_flesh;
   f.stroke = parseStrokeSense(stroke_sense, splitList(controller.controlled, ','));
   return f;
 }

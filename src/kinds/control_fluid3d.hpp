@@ -88,7 +88,7 @@ struct ControlFluid3dParams {
   bool flesh = false;
   double flesh_forcing_regularisation = 3e-2;
   flesh::FleshParams flesh_params;
-  std::string objective_force = "fluid_on_flesh";
+  control::ObjectiveForce objective_force = control::ObjectiveForce::fluid_on_flesh;
 
   template <class V>
   void describe(V& v) {
@@ -127,10 +127,7 @@ struct ControlFluid3dParams {
            "with flesh, the forcing's Tikhonov weight in place of forcing_regularisation (the vertices' own "
            "vibrations need more than a rigid surface's)");
     flesh_params.describe(v);
-    v.choice("objective_force", objective_force, {"fluid_on_flesh", "flesh_on_bone"},
-             "the force on a body the objective reads: fluid_on_flesh (the fluid's on its surface, with flesh on the "
-             "flesh: Eq. 10 over the creature's surface) | flesh_on_bone (the force its bone takes: the flesh's binding "
-             "reaction and the fluid's on its interior); the same without flesh");
+    describeObjectiveForce3(v, objective_force);
   }
   // What the run stores for renders beside every geom's pose per frame (always).
   template <class V>

@@ -51,8 +51,6 @@ fluid3d::FluidParams3 ControlFluid3dSwimmerParams::fluidParams() const {
 control::FluidControlParams ControlFluid3dSwimmerParams::fluidControlParams() const {
   control::FluidControlParams f = fluidControlParams3(*this);
   f.armature_added_mass = armature_added_mass;
-  f.objective_force = objective_force == "flesh_on_bone" ? control::ObjectiveForce::flesh_on_bone
-                                                     : control::ObjectiveForce::fluid_on_flesh;
   return f;
 }
 

@@ -94,7 +94,7 @@ struct ControlFluid3dSwimmerParams {
   // (coupling3d/flesh_fluid_coupling3.hpp); the flesh's parameters are FleshParams' own (as control_fluid3d).
   bool flesh = false;
   flesh::FleshParams flesh_params;
-  std::string objective_force = "fluid_on_flesh";
+  control::ObjectiveForce objective_force = control::ObjectiveForce::fluid_on_flesh;
 
   template <class V>
   void describe(V& v) {
@@ -123,10 +123,7 @@ struct ControlFluid3dSwimmerParams {
               "§7.2: the swimmer wrapped in flesh bound to its geoms, the flesh's vertices the fluid's markers (with "
               "forcing = coupled: the flesh's backward Euler step in the coupled solve, stable in water)");
     flesh_params.describe(v);
-    v.choice("objective_force", objective_force, {"fluid_on_flesh", "flesh_on_bone"},
-             "the force on a body the objective reads: fluid_on_flesh (the fluid's on its surface, with flesh on the "
-             "flesh: Eq. 10 over the creature's surface) | flesh_on_bone (the force its bone takes: the flesh's binding "
-             "reaction and the fluid's on its interior); the same without flesh");
+    describeObjectiveForce3(v, objective_force);
   }
   // The phases (§7.2: draw in and minimise drag, expel and minimise, maximise without propulsion) and the rise.
   template <class V>

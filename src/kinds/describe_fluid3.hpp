@@ -2,6 +2,7 @@
 // The 3-D fluid box's and the 3-D coupling's parameters of the kinds over the 3-D coupled fluid
 // (control_fluid3d, control_fluid3d_swimmer), declared once here; each kind passes its own source
 // for what differs.
+#include "control/fluid_controller.hpp"
 #include "coupling3d/rigid_fluid_coupling3.hpp"
 #include "fluid3d/fluid_params3.hpp"
 
@@ -23,6 +24,17 @@ void describeFluidBox3(V& v, fluid3d::FluidParams3& fluid, const char* density_d
             "threads inside the frame's fluid steps, and the evaluations' when threads = 1 (bitwise the same "
             "for any count)");
   v.real("blowup_speed_m_per_s", fluid.blowup_speed_m_per_s, "m/s", 1e-6, 1e6, "a fluid faster than this stops the run (exit 3)");
+}
+
+// Which force on a body the controller's objective reads (control::ObjectiveForce).
+template <class V>
+void describeObjectiveForce3(V& v, control::ObjectiveForce& objective_force) {
+  v.choice("objective_force", objective_force,
+           {{"fluid_on_flesh", control::ObjectiveForce::fluid_on_flesh},
+            {"flesh_on_bone", control::ObjectiveForce::flesh_on_bone}},
+           "the force on a body the objective reads: fluid_on_flesh (the fluid's on its surface, with flesh on the "
+           "flesh: Eq. 10 over the creature's surface) | flesh_on_bone (the force its bone takes: the flesh's binding "
+           "reaction and the fluid's on its interior); the same without flesh");
 }
 
 // The coupling (src/coupling3d). `forcing_doc`: the forcing choices as the kind uses them.

@@ -34,13 +34,14 @@ inline fluid3d::FluidParams3 coupledFluidBox3(const fluid3d::FluidParams3& fluid
 }
 
 // The derivative evaluations' parameters a 3-D kind's `q` sets alike (its keys perturbation,
-// settle_steps, average_steps, controlled_limit_deg), in the spatial fluid; the kind sets the rest.
+// settle_steps, average_steps, controlled_limit_deg, objective_force), in the spatial fluid; the kind sets the rest.
 template <class P>
 control::FluidControlParams fluidControlParams3(const P& q) {
   control::FluidControlParams f;
   f.perturbation = q.perturbation == "placed" ? control::Perturbation::placed : control::Perturbation::moved;
   f.settle_steps = int(q.settle_steps);
   f.average_steps = int(q.average_steps);
+  f.objective_force = q.objective_force;
   f.limit_rad = q.controlled_limit_deg / (180.0 / std::numbers::pi);
   f.planar_fluid = false;
   return f;
