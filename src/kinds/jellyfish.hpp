@@ -68,8 +68,8 @@ struct JellyfishKindParams {
     swimmer.bell.describeTentacles(v);
     v.real("tentacle_kernel_radius_m", tentacle_kernel_radius_m, "m", 0, 10,
            "the tentacles' own kernel support radius (at most kernel_radius_m; 0 = the grid's kernel); the "
-           "default is the bell's, with impermeable chains: made porous, at either width, the tentacled bell swims "
-           "backward (CHANGELOG.md)");
+           "default is the bell's, with impermeable chains; 2 mm filaments porous across and along the chain are "
+           "studies/jellyfish/filaments.toml's, not yet the default (CHANGELOG.md)");
     v.real("tentacle_permeability_m", tentacle_permeability_m, "m", 0, 10,
            "Darcy permeability over thickness of a tentacle chain, slip = permeability / (rho nu) x normal load "
            "per length (Kim & Peskin's porous boundary); 0 = impermeable; 1.7e-3 estimates a ring of 16 "
