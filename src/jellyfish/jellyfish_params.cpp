@@ -96,8 +96,8 @@ std::string KnotTable::validate() const {
 }
 
 ModelPreset modelPreset(Model model) {
-  if (model == Model::paper) return {MuscleModel::rest_length, ActivationShape::hermite, 2.352e-3};
-  return {BellParams{}.muscle_model, ActivationParams{}.shape, BellParams{}.bending_rigidity_n_m};
+  if (model == Model::paper) return {MuscleModel::rest_length, ActivationShape::hermite, 2.352e-3, 0.0, 0.0, 0.0};
+  return {BellParams{}.muscle_model, ActivationParams{}.shape, BellParams{}.bending_rigidity_n_m, 0.002, 1.7e-3, 3.4e-3};
 }
 
 BellParams paperBell() {
@@ -107,6 +107,8 @@ BellParams paperBell() {
   p.muscle_model = MuscleModel::rest_length;
   p.muscle_tension_n_per_m2 = 1.0;
   p.tentacle_root_spacing_m = 0.004;
+  p.tentacle_porosity_m_per_pa_s = 0.0;
+  p.tentacle_axial_porosity_m_per_pa_s = 0.0;
   return p;
 }
 

@@ -122,14 +122,14 @@ struct BellParams {
   double tentacle_area_factor = 0.01;  // Fig. 12 "Tentacle Cross-sectional Area Factor 1/100"
   bool tentacles = true;
   int tentacles_per_side = 1;              // chains per side of the slice
-  double tentacle_root_spacing_m = 0.008;  // arc between neighbouring roots: two of the tentacles' 4 mm kernel radii
+  double tentacle_root_spacing_m = 0.004;  // arc between neighbouring roots: two of the filaments' 2 mm kernel radii
   // Darcy coefficient α of a tentacle chain, m/(Pa s): the fluid passes through it at α times the
   // normal load per length (ib::PorousSlip). A slice's chain stands for a ring of sparse filaments,
-  // not a sheet; 0 is impermeable.
-  double tentacle_porosity_m_per_pa_s = 0.0;
+  // not a sheet; 0 is impermeable. The kind's 1.7e-3 m permeability over ρ ν of its fluid (1000 × 5e-5 Pa s).
+  double tentacle_porosity_m_per_pa_s = 1.7e-3 / (1000.0 * 5e-5);
   // The same along the chain, m/(Pa s): the fluid passes along the filaments at α_t times the tangential
-  // load per length; 0 is a sheet, with no slip along it.
-  double tentacle_axial_porosity_m_per_pa_s = 0.0;
+  // load per length; 0 is a sheet, with no slip along it. The kind's 3.4e-3 m over the same ρ ν.
+  double tentacle_axial_porosity_m_per_pa_s = 3.4e-3 / (1000.0 * 5e-5);
   /// tentacles, tentacle_length_m, tentacle_area_factor, tentacles_per_side (root spacing and porosity
   /// are the kind's, from its kernel radius and a permeability).
   template <class V>
@@ -231,22 +231,30 @@ enum class Model {
   paper  // Rudolf & Mould 2009's: rest-length springs following the §3.3 Hermite curve, Fig. 12's joint stiffness
 };
 
-/// The three settings in which the two models differ; the rest of a run's setting is shared.
+/// The settings in which the two models differ; the rest of a run's setting is shared.
 struct ModelPreset {
   MuscleModel muscle_model = MuscleModel::active_tension;
   ActivationShape activation_shape = ActivationShape::pulse;
   double bending_rigidity_n_m = 0;  // N m per metre of depth
+  // The tentacle chains' coupling: their kernel support radius (0: the bell's own kernel radius), m, and
+  // their Darcy permeabilities across and along the chain (0: impermeable), m.
+  double tentacle_kernel_radius_m = 0;
+  double tentacle_permeability_m = 0;
+  double tentacle_axial_permeability_m = 0;
 };
-/// ours: BellParams' and ActivationParams' in-class defaults. paper: rest_length, hermite and B = 2.352e-3 N m,
-/// Fig. 12's "Angular Elastic Stiffness 1.186 N m/rad" per joint read per metre of depth on the paper's
-/// 32-segment chain (1.983 mm joints: 1.186 x 1.983e-3); it keeps the bell open against the stiff muscle
-/// springs, which crush a bell of ours' bending to about 0.2 of its diameter.
+/// ours: BellParams' and ActivationParams' in-class defaults, and tentacles as sparse filaments (Miles & Battista
+/// 2019 model them as porous boundaries): a 2 mm kernel, porous across at 1.7e-3 m (a ring of 16 filaments
+/// 0.5 mm thick in Stokes flow, h ln(h/d) / 4 pi) and along at twice that (slender filaments resist axial flow
+/// about half as much; Cox 1970). paper: rest_length, hermite and B = 2.352e-3 N m, Fig. 12's "Angular Elastic
+/// Stiffness 1.186 N m/rad" per joint read per metre of depth on the paper's 32-segment chain (1.983 mm joints:
+/// 1.186 x 1.983e-3), which keeps the bell open against the stiff muscle springs; its tentacles are made "in the
+/// same manner as the subumbrellar surface" (§3.2): impermeable chains on the bell's kernel.
 ModelPreset modelPreset(Model model);
 
 /// The paper's bell where the defaults depart from it (Rudolf & Mould 2009 §3.2-3.3, Fig. 4, 12): Fig. 4's
 /// 32-segment chain, its angular stiffness 1.186 N·m/rad per joint read per metre of depth on that chain
 /// (B = 1.186 × 1.983e-3 N·m; the plate value E t³ / 12 = 6.3e-6 N·m is 370 times smaller), the
-/// rest-length muscle (muscle_tension_n_per_m2 = 1, which it does not use), tentacle roots 4 mm apart.
+/// rest-length muscle (muscle_tension_n_per_m2 = 1, which it does not use), impermeable tentacles with roots 4 mm apart.
 BellParams paperBell();
 /// The paper's activation: §3.3's Hermite curve.
 ActivationParams paperActivation();

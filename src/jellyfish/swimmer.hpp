@@ -25,8 +25,8 @@ struct SwimmerConfig {
   fluid::FluidParams fluid = jellyfishFluid();  // domain, grid, water, walls, advection
   ib::CouplingParams coupling = jellyfishCoupling();
   // The tentacle markers' own kernel stretch (ib::CouplingParams::marker_kernel_scales): filaments spread
-  // narrower than the bell. 0: the bell's (coupling.kernel_scale).
-  int tentacle_kernel_scale = 2;
+  // narrower than the bell. 0: the bell's (coupling.kernel_scale). 1: the kind's 2 mm filaments on 1 mm cells.
+  int tentacle_kernel_scale = 1;
   double dt_s = 0.00125;  // coupled step (see ib/coupling.hpp on stability); = fluid.fixed_step_s
   // Where the middle of the aperture starts, as fractions of the domain (apex toward +y).
   double start_x_fraction = 0.5;

@@ -127,6 +127,16 @@ struct MetricValues {
 
 }  // namespace
 
+JellyfishKindParams::TentacleCoupling JellyfishKindParams::tentacleCoupling() const {
+  const jellyfish::ModelPreset preset = jellyfish::modelPreset(model);
+  const auto pick = [](const RealOrAuto& given, double preset_value) {
+    return given.is_auto ? preset_value : given.value;
+  };
+  const double preset_radius_m = preset.tentacle_kernel_radius_m > 0 ? preset.tentacle_kernel_radius_m : kernel_radius_m;
+  return {pick(tentacle_kernel_radius_m, preset_radius_m), pick(tentacle_permeability_m, preset.tentacle_permeability_m),
+          pick(tentacle_axial_permeability_m, preset.tentacle_axial_permeability_m)};
+}
+
 jellyfish::SwimmerConfig JellyfishKindParams::setup() const {
   jellyfish::SwimmerConfig c = swimmer;
   auto& b = c.bell;
@@ -141,12 +151,12 @@ jellyfish::SwimmerConfig JellyfishKindParams::setup() const {
   b.segments = bellSegments(*this);
   b.bell_modulus_pa = swimmer.bell.bell_modulus_pa * stiffness_scale;
   b.bending_rigidity_n_m = bending_n_m * stiffness_scale;
-  b.tentacle_root_spacing_m = 2 * tentacle_kernel_radius_m;
+  const TentacleCoupling tentacle = tentacleCoupling();
+  b.tentacle_root_spacing_m = 2 * tentacle.kernel_radius_m;
   // Darcy: α = κ / μ, the permeability length over the dynamic viscosity ρ ν.
-  b.tentacle_porosity_m_per_pa_s =
-      tentacle_permeability_m / (swimmer.fluid.density_kg_per_m3 * swimmer.fluid.kinematic_viscosity_m2_per_s);
-  b.tentacle_axial_porosity_m_per_pa_s =
-      tentacle_axial_permeability_m / (swimmer.fluid.density_kg_per_m3 * swimmer.fluid.kinematic_viscosity_m2_per_s);
+  const double dynamic_viscosity_pa_s = swimmer.fluid.density_kg_per_m3 * swimmer.fluid.kinematic_viscosity_m2_per_s;
+  b.tentacle_porosity_m_per_pa_s = tentacle.permeability_m / dynamic_viscosity_pa_s;
+  b.tentacle_axial_porosity_m_per_pa_s = tentacle.axial_permeability_m / dynamic_viscosity_pa_s;
   c.activation.knots = knots.curve();
   // A tall box: the bell swims up its axis and must not meet the top within the window.
   c.fluid.cells_y = int(std::lround(box_aspect * c.fluid.cells_x));
@@ -156,7 +166,7 @@ jellyfish::SwimmerConfig JellyfishKindParams::setup() const {
   c.fluid.fixed_step_s = c.dt_s;
   const double dx_m = swimmer.fluid.cellSize_m();
   c.coupling.kernel_scale = kernelScale(c.coupling.kernel, kernel_radius_m, dx_m, "kernel_radius_m").scale;
-  c.tentacle_kernel_scale = kernelScale(c.coupling.kernel, tentacle_kernel_radius_m, dx_m, "tentacle_kernel_radius_m").scale;
+  c.tentacle_kernel_scale = kernelScale(c.coupling.kernel, tentacle.kernel_radius_m, dx_m, "tentacle_kernel_radius_m").scale;
   return c;
 }
 
@@ -169,11 +179,13 @@ std::string JellyfishKindParams::validate() const {
   if (std::string err = knots.validate(); !err.empty()) return err;
   const jellyfish::SwimmerConfig c = setup();
   if (std::string err = c.validate(); !err.empty()) return err;
+  // A bell without tentacles has no tentacle kernel to fit to the grid.
+  const double tentacle_radius_m = swimmer.bell.tentacles ? tentacleCoupling().kernel_radius_m : 0.0;
   for (const auto& [radius_m, name] : {std::pair{kernel_radius_m, "kernel_radius_m"},
-                                       std::pair{tentacle_kernel_radius_m, "tentacle_kernel_radius_m"}})
+                                       std::pair{tentacle_radius_m, "tentacle_kernel_radius_m"}})
     if (std::string err = kernelScale(c.coupling.kernel, radius_m, swimmer.fluid.cellSize_m(), name).error; !err.empty())
       return err;
-  if (tentacle_kernel_radius_m > kernel_radius_m && kernel_radius_m > 0)
+  if (tentacle_radius_m > kernel_radius_m && kernel_radius_m > 0)
     return "tentacle_kernel_radius_m must not exceed kernel_radius_m (filaments are narrower than the bell)";
   try {
     jellyfish::buildBell(c.bell);

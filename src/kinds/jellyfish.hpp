@@ -19,26 +19,27 @@ struct JellyfishKindParams {
   jellyfish::SwimWindow window;
   double marker_spacing_cells = 0.5;
   double stiffness_scale = 1.0;
-  double tentacle_kernel_radius_m = 0.004;
-  double tentacle_permeability_m = 0.0;
-  double tentacle_axial_permeability_m = 0.0;
   double kernel_radius_m = 0.004;
   double box_aspect = 1.44;
   std::int64_t tracers_per_side = 0;
-  // The model and the three settings it presets (jellyfish::modelPreset); "auto" takes the model's, a
+  // The model and the settings it presets (jellyfish::modelPreset); "auto" takes the model's, a
   // value set in the file wins over it.
   jellyfish::Model model = jellyfish::Model::ours;
   std::string muscle_model = "auto";
   std::string activation_shape = "auto";
   RealOrAuto bending_rigidity_n_m;
+  RealOrAuto tentacle_kernel_radius_m;
+  RealOrAuto tentacle_permeability_m;
+  RealOrAuto tentacle_axial_permeability_m;
 
   template <class V>
   void describe(V& v) {
     v.choice("model", model, {{"ours", jellyfish::Model::ours}, {"paper", jellyfish::Model::paper}},
              "ours: tension-pulse muscles (active_tension, pulse) and bending 7.3e-5 N m, so the stroke can "
              "resonate; paper: Rudolf & Mould 2009's, rest-length Hermite muscles (rest_length, hermite, §3.3) "
-             "and bending 2.352e-3 N m (Fig. 12); it sets muscle_model, activation_shape and "
-             "bending_rigidity_n_m where those are auto");
+             "and bending 2.352e-3 N m (Fig. 12); ours' tentacles are porous filaments, the paper's impermeable chains "
+             "(§3.2); it sets muscle_model, activation_shape, bending_rigidity_n_m and the tentacle_* kernel "
+             "radius and permeabilities where those are auto");
     // --- activation (§3.3, Fig. 4)
     swimmer.activation.describe(v);
     v.choice("activation_shape", activation_shape, {"auto", "pulse", "hermite"},
@@ -66,18 +67,19 @@ struct JellyfishKindParams {
              "rest-length curve (§3.3)");
     swimmer.bell.describeMuscle(v);
     swimmer.bell.describeTentacles(v);
-    v.real("tentacle_kernel_radius_m", tentacle_kernel_radius_m, "m", 0, 10,
-           "the tentacles' own kernel support radius (at most kernel_radius_m; 0 = the grid's kernel); the "
-           "default is the bell's, with impermeable chains; 2 mm filaments porous across and along the chain are "
-           "studies/jellyfish/filaments.toml's, not yet the default (CHANGELOG.md)");
-    v.real("tentacle_permeability_m", tentacle_permeability_m, "m", 0, 10,
-           "Darcy permeability over thickness of a tentacle chain, slip = permeability / (rho nu) x normal load "
-           "per length (Kim & Peskin's porous boundary); 0 = impermeable; 1.7e-3 estimates a ring of 16 "
-           "filaments 0.5 mm thick in Stokes flow, h ln(h/d) / 4 pi");
-    v.real("tentacle_axial_permeability_m", tentacle_axial_permeability_m, "m", 0, 10,
-           "the same along the chain, slip = permeability / (rho nu) x tangential load per length: a slice's chain "
-           "stands for sparse filaments the flow passes along, not a sheet; 0 = none; slender filaments resist "
-           "axial flow about half as much as transverse (Cox 1970), so about twice tentacle_permeability_m");
+    v.realOrAuto("tentacle_kernel_radius_m", tentacle_kernel_radius_m, "m", 0, 10,
+                 "the tentacles' own kernel support radius (at most kernel_radius_m; 0 = the grid's kernel); auto: "
+                 "the model's, ours 2 mm (filaments), paper the bell's kernel_radius_m (§3.2: made as the "
+                 "subumbrella is)");
+    v.realOrAuto("tentacle_permeability_m", tentacle_permeability_m, "m", 0, 10,
+                 "Darcy permeability over thickness of a tentacle chain, slip = permeability / (rho nu) x normal "
+                 "load per length (Kim & Peskin's porous boundary); 0 = impermeable; auto: the model's, ours "
+                 "1.7e-3 (a ring of 16 filaments 0.5 mm thick in Stokes flow, h ln(h/d) / 4 pi), paper 0");
+    v.realOrAuto("tentacle_axial_permeability_m", tentacle_axial_permeability_m, "m", 0, 10,
+                 "the same along the chain, slip = permeability / (rho nu) x tangential load per length: a slice's "
+                 "chain stands for sparse filaments the flow passes along, not a sheet; 0 = none; auto: the "
+                 "model's, ours 3.4e-3 (slender filaments resist axial flow about half as much as transverse, Cox "
+                 "1970), paper 0");
     // --- fluid (§3.2, Fig. 12) and coupling (§3.2; Peskin 2002): the shared structs' own fields, with why
     // this kind's defaults (jellyfish::jellyfishFluid, jellyfishCoupling) differ from theirs.
     DefaultNotes noted(v, {
@@ -108,6 +110,11 @@ struct JellyfishKindParams {
   // The swimmer's structs as run: the model's preset where its keys are auto, the segments that follow the grid, the stiffness scaled, the box
   // stretched to box_aspect, the kernels stretched to their radii, the tentacles' roots and porosity.
   jellyfish::SwimmerConfig setup() const;
+  // The tentacles' kernel radius and permeabilities as run: the model's preset where they are auto.
+  struct TentacleCoupling {
+    double kernel_radius_m, permeability_m, axial_permeability_m;
+  };
+  TentacleCoupling tentacleCoupling() const;
   jellyfish::SwimSchedule schedule() const;
   // Ranges; the knots, bell, activation and fluid structs' own validate(); then the rules across them
   // (kernel radii, the box around the bell, whole rows of cells, the step within the window).

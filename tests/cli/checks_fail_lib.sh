@@ -74,14 +74,15 @@ intact() {
   echo "ok   $name: the intact run passes"
 }
 
-# frequency_coarse NAME [BELL_PLUCK_TENTACLES]: $scratch/NAME.toml, experiments/jellyfish/frequency.toml (Fig. 5 and
+# frequency_coarse NAME [BELL_PLUCK_LINE...]: $scratch/NAME.toml, experiments/jellyfish/frequency.toml (Fig. 5 and
 # the bell alone, with its checks) on the setting its breaking tests share: 2 mm cells at twice the step, 64 segments,
-# 3 s windows; the bell with its tentacles driven at 0.5 and 0.6 Hz (points 0 and 1: its stroke peaks at the first,
-# within 10% of the pluck's 0.54 Hz, its speed at the second, in Fig. 5's window) and alone at 0.7 Hz (point 2), and
-# both 4 s plucks (points 3 and 4: with the tentacles, and the bell pluck, whose tentacles BELL_PLUCK_TENTACLES sets,
-# false unless given). The plucks set their own tension, so a run that changes only the drives' can reuse them (--resume).
+# 3 s windows; the bell with its tentacles driven at 0.5 and 0.6 Hz (points 0 and 1: its speed peaks at the second,
+# in Fig. 5's window) and alone at 0.7 Hz (point 2), and both 4 s plucks (points 3 and 4: with the tentacles, and the
+# bell pluck, tentacles = false unless BELL_PLUCK_LINE, extra TOML lines of the bell pluck's case, set it). The plucks
+# set their own tension, so a run that changes only the drives' can reuse them (--resume).
 frequency_coarse() {
-  local label tentacles
+  local name=$1 label
+  shift
   {
     cat <<'TOML'
 [params]
@@ -106,11 +107,17 @@ active_cycles = 0
 contraction_hz = 0.7
 TOML
     for label in pluck "bell pluck"; do
-      if [[ $label == pluck ]]; then tentacles=true; else tentacles=${2:-false}; fi
-      printf '[[case]]\nlabel = "%s"\ntentacles = %s\nactive_cycles = 1\npulse_duration_s = 0.1\n' "$label" "$tentacles"
+      printf '[[case]]\nlabel = "%s"\nactive_cycles = 1\npulse_duration_s = 0.1\n' "$label"
       printf 'muscle_tension_n_per_m2 = 20.0\ncontraction_hz = 1.0\nwarmup_cycles = 0.0\nduration_s = 4.0\n'
+      if [[ $label == pluck ]]; then
+        echo "tentacles = true"
+      elif (($# == 0)); then
+        echo "tentacles = false"
+      else
+        printf '%s\n' "$@"
+      fi
     done
-  } | study "$1" experiments/jellyfish/frequency.toml
+  } | study "$name" experiments/jellyfish/frequency.toml
 }
 
 # reused NAME POINT...: the intact run's ($scratch/run_intact) point files POINT (indices) copied into run NAME's

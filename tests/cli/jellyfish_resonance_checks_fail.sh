@@ -1,22 +1,20 @@
 #!/usr/bin/env bash
-# Fig. 5's three resonance checks (Rudolf & Mould 2009 §3.3, experiments/jellyfish/frequency.toml) fail with the
+# Fig. 5's resonance checks (Rudolf & Mould 2009 §3.3, experiments/jellyfish/frequency.toml) fail with the
 # resonance broken. The bell's elasticity against the water's added mass sets its natural frequency f_n, and the
-# drive that matches it strokes and swims most. On a coarse setting (2 mm cells at twice the step in a 0.15 m box,
-# 64 segments, half a warm-up cycle, 2.5 s windows; the bell with its tentacles driven at 0.4, 0.5 and 0.6 Hz, alone
-# at 0.7 Hz, both 4 s plucks), on which the intact file passes (run here first: its stroke peaks at 0.5 Hz, 0.93 of
-# the pluck's f_n, its speed at 0.6 Hz, 0.82 of the bell pluck's), only the drives change and the other points are
-# reused:
-# - a bell 0.3 times as stiff (f_n scales as the root of the stiffness: 0.55 times as high) swims fastest at the
-#   slowest drive, below 0.6-0.8 Hz and 0.55 of the bell's own f_n, which the bell pluck (intact) still measures;
-# - a fluid 20 times as viscous in the drives damps the bell's ring, and its stroke peaks at the slowest drive,
-#   0.74 of the pluck's f_n, which the pluck (in the default fluid) still measures.
-# The muscles-off checks: jellyfish_frequency_checks_fail.sh. About 20 s of CPU.
+# drive that matches it swims most. On a coarse setting (2 mm cells at twice the step in a 0.15 m box, 64 segments,
+# half a warm-up cycle, 2.5 s windows; the bell with the paper's tentacles, impermeable chains on the bell's 4 mm
+# kernel, driven at 0.4, 0.5 and 0.6 Hz, alone at 0.7 Hz, both 4 s plucks), on which the intact file passes (run here
+# first: its speed peaks at 0.6 Hz), only the drives change and the other points are reused: a bell 0.3 times as
+# stiff (f_n scales as the root of the stiffness: 0.55 times as high) swims fastest at the slowest drive, below
+# 0.6-0.8 Hz and 0.55 of the bell's own f_n, which the bell pluck (intact) still measures. With the default's
+# porous filaments this setting's three drives cannot show it: their speed rises with the drive whatever the
+# bell's stiffness. The stroke's resonance check is a known deviation on the default, so it has no breaking test.
+# The muscles-off checks: jellyfish_frequency_checks_fail.sh. About 15 s of CPU.
 # usage: jellyfish_resonance_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 source "$(dirname "${BASH_SOURCE[0]}")/checks_fail_lib.sh"  # status, broken, intact, study, reused, argmax_at
 
 speed="the whole cycles' mean speed (distance in a given time) peaks between 0.6 and 0.8 Hz (Fig. 5)"
-stroke="the stroke amplitude peaks within 10% of the pluck's natural frequency"
 own="the whole cycles' mean speed peaks within 20% of the bell's own natural frequency (Hoover & Miller 2015)"
 
 # resonance_coarse NAME [LINE...]: $scratch/NAME.toml, frequency.toml on this test's setting: the drives (points 0-2,
@@ -26,6 +24,7 @@ resonance_coarse() {
   shift
   {
     printf '[params]\ncells = 75\ndomain_m = 0.15\ndt_s = 0.0025\nbell_segments = 64\nwarmup_cycles = 0.5\nduration_s = 2.5\n'
+    printf 'tentacle_kernel_radius_m = 0.004\ntentacle_permeability_m = 0.0\ntentacle_axial_permeability_m = 0.0\n'
     for hz in 0.4 0.5 0.6; do
       printf '[[case]]\nlabel = "drive %s Hz"\ntentacles = true\nactive_cycles = 0\ncontraction_hz = %s\n' "$hz" "$hz"
       (($# == 0)) || printf '%s\n' "$@"
@@ -42,7 +41,6 @@ resonance_coarse() {
 resonance_coarse intact
 intact intact "$scratch/intact.toml"
 argmax_at intact "$speed" contraction_hz 0.6
-argmax_at intact "$stroke" contraction_hz 0.5
 
 # A softer bell rings lower: its speed peaks at the slowest drive.
 resonance_coarse soft "stiffness_scale = 0.3"
@@ -50,10 +48,3 @@ reused soft 3 4 5
 broken soft "$scratch/soft.toml" "$speed" --resume
 also soft "$own"
 argmax_at soft "$speed" contraction_hz 0.4
-
-# A viscous fluid damps the bell's ring: its stroke peaks at the slowest drive, 0.68 of the pluck's f_n.
-resonance_coarse viscous "kinematic_viscosity_m2_per_s = 1e-3"
-reused viscous 3 4 5
-broken viscous "$scratch/viscous.toml" "$stroke" --resume
-argmax_at viscous "$stroke" contraction_hz 0.4
-[[ $(got viscous "$stroke") == *" x natural_hz 0."* ]] || fail "viscous: the pluck gave no natural frequency"

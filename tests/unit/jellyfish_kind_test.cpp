@@ -28,6 +28,7 @@ TEST(JellyfishKind, DefaultsSetUpTheSwimmerStructsInClassDefaults) {
   EXPECT_EQ(run.bell.segments, in_class.bell.segments);
   EXPECT_EQ(run.bell.tentacle_root_spacing_m, in_class.bell.tentacle_root_spacing_m);
   EXPECT_EQ(run.bell.tentacle_porosity_m_per_pa_s, in_class.bell.tentacle_porosity_m_per_pa_s);
+  EXPECT_EQ(run.bell.tentacle_axial_porosity_m_per_pa_s, in_class.bell.tentacle_axial_porosity_m_per_pa_s);
   EXPECT_EQ(run.bell.bending_rigidity_n_m, in_class.bell.bending_rigidity_n_m);
   EXPECT_TRUE(run.bell.muscle_model == in_class.bell.muscle_model);
   EXPECT_TRUE(run.activation.shape == in_class.activation.shape);
@@ -69,7 +70,7 @@ TEST(JellyfishKind, ReadsItsParametersIntoTheStructs) {
   EXPECT_EQ(paramsOf(q), p);  // and back
 }
 
-// model = "paper" presets the paper's muscles, activation and bending (Rudolf & Mould 2009 §3.3, Fig. 12)
+// model = "paper" presets the paper's muscles, activation, bending and tentacles (Rudolf & Mould 2009 §3.2-3.3, Fig. 12)
 // where the file leaves them auto; a value the file sets wins, in either model.
 TEST(JellyfishKind, ModelPresetsMusclesShapeAndBendingAndTheFileWins) {
   const auto setup = [](std::initializer_list<std::pair<const std::string, Value>> given) {
@@ -88,6 +89,16 @@ TEST(JellyfishKind, ModelPresetsMusclesShapeAndBendingAndTheFileWins) {
   EXPECT_EQ(paper.bell.bending_rigidity_n_m, 2.352e-3);
   EXPECT_EQ(paper.bell.muscle_tension_n_per_m2, in_class.bell.muscle_tension_n_per_m2);  // the rest is shared
   EXPECT_EQ(paper.fluid.cells_x, in_class.fluid.cells_x);
+  // the paper's tentacles are made as the subumbrella is (§3.2): impermeable, on the bell's kernel
+  EXPECT_EQ(paper.bell.tentacle_porosity_m_per_pa_s, 0.0);
+  EXPECT_EQ(paper.bell.tentacle_axial_porosity_m_per_pa_s, 0.0);
+  EXPECT_EQ(paper.tentacle_kernel_scale, paper.coupling.kernel_scale);
+  EXPECT_EQ(paper.bell.tentacle_root_spacing_m, 0.008);
+  const jellyfish::SwimmerConfig paper_filaments =
+      setup({{"model", std::string("paper")}, {"tentacle_permeability_m", 1.7e-3}, {"tentacle_kernel_radius_m", 0.002}});
+  EXPECT_EQ(paper_filaments.bell.tentacle_porosity_m_per_pa_s, in_class.bell.tentacle_porosity_m_per_pa_s);
+  EXPECT_EQ(paper_filaments.bell.tentacle_axial_porosity_m_per_pa_s, 0.0);
+  EXPECT_EQ(paper_filaments.tentacle_kernel_scale, in_class.tentacle_kernel_scale);
 
   const jellyfish::SwimmerConfig paper_set = setup({{"model", std::string("paper")},
                                                     {"bending_rigidity_n_m", 5e-4},
@@ -117,6 +128,13 @@ TEST(JellyfishKind, RulesAcrossFieldsNameTheParameters) {
   EXPECT_NE(problem("kernel_radius_m", 0.0045).find("kernel_radius_m = 0.0045 m must be a whole multiple"),
             std::string::npos);
   EXPECT_NE(problem("tentacle_kernel_radius_m", 0.006).find("must not exceed kernel_radius_m"), std::string::npos);
+  // the filaments' 2 mm kernel is 1.5 reaches of 2/3 mm cells: refused with them, not for the bell alone
+  Params fine = defaults();
+  fine["cells"] = std::int64_t(375);
+  EXPECT_NE(JellyfishKind().validate(fine).find("tentacle_kernel_radius_m = 0.002 m must be a whole multiple"),
+            std::string::npos);
+  fine["tentacles"] = false;
+  EXPECT_EQ(JellyfishKind().validate(fine), "");
   EXPECT_NE(problem("box_aspect", 1.45).find("whole number of cells"), std::string::npos);
   EXPECT_NE(problem("bell_diameter_m", 0.09).find("three bell diameters"), std::string::npos);
   EXPECT_NE(problem("duration_s", 1e-3).find("dt_s is longer than duration_s"), std::string::npos);
