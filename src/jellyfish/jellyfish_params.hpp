@@ -40,6 +40,12 @@ enum class ActivationShape {
   pulse     // a = sin²(π t / pulse_duration_s) for the first pulse_duration_s of each cycle, then 0
 };
 
+/// The default model's tentacles as sparse filaments (ModelPreset): their kernel support radius, m, and Darcy
+/// permeabilities across and along the chain, m (modelPreset's doc gives their sources).
+inline constexpr double kFilamentKernelRadius_m = 0.002;
+inline constexpr double kFilamentPermeability_m = 1.7e-3;
+inline constexpr double kFilamentAxialPermeability_m = 3.4e-3;
+
 struct BellParams {
   // --- geometry (Fig. 12) ---------------------------------------------------------------------
   double diameter_m = 0.040;   // "Jellyfish Diameter 40mm"
@@ -122,14 +128,14 @@ struct BellParams {
   double tentacle_area_factor = 0.01;  // Fig. 12 "Tentacle Cross-sectional Area Factor 1/100"
   bool tentacles = true;
   int tentacles_per_side = 1;              // chains per side of the slice
-  double tentacle_root_spacing_m = 0.004;  // arc between neighbouring roots: two of the filaments' 2 mm kernel radii
+  double tentacle_root_spacing_m = 2 * kFilamentKernelRadius_m;  // arc between neighbouring roots: two kernel radii
   // Darcy coefficient α of a tentacle chain, m/(Pa s): the fluid passes through it at α times the
   // normal load per length (ib::PorousSlip). A slice's chain stands for a ring of sparse filaments,
-  // not a sheet; 0 is impermeable. The kind's 1.7e-3 m permeability over ρ ν of its fluid (1000 × 5e-5 Pa s).
-  double tentacle_porosity_m_per_pa_s = 1.7e-3 / (1000.0 * 5e-5);
+  // not a sheet; 0 is impermeable. The filaments' permeability over ρ ν of the kind's fluid (1000 × 5e-5 Pa s).
+  double tentacle_porosity_m_per_pa_s = kFilamentPermeability_m / (1000.0 * 5e-5);
   // The same along the chain, m/(Pa s): the fluid passes along the filaments at α_t times the tangential
-  // load per length; 0 is a sheet, with no slip along it. The kind's 3.4e-3 m over the same ρ ν.
-  double tentacle_axial_porosity_m_per_pa_s = 3.4e-3 / (1000.0 * 5e-5);
+  // load per length; 0 is a sheet, with no slip along it. The filaments' over the same ρ ν.
+  double tentacle_axial_porosity_m_per_pa_s = kFilamentAxialPermeability_m / (1000.0 * 5e-5);
   /// tentacles, tentacle_length_m, tentacle_area_factor, tentacles_per_side (root spacing and porosity
   /// are the kind's, from its kernel radius and a permeability).
   template <class V>
