@@ -46,8 +46,9 @@ int kernelSupportCells(Kernel kernel);
 inline constexpr int kMaxKernelSupportCells = 4;
 
 /// The largest stencil width, in faces per axis, of a stretched kernel (stretched_kernel_weights_1d):
-/// scale × support ≤ 16, e.g. bilinear up to scale 8 or peskin4 up to scale 4 (fixed-size storage).
-inline constexpr int kMaxStencilFaces = 16;
+/// scale × support ≤ 24, e.g. bilinear up to scale 12 or peskin4 up to scale 6 (fixed-size storage): a
+/// 4 mm peskin4 radius down to 1/3 mm cells.
+inline constexpr int kMaxStencilFaces = 24;
 
 /// phi(r) with r = distance / dx in cells (dimensionless; symmetric in r). NaN for a NaN r.
 double kernelWeight_1d(Kernel kernel, double r_cells);
