@@ -196,7 +196,7 @@ BENCHMARK(BM_SimulatedSecondViscousPulse)
     ->Iterations(1);
 
 // The jellyfish kind's default point as the runner builds it (kinds::JellyfishKindParams' defaults: its grid,
-// step, box, filament tentacles and drive), so that the row follows the default. Goal (issue 59): a whole
+// step, box, filament tentacles and drive), so that the row follows the default. Goal: a whole
 // default point, one warm-up cycle and a 10 s swim at 0.7 Hz (11.43 simulated s), in <= 60 CPU s, i.e.
 // >= 0.19 simulated s per CPU s (sim_s_per_wall_s).
 void BM_KindDefaultPoint(benchmark::State& state) {
