@@ -41,8 +41,10 @@ enum class ActivationShape {
 };
 
 /// The default model's tentacles as sparse filaments (ModelPreset): their kernel support radius, m, and Darcy
-/// permeabilities across and along the chain, m (modelPreset's doc gives their sources).
-inline constexpr double kFilamentKernelRadius_m = 0.002;
+/// permeabilities across and along the chain, m (modelPreset's doc gives their sources). The radius is the
+/// narrowest kernel the default 2/3 mm cells carry (one peskin4 reach), fixed in metres so that a finer grid
+/// refines the same filaments.
+inline constexpr double kFilamentKernelRadius_m = 0.004 / 3.0;
 inline constexpr double kFilamentPermeability_m = 1.7e-3;
 inline constexpr double kFilamentAxialPermeability_m = 3.4e-3;
 
@@ -55,7 +57,7 @@ struct BellParams {
   // the thickness outward). So the subumbrella is taken as a half-ellipse with semi-axes
   // (diameter/2 - thickness, height - thickness): the bell with its thickness is then 40 x 28 mm.
   // Segments along it, apex in the middle (an even count). 256 keep the markers at most half a
-  // cell apart on the 1 mm grid, and one body through the grid study (markers closer than dx/2 keep
+  // cell apart on the default 2/3 mm grid, and one body through the grid study (markers closer than dx/2 keep
   // the IB boundary from leaking, Peskin 2002 §4); the paper's Fig. 4 chain is coarse (paperBell: 32).
   int segments = 256;
   // The body is defined by continuum properties: the per-segment constants below are
@@ -74,8 +76,8 @@ struct BellParams {
   // Bending rigidity B of the slice, N·m per metre of depth (a moment per unit curvature): the
   // angular spring at a joint between segments of length L is B / L (energy ½ B κ² ds with
   // κ = θ / L). Not given by the paper in these units; calibrated on the bell alone (no tentacles,
-  // 1 mm cells, studies/jellyfish/bending_calibration.toml) so that its pluck rings at §3.3's
-  // resonant 0.7 Hz (0.699 Hz), because Fig. 5's resonance is the bell's own, not its tentacles'.
+  // the default grid, studies/jellyfish/bending_calibration.toml) so that its pluck rings at §3.3's
+  // resonant 0.7 Hz, because Fig. 5's resonance is the bell's own, not its tentacles'.
   // The paper's model's value is modelPreset(Model::paper)'s.
   double bending_rigidity_n_m = 7.3e-5;
   // The joint mesoglea (130 Pa, §3.2) lies between the circumferential segments of the bell
@@ -249,7 +251,7 @@ struct ModelPreset {
   double tentacle_axial_permeability_m = 0;
 };
 /// ours: BellParams' and ActivationParams' in-class defaults, and tentacles as sparse filaments (Miles & Battista
-/// 2019 model them as porous boundaries): a 2 mm kernel, porous across at 1.7e-3 m (a ring of 16 filaments
+/// 2019 model them as porous boundaries): a 4/3 mm kernel, porous across at 1.7e-3 m (a ring of 16 filaments
 /// 0.5 mm thick in Stokes flow, h ln(h/d) / 4 pi) and along at twice that (slender filaments resist axial flow
 /// about half as much; Cox 1970). paper: rest_length, hermite and B = 2.352e-3 N m, Fig. 12's "Angular Elastic
 /// Stiffness 1.186 N m/rad" per joint read per metre of depth on the paper's 32-segment chain (1.983 mm joints:

@@ -29,8 +29,8 @@ ib::CouplingParams couplingFor(const BellModel& model, const SwimmerConfig& c) {
 fluid::FluidParams jellyfishFluid() {
   fluid::FluidParams f;
   f.domain_width_m = 0.25;
-  f.cells_x = 250;
-  f.cells_y = 360;
+  f.cells_x = 375;
+  f.cells_y = 540;
   f.domain_height_m = f.cells_y * f.domain_width_m / f.cells_x;
   f.kinematic_viscosity_m2_per_s = 5e-5;
   f.advection = fluid::AdvectionScheme::maccormack;
@@ -38,7 +38,7 @@ fluid::FluidParams jellyfishFluid() {
   f.viscosity_tolerance = 1e-8;
   // The coupled step is fixed; a fluid running away is caught as a blow-up.
   f.time_step_policy = fluid::TimeStepPolicy::fixed;
-  f.fixed_step_s = 0.00125;
+  f.fixed_step_s = 1.0 / 300.0;
   f.blowup_speed_m_per_s = 5.0;
   return f;
 }
@@ -46,7 +46,7 @@ fluid::FluidParams jellyfishFluid() {
 ib::CouplingParams jellyfishCoupling() {
   ib::CouplingParams c;
   c.kernel = ib::Kernel::peskin4;
-  c.kernel_scale = 2;
+  c.kernel_scale = 3;
   c.implicit_theta = 0.5;
   return c;
 }

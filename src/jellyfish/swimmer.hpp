@@ -12,10 +12,10 @@
 namespace creaturelab::jellyfish {
 
 // The jellyfish kind's fluid, the converged setting of the jellyfish convergence experiments (grid,
-// step, scheme and box refined together): a 0.25 m by 0.36 m free-slip box of 1 mm cells, a fluid 38
+// step, scheme and box refined): a 0.25 m by 0.36 m free-slip box of 2/3 mm cells, a fluid 38
 // times as viscous as water, MacCormack advection, the bell's force after the advection, a fixed step.
 fluid::FluidParams jellyfishFluid();
-// Its coupling: Peskin's kernel stretched to the bell's 4 mm thickness on that grid (2 cells per
+// Its coupling: Peskin's kernel stretched to the bell's 4 mm thickness on that grid (3 cells per
 // kernel unit), the semi-implicit force at the step's middle (theta = 1/2).
 ib::CouplingParams jellyfishCoupling();
 
@@ -25,9 +25,9 @@ struct SwimmerConfig {
   fluid::FluidParams fluid = jellyfishFluid();  // domain, grid, water, walls, advection
   ib::CouplingParams coupling = jellyfishCoupling();
   // The tentacle markers' own kernel stretch (ib::CouplingParams::marker_kernel_scales): filaments spread
-  // narrower than the bell. 0: the bell's (coupling.kernel_scale). 1: the kind's 2 mm filaments on 1 mm cells.
+  // narrower than the bell. 0: the bell's (coupling.kernel_scale). 1: the kind's 4/3 mm filaments on 2/3 mm cells.
   int tentacle_kernel_scale = 1;
-  double dt_s = 0.00125;  // coupled step (see ib/coupling.hpp on stability); = fluid.fixed_step_s
+  double dt_s = 1.0 / 300.0;  // coupled step (see ib/coupling.hpp on stability); = fluid.fixed_step_s
   // Where the middle of the aperture starts, as fractions of the domain (apex toward +y).
   double start_x_fraction = 0.5;
   double start_y_fraction = 0.5;

@@ -69,7 +69,7 @@ struct JellyfishKindParams {
     swimmer.bell.describeTentacles(v);
     v.realOrAuto("tentacle_kernel_radius_m", tentacle_kernel_radius_m, "m", 0, 10,
                  "the tentacles' own kernel support radius (at most kernel_radius_m; 0 = the grid's kernel); auto: "
-                 "the model's, ours 2 mm (filaments), paper the bell's kernel_radius_m (§3.2: made as the "
+                 "the model's, ours 4/3 mm (filaments), paper the bell's kernel_radius_m (§3.2: made as the "
                  "subumbrella is)");
     v.realOrAuto("tentacle_permeability_m", tentacle_permeability_m, "m", 0, 10,
                  "Darcy permeability over thickness of a tentacle chain, slip = permeability / (rho nu) x normal "
@@ -85,7 +85,7 @@ struct JellyfishKindParams {
     DefaultNotes noted(v, {
         {"domain_m", "0.25 m, 6.25 bell diameters, close to the paper's 10-diameter box (§3.2) in distance per "
                      "cycle; the height is box_aspect times it"},
-        {"cells", "250, 1 mm cells, the converged grid of the convergence study"},
+        {"cells", "375, 2/3 mm cells, the coarsest grid the convergence study finds within 5% of 1/3 mm"},
         {"kinematic_viscosity_m2_per_s", "5e-5, 38 times water (Re ~16, within 2-D IB jellyfish studies' 10-300), "
                                          "so that 1 mm cells resolve the Stokes layer"},
         {"advection", "maccormack (Selle et al. 2008, second order in space)"},
