@@ -92,7 +92,7 @@ intact() {
 }
 
 # frequency_coarse NAME [BELL_PLUCK_LINE...]: $scratch/NAME.toml, experiments/jellyfish/frequency.toml (Fig. 5 and
-# the bell alone, with its checks) on the setting its breaking tests share: 2 mm cells at twice the step, 64 segments,
+# the bell alone, with its checks) on the setting its breaking tests share: 2 mm cells at 0.0025 s, 64 segments,
 # 3 s windows; the bell with its tentacles driven at 0.5 and 0.6 Hz (points 0 and 1: its speed peaks at the second,
 # in Fig. 5's window) and alone at 0.7 Hz (point 2), and both 4 s plucks (points 3 and 4: with the tentacles, and the
 # bell pluck, tentacles = false unless BELL_PLUCK_LINE, extra TOML lines of the bell pluck's case, set it). The plucks

@@ -2,7 +2,7 @@
 # The bell alone rings as one mode (experiments/jellyfish/frequency.toml: the bell first): the check fails
 # with the paper's tentacles on in the bell pluck, impermeable chains on the bell's 4 mm kernel, which then ring with
 # the bell (two modes; the default's porous filaments ring with it as one). On frequency_coarse's
-# setting (2 mm cells at twice the step, 64 segments, 3 s windows, 4 s plucks), on which the intact file passes (run
+# setting (2 mm cells at 0.0025 s, 64 segments, 3 s windows, 4 s plucks), on which the intact file passes (run
 # here first); the drives and the other pluck are reused. The bell's muscle-driven checks:
 # jellyfish_frequency_checks_fail.sh. About 18 s of CPU.
 # usage: jellyfish_bell_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR

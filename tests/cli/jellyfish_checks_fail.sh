@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fig. 4's check that the bell swims by its muscles (Rudolf & Mould 2009 §3.3, experiments/jellyfish/
-# stagger.toml) fails with the muscle tension zero: on 2 mm cells at twice the step, 64 segments and 3 s,
+# stagger.toml) fails with the muscle tension zero: on 2 mm cells at 0.0025 s, 64 segments and 3 s,
 # a setting on which the intact file passes too (run here first: unison moves 1.4 mm a cycle). The
 # membrane's checks: jellyfish_membrane_checks_fail.sh. About 12 s of CPU.
 # usage: jellyfish_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR

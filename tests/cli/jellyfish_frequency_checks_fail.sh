@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fig. 5's checks (Rudolf & Mould 2009 §3.3, experiments/jellyfish/frequency.toml) fail with the muscles off in the
 # driven cases (the plucks that measure the natural frequencies kept): on frequency_coarse's setting (2 mm cells at
-# twice the step, 64 segments, 3 s windows; the bell with its tentacles at 0.5 and 0.6 Hz, alone at 0.7 Hz, both plucks),
+# 0.0025 s, 64 segments, 3 s windows; the bell with its tentacles at 0.5 and 0.6 Hz, alone at 0.7 Hz, both plucks),
 # on which the intact file passes (run here first). The bell pluck's one-mode check: jellyfish_bell_checks_fail.sh.
 # About 22 s of CPU in all.
 # usage: jellyfish_frequency_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR

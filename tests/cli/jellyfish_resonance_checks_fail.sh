@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fig. 5's resonance checks (Rudolf & Mould 2009 §3.3, experiments/jellyfish/frequency.toml) fail with the
 # resonance broken. The bell's elasticity against the water's added mass sets its natural frequency f_n, and the
-# drive that matches it swims most. On a coarse setting (2 mm cells at twice the step in a 0.15 m box, 64 segments,
+# drive that matches it swims most. On a coarse setting (2 mm cells at 0.0025 s in a 0.15 m box, 64 segments,
 # half a warm-up cycle, 2.5 s windows; the bell with the paper's tentacles, impermeable chains on the bell's 4 mm
 # kernel, driven at 0.4, 0.5 and 0.6 Hz, alone at 0.7 Hz, both 4 s plucks), on which the intact file passes (run here
 # first: its speed peaks at 0.6 Hz), only the drives change and the other points are reused: a bell 0.3 times as

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The Reynolds study's checks (studies/jellyfish/reynolds.toml: the bell alone's speed falls with Re and collapses
 # below Re ~ 10, as Herschlag & Miller 2011 find for 2-D bells) fail with the muscles off: the bell then moves by
-# round-off at every viscosity. On 2 mm cells at twice the step, 64 segments and 3 s windows, on which the intact
+# round-off at every viscosity. On 2 mm cells at 0.0025 s, 64 segments and 3 s windows, on which the intact
 # study passes (run here first).
 # usage: jellyfish_reynolds_checks_fail.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()

@@ -49,7 +49,7 @@ TEST(JellyfishKind, DefaultsSetUpTheSwimmerStructsInClassDefaults) {
 
 TEST(JellyfishKind, ReadsItsParametersIntoTheStructs) {
   Params p = defaults();
-  p["bell_segments"] = std::int64_t(0);  // follow the grid: markers at most half a 1 mm cell apart
+  p["bell_segments"] = std::int64_t(0);  // follow the grid: markers at most half a cell apart
   p["stiffness_scale"] = 2.0;
   p["kinematic_viscosity_m2_per_s"] = 1e-5;
   p["activation_shape"] = std::string("hermite");
@@ -60,8 +60,9 @@ TEST(JellyfishKind, ReadsItsParametersIntoTheStructs) {
   const jellyfish::SwimmerConfig c = q.setup();
   jellyfish::BellParams coarser = c.bell;
   coarser.segments -= 2;
-  EXPECT_LE(jellyfish::buildBell(c.bell).segment_m, 0.5e-3);
-  EXPECT_GT(jellyfish::buildBell(coarser).segment_m, 0.5e-3);
+  const double half_cell_m = 0.5 * c.fluid.domain_width_m / c.fluid.cells_x;
+  EXPECT_LE(jellyfish::buildBell(c.bell).segment_m, half_cell_m);
+  EXPECT_GT(jellyfish::buildBell(coarser).segment_m, half_cell_m);
   EXPECT_EQ(c.bell.bell_modulus_pa, 2 * 1186.0);
   EXPECT_EQ(c.fluid.kinematic_viscosity_m2_per_s, 1e-5);
   EXPECT_TRUE(c.activation.shape == jellyfish::ActivationShape::hermite);
@@ -95,7 +96,7 @@ TEST(JellyfishKind, ModelPresetsMusclesShapeAndBendingAndTheFileWins) {
   EXPECT_EQ(paper.tentacle_kernel_scale, paper.coupling.kernel_scale);
   EXPECT_EQ(paper.bell.tentacle_root_spacing_m, 0.008);
   const jellyfish::SwimmerConfig paper_filaments =
-      setup({{"model", std::string("paper")}, {"tentacle_permeability_m", 1.7e-3}, {"tentacle_kernel_radius_m", 0.002}});
+      setup({{"model", std::string("paper")}, {"tentacle_permeability_m", 1.7e-3}, {"tentacle_kernel_radius_m", jellyfish::kFilamentKernelRadius_m}});
   EXPECT_EQ(paper_filaments.bell.tentacle_porosity_m_per_pa_s, in_class.bell.tentacle_porosity_m_per_pa_s);
   EXPECT_EQ(paper_filaments.bell.tentacle_axial_porosity_m_per_pa_s, 0.0);
   EXPECT_EQ(paper_filaments.tentacle_kernel_scale, in_class.tentacle_kernel_scale);
@@ -127,11 +128,11 @@ TEST(JellyfishKind, RulesAcrossFieldsNameTheParameters) {
   EXPECT_NE(problem("bell_segments", std::int64_t(31)).find("segments must be even"), std::string::npos);
   EXPECT_NE(problem("kernel_radius_m", 0.0045).find("kernel_radius_m = 0.0045 m must be a whole multiple"),
             std::string::npos);
-  EXPECT_NE(problem("tentacle_kernel_radius_m", 0.006).find("must not exceed kernel_radius_m"), std::string::npos);
-  // the filaments' 2 mm kernel is 1.5 reaches of 2/3 mm cells: refused with them, not for the bell alone
+  EXPECT_NE(problem("tentacle_kernel_radius_m", 0.008).find("must not exceed kernel_radius_m"), std::string::npos);
+  // the filaments' 4/3 mm kernel is 4/3 reaches of 1/2 mm cells: refused with them, not for the bell alone
   Params fine = defaults();
-  fine["cells"] = std::int64_t(375);
-  EXPECT_NE(JellyfishKind().validate(fine).find("tentacle_kernel_radius_m = 0.002 m must be a whole multiple"),
+  fine["cells"] = std::int64_t(500);
+  EXPECT_NE(JellyfishKind().validate(fine).find("tentacle_kernel_radius_m = 0.00133333 m must be a whole multiple"),
             std::string::npos);
   fine["tentacles"] = false;
   EXPECT_EQ(JellyfishKind().validate(fine), "");
