@@ -684,7 +684,7 @@ TEST(RunnerExperiment, ShippedExperimentsLoadAndExpand) {
 }
 
 TEST(RunnerExperiment, JellyfishDefaultsAreTheSettingItsConvergenceStudyMeasures) {
-  // The convergence study's "1 mm" case is the kind's default setting; a default that drifts from it
+  // The convergence study's "2/3 mm" case is the kind's default setting; a default that drifts from it
   // (a dropped or changed default, or a case that pins another value) would leave the study measuring
   // another setting than the one `creaturelab run` gives.
   const std::filesystem::path file =
@@ -692,7 +692,7 @@ TEST(RunnerExperiment, JellyfishDefaultsAreTheSettingItsConvergenceStudyMeasures
   const std::vector<Point> study = points(runner::loadExperiment(file.string(), {}, registry()));
   int compared = 0;
   for (const Point& p : study) {
-    if (p.label != "1 mm") continue;
+    if (p.label != "2/3 mm") continue;
     const double hz = std::get<double>(p.params.at("contraction_hz"));
     const std::vector<Point> plain =
         points(load("kind = \"jellyfish\"\n[params]\ncontraction_hz = " + std::to_string(hz) + "\n"));
@@ -701,7 +701,7 @@ TEST(RunnerExperiment, JellyfishDefaultsAreTheSettingItsConvergenceStudyMeasures
       EXPECT_EQ(plain[0].params.at(name), value) << name << " at " << hz << " Hz";
     ++compared;
   }
-  EXPECT_EQ(compared, 3);
+  EXPECT_EQ(compared, 4);
 }
 
 }  // namespace
