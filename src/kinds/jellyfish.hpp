@@ -85,7 +85,7 @@ struct JellyfishKindParams {
     DefaultNotes noted(v, {
         {"domain_m", "0.25 m, 6.25 bell diameters, close to the paper's 10-diameter box (§3.2) in distance per "
                      "cycle; the height is box_aspect times it"},
-        {"cells", "375, 2/3 mm cells, the coarsest grid the convergence study finds within 5% of 1/3 mm"},
+        {"cells", "375, 2/3 mm cells, the finest grid a default point affords in 60 s of CPU (convergence.toml refines it)"},
         {"kinematic_viscosity_m2_per_s", "5e-5, 38 times water (Re ~16, within 2-D IB jellyfish studies' 10-300), "
                                          "so that 1 mm cells resolve the Stokes layer"},
         {"advection", "maccormack (Selle et al. 2008, second order in space)"},
