@@ -11,8 +11,8 @@
 
 namespace creaturelab::jellyfish {
 
-// The jellyfish kind's fluid, the converged setting of the jellyfish convergence experiments (grid,
-// step, scheme and box refined): a 0.25 m by 0.36 m free-slip box of 2/3 mm cells, a fluid 38
+// The jellyfish kind's fluid, the setting the jellyfish convergence experiments refine (grid, step,
+// scheme and box): a 0.25 m by 0.36 m free-slip box of 2/3 mm cells, a fluid 38
 // times as viscous as water, MacCormack advection, the bell's force after the advection, a fixed step.
 fluid::FluidParams jellyfishFluid();
 // Its coupling: Peskin's kernel stretched to the bell's 4 mm thickness on that grid (3 cells per
