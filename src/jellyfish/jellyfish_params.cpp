@@ -96,7 +96,7 @@ std::string KnotTable::validate() const {
 }
 
 ModelPreset modelPreset(Model model) {
-  if (model == Model::paper) return {MuscleModel::rest_length, ActivationShape::hermite, 2.352e-3, 0.0, 0.0, 0.0};
+  if (model == Model::paper) return {MuscleModel::rest_length, ActivationShape::hermite, 2.352e-3, std::nullopt, 0.0, 0.0};
   return {BellParams{}.muscle_model, ActivationParams{}.shape, BellParams{}.bending_rigidity_n_m,
           kFilamentKernelRadius_m, kFilamentPermeability_m, kFilamentAxialPermeability_m};
 }

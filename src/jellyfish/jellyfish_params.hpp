@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -244,9 +245,9 @@ struct ModelPreset {
   MuscleModel muscle_model = MuscleModel::active_tension;
   ActivationShape activation_shape = ActivationShape::pulse;
   double bending_rigidity_n_m = 0;  // N m per metre of depth
-  // The tentacle chains' coupling: their kernel support radius (0: the bell's own kernel radius), m, and
+  // The tentacle chains' coupling: their kernel support radius (unset: the bell's own kernel radius), m, and
   // their Darcy permeabilities across and along the chain (0: impermeable), m.
-  double tentacle_kernel_radius_m = 0;
+  std::optional<double> tentacle_kernel_radius_m;
   double tentacle_permeability_m = 0;
   double tentacle_axial_permeability_m = 0;
 };

@@ -132,7 +132,7 @@ JellyfishKindParams::TentacleCoupling JellyfishKindParams::tentacleCoupling() co
   const auto pick = [](const RealOrAuto& given, double preset_value) {
     return given.is_auto ? preset_value : given.value;
   };
-  const double preset_radius_m = preset.tentacle_kernel_radius_m > 0 ? preset.tentacle_kernel_radius_m : kernel_radius_m;
+  const double preset_radius_m = preset.tentacle_kernel_radius_m.value_or(kernel_radius_m);
   return {pick(tentacle_kernel_radius_m, preset_radius_m), pick(tentacle_permeability_m, preset.tentacle_permeability_m),
           pick(tentacle_axial_permeability_m, preset.tentacle_axial_permeability_m)};
 }
