@@ -22,6 +22,21 @@ def digits_for(value, uncertainty):
     return max(1, min(6, int(math.floor(math.log10(abs(value)))) - int(math.floor(math.log10(uncertainty))) + 1))
 
 
+def digits_to_tell(value, window, digits):
+    """At least `digits` significant digits, and as many more (up to 6) as it takes for `value`
+    rounded to lie on the same side of each bound of `window` (lo, hi) as `value`: a ratio of 1.0506
+    against [0.95, 1.05] reads 1.051, not 1.05."""
+    if not window or value == 0 or not math.isfinite(value):
+        return digits
+    lo, hi = window
+    while digits < 6:
+        shown = float(f"{value:.{digits - 1}e}")
+        if (shown < lo) == (value < lo) and (shown > hi) == (value > hi):
+            break
+        digits += 1
+    return digits
+
+
 def _plain(v, digits):
     """v with `digits` significant digits (trailing zeros kept: 3.40), without an exponent between
     1e-4 and 1e6; integral values (counts) as they are."""
@@ -125,10 +140,11 @@ def with_error(value, se, unit, interval=None):
     return out
 
 
-def got_text(got, unit, units, uncertainty=None):
+def got_text(got, unit, units, uncertainty=None, window=None):
     """A check's measured text with units: one value, "[lo, hi] over N points", a list (monotonic
     checks), "name=value" pairs whose names are sweep columns (argmax, argmin), each perhaps with the
-    runner's standard error ("v +- s (2 s.e.: [a, b])", "..., standard errors up to s")."""
+    runner's standard error ("v +- s (2 s.e.: [a, b])", "..., standard errors up to s"). With the
+    check's window (lo, hi), one value keeps the digits that put it on its own side of the bounds."""
     g = got.strip()
     m = _SE.fullmatch(g)
     if m and re.fullmatch(NUMBER, m.group(1).strip()):
@@ -141,7 +157,7 @@ def got_text(got, unit, units, uncertainty=None):
                 f", standard errors up to {quantity(most, unit, digits=2) if math.isfinite(most) else most}")
     d = digits_for(_first(g) or 0.0, uncertainty)
     if re.fullmatch(NUMBER, g):
-        return quantity(float(g), unit, digits=d)
+        return quantity(float(g), unit, digits=digits_to_tell(float(g), window, d))
     m = re.fullmatch(rf"\[({NUMBER}), ({NUMBER})\] over (\d+) points", g)
     if m:
         (a, b), u = group([float(m.group(1)), float(m.group(2))], unit, d)
@@ -237,5 +253,6 @@ def check_texts(check, units, uncertainty=None):
     unit = "" if is_dimensionless(check) else units.get(metric_of(check), "")
     got = str(check.get("got", ""))
     simple = re.fullmatch(rf"(?:\[)?{NUMBER}(?:, {NUMBER})*(?:\])?(?: over \d+ points)?", got.strip())
+    window = re.search(rf" in \[({NUMBER}), ({NUMBER})\]$", str(check.get("expected", "")))
     return (expected_text(str(check.get("expected", "")), unit, numbers(got) if simple else ()),
-            got_text(got, unit, units, uncertainty))
+            got_text(got, unit, units, uncertainty, (float(window.group(1)), float(window.group(2))) if window else None))

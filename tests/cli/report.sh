@@ -180,7 +180,11 @@ cases = [(U.quantity(0.00106039, "m/s"), "1.06 mm/s"), (U.quantity(0.65, "Hz"), 
          (U.got_text('integrator="rk4" (max_abs_error_m=1.90882e-09)', "", {"max_abs_error_m": "m"}),
           'integrator="rk4" (max_abs_error_m=1.91 nm)'),
          (U.expected_text("hub_rms_displacement_m in [0.05, 0.06]", "m", [0.0547852]), "hub_rms_displacement_m in [50, 60] mm"),
-         (U.expected_text("mean_up_force_n ratio in [1, 1e+09]", ""), "mean_up_force_n ratio ≥ 1")]
+         (U.expected_text("mean_up_force_n ratio in [1, 1e+09]", ""), "mean_up_force_n ratio ≥ 1"),
+         # a value just past a bound keeps the digits that show it is past: a fail never reads as a pass
+         (U.check_texts({"type": "ratio", "expected": "d ratio in [0.95, 1.05]", "got": "1.0506"}, {})[1], "1.051"),
+         (U.check_texts({"type": "ratio", "expected": "d ratio in [0.95, 1.05]", "got": "0.94996"}, {})[1], "0.94996"),
+         (U.check_texts({"type": "ratio", "expected": "d ratio in [0.95, 1.05]", "got": "1.03214"}, {})[1], "1.03")]
 bad = [(got, want) for got, want in cases if got != want]
 assert not bad, bad
 PY
