@@ -99,8 +99,8 @@ BellModel buildBell(const BellParams& p) {
       tentacle_chains.push_back(chain);
     }
   model.tentacle_chains = tentacle_chains;
-  model.tentacle_porosity_m_per_pa_s = p.tentacle_porosity_m_per_pa_s;
-  model.tentacle_axial_porosity_m_per_pa_s = p.tentacle_axial_porosity_m_per_pa_s;
+  model.tentacle_permeability_m = p.tentacle_permeability_m;
+  model.tentacle_axial_permeability_m = p.tentacle_axial_permeability_m;
 
   auto& net = model.network;
   for (std::size_t i = 0; i < model.rest_positions_m.size(); ++i) net.addParticle(1.0, false);

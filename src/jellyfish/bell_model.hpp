@@ -32,8 +32,8 @@ struct BellModel {
   int apex = 0;
   std::vector<int> tentacle_markers;          // the rest: the left chains root → tip, then the right ones
   std::vector<std::vector<int>> tentacle_chains;  // each chain's markers from its root (a bell marker) to its tip
-  double tentacle_porosity_m_per_pa_s = 0;    // Darcy coefficient of the chains (BellParams)
-  double tentacle_axial_porosity_m_per_pa_s = 0;  // the same along them (BellParams)
+  double tentacle_permeability_m = 0;         // Darcy permeability of the chains across them, m (BellParams)
+  double tentacle_axial_permeability_m = 0;   // the same along them, m (BellParams)
   double aperture_width_m = 0;                // drawn distance between the two aperture markers
   double bell_area_m2 = 0;                    // slice area of the bell's flesh (arc length × thickness)
   double segment_m = 0;                       // drawn length of every bell (and tentacle) segment

@@ -11,7 +11,7 @@ void validateOrThrow(const ActivationParams& activation) {
 }
 }  // namespace
 
-JellyfishBody::JellyfishBody(const BellModel& model, ActivationParams activation)
+JellyfishBody::JellyfishBody(const BellModel& model, ActivationParams activation, double dynamic_viscosity_pa_s)
     : model_((validateOrThrow(activation), model)),
       activation_(std::move(activation)),
       expansion_(expansionWindow(activation_.knots)),
@@ -19,6 +19,13 @@ JellyfishBody::JellyfishBody(const BellModel& model, ActivationParams activation
       state_(springs::zeroState<2>(model.network.particleCount())) {
   lowest_knot_ = activation_.knots.front().value;  // validate() guarantees at least one knot
   for (const Knot& k : activation_.knots) lowest_knot_ = std::min(lowest_knot_, k.value);
+  // Darcy: α = κ / μ, the permeability over the dynamic viscosity.
+  if (model.tentacle_permeability_m > 0 || model.tentacle_axial_permeability_m > 0) {
+    if (!(dynamic_viscosity_pa_s > 0 && std::isfinite(dynamic_viscosity_pa_s)))
+      throw std::invalid_argument("permeable tentacles need a fluid viscosity > 0");
+    porosity_m_per_pa_s_ = model.tentacle_permeability_m / dynamic_viscosity_pa_s;
+    axial_porosity_m_per_pa_s_ = model.tentacle_axial_permeability_m / dynamic_viscosity_pa_s;
+  }
 }
 
 double JellyfishBody::muscleFactor(int m, double t_s) const {
@@ -109,8 +116,8 @@ void JellyfishBody::forces(double t_s, std::span<const fluid::Vec2> x_m, std::sp
 
 void JellyfishBody::porousSlips(std::span<const fluid::Vec2> x, std::vector<ib::PorousSlip>& out) const {
   out.clear();
-  const double alpha = model_.tentacle_porosity_m_per_pa_s;
-  const double alpha_axial = model_.tentacle_axial_porosity_m_per_pa_s;
+  const double alpha = porosity_m_per_pa_s_;
+  const double alpha_axial = axial_porosity_m_per_pa_s_;
   if (!(alpha > 0) && !(alpha_axial > 0)) return;
   for (const std::vector<int>& chain : model_.tentacle_chains)
     for (std::size_t m = 1; m < chain.size(); ++m) {

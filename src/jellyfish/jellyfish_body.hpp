@@ -12,7 +12,9 @@ namespace creaturelab::jellyfish {
 
 class JellyfishBody : public ib::ElasticBody {
  public:
-  JellyfishBody(const BellModel& model, ActivationParams activation);
+  /// dynamic_viscosity_pa_s: μ = ρ ν of the fluid around the body, Pa s, which turns the tentacles'
+  /// permeabilities κ into Darcy coefficients κ / μ (> 0 when a chain is permeable).
+  JellyfishBody(const BellModel& model, ActivationParams activation, double dynamic_viscosity_pa_s);
 
   int markerCount() const override { return system_.particleCount(); }
   void forces(double t_s, std::span<const fluid::Vec2> x_m, std::span<fluid::Vec2> force_n_per_m) const override;
@@ -21,7 +23,7 @@ class JellyfishBody : public ib::ElasticBody {
   /// Tentacle tips to roots, then the bell from the aperture to the apex, each left/right pair side by
   /// side: a muscle joins a pair, and markers near each other in space are near in this order.
   std::vector<int> solveOrder() const override;
-  /// The tentacle chains' markers (not their roots) are porous when the model's porosity is > 0:
+  /// The tentacle chains' markers (not their roots) are porous when the model's permeability is > 0:
   /// normal from the chain's neighbours, ds the marker's share of the chain's present arc.
   void porousSlips(std::span<const fluid::Vec2> x_m, std::vector<ib::PorousSlip>& out) const override;
 
@@ -53,6 +55,8 @@ class JellyfishBody : public ib::ElasticBody {
   ActivationParams activation_;
   ExpansionWindow expansion_{};
   double lowest_knot_ = 0.56;  // the Hermite curve's full contraction
+  double porosity_m_per_pa_s_ = 0;        // Darcy coefficient across the tentacle chains, κ / μ
+  double axial_porosity_m_per_pa_s_ = 0;  // the same along them
   springs::System<2> system_;
   mutable springs::State<2> state_;     // scratch: positions in the springs module's layout
   mutable springs::Points<2> scratch_;  // scratch: network forces

@@ -40,10 +40,10 @@ std::string BellParams::validate() const {
   if (p.tentacles && p.tentacles_per_side < 1) e.add("tentacles per side must be at least 1");
   if (p.tentacles && p.tentacles_per_side > 1 && !positive(p.tentacle_root_spacing_m))
     e.add("tentacle root spacing must be > 0");
-  if (!(p.tentacle_porosity_m_per_pa_s >= 0) || !std::isfinite(p.tentacle_porosity_m_per_pa_s))
-    e.add("tentacle porosity must be >= 0");
-  if (!(p.tentacle_axial_porosity_m_per_pa_s >= 0) || !std::isfinite(p.tentacle_axial_porosity_m_per_pa_s))
-    e.add("tentacle axial porosity must be >= 0");
+  if (!(p.tentacle_permeability_m >= 0) || !std::isfinite(p.tentacle_permeability_m))
+    e.add("tentacle permeability must be >= 0");
+  if (!(p.tentacle_axial_permeability_m >= 0) || !std::isfinite(p.tentacle_axial_permeability_m))
+    e.add("tentacle axial permeability must be >= 0");
   return e.str();
 }
 
@@ -108,8 +108,8 @@ BellParams paperBell() {
   p.muscle_model = MuscleModel::rest_length;
   p.muscle_tension_n_per_m2 = 1.0;
   p.tentacle_root_spacing_m = 0.004;
-  p.tentacle_porosity_m_per_pa_s = 0.0;
-  p.tentacle_axial_porosity_m_per_pa_s = 0.0;
+  p.tentacle_permeability_m = 0.0;
+  p.tentacle_axial_permeability_m = 0.0;
   return p;
 }
 

@@ -132,15 +132,15 @@ struct BellParams {
   bool tentacles = true;
   int tentacles_per_side = 1;              // chains per side of the slice
   double tentacle_root_spacing_m = 2 * kFilamentKernelRadius_m;  // arc between neighbouring roots: two kernel radii
-  // Darcy coefficient α of a tentacle chain, m/(Pa s): the fluid passes through it at α times the
-  // normal load per length (ib::PorousSlip). A slice's chain stands for a ring of sparse filaments,
-  // not a sheet; 0 is impermeable. The filaments' permeability over ρ ν of the kind's fluid (1000 × 5e-5 Pa s).
-  double tentacle_porosity_m_per_pa_s = kFilamentPermeability_m / (1000.0 * 5e-5);
-  // The same along the chain, m/(Pa s): the fluid passes along the filaments at α_t times the tangential
-  // load per length; 0 is a sheet, with no slip along it. The filaments' over the same ρ ν.
-  double tentacle_axial_porosity_m_per_pa_s = kFilamentAxialPermeability_m / (1000.0 * 5e-5);
-  /// tentacles, tentacle_length_m, tentacle_area_factor, tentacles_per_side (root spacing and porosity
-  /// are the kind's, from its kernel radius and a permeability).
+  // Darcy permeability κ of a tentacle chain across it, m: the fluid passes through it at κ / μ times the
+  // normal load per length (ib::PorousSlip; μ the fluid's dynamic viscosity, JellyfishBody). A slice's
+  // chain stands for a ring of sparse filaments, not a sheet; 0 is impermeable.
+  double tentacle_permeability_m = kFilamentPermeability_m;
+  // The same along the chain, m: the fluid passes along the filaments at κ_t / μ times the tangential
+  // load per length; 0 is a sheet, with no slip along it.
+  double tentacle_axial_permeability_m = kFilamentAxialPermeability_m;
+  /// tentacles, tentacle_length_m, tentacle_area_factor, tentacles_per_side (root spacing and
+  /// permeabilities are the kind's, from its kernel radius and model).
   template <class V>
   void describeTentacles(V& v) {
     v.boolean("tentacles", tentacles, "passive tentacle chains at the aperture (§3.2)");

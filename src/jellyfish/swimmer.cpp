@@ -74,7 +74,8 @@ std::string SwimmerConfig::validate() const {
 Swimmer::Swimmer(const SwimmerConfig& config) : config_(config) {
   if (const std::string err = config.validate(); !err.empty()) throw std::invalid_argument(err);
   fluid_ = std::make_unique<fluid::FluidSolver2>(config.fluid);
-  body_ = std::make_unique<JellyfishBody>(buildBell(config.bell), config.activation);
+  body_ = std::make_unique<JellyfishBody>(buildBell(config.bell), config.activation,
+                                          config.fluid.density_kg_per_m3 * config.fluid.kinematic_viscosity_m2_per_s);
   coupling_ = std::make_unique<ib::ImmersedBoundary2>(*fluid_, *body_, placed(body_->model(), config),
                                                       couplingFor(body_->model(), config));
   initial_elastic_j_per_m_ = elasticEnergy_j_per_m();

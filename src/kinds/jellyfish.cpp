@@ -153,10 +153,8 @@ jellyfish::SwimmerConfig JellyfishKindParams::setup() const {
   b.bending_rigidity_n_m = bending_n_m * stiffness_scale;
   const TentacleCoupling tentacle = tentacleCoupling();
   b.tentacle_root_spacing_m = 2 * tentacle.kernel_radius_m;
-  // Darcy: α = κ / μ, the permeability length over the dynamic viscosity ρ ν.
-  const double dynamic_viscosity_pa_s = swimmer.fluid.density_kg_per_m3 * swimmer.fluid.kinematic_viscosity_m2_per_s;
-  b.tentacle_porosity_m_per_pa_s = tentacle.permeability_m / dynamic_viscosity_pa_s;
-  b.tentacle_axial_porosity_m_per_pa_s = tentacle.axial_permeability_m / dynamic_viscosity_pa_s;
+  b.tentacle_permeability_m = tentacle.permeability_m;
+  b.tentacle_axial_permeability_m = tentacle.axial_permeability_m;
   c.activation.knots = knots.curve();
   // A tall box: the bell swims up its axis and must not meet the top within the window.
   c.fluid.cells_y = int(std::lround(box_aspect * c.fluid.cells_x));

@@ -170,7 +170,7 @@ double staticEquilibriumRatio(const JellyfishBody& body, double t_s) {
 // dt 0.01 s within 5e-3 of the static equilibrium, and by the end of the cycle the bell has re-opened.
 TEST(JellyfishSwim, MusclesContractTheBellToItsStaticEquilibriumAndItReopens) {
   const SwimmerConfig c = config(100, 0.3, 0.01);
-  const JellyfishBody body(buildBell(c.bell), c.activation);
+  const JellyfishBody body(buildBell(c.bell), c.activation, c.fluid.density_kg_per_m3 * c.fluid.kinematic_viscosity_m2_per_s);
   const double contracted_t = 0.3 / c.activation.contraction_hz;  // the default curve's 0.56 knot
   for (std::size_t m = 0; m < body.model().muscles.size(); ++m)
     ASSERT_NEAR(body.muscleFactor(static_cast<int>(m), contracted_t), 0.56, 1e-12);
@@ -305,7 +305,7 @@ TEST(JellyfishSwim, PorousFilamentsKeepTheirChainsAtTheHalfStepForce) {
   SwimmerConfig c;
   c.activation.contraction_hz = 0.7;
   c.tentacle_kernel_scale = 1;
-  c.bell.tentacle_porosity_m_per_pa_s = 1.7e-3 / (1000.0 * 5e-5);
+  c.bell.tentacle_permeability_m = 1.7e-3;
   ASSERT_EQ(c.coupling.implicit_theta, 0.5);
   Swimmer s(c);
   const BellModel& model = s.body().model();

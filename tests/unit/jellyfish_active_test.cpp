@@ -15,9 +15,11 @@
 #include "jellyfish_stiffness_matrix.hpp"
 #include "jellyfish/ringdown.hpp"
 #include "support/dense_linalg.hpp"
+#include "support/jellyfish_water.hpp"
 
 namespace creaturelab::jellyfish {
 namespace {
+using test::kWaterViscosity_pa_s;
 
 using Markers = std::vector<fluid::Vec2>;
 
@@ -65,7 +67,7 @@ Eigen::VectorXd toVector(const Markers& x) {
 // The pulse: sin²(π t / τ) for the first τ of each cycle, zero after; none after active_cycles.
 TEST(JellyfishActivation, PulseIsSineSquaredThenZeroAndStopsAfterTheActiveCycles) {
   const BellModel model = buildBell(activeBell(32, 10.0));
-  const JellyfishBody body(model, pulse(0.2, 2));
+  const JellyfishBody body(model, pulse(0.2, 2), kWaterViscosity_pa_s);
   EXPECT_EQ(body.activation(0, 0.0), 0.0);
   EXPECT_NEAR(body.activation(0, 0.1), 1.0, 1e-15);
   EXPECT_NEAR(body.activation(0, 0.05), 0.5, 1e-15);
@@ -82,8 +84,8 @@ TEST(JellyfishActivation, StaggeredPulseReleasesTheApexFirstAndContractsAlike) {
   const BellModel model = buildBell(activeBell(32, 10.0));
   ActivationParams a = pulse(0.4, 0);
   a.pulse_stagger = 0.5;
-  const JellyfishBody staggered(model, a);
-  const JellyfishBody unison(model, pulse(0.4, 0));
+  const JellyfishBody staggered(model, a, kWaterViscosity_pa_s);
+  const JellyfishBody unison(model, pulse(0.4, 0), kWaterViscosity_pa_s);
   int apex = 0, aperture = 0;
   for (int m = 0; m < int(model.muscles.size()); ++m) {
     if (model.muscles[m].aperture_position < model.muscles[apex].aperture_position) apex = m;
@@ -113,7 +115,7 @@ TEST(JellyfishActivation, HermiteActivationIsTheCurveScaledToItsLowestKnot) {
   const BellModel model = buildBell(activeBell(32, 10.0));
   ActivationParams a = paperActivation();
   a.expansion = Expansion::unison;
-  const JellyfishBody body(model, a);
+  const JellyfishBody body(model, a, kWaterViscosity_pa_s);
   for (double t : {0.0, 0.1, 0.3 / 0.7, 0.9, 1.2}) {
     const double expected = (1.0 - body.muscleFactor(0, t)) / (1.0 - 0.56);
     EXPECT_NEAR(body.activation(0, t), expected, 1e-15) << "t " << t;
@@ -130,7 +132,7 @@ TEST(JellyfishActiveTension, PullsWithTheActiveTensionAndItsStiffnessIsTheGeomet
   BellModel model = buildBell(activeBell(32, 40.0));
   model.network = springs::Network<2>{};  // the muscle alone
   for (std::size_t i = 0; i < model.rest_positions_m.size(); ++i) model.network.addParticle(1.0, false);
-  const JellyfishBody body(model, pulse(0.4, 0));
+  const JellyfishBody body(model, pulse(0.4, 0), kWaterViscosity_pa_s);
   Markers x = model.rest_positions_m;
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = {1.01 * x[i].x + 1e-4 * std::sin(3.0 * i), x[i].y + 1e-4 * std::cos(5.0 * i)};
   const double t = 0.13;
@@ -169,7 +171,7 @@ TEST(JellyfishActiveTension, PullsWithTheActiveTensionAndItsStiffnessIsTheGeomet
 // An active tension stores no elastic energy; a relaxed muscle exerts nothing.
 TEST(JellyfishActiveTension, StoresNoEnergyAndARelaxedMuscleExertsNothing) {
   const BellModel model = buildBell(activeBell(32, 40.0));
-  const JellyfishBody body(model, pulse(0.2, 0));
+  const JellyfishBody body(model, pulse(0.2, 0), kWaterViscosity_pa_s);
   const Markers& x = model.rest_positions_m;
   EXPECT_LT(body.elasticEnergy(0.1, x), 1e-24);  // rest shape: the bell's springs are at rest
   EXPECT_LT(forceVector(body, 0.5, x).cwiseAbs().maxCoeff(), 1e-12);  // after the pulse
@@ -242,7 +244,7 @@ TEST(JellyfishRingdown, DampedFitRecoversTheModeUnderABeatAndADrift) {
 double loadedDiameterRatio(int segments) {
   const BellModel model = buildBell(activeBell(segments, 20.0));
   ActivationParams hold = pulse(1.0, 0);  // a = sin²(π t): 1 at t = 0.5
-  const JellyfishBody body(model, hold);
+  const JellyfishBody body(model, hold, kWaterViscosity_pa_s);
   Eigen::VectorXd x = toVector(model.rest_positions_m);
   for (int it = 0; it < 60; ++it) {
     const Eigen::VectorXd f = forceVector(body, 0.5, fromVector(x));
@@ -261,7 +263,7 @@ double loadedDiameterRatio(int segments) {
 double breathingHz(int segments) {
   BellParams p = activeBell(segments, 0.0);
   const BellModel model = buildBell(p);
-  const JellyfishBody body(model, pulse(0.2, 0));
+  const JellyfishBody body(model, pulse(0.2, 0), kWaterViscosity_pa_s);
   const Markers& x = model.rest_positions_m;
   const Eigen::MatrixXd k = -stiffnessMatrix(body, 0.0, x);
   const long n = k.rows();

@@ -14,13 +14,16 @@
 #include <cmath>
 #include <random>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "springs/system.hpp"
 #include "support/dense_linalg.hpp"
+#include "support/jellyfish_water.hpp"
 
 namespace creaturelab::jellyfish {
 namespace {
+using test::kWaterViscosity_pa_s;
 
 using Markers = std::vector<fluid::Vec2>;
 
@@ -88,7 +91,7 @@ Markers perturbed(std::mt19937_64& rng, double amplitude, double angle = 0.0) {
 // (phase 0.3, factor 0.56, §3.3) the same shape is pulled: every muscle is in tension and the
 // aperture markers are pulled toward the axis (the jet-producing contraction, §3.1).
 TEST(JellyfishBody, ForcesVanishAtRestShapeAtTimeZero) {
-  const JellyfishBody body(defaultModel(), activation());
+  const JellyfishBody body(defaultModel(), activation(), kWaterViscosity_pa_s);
   const Markers& x = defaultModel().rest_positions_m;
   for (const auto& f : forcesAt(body, 0.0, x)) {
     EXPECT_LT(std::abs(f.x), 1e-12);
@@ -129,8 +132,8 @@ TEST(JellyfishBody, ForcesVanishAtRestShapeAtTimeZero) {
 // force density of an immersed body has zero total force and torque).
 TEST(JellyfishBody, InternalForcesHaveZeroSumAndZeroTorque) {
   std::mt19937_64 rng(20240517);
-  const JellyfishBody staggered(defaultModel(), activation());
-  const JellyfishBody delayed(defaultModel(), activation(Expansion::unison, 0.05));
+  const JellyfishBody staggered(defaultModel(), activation(), kWaterViscosity_pa_s);
+  const JellyfishBody delayed(defaultModel(), activation(Expansion::unison, 0.05), kWaterViscosity_pa_s);
   std::uniform_real_distribution<double> time(0.0, 3.0), angle(-M_PI, M_PI);
   for (int trial = 0; trial < 40; ++trial) {
     const Markers x = perturbed(rng, 1.5e-3, angle(rng));
@@ -161,7 +164,7 @@ TEST(JellyfishBody, InternalForcesHaveZeroSumAndZeroTorque) {
 // taut.
 TEST(JellyfishBody, ForcesAreMinusTheGradientOfTheEnergy) {
   std::mt19937_64 rng(7);
-  const JellyfishBody body(defaultModel(), activation());
+  const JellyfishBody body(defaultModel(), activation(), kWaterViscosity_pa_s);
   int slack_seen = 0, taut_seen = 0;
   for (double phase : {0.05, 0.2, 0.3, 0.45, 0.7, 0.95}) {
     const double t = timeAtPhase(phase) + 2.0 / kHz;  // a later cycle
@@ -195,7 +198,7 @@ TEST(JellyfishBody, ForcesAreMinusTheGradientOfTheEnergy) {
 // the drawn bell stretched uniformly by 2 % (angles kept), rotated and shifted, during the
 // contraction when no muscle is slack.
 TEST(JellyfishBody, StiffnessEqualsFiniteDifferencesWhenNoMuscleIsSlack) {
-  const JellyfishBody body(defaultModel(), activation());
+  const JellyfishBody body(defaultModel(), activation(), kWaterViscosity_pa_s);
   const double c = std::cos(0.3), s = std::sin(0.3);
   Markers x = defaultModel().rest_positions_m;
   for (auto& p : x) p = {1.02 * (c * p.x - s * p.y) + 0.2, 1.02 * (s * p.x + c * p.y) + 0.1};
@@ -218,7 +221,7 @@ TEST(JellyfishBody, MuscleStiffnessEqualsFiniteDifferencesAtAnyTautShape) {
   BellModel muscles_only = defaultModel();
   muscles_only.network = springs::Network<2>{};
   for (std::size_t i = 0; i < muscles_only.rest_positions_m.size(); ++i) muscles_only.network.addParticle(1.0, false);
-  const JellyfishBody body(muscles_only, activation());
+  const JellyfishBody body(muscles_only, activation(), kWaterViscosity_pa_s);
   std::mt19937_64 rng(99);
   for (int trial = 0; trial < 5; ++trial) {
     const Markers x = perturbed(rng, 1e-3, 1.0 * trial);
@@ -237,7 +240,7 @@ TEST(JellyfishBody, MuscleStiffnessEqualsFiniteDifferencesAtAnyTautShape) {
 // solve of the semi-implicit step.
 TEST(JellyfishBody, StiffnessIsSymmetricNegativeSemidefinite) {
   std::mt19937_64 rng(3);
-  const JellyfishBody body(defaultModel(), activation());
+  const JellyfishBody body(defaultModel(), activation(), kWaterViscosity_pa_s);
   std::uniform_real_distribution<double> time(0.0, 2.0);
   for (int trial = 0; trial < 4; ++trial) {
     // Large deformations (up to 3 mm, more than a segment) so that springs are compressed and bends far from rest.
@@ -257,7 +260,7 @@ TEST(JellyfishBody, StiffnessIsSymmetricNegativeSemidefinite) {
 // squeezed sideways to half its width at t = 0 (factor 1): every muscle is slack.
 TEST(JellyfishBody, SlackMusclesGiveNoForceAndNoStiffness) {
   const BellModel& model = defaultModel();
-  const JellyfishBody body(model, activation());
+  const JellyfishBody body(model, activation(), kWaterViscosity_pa_s);
   Markers x = model.rest_positions_m;
   for (auto& p : x) p.x *= 0.5;
   std::vector<double> tension;
@@ -287,7 +290,7 @@ TEST(JellyfishBody, SlackMusclesGiveNoForceAndNoStiffness) {
 // hair: the force is continuous where the muscle goes slack).
 TEST(JellyfishBody, TautMusclePullsWithHookesTension) {
   const BellModel& model = defaultModel();
-  const JellyfishBody body(model, activation(Expansion::unison));
+  const JellyfishBody body(model, activation(Expansion::unison), kWaterViscosity_pa_s);
   const springs::System<2> network(model.network);
   const double t = timeAtPhase(0.3);  // factor 0.56 for every muscle
   const MuscleSpring& m = model.muscles[0];
@@ -320,8 +323,8 @@ TEST(JellyfishBody, SynapticDelayShiftsEachPairByItsOrder) {
   // at 0.04 s per pair, so that every pair is still expanding at the brackets below.
   const double delay = 0.02;
   for (Expansion e : {Expansion::unison, Expansion::staggered}) {
-    const JellyfishBody plain(defaultModel(), activation(e, 0.0));
-    const JellyfishBody delayed(defaultModel(), activation(e, delay));
+    const JellyfishBody plain(defaultModel(), activation(e, 0.0), kWaterViscosity_pa_s);
+    const JellyfishBody delayed(defaultModel(), activation(e, delay), kWaterViscosity_pa_s);
     const int pairs = static_cast<int>(defaultModel().muscles.size());
     for (int k = 0; k < pairs; ++k) {
       for (int i = 0; i < 50; ++i) {
@@ -353,8 +356,8 @@ TEST(JellyfishBody, SynapticDelayShiftsEachPairByItsOrder) {
 TEST(JellyfishBody, UnisonPairsMoveTogetherStaggeredPairsDifferOnlyInExpansion) {
   ActivationParams unison = activation(Expansion::unison);
   unison.stagger = 0.9;
-  const JellyfishBody u(defaultModel(), unison);
-  const JellyfishBody s(defaultModel(), activation(Expansion::staggered));
+  const JellyfishBody u(defaultModel(), unison, kWaterViscosity_pa_s);
+  const JellyfishBody s(defaultModel(), activation(Expansion::staggered), kWaterViscosity_pa_s);
   const int pairs = static_cast<int>(defaultModel().muscles.size());
   for (int i = 0; i < 100; ++i) {
     const double t = 3.0 * i / 100.0;
@@ -371,9 +374,9 @@ TEST(JellyfishBody, UnisonPairsMoveTogetherStaggeredPairsDifferOnlyInExpansion) 
 // impermeable chains (α = 0) and the bell have none.
 TEST(JellyfishBody, TentacleMarkersArePorousAlongTheirNormal) {
   BellParams p = paperBell();
-  p.tentacle_porosity_m_per_pa_s = 0.02;
+  p.tentacle_permeability_m = 0.02 * kWaterViscosity_pa_s;  // a Darcy coefficient of 0.02 m/(Pa s)
   const BellModel model = buildBell(p);
-  const JellyfishBody body(model, activation());
+  const JellyfishBody body(model, activation(), kWaterViscosity_pa_s);
   std::vector<ib::PorousSlip> slips;
   body.porousSlips(model.rest_positions_m, slips);
   ASSERT_EQ(slips.size(), model.tentacle_markers.size());
@@ -385,9 +388,25 @@ TEST(JellyfishBody, TentacleMarkersArePorousAlongTheirNormal) {
   const double segment = p.tentacle_length_m / 10;
   EXPECT_NEAR(slips.front().mobility, 0.02 / segment, 1e-9 * 0.02 / segment);
   EXPECT_NEAR(slips[9].mobility, 0.02 / (0.5 * segment), 1e-9 * 0.02 / segment) << "the tip";
-  const JellyfishBody solid(buildBell(paperBell()), activation());
+  const JellyfishBody solid(buildBell(paperBell()), activation(), kWaterViscosity_pa_s);
   solid.porousSlips(model.rest_positions_m, slips);
   EXPECT_TRUE(slips.empty());
+}
+
+// The Darcy coefficient is the permeability over the surrounding fluid's μ: a permeable body without a
+// viscosity is refused, and halving μ doubles every slip's mobility.
+TEST(JellyfishBody, TentaclePorosityIsPermeabilityOverTheFluidsViscosity) {
+  BellParams p = paperBell();
+  p.tentacle_permeability_m = 1.7e-3;
+  const BellModel model = buildBell(p);
+  EXPECT_THROW(JellyfishBody(model, activation(), 0.0), std::invalid_argument);
+  EXPECT_NO_THROW(JellyfishBody(buildBell(paperBell()), activation(), 0.0)) << "impermeable: no viscosity needed";
+  std::vector<ib::PorousSlip> water, thinner;
+  JellyfishBody(model, activation(), kWaterViscosity_pa_s).porousSlips(model.rest_positions_m, water);
+  JellyfishBody(model, activation(), 0.5 * kWaterViscosity_pa_s).porousSlips(model.rest_positions_m, thinner);
+  ASSERT_EQ(water.size(), thinner.size());
+  ASSERT_FALSE(water.empty());
+  for (std::size_t i = 0; i < water.size(); ++i) EXPECT_NEAR(thinner[i].mobility, 2 * water[i].mobility, 1e-12 * water[i].mobility);
 }
 
 }  // namespace

@@ -27,8 +27,8 @@ TEST(JellyfishKind, DefaultsSetUpTheSwimmerStructsInClassDefaults) {
   const jellyfish::SwimmerConfig in_class;
   EXPECT_EQ(run.bell.segments, in_class.bell.segments);
   EXPECT_EQ(run.bell.tentacle_root_spacing_m, in_class.bell.tentacle_root_spacing_m);
-  EXPECT_EQ(run.bell.tentacle_porosity_m_per_pa_s, in_class.bell.tentacle_porosity_m_per_pa_s);
-  EXPECT_EQ(run.bell.tentacle_axial_porosity_m_per_pa_s, in_class.bell.tentacle_axial_porosity_m_per_pa_s);
+  EXPECT_EQ(run.bell.tentacle_permeability_m, in_class.bell.tentacle_permeability_m);
+  EXPECT_EQ(run.bell.tentacle_axial_permeability_m, in_class.bell.tentacle_axial_permeability_m);
   EXPECT_EQ(run.bell.bending_rigidity_n_m, in_class.bell.bending_rigidity_n_m);
   EXPECT_TRUE(run.bell.muscle_model == in_class.bell.muscle_model);
   EXPECT_TRUE(run.activation.shape == in_class.activation.shape);
@@ -91,14 +91,14 @@ TEST(JellyfishKind, ModelPresetsMusclesShapeAndBendingAndTheFileWins) {
   EXPECT_EQ(paper.bell.muscle_tension_n_per_m2, in_class.bell.muscle_tension_n_per_m2);  // the rest is shared
   EXPECT_EQ(paper.fluid.cells_x, in_class.fluid.cells_x);
   // the paper's tentacles are made as the subumbrella is (§3.2): impermeable, on the bell's kernel
-  EXPECT_EQ(paper.bell.tentacle_porosity_m_per_pa_s, 0.0);
-  EXPECT_EQ(paper.bell.tentacle_axial_porosity_m_per_pa_s, 0.0);
+  EXPECT_EQ(paper.bell.tentacle_permeability_m, 0.0);
+  EXPECT_EQ(paper.bell.tentacle_axial_permeability_m, 0.0);
   EXPECT_EQ(paper.tentacle_kernel_scale, paper.coupling.kernel_scale);
   EXPECT_EQ(paper.bell.tentacle_root_spacing_m, 0.008);
   const jellyfish::SwimmerConfig paper_filaments =
       setup({{"model", std::string("paper")}, {"tentacle_permeability_m", 1.7e-3}, {"tentacle_kernel_radius_m", jellyfish::kFilamentKernelRadius_m}});
-  EXPECT_EQ(paper_filaments.bell.tentacle_porosity_m_per_pa_s, in_class.bell.tentacle_porosity_m_per_pa_s);
-  EXPECT_EQ(paper_filaments.bell.tentacle_axial_porosity_m_per_pa_s, 0.0);
+  EXPECT_EQ(paper_filaments.bell.tentacle_permeability_m, in_class.bell.tentacle_permeability_m);
+  EXPECT_EQ(paper_filaments.bell.tentacle_axial_permeability_m, 0.0);
   EXPECT_EQ(paper_filaments.tentacle_kernel_scale, in_class.tentacle_kernel_scale);
 
   const jellyfish::SwimmerConfig paper_set = setup({{"model", std::string("paper")},
