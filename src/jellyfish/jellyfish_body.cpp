@@ -20,7 +20,7 @@ JellyfishBody::JellyfishBody(const BellModel& model, ActivationParams activation
   lowest_knot_ = activation_.knots.front().value;  // validate() guarantees at least one knot
   for (const Knot& k : activation_.knots) lowest_knot_ = std::min(lowest_knot_, k.value);
   // Darcy: α = κ / μ, the permeability over the dynamic viscosity.
-  if (model.tentacle_permeability_m > 0 || model.tentacle_axial_permeability_m > 0) {
+  if (!model.tentacle_chains.empty() && (model.tentacle_permeability_m > 0 || model.tentacle_axial_permeability_m > 0)) {
     if (!(dynamic_viscosity_pa_s > 0 && std::isfinite(dynamic_viscosity_pa_s)))
       throw std::invalid_argument("permeable tentacles need a fluid viscosity > 0");
     porosity_m_per_pa_s_ = model.tentacle_permeability_m / dynamic_viscosity_pa_s;

@@ -68,6 +68,11 @@ std::string SwimmerConfig::validate() const {
     if (!err.empty()) return err;
   if (!(dt_s > 0) || !std::isfinite(dt_s)) return "time step must be > 0";
   if (tentacle_kernel_scale < 0) return "the tentacles' kernel stretch must be >= 0";
+  // JellyfishBody's Darcy coefficient is the permeability over rho nu.
+  const bool permeable = bell.tentacles && (bell.tentacle_permeability_m > 0 || bell.tentacle_axial_permeability_m > 0);
+  if (permeable && !(fluid.density_kg_per_m3 * fluid.kinematic_viscosity_m2_per_s > 0))
+    return "permeable tentacles (tentacle_permeability_m or tentacle_axial_permeability_m > 0) need "
+           "kinematic_viscosity_m2_per_s > 0";
   return "";
 }
 

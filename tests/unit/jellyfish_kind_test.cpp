@@ -129,6 +129,8 @@ TEST(JellyfishKind, RulesAcrossFieldsNameTheParameters) {
   EXPECT_NE(problem("kernel_radius_m", 0.0045).find("kernel_radius_m = 0.0045 m must be a whole multiple"),
             std::string::npos);
   EXPECT_NE(problem("tentacle_kernel_radius_m", 0.008).find("must not exceed kernel_radius_m"), std::string::npos);
+  // the filaments' Darcy coefficient is their permeability over rho nu: an inviscid fluid is refused with them
+  EXPECT_NE(problem("kinematic_viscosity_m2_per_s", 0.0).find("permeable tentacles"), std::string::npos);
   // the filaments' 4/3 mm kernel is 4/3 reaches of 1/2 mm cells: refused with them, not for the bell alone
   Params fine = defaults();
   fine["cells"] = std::int64_t(500);
