@@ -86,8 +86,8 @@ struct JellyfishKindParams {
         {"domain_m", "0.25 m, 6.25 bell diameters, close to the paper's 10-diameter box (§3.2) in distance per "
                      "cycle; the height is box_aspect times it"},
         {"cells", "375, 2/3 mm cells, the finest grid a default point affords in 60 s of CPU (convergence.toml refines it)"},
-        {"kinematic_viscosity_m2_per_s", "5e-5, 38 times water (Re ~16, within 2-D IB jellyfish studies' 10-300), "
-                                         "so that 1 mm cells resolve the Stokes layer"},
+        {"kinematic_viscosity_m2_per_s", "5e-5, 38 times water (Re = f D^2 / nu = 22 at 0.7 Hz, within 2-D IB jellyfish "
+                                         "studies' 10-300), so that the default cells put 4-5 across the Stokes layer at 0.7-1 Hz"},
         {"advection", "maccormack (Selle et al. 2008, second order in space)"},
         {"kernel", "peskin4: the hat's bell does not converge in its segments"},
         {"kernel_radius_m", "the bell's 4 mm thickness (Fig. 12), so that a grid study refines one body"},
