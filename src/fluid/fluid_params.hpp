@@ -227,6 +227,8 @@ struct FluidParams {
   }
 
   double cellSize_m() const { return domain_width_m / cells_x; }
+  /// μ = ρ ν, Pa s.
+  double dynamicViscosity_pa_s() const { return density_kg_per_m3 * kinematic_viscosity_m2_per_s; }
 
   /// Empty when the parameters are usable; otherwise one sentence per problem, joined by "; ".
   std::string validate() const;

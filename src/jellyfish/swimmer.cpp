@@ -70,7 +70,7 @@ std::string SwimmerConfig::validate() const {
   if (tentacle_kernel_scale < 0) return "the tentacles' kernel stretch must be >= 0";
   // JellyfishBody's Darcy coefficient is the permeability over rho nu.
   const bool permeable = bell.tentacles && (bell.tentacle_permeability_m > 0 || bell.tentacle_axial_permeability_m > 0);
-  if (permeable && !(fluid.density_kg_per_m3 * fluid.kinematic_viscosity_m2_per_s > 0))
+  if (permeable && !(fluid.dynamicViscosity_pa_s() > 0))
     return "permeable tentacles (tentacle_permeability_m or tentacle_axial_permeability_m > 0) need "
            "kinematic_viscosity_m2_per_s > 0";
   return "";
@@ -79,8 +79,7 @@ std::string SwimmerConfig::validate() const {
 Swimmer::Swimmer(const SwimmerConfig& config) : config_(config) {
   if (const std::string err = config.validate(); !err.empty()) throw std::invalid_argument(err);
   fluid_ = std::make_unique<fluid::FluidSolver2>(config.fluid);
-  body_ = std::make_unique<JellyfishBody>(buildBell(config.bell), config.activation,
-                                          config.fluid.density_kg_per_m3 * config.fluid.kinematic_viscosity_m2_per_s);
+  body_ = std::make_unique<JellyfishBody>(buildBell(config.bell), config.activation, config.fluid.dynamicViscosity_pa_s());
   coupling_ = std::make_unique<ib::ImmersedBoundary2>(*fluid_, *body_, placed(body_->model(), config),
                                                       couplingFor(body_->model(), config));
   initial_elastic_j_per_m_ = elasticEnergy_j_per_m();

@@ -170,7 +170,7 @@ double staticEquilibriumRatio(const JellyfishBody& body, double t_s) {
 // dt 0.01 s within 5e-3 of the static equilibrium, and by the end of the cycle the bell has re-opened.
 TEST(JellyfishSwim, MusclesContractTheBellToItsStaticEquilibriumAndItReopens) {
   const SwimmerConfig c = config(100, 0.3, 0.01);
-  const JellyfishBody body(buildBell(c.bell), c.activation, c.fluid.density_kg_per_m3 * c.fluid.kinematic_viscosity_m2_per_s);
+  const JellyfishBody body(buildBell(c.bell), c.activation, c.fluid.dynamicViscosity_pa_s());
   const double contracted_t = 0.3 / c.activation.contraction_hz;  // the default curve's 0.56 knot
   for (std::size_t m = 0; m < body.model().muscles.size(); ++m)
     ASSERT_NEAR(body.muscleFactor(static_cast<int>(m), contracted_t), 0.56, 1e-12);
