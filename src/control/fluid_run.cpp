@@ -100,6 +100,7 @@ std::vector<NamedValue> FluidRunRecorder::measure(int average_frames, double tol
       {"final_drag_n", "N", tailMean(common_.drag(0), tail)},
       {"final_drag_along_n", "N", tailMean(common_.dragAlong(0), tail)},
       {"final_effort_n_m_s", "N m s", tailMean(common_.effort(0), tail)},
+      {"final_derivative_per_rad", "1/rad", tailMean(*derivative_[0], tail)},
       {"max_servo_residual_rad", "rad", common_.maxResidualRad()},
       {"forcing_iterations_most", "", double(forcing_iterations_most)},
       {"markers", "", double(markers_.points)},

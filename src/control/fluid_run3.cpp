@@ -102,6 +102,7 @@ std::vector<NamedValue> FluidRunRecorder3::measure(int frames_per_cycle, int for
   return {
       {"mean_up_force_n", "N", lastCyclesMean(*body_fz_, frames_per_cycle, force_cycles)},
       {"mean_up_force_n_stderr", "N", lastCyclesStandardError(*body_fz_, frames_per_cycle, force_cycles)},
+      {"mean_derivative_per_rad", "1/rad", lastCyclesMean(*derivative_[0], frames_per_cycle, force_cycles)},
       {"max_servo_residual_rad", "rad", common_.maxResidualRad()},
       {"forcing_iterations_most", "", double(forcing_iterations_most)},
       {"markers", "", double(markers)},

@@ -52,6 +52,9 @@ ControlFluidKind::ControlFluidKind() {
       {"final_drag_along_n", "N", "the same along w (Eq. 10)"},
       {"final_effort_n_m_s", "N m s", "first controlled joint: mean effort (Eq. 1, |torque| x frame_s) over the last "
                                       "average_frames"},
+      {"final_derivative_per_rad", "1/rad",
+       "first controlled joint: mean of the controller's central difference of its objective (the objective's unit "
+       "per rad) over the last average_frames"},
       {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
       {"forcing_iterations_most", "", "most CG iterations of the projected forcing in any coupled step"},
       {"markers", "", "outline markers"},

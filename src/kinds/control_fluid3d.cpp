@@ -61,6 +61,8 @@ ControlFluid3dKind::ControlFluid3dKind() {
       {"mean_up_force_n", "N", "§7.1: the fluid's upward force on all bodies, mean over the last force_cycles flap periods"},
       {"mean_up_force_n_stderr", "N", "standard error of mean_up_force_n from the scatter of its force_cycles flaps' "
                                       "means (NaN with one flap)"},
+      {"mean_derivative_per_rad", "1/rad", "first controlled joint: the controller's central difference of its "
+                                          "objective (the objective's unit per rad), mean over the same flap periods"},
       {"max_servo_residual_rad", "rad", "largest servo miss before projection over the run"},
       {"forcing_iterations_most", "", "most CG iterations of the projected forcing in any coupled step"},
       {"markers", "", "surface and interior markers"},

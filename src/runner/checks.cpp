@@ -217,7 +217,9 @@ CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
     const std::string op = ratio ? " / " : " - ";
     const std::string what = (num_metric == den_metric ? c.metric + (ratio ? " ratio" : " difference")
                                                        : num_metric + op + den_metric) +
-                             (c.numerator_base.empty() && c.denominator_base.empty() ? "" : " (each relative to its base)");
+                             (c.numerator_base.empty() && c.denominator_base.empty() ? ""
+                              : c.base_difference                                  ? " (each less its base)"
+                                                                                   : " (each relative to its base)");
     CheckOutcome out = outcome(c, what + " in " + range(c.expect_lo, c.expect_hi));
     auto num = select(table, c.numerator, num_metric, problem);
     auto den = problem.empty() ? select(table, c.denominator, den_metric, problem) : std::vector<const Row*>{};
@@ -230,7 +232,8 @@ CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
                 std::to_string(den.size()) + ")";
       return out;
     }
-    // With a base selection a side is relative to another point: metric(side) / metric(base).
+    // With a base selection a side is relative to another point: metric(side) / metric(base), or
+    // metric(side) - metric(base) with base_relation = "difference".
     auto side = [&](const Row* row, const std::string& metric, const Where& base) {
       const double v = row->metrics.at(metric);
       if (base.empty()) return v;
@@ -239,7 +242,8 @@ CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
         if (problem.empty()) problem = "a base selection must select one point";
         return std::nan("");
       }
-      return v / b[0]->metrics.at(metric);
+      const double base_value = b[0]->metrics.at(metric);
+      return c.base_difference ? v - base_value : v / base_value;
     };
     const double n = side(num[0], num_metric, c.numerator_base);
     const double d = side(den[0], den_metric, c.denominator_base);

@@ -108,7 +108,7 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   static const std::vector<std::string> known = {"name",      "type",        "metric",           "axis",
                                                  "expect",    "direction",   "strict",           "where",
                                                  "numerator", "denominator", "numerator_metric", "denominator_metric",
-                                                 "numerator_base", "denominator_base", "known_deviation",
+                                                 "numerator_base", "denominator_base", "base_relation", "known_deviation",
                                                  "relative_to", "relative_metric", "uncertainty"};
   kinds::checkKeys(t, known, ctx, key);
   CheckSpec c;
@@ -164,6 +164,15 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
   c.denominator = parseWhere(t.get("denominator"), ctx, key + ".denominator");
   c.numerator_base = parseWhere(t.get("numerator_base"), ctx, key + ".numerator_base");
   c.denominator_base = parseWhere(t.get("denominator_base"), ctx, key + ".denominator_base");
+  if (t.contains("base_relation")) {
+    const std::string relation = t["base_relation"].value_or(std::string());
+    if (relation != "ratio" && relation != "difference")
+      ctx.fail(key + ".base_relation", "expected \"ratio\" or \"difference\"", t.get("base_relation"));
+    if (c.numerator_base.empty() && c.denominator_base.empty())
+      ctx.fail(key + ".base_relation", "belongs to a check with numerator_base or denominator_base",
+               t.get("base_relation"));
+    c.base_difference = relation == "difference";
+  }
   if ((c.type == "ratio" || c.type == "difference") && (c.numerator.empty() || c.denominator.empty()))
     ctx.fail(key, "a " + c.type + " check needs numerator = {...} and denominator = {...} point selections", &t);
   c.relative_to = parseWhere(t.get("relative_to"), ctx, key + ".relative_to");

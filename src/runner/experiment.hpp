@@ -52,7 +52,10 @@ struct CheckSpec {
   bool strict = true;                        // monotonic
   Where where, numerator, denominator;       // point selections
   std::string numerator_metric, denominator_metric;  // ratio: "" = metric
-  Where numerator_base, denominator_base;  // ratio: each side divided by its metric at this point
+  Where numerator_base, denominator_base;  // ratio, difference: each side relative to its metric at this point
+  // How a side is relative to its base: false, metric(side) / metric(base); true (base_relation =
+  // "difference"), metric(side) - metric(base), e.g. a finite-difference slope between two poses.
+  bool base_difference = false;
   // argmax/argmin: the expectation is on axis value / mean of relative_metric over the points
   // relative_to selects (e.g. a driven response's peak frequency over a pluck's natural_hz).
   Where relative_to;

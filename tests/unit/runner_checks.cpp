@@ -271,6 +271,33 @@ TEST(RunnerChecks, RatioAcrossMetricsEachRelativeToItsBase) {
   EXPECT_FALSE(runner::evaluateCheck(c, t).passed);
 }
 
+TEST(RunnerChecks, RatioOverADifferenceOfTwoPointsTakesTheSlopesSign) {
+  // A derivative (per rad) against the finite difference of a force between two poses 0.5 rad apart:
+  // 3 N/rad against 2.5 - 1 = 1.5 N gives 2 /rad; the same derivative against a falling force, -2.
+  Table t{{"case"}, {"force", "derivative"}, {}};
+  t.rows.push_back(row(0, {{"case", std::string("low")}}, {{"force", 1.0}, {"derivative", 0.0}}));
+  t.rows.push_back(row(1, {{"case", std::string("high")}}, {{"force", 2.5}, {"derivative", 0.0}}));
+  t.rows.push_back(row(2, {{"case", std::string("gradient")}}, {{"force", 0.0}, {"derivative", 3.0}}));
+  CheckSpec c = spec("ratio", "force");
+  c.numerator_metric = "derivative";
+  c.denominator_metric = "force";
+  c.numerator = {{"case", std::string("gradient")}};
+  c.denominator = {{"case", std::string("high")}};
+  c.denominator_base = {{"case", std::string("low")}};
+  c.expect_lo = 1.5;
+  c.expect_hi = 2.5;
+  EXPECT_FALSE(runner::evaluateCheck(c, t).passed);  // relative by ratio: 3 / (2.5 / 1) = 1.2
+  c.base_difference = true;
+  CheckOutcome o = runner::evaluateCheck(c, t);
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_EQ(o.got, "2");
+  EXPECT_TRUE(contains(o.expected, "each less its base")) << o.expected;
+  std::swap(c.denominator, c.denominator_base);  // the force falls from low to high
+  o = runner::evaluateCheck(c, t);
+  EXPECT_FALSE(o.passed);
+  EXPECT_EQ(o.got, "-2");
+}
+
 TEST(RunnerChecks, RatioSelectionsMustEachPickOnePoint) {
   CheckSpec c = spec("ratio", "max_abs_error_m");
   c.numerator = {{"integrator", std::string("rk4")}};  // two points

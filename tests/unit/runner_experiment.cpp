@@ -743,6 +743,21 @@ TEST(RunnerExperiment, UncertaintyNamesAMetricOfARangeRatioOrDifference) {
   EXPECT_NE(m.find("one metric's standard error"), std::string::npos) << m;
 }
 
+TEST(RunnerExperiment, BaseRelationIsRatioOrDifferenceBesideABase) {
+  const std::string ratio = "kind = \"oscillator\"\n[sweep]\ndt_s = [0.01, 0.02]\n[[check]]\nname = \"c\"\n"
+                            "type = \"ratio\"\nmetric = \"max_abs_error_m\"\nnumerator = { dt_s = 0.01 }\n"
+                            "denominator = { dt_s = 0.02 }\nexpect = [0, 1]\n";
+  const std::string based = ratio + "denominator_base = { dt_s = 0.01 }\n";
+  EXPECT_FALSE(load(based).checks[0].base_difference);
+  EXPECT_TRUE(load(based + "base_relation = \"difference\"\n").checks[0].base_difference);
+  EXPECT_FALSE(load(based + "base_relation = \"ratio\"\n").checks[0].base_difference);
+  std::string m = errorOf(based + "base_relation = \"minus\"\n");
+  EXPECT_NE(m.find("check[0].base_relation"), std::string::npos) << m;
+  EXPECT_NE(m.find("\"ratio\" or \"difference\""), std::string::npos) << m;
+  m = errorOf(ratio + "base_relation = \"difference\"\n");
+  EXPECT_NE(m.find("belongs to a check with numerator_base or denominator_base"), std::string::npos) << m;
+}
+
 // ---- input that should never start ----
 
 TEST(RunnerExperimentError, DuplicateCaseLabelsAreRefused) {
