@@ -165,6 +165,11 @@ FIGURES = [
            "The driven flyer's outer wing joints maximise drag on the down-stroke and minimise it on the "
            "up-stroke, and the flyer's animation closely matches that of many flying creatures (§7.1).",
            "flyer", None, None),
+    Figure("lentine", "§3.3, §4.3 (the flyer's derivative)",
+           "The steady-state calculation perturbs the pose, sets the velocities to zero and lets the flow respond "
+           "to the new configuration, so that the disturbances are swept downstream before the force is read "
+           "(§3.3, §4.3): the derivative then has the sign of the force's change between held poses.",
+           "flyer_gradient", "lentine_gradient", None),
     Figure("lentine", "Figs. 11-13 (3-D, without flesh)",
            "The same in the paper's own setting, a 3-D fluid: the controlled outer wing joints (bending, Fig. 13) "
            "against held ones, the fluid's mean upward force on the flyer over whole flaps (§7.1).",
