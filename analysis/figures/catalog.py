@@ -170,6 +170,10 @@ FIGURES = [
            "to the new configuration, so that the disturbances are swept downstream before the force is read "
            "(§3.3, §4.3): the derivative then has the sign of the force's change between held poses.",
            "flyer_gradient", "lentine_gradient", None),
+    Figure("lentine", "§3.3, §4.3 (the 3-D flyer's derivative)",
+           "The same steady-state calculation for the 3-D flyer with bending outer joints (§3.3, §4.3, §7.1): "
+           "the derivative against the force's change between held poses.",
+           "flyer3d_gradient", "lentine_gradient", None),
     Figure("lentine", "Figs. 11-13 (3-D, without flesh)",
            "The same in the paper's own setting, a 3-D fluid: the controlled outer wing joints (bending, Fig. 13) "
            "against held ones, the fluid's mean upward force on the flyer over whole flaps (§7.1).",
