@@ -132,7 +132,7 @@ CostEstimate ControlFluidKind::estimateCost(const Params& params) const {
     const ControllerSettings& k = q.controller;
     CostEstimate c;
     const double joints = double(splitList(k.controlled, ',').size());
-    const double per_frame = double(k.substeps) * (1 + 2 * joints) + 2 * joints * double(q.settle_steps);
+    const double per_frame = k.coupledStepsPerFrame(double(k.substeps + q.settle_steps));
     c.steps = double(k.frames) * per_frame + double(q.warmup_frames * k.substeps);
     const double cells = double(q.fluid.cells_x) * double(q.fluid.cells_x);
     const double fields = q.field_every_frames > 0 ? double(k.frames) / q.field_every_frames : 0;

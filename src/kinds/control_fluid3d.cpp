@@ -127,7 +127,7 @@ CostEstimate ControlFluid3dKind::estimateCost(const Params& params) const {
     const fluid3d::FluidParams3 f = q.fluidParams();
     CostEstimate c;
     const double joints = double(splitList(k.controlled, ',').size());
-    const double per_frame = double(k.substeps) * (1 + 2 * joints) + 2 * joints * double(q.settle_steps);
+    const double per_frame = k.coupledStepsPerFrame(double(k.substeps + q.settle_steps));
     c.steps = double(k.frames) * per_frame + double(q.warmup_frames * k.substeps);
     const double cells = double(f.cells_x) * f.cells_y * f.cells_z;
     // Stored fields: 6 x 8 B per cell (volume) or per cell of the y plane, every field_every frames.

@@ -120,7 +120,7 @@ CostEstimate ControlFluid3dSwimmerKind::estimateCost(const Params& params) const
     const fluid3d::FluidParams3 f = q.fluidParams();
     CostEstimate c;
     const double joints = double(splitList(k.controlled, ',').size());
-    const double per_frame = double(k.substeps) * (1 + 2 * joints) + 2 * joints * double(q.settle_steps);
+    const double per_frame = k.coupledStepsPerFrame(double(k.substeps + q.settle_steps));
     c.steps = double(k.frames) * per_frame + double(q.warmup_frames * k.substeps);
     const double cells = double(f.cells_x) * f.cells_y * f.cells_z;
     c.memory_bytes = 64.0 * (1 << 20) + (1 + 2 * joints) * cells * 8 * 24;

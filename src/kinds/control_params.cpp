@@ -146,6 +146,12 @@ control::ControllerParams ControllerSettings::controllerParams() const {
   return p;
 }
 
+double ControllerSettings::coupledStepsPerFrame(double steps_per_evaluation) const {
+  if (strength_rad_per_s <= 0) return double(substeps);
+  const double joints = double(splitList(controlled, ',').size());
+  return double(substeps) + 2 * joints * steps_per_evaluation / double(search_every_frames);
+}
+
 std::vector<InitialPose> ControllerSettings::initialPoses() const {
   std::vector<InitialPose> out;
   for (const auto& item : splitList(initial_deg, ',')) {

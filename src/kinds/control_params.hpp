@@ -127,6 +127,10 @@ struct ControllerSettings {
   rigid::RigidModel loadModel() const;
   // Every controller parameter but steady_state and servo_projection (the wind kind's own).
   control::ControllerParams controllerParams() const;
+  // A fluid run's coupled steps per frame, for the cost estimate: the frame's substeps, and every
+  // search_every_frames frames two evaluations per controlled joint of steps_per_evaluation each (none at
+  // strength 0, where the controller does not search).
+  double coupledStepsPerFrame(double steps_per_evaluation) const;
   // "joint=deg, ball=x y z"
   std::vector<InitialPose> initialPoses() const;
   // The initial poses checked against the model: each joint in it, not free, with as many angles as it

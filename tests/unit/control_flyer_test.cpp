@@ -2,7 +2,7 @@
 // controlled joints' sense follows the stroke of an inboard pattern, PD-driven wing joints flap in
 // the coupled step (FluidController::coupledStep: one servo substep per coupled step applies the
 // PD torques), strength 0 holds the controlled joints, the mean over whole cycles, bad stroke_sense
-// entries. The small simulations run a 32^2 fluid for a few frames (well under a second each).
+// entries, the cost estimate's coupled steps per frame. The small simulations run a 32^2 fluid for a few frames (well under a second each).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -60,6 +60,17 @@ TEST(StrokeSense, ParsesTheKindParameter) {
   EXPECT_THROW(kinds::parseStrokeSense("x = inner", {"a"}), std::invalid_argument);
   EXPECT_THROW(kinds::parseStrokeSense("a inner", {"a"}), std::invalid_argument);
   EXPECT_THROW(kinds::parseStrokeSense("a = -", {"a"}), std::invalid_argument);
+}
+
+TEST(CostEstimate, CountsTheSearchesCoupledSteps) {
+  kinds::ControllerSettings k;
+  k.controlled = "outer_r, outer_l";
+  k.substeps = 8;
+  EXPECT_EQ(k.coupledStepsPerFrame(264), 8 + 4 * 264);
+  k.search_every_frames = 16;
+  EXPECT_EQ(k.coupledStepsPerFrame(264), 8 + 4 * 264 / 16.0);
+  k.strength_rad_per_s = 0;  // no search: the frame's own steps
+  EXPECT_EQ(k.coupledStepsPerFrame(264), 8);
 }
 
 TEST(FlapCycles, MeanOverWholeCycles) {
