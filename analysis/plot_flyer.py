@@ -10,11 +10,12 @@ on all bodies against time. flyer_force.txt: per point the mean upward force ove
 force_cycles flap cycles, the standard deviation and standard error of its per-flap means, and its
 ratio to the held point of the same grid, step, advection, flaps and forcing tolerance (the
 experiment's check) with that ratio's standard error, and the reading of F_d its evaluations used.
-flyer_phase.png and flyer_phase.txt: per point of seven flaps or more, the force window's mean
-over the flap's phase (eight bins from the inner pattern's zero) of the inner and outer angles and
-the upward force, the upward force over the down-strokes and the up-strokes (the sense the
-controller followed), and how often a controlled joint turns back between frames: where the
-controller gains on and loses to the held wings.
+flyer_phase.png and flyer_phase.txt: per point of six flaps or more, the force window's mean
+over the flap's phase (eight bins from the inner pattern's zero) of the inner and outer angles, the
+upward force and the force's magnitude |F| (F_d, what the controller descends on), the upward force,
+|F| and its horizontal part over the down-strokes and the up-strokes (the sense the controller
+followed), and how often a controlled joint turns back between frames: where the controller gains
+on and loses to the held wings, and whether the |F| it gains is lift.
 flyer_vorticity.png: per point the vorticity with the bodies at the last flap's lowest and highest
 wing (Fig. 12 (a), (b) analogues; Fig. 11's animation is plot_control_fluid.py's frame series).
 The vorticity with the bodies and the frame series are plot_control_fluid.py's.
@@ -163,9 +164,19 @@ def force_table(points, path):
 PHASE_BINS = 8
 
 
+def force_parts(ts, w):
+    """The fluid's force on all bodies over the window: upward, magnitude, and horizontal magnitude
+    (x, and y in 3-D)."""
+    up = ts["force_z_n_bodies"][w]
+    horizontal = np.hypot(ts["force_x_n_bodies"][w],
+                          ts["force_y_n_bodies"][w] if "force_y_n_bodies" in ts else 0.0)
+    return up, np.hypot(up, horizontal), horizontal
+
+
 def phase_profile(f):
     """Phase bins' means over the force window: inner angle, outer angle (the controlled joints'
-    mean), upward force; and the upward force over down- and up-strokes (sense > 0: down)."""
+    mean), upward force, |F|; and the upward force, |F| and its horizontal part over down- and
+    up-strokes (sense > 0: down)."""
     ts, w = f["timeseries"], force_window(f)
     joints = [j.strip() for j in text(f, "controlled").split(",")]
     inner = next(k for k in ts if k.startswith("pd_angle_deg_"))
@@ -173,7 +184,7 @@ def phase_profile(f):
     phase = np.floor((t % float(f.attrs["flap_period_s"])) / float(f.attrs["flap_period_s"]) * PHASE_BINS)
     phase = np.minimum(phase.astype(int), PHASE_BINS - 1)
     outer = np.mean([ts[f"angle_deg_{j}"][w] for j in joints], axis=0)
-    force = ts["force_z_n_bodies"][w]
+    force, magnitude, horizontal = force_parts(ts, w)
     down = ts[f"sense_{joints[0]}"][w] > 0
     bins = [phase == b for b in range(PHASE_BINS)]
     # How often a controlled joint turns back from one frame to the next (the sign-only strength step).
@@ -182,39 +193,49 @@ def phase_profile(f):
     reversals = float(np.mean(np.sign(moving[1:]) != np.sign(moving[:-1]))) if len(moving) > 1 else 0.0
     return {"reversals": reversals, "inner": [ts[inner][w][m].mean() for m in bins],
             "outer": [outer[m].mean() for m in bins], "force": [force[m].mean() for m in bins],
-            "down": force[down].mean(), "up": force[~down].mean()}
+            "magnitude": [magnitude[m].mean() for m in bins],
+            "down": force[down].mean(), "up": force[~down].mean(),
+            "down_abs": magnitude[down].mean(), "up_abs": magnitude[~down].mean(),
+            "down_horizontal": horizontal[down].mean(), "up_horizontal": horizontal[~down].mean()}
 
 
 def phase_outputs(points, png, path):
     """flyer_phase.png and .txt (the module's docstring) for the points of seven flaps or more."""
-    long = [f for f in points if int(f.attrs["force_cycles"]) >= 7 and force_window(f) is not None]
+    # six flaps: the 3-D claims' window; a QUICK run's two are too few for phase means
+    long = [f for f in points if int(f.attrs["force_cycles"]) >= 6 and force_window(f) is not None]
     if not long:
         return
     held = held_references(long)
     centres = (np.arange(PHASE_BINS) + 0.5) / PHASE_BINS
-    fig, axes = style.subplots(2, 1, height=7, sharex=True)
+    fig, axes = style.subplots(3, 1, height=10, sharex=True)
     with open(path, "w") as out:
         out.write("Phase means over each point's force window (phase 0: the inner pattern's zero, rising = "
                   "turning the wings down); the stroke split follows the sense the controller followed.\n")
-        out.write(f"{'label':36s} {'setting':71s} down_force_n  up_force_n  (held: down, up)  reversals  "
+        out.write(f"{'label':36s} {'setting':71s} down_force_n  up_force_n  (held: down, up)  "
+                  f"down_abs_n  up_abs_n  (held: down, up)  down_horizontal_n  up_horizontal_n  reversals  "
                   f"outer_deg by phase bin / force_n by phase bin\n")
         for f in long:
             prof = phase_profile(f)
             ref = held.get(window(f))
             ref_prof = phase_profile(ref) if ref is not None else None
             versus = f"({ref_prof['down']:6.2f}, {ref_prof['up']:6.2f})" if ref_prof else "(-, -)"
+            versus_abs = f"({ref_prof['down_abs']:6.2f}, {ref_prof['up_abs']:6.2f})" if ref_prof else "(-, -)"
             out.write(f"{text(f, 'label'):36s} {window(f):71s} {prof['down']:12.3f}  {prof['up']:10.3f}  "
-                      f"{versus:16s}  {prof['reversals']:9.2f}  " + " ".join(f"{a:6.1f}" for a in prof["outer"])
+                      f"{versus:16s}  {prof['down_abs']:10.3f}  {prof['up_abs']:8.3f}  {versus_abs:16s}  "
+                      f"{prof['down_horizontal']:17.3f}  {prof['up_horizontal']:15.3f}  "
+                      f"{prof['reversals']:9.2f}  " + " ".join(f"{a:6.1f}" for a in prof["outer"])
                       + " / " + " ".join(f"{x:6.2f}" for x in prof["force"]) + "\n")
             name = f"{text(f, 'label')} ({resolution(f)})"
             line, = axes[1].plot(centres, prof["force"], marker="o", ms=3, lw=1, label=name)
             axes[0].plot(centres, prof["outer"], marker="o", ms=3, lw=1, color=line.get_color(),
                          label=f"{name}: outer")
+            axes[2].plot(centres, prof["magnitude"], marker="o", ms=3, lw=1, color=line.get_color(), label=name)
     inner = phase_profile(long[0])["inner"]
     axes[0].plot(centres, inner, color="k", ls=":", lw=1, label="inner (PD), first point")
     axes[0].set_ylabel("angle (deg; + turns the wing down)")
     axes[1].set_ylabel("fluid's upward force on all bodies (N)")
-    axes[1].set_xlabel("phase of the flap")
+    axes[2].set_ylabel("|F| on all bodies (N; F_d, the objective)")
+    axes[2].set_xlabel("phase of the flap")
     for ax in axes:
         ax.legend(fontsize=9, ncol=2)
     fig.suptitle("the driven flyer over a flap: phase means over the force window (§7.1)")
