@@ -20,7 +20,10 @@ void push(std::vector<Triangle>& out, const Triangle& t) {
 }
 
 // A solid of revolution about z: rings (radius, z) from the bottom pole to the top, `slices`
-// points each; quads between rings split in two, counter-clockwise seen from outside.
+// points each; quads between rings split in two, counter-clockwise seen from outside. The diagonal
+// alternates between the quadrants of the angle and between z < 0 and z > 0, so that with slices a
+// multiple of 4 the triangles are mirror images across x = 0, y = 0 and (for a profile symmetric in
+// z) z = 0, as the solid is.
 std::vector<Triangle> revolve(const std::vector<std::pair<double, double>>& profile, int slices, const Vec3& scale) {
   std::vector<Triangle> out;
   auto point = [&](int k, int j) {
@@ -31,8 +34,15 @@ std::vector<Triangle> revolve(const std::vector<std::pair<double, double>>& prof
   for (int k = 0; k + 1 < int(profile.size()); ++k)
     for (int j = 0; j < slices; ++j) {
       const Vec3 a = point(k, j), b = point(k, j + 1), c = point(k + 1, j + 1), d = point(k + 1, j);
-      push(out, {a, b, c});
-      push(out, {a, c, d});
+      const int quadrant = (4 * j + 2) / slices;  // of the quad's middle angle
+      const int upper = profile[k].second + profile[k + 1].second > 0 ? 1 : 0;
+      if ((quadrant + upper) % 2 == 0) {
+        push(out, {a, b, c});
+        push(out, {a, c, d});
+      } else {
+        push(out, {a, b, d});
+        push(out, {b, c, d});
+      }
     }
   return out;
 }
@@ -66,11 +76,15 @@ std::vector<Triangle> box(const double* s) {
         p[v] = sv * s[v];
         return p;
       };
-      // e_u x e_v = e_a: counter-clockwise in (u, v) faces +a; reversed on the -a face.
+      // e_u x e_v = e_a: counter-clockwise in (u, v) faces +a; reversed on the -a face. Four
+      // triangles about the face's centre, so that the face is its own mirror image across u = 0 and v = 0.
       Vec3 p00 = corner(-1, -1), p10 = corner(1, -1), p11 = corner(1, 1), p01 = corner(-1, 1);
       if (sign < 0) std::swap(p10, p01);
-      out.push_back({p00, p10, p11});
-      out.push_back({p00, p11, p01});
+      const Vec3 centre = corner(0, 0);
+      out.push_back({centre, p00, p10});
+      out.push_back({centre, p10, p11});
+      out.push_back({centre, p11, p01});
+      out.push_back({centre, p01, p00});
     }
   return out;
 }

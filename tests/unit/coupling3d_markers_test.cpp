@@ -67,6 +67,39 @@ TEST_F(SurfaceMarkers3Test, CoverTheSurfacesAtTheSpacing) {
   EXPECT_LE(largestGap(m, 1), spacing);
 }
 
+// A solid's mirror symmetries hold for its markers (geom_surface.hpp): across x = 0, y = 0 and z = 0
+// for the box, the sphere and the ellipsoid, across x = 0 and y = 0 for the cylinder and the capsule
+// (their side quads straddle z = 0). Each marker's mirror image is a marker of the same area, so a
+// mirror-symmetric creature in a mirror-symmetric flow feels no sideways force.
+TEST_F(SurfaceMarkers3Test, AreTheirGeomsMirrorImages) {
+  const auto model = testing::loadScene(dir_, "mirror",
+                                        "<geom type=\"box\" size=\"0.25 0.15 0.02\" pos=\"0.5 0.5 0.5\"/>"
+                                        "<geom type=\"sphere\" size=\"0.1\" pos=\"0.2 0.5 0.5\"/>"
+                                        "<geom type=\"ellipsoid\" size=\"0.15 0.15 0.1\" pos=\"0.5 0.2 0.5\"/>"
+                                        "<geom type=\"cylinder\" size=\"0.05 0.1\" pos=\"0.5 0.8 0.5\"/>"
+                                        "<geom type=\"capsule\" size=\"0.05 0.1\" pos=\"0.8 0.5 0.5\"/>",
+                                        0.01);
+  const std::vector<SurfaceMarker3> m = modelSurfaceMarkers(model, 0.03);
+  for (int geom = 0; geom < 5; ++geom)
+    for (int axis = 0; axis < (geom < 3 ? 3 : 2); ++axis) {
+      int unmatched = 0, markers = 0;
+      for (const SurfaceMarker3& k : m) {
+        if (k.geom != geom) continue;
+        ++markers;
+        Vec3 image = k.local_m;
+        image[axis] = -image[axis];
+        bool found = false;
+        for (const SurfaceMarker3& q : m)
+          if (q.geom == geom && std::abs(q.area_m2 - k.area_m2) <= 1e-12 * k.area_m2 &&
+              std::hypot(q.local_m[0] - image[0], q.local_m[1] - image[1], q.local_m[2] - image[2]) < 1e-12)
+            found = true;
+        unmatched += found ? 0 : 1;
+      }
+      EXPECT_GT(markers, 20) << "geom " << geom;
+      EXPECT_EQ(unmatched, 0) << "geom " << geom << ": markers without a mirror image across axis " << axis;
+    }
+}
+
 // Interior markers: on the lattice, at least the margin inside, filling the inner volume.
 TEST_F(SurfaceMarkers3Test, InteriorMarkersFillTheInside) {
   const auto model = testing::loadScene(dir_, "scene",
