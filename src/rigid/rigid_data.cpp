@@ -51,8 +51,15 @@ const double* RigidData::appliedForces() const { return data_->qfrc_applied; }
 const double* RigidData::acceleration() const { return data_->qacc; }
 
 void RigidData::kinematics() {
-  mj_fwdPosition(model_->raw(), data_.get());
-  mj_fwdVelocity(model_->raw(), data_.get());
+  // mj_fwdPosition normalises the quaternions in qpos in place, which is not idempotent in floating
+  // point: the state is put back as it was, so that restore() then kinematics() gives bitwise the
+  // saved state (mj_step normalises at its start either way).
+  const mjModel* m = model_->raw();
+  mjData* d = data_.get();
+  qpos_scratch_.assign(d->qpos, d->qpos + m->nq);
+  mj_fwdPosition(m, d);
+  mj_fwdVelocity(m, d);
+  mju_copy(d->qpos, qpos_scratch_.data(), m->nq);
 }
 
 void RigidData::freezeShape() {

@@ -49,7 +49,8 @@ class RigidData {
   const double* appliedForces() const;
   const double* acceleration() const;  // qacc of the last forward/step
 
-  // Stage: positions and velocities of bodies and geoms from qpos, qvel (no dynamics).
+  // Stage: positions and velocities of bodies and geoms from qpos, qvel (no dynamics); qpos itself
+  // is left bit for bit as it was.
   void kinematics();
   // Lentine et al. 2010 §3.3: the creature's shape
   // frozen, i.e. every relative joint velocity set to zero, "treating the entire creature ... as a
@@ -102,6 +103,7 @@ class RigidData {
   };
   const RigidModel* model_;
   std::unique_ptr<mjData_, Deleter> data_;
+  std::vector<double> qpos_scratch_;  // kinematics(): qpos before MuJoCo normalises it
 };
 
 }  // namespace creaturelab::rigid
