@@ -4,8 +4,9 @@
 // "each triangle of the mesh". A box face is four triangles about its centre; spheres, capsules,
 // ellipsoids and cylinders are tessellated on a latitude-longitude grid of their profile; mesh geoms
 // use their own faces. Boxes and round geoms (slices a multiple of 4) are tessellated with the mirror
-// symmetries of the solid, so a mirror-symmetric creature gets mirror-image markers and forces. Triangles are ordered counter-clockwise seen from outside: (b - a) x (c - a) is the
-// outward normal times twice the area.
+// symmetries of the solid, so a mirror-symmetric creature gets mirror-image markers and forces.
+// Triangles are ordered counter-clockwise seen from outside: (b - a) x (c - a) is the outward normal
+// times twice the area.
 #include <vector>
 
 #include "rigid/rigid_model.hpp"
