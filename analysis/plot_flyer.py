@@ -200,7 +200,7 @@ def phase_profile(f):
 
 
 def phase_outputs(points, png, path):
-    """flyer_phase.png and .txt (the module's docstring) for the points of seven flaps or more."""
+    """flyer_phase.png and .txt (the module's docstring) for the points of six flaps or more."""
     # six flaps: the 3-D claims' window; a QUICK run's two are too few for phase means
     long = [f for f in points if int(f.attrs["force_cycles"]) >= 6 and force_window(f) is not None]
     if not long:
