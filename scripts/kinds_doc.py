@@ -12,7 +12,7 @@ import sys
 
 KIND = re.compile(r"^(\w+): (.*)$")
 PARAM = re.compile(r'^  (\S+)\s+(.+?)\s+default ("[^"]*"|\S+)\s+range '
-                   r'(\[[^\]]*\](?: or "auto")?|"[^"]*"(?: \| "[^"]*")*|\S+)\s*(.*)$')
+                   r'(\[[^\]]*\](?: or "auto")?|"[^"]*"(?: \| "[^"]*")*|true \| false|\S+)\s*(.*)$')
 METRIC = re.compile(r"^  (\S+)\s+(\S+(?: \S+)*?)(?:\s{2,}|$)(.*)$")
 
 
