@@ -123,33 +123,37 @@ def expected_text(expected, unit, like=()):
     return _with_unit(f"{m.group(1)}[{a}, {b}]", u)
 
 
-_SE = re.compile(rf"(.*?) \+- ({NUMBER}|nan|inf)(?: \(2 s\.e\.: \[({NUMBER}), ({NUMBER})\]\))?")
+_SE = re.compile(rf"(.*?) \+- ({NUMBER}|nan|inf)"
+                 rf"(?: \((2 s\.e\.|95%, {NUMBER} dof): \[({NUMBER}), ({NUMBER})\]\)| \((no interval: .*? dof)\))?")
 _SE_MOST = re.compile(rf"(.*), standard errors up to ({NUMBER}|nan|inf)")
 
 
-def with_error(value, se, unit, interval=None):
+def with_error(value, se, unit, interval=None, basis="2 s.e."):
     """"1.024 ± 0.012 N": the value to the standard error's second digit, the error to two; the
-    runner's 2-standard-error interval after it when given."""
+    runner's interval after it when given, with its basis ("95%, 5 dof", or "2 s.e." from runs
+    judged before the Student-t interval), or the basis alone when it has no interval."""
     scale, u = prefix_for([value], unit)
     d = digits_for(value, se) + 1 if math.isfinite(se) and se > 0 else 3
     err = number(se / scale, 2) if math.isfinite(se) else str(se)
     out = _with_unit(f"{number(value / scale, d)} ± {err}", u)
     if interval:
         lo, hi = (number(x / scale, d) for x in interval)
-        out += " (2 s.e.: " + _with_unit(f"[{lo}, {hi}]", u) + ")"
+        out += f" ({basis}: " + _with_unit(f"[{lo}, {hi}]", u) + ")"
+    elif basis.startswith("no interval"):
+        out += f" ({basis})"
     return out
 
 
 def got_text(got, unit, units, uncertainty=None, window=None):
     """A check's measured text with units: one value, "[lo, hi] over N points", a list (monotonic
     checks), "name=value" pairs whose names are sweep columns (argmax, argmin), each perhaps with the
-    runner's standard error ("v +- s (2 s.e.: [a, b])", "..., standard errors up to s"). With the
+    runner's standard error ("v +- s (95%, 5 dof: [a, b])", "..., standard errors up to s"). With the
     check's window (lo, hi), one value keeps the digits that put it on its own side of the bounds."""
     g = got.strip()
     m = _SE.fullmatch(g)
     if m and re.fullmatch(NUMBER, m.group(1).strip()):
-        interval = (float(m.group(3)), float(m.group(4))) if m.group(3) else None
-        return with_error(float(m.group(1)), float(m.group(2)), unit, interval)
+        interval = (float(m.group(4)), float(m.group(5))) if m.group(4) else None
+        return with_error(float(m.group(1)), float(m.group(2)), unit, interval, m.group(3) or m.group(6) or "")
     m = _SE_MOST.fullmatch(g)
     if m:
         most = float(m.group(2))

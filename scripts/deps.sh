@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libceres-dev libhdf5-dev hdf5-tools
   libbenchmark-dev libbenchmark-tools libgtest-dev libgmock-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+  libboost-dev  # Boost.Math's Student-t quantile (header-only) for the checks' intervals
   libopenmpi-dev openmpi-bin
   zlib1g-dev
   libtinygltf-dev povray povray-includes

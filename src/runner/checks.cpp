@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <sstream>
 #include <utility>
+#include <variant>
+
+#include <boost/math/distributions/students_t.hpp>
 
 #include "core/text.hpp"
 
@@ -108,14 +111,27 @@ double standardError(const Row& row, const std::string& metric) {
   return it == row.metrics.end() ? std::nan("") : it->second;
 }
 
-// Sets the outcome's verdict and appends " +- s" (s the standard error) to its got text.
-void judge(CheckOutcome& out, const CheckSpec& c, double value, double standard_error) {
-  const Verdict v = intervalVerdict(value, standard_error, c.expect_lo, c.expect_hi);
+// A row's degrees of freedom: its samples parameter less one; NaN when the row has no such column.
+double degreesOfFreedom(const Row& row, const std::string& samples) {
+  auto it = row.columns.find(samples);
+  if (it == row.columns.end()) return std::nan("");
+  if (const auto* n = std::get_if<std::int64_t>(&it->second)) return double(*n) - 1;
+  return std::nan("");
+}
+
+// Sets the outcome's verdict and appends " +- s" (s the standard error) and the 95% interval to its got text.
+void judge(CheckOutcome& out, const CheckSpec& c, double value, double standard_error, double dof) {
+  const Verdict v = intervalVerdict(value, standard_error, dof, c.expect_lo, c.expect_hi);
   out.passed = v == Verdict::pass;
   out.inconclusive = v == Verdict::inconclusive;
   out.got += " +- " + formatNumber(standard_error);
-  if (out.inconclusive && std::isfinite(standard_error))
-    out.got += " (2 s.e.: " + range(value - 2 * standard_error, value + 2 * standard_error) + ")";
+  const double half = intervalHalfWidth(standard_error, dof);
+  if (!std::isfinite(standard_error)) return;
+  const std::string dof_text = formatNumber(std::round(dof * 10) / 10) + " dof";
+  if (std::isfinite(half))
+    out.got += " (95%, " + dof_text + ": " + range(value - half, value + half) + ")";
+  else
+    out.got += " (no interval: " + dof_text + ")";
 }
 
 CheckOutcome inRange(const CheckSpec& c, const std::vector<const Row*>& rows) {
@@ -129,7 +145,7 @@ CheckOutcome inRange(const CheckSpec& c, const std::vector<const Row*>& rows) {
   out.passed = lo >= c.expect_lo && hi <= c.expect_hi;
   if (c.uncertainty.empty()) return out;
   if (rows.size() == 1) {
-    judge(out, c, lo, standardError(*rows.front(), c.uncertainty));
+    judge(out, c, lo, standardError(*rows.front(), c.uncertainty), degreesOfFreedom(*rows.front(), c.samples));
     return out;
   }
   // Over several points: every interval inside passes, any wholly outside fails, else inconclusive.
@@ -138,7 +154,7 @@ CheckOutcome inRange(const CheckSpec& c, const std::vector<const Row*>& rows) {
   for (const Row* r : rows) {
     const double s = standardError(*r, c.uncertainty);
     most = std::isfinite(s) && std::isfinite(most) ? std::max(most, s) : std::nan("");
-    const Verdict v = intervalVerdict(r->metrics.at(c.metric), s, c.expect_lo, c.expect_hi);
+    const Verdict v = intervalVerdict(r->metrics.at(c.metric), s, degreesOfFreedom(*r, c.samples), c.expect_lo, c.expect_hi);
     any_fail = any_fail || v == Verdict::fail;
     all_pass = all_pass && v == Verdict::pass;
   }
@@ -196,10 +212,26 @@ CheckOutcome order(const CheckSpec& c, const std::vector<const Row*>& rows) {
 
 }  // namespace
 
-Verdict intervalVerdict(double value, double standard_error, double lo, double hi) {
+double intervalHalfWidth(double standard_error, double dof) {
+  if (!std::isfinite(standard_error) || standard_error < 0) return std::nan("");
+  if (standard_error == 0) return 0;
+  if (!(dof > 0) || !std::isfinite(dof)) return std::nan("");
+  const boost::math::students_t_distribution<double> t(dof);
+  return boost::math::quantile(boost::math::complement(t, 0.025)) * standard_error;
+}
+
+double welchDegreesOfFreedom(double error_a, double dof_a, double error_b, double dof_b) {
+  const double a2 = error_a * error_a, b2 = error_b * error_b;
+  if (a2 == 0) return dof_b;
+  if (b2 == 0) return dof_a;
+  return (a2 + b2) * (a2 + b2) / (a2 * a2 / dof_a + b2 * b2 / dof_b);
+}
+
+Verdict intervalVerdict(double value, double standard_error, double dof, double lo, double hi) {
   if (!std::isfinite(value)) return Verdict::fail;
-  if (!std::isfinite(standard_error) || standard_error < 0) return Verdict::inconclusive;
-  const double a = value - 2 * standard_error, b = value + 2 * standard_error;
+  const double half = intervalHalfWidth(standard_error, dof);
+  if (!std::isfinite(half)) return Verdict::inconclusive;
+  const double a = value - half, b = value + half;
   if (a >= lo && b <= hi) return Verdict::pass;
   if (b < lo || a > hi) return Verdict::fail;
   return Verdict::inconclusive;
@@ -255,9 +287,13 @@ CheckOutcome evaluateOne(const CheckSpec& c, const Table& table) {
     out.got = formatNumber(r);
     out.passed = std::isfinite(r) && r >= c.expect_lo && r <= c.expect_hi;
     if (!c.uncertainty.empty()) {
-      // Independent sides: a ratio's relative errors and a difference's errors add in quadrature.
+      // Independent sides: a ratio's relative errors and a difference's errors add in quadrature, their
+      // degrees of freedom by Welch and Satterthwaite.
       const double sn = standardError(*num[0], c.uncertainty), sd = standardError(*den[0], c.uncertainty);
-      judge(out, c, r, ratio ? std::abs(r) * std::hypot(sn / n, sd / d) : std::hypot(sn, sd));
+      const double en = ratio ? sn / n : sn, ed = ratio ? sd / d : sd;
+      const double dof = welchDegreesOfFreedom(en, degreesOfFreedom(*num[0], c.samples), ed,
+                                               degreesOfFreedom(*den[0], c.samples));
+      judge(out, c, r, ratio ? std::abs(r) * std::hypot(en, ed) : std::hypot(en, ed), dof);
     }
     return out;
   }
@@ -355,7 +391,7 @@ std::string formatCheckTable(const std::vector<CheckOutcome>& outcomes) {
   }
   for (const auto& o : outcomes)
     if (o.inconclusive)
-      s << "inconclusive: '" << o.name << "': its value +- 2 standard errors holds a bound of " << o.expected
+      s << "inconclusive: '" << o.name << "': its value's 95% interval holds a bound of " << o.expected
         << " (not counted in the exit code; a longer run decides)\n";
   for (const auto& o : outcomes) {
     if (o.known_deviation.empty() || o.inconclusive) continue;

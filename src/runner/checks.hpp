@@ -18,18 +18,23 @@ struct CheckOutcome {
   std::string got;
   bool passed = false;
   std::string known_deviation;  // from the spec: a failure is expected and does not fail the run
-  // With the spec's uncertainty: value +- 2 standard errors holds a bound of the window, so the run
+  // With the spec's uncertainty: the value's 95% interval holds a bound of the window, so the run
   // decides nothing (passed is false; the exit code is as for a pass).
   bool inconclusive = false;
   // true when it does not fail the run
   bool counts() const { return passed || inconclusive || !known_deviation.empty(); }
 };
 
-// A value with a standard error against the window [lo, hi]: the interval value +- 2 standard errors
-// wholly inside passes, wholly outside fails, one that holds a bound (or a standard error that is not
-// a finite number >= 0) is inconclusive.
+// The half-width of a two-sided 95% Student-t interval: t(0.975, dof) x standard_error; 0 for a zero
+// standard error, NaN when the error is not a finite number >= 0 or dof is not > 0 (one sample).
+double intervalHalfWidth(double standard_error, double dof);
+// Welch-Satterthwaite: the degrees of freedom of the quadrature sum of two independent errors.
+double welchDegreesOfFreedom(double error_a, double dof_a, double error_b, double dof_b);
+// A value with a standard error and its degrees of freedom against the window [lo, hi]: the 95% interval
+// (intervalHalfWidth) wholly inside passes, wholly outside fails, one that holds a bound (or no interval)
+// is inconclusive.
 enum class Verdict { pass, fail, inconclusive };
-Verdict intervalVerdict(double value, double standard_error, double lo, double hi);
+Verdict intervalVerdict(double value, double standard_error, double dof, double lo, double hi);
 
 CheckOutcome evaluateCheck(const CheckSpec& check, const Table& table);
 std::vector<CheckOutcome> evaluateChecks(const std::vector<CheckSpec>& checks, const Table& table);

@@ -109,7 +109,7 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
                                                  "expect",    "direction",   "strict",           "where",
                                                  "numerator", "denominator", "numerator_metric", "denominator_metric",
                                                  "numerator_base", "denominator_base", "base_relation", "known_deviation",
-                                                 "relative_to", "relative_metric", "uncertainty"};
+                                                 "relative_to", "relative_metric", "uncertainty", "samples"};
   kinds::checkKeys(t, known, ctx, key);
   CheckSpec c;
   c.name = t["name"].value_or(std::string());
@@ -196,6 +196,25 @@ CheckSpec parseCheck(const toml::table& t, int n, const kinds::Kind& kind, const
         !c.denominator_base.empty())
       ctx.fail(key + ".uncertainty", "is one metric's standard error: not with numerator_metric, denominator_metric "
                                      "or a *_base selection", u);
+    if (!t.contains("samples"))
+      ctx.fail(key, "uncertainty needs samples = \"<parameter>\": the integer parameter counting the samples "
+                    "behind each point's standard error (its degrees of freedom)", &t);
+  }
+  if (t.contains("samples")) {
+    c.samples = t["samples"].value_or(std::string());
+    const toml::node* s = t.get("samples");
+    if (!t.contains("uncertainty")) ctx.fail(key + ".samples", "belongs to a check with uncertainty", s);
+    const auto& params = kind.params();
+    auto spec = std::find_if(params.begin(), params.end(), [&](const kinds::ParamSpec& p) { return p.name == c.samples; });
+    if (spec == params.end() || spec->type != kinds::ParamType::Integer) {
+      std::vector<std::string> integers;
+      for (const auto& p : params)
+        if (p.type == kinds::ParamType::Integer) integers.push_back(p.name);
+      ctx.fail(key + ".samples", "expected the name of an integer parameter of kind '" + kind.name() +
+                                     "' counting each point's samples; '" + c.samples + "' is not one" +
+                                     core::didYouMean(c.samples, integers),
+               s);
+    }
   }
   return c;
 }
@@ -437,6 +456,9 @@ std::vector<std::string> sweepColumns(const Experiment& experiment) {
     for (const auto& k : c.keys)
       if (std::find(cols.begin(), cols.end(), k) == cols.end()) cols.push_back(k);
   for (const auto& a : experiment.axes) cols.push_back(a.name);
+  // The checks' sample counts, so that a check can be judged again from the table alone.
+  for (const auto& c : experiment.checks)
+    if (!c.samples.empty() && std::find(cols.begin(), cols.end(), c.samples) == cols.end()) cols.push_back(c.samples);
   return cols;
 }
 

@@ -64,9 +64,13 @@ struct CheckSpec {
   // mechanism). The check is still evaluated and printed (KNOWN instead of FAIL) but a failure
   // does not change the exit code; if it passes the table says so.
   std::string known_deviation;
-  // range, ratio, difference: the metric holding each point's standard error of `metric`; the value
-  // +- 2 standard errors (propagated through the ratio or difference) decides pass, fail or inconclusive.
+  // range, ratio, difference: the metric holding each point's standard error of `metric`; the value's 95%
+  // Student-t interval (the error propagated through the ratio or difference, Welch's degrees of freedom)
+  // decides pass, fail or inconclusive.
   std::string uncertainty;
+  // With uncertainty: the integer parameter counting the independent samples behind each point's standard
+  // error (n; n - 1 degrees of freedom), e.g. the flaps whose means it is the scatter of.
+  std::string samples;
 };
 
 struct OutputOptions {
@@ -106,7 +110,8 @@ struct Point {
   Params params;       // every parameter of the kind, resolved
 };
 
-// The /sweep columns: case keys (first appearance order), then sweep axes.
+// The /sweep columns: case keys (first appearance order), then sweep axes, then the checks' samples
+// parameters.
 std::vector<std::string> sweepColumns(const Experiment& experiment);
 
 // Expands and validates every point (ranges, the kind's cross checks). Throws ExperimentError.

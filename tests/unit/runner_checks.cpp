@@ -563,31 +563,60 @@ TEST(RunnerChecks, AnOrdinaryFailureStillCounts) {
   EXPECT_TRUE(contains(runner::formatCheckTable({o}), "FAIL")) << o.got;
 }
 
-// ---- uncertainty: value +- 2 standard errors decides pass, fail or inconclusive ----
+// ---- uncertainty: the value's 95% Student-t interval decides pass, fail or inconclusive ----
+
+TEST(RunnerChecks, IntervalHalfWidthIsStudentsT) {
+  // t(0.975) from the tables: 12.706 at 1 dof, 2.571 at 5, 2.228 at 10, 1.960 for many.
+  EXPECT_NEAR(runner::intervalHalfWidth(1.0, 1), 12.7062, 1e-4);
+  EXPECT_NEAR(runner::intervalHalfWidth(1.0, 5), 2.5706, 1e-4);
+  EXPECT_NEAR(runner::intervalHalfWidth(0.5, 10), 0.5 * 2.2281, 1e-4);
+  EXPECT_NEAR(runner::intervalHalfWidth(1.0, 1e6), 1.9600, 1e-4);
+  EXPECT_EQ(runner::intervalHalfWidth(0.0, std::nan("")), 0.0);  // no scatter: no interval needed
+  EXPECT_TRUE(std::isnan(runner::intervalHalfWidth(1.0, 0)));    // one sample: no spread to judge by
+  EXPECT_TRUE(std::isnan(runner::intervalHalfWidth(1.0, std::nan(""))));
+  EXPECT_TRUE(std::isnan(runner::intervalHalfWidth(-1.0, 5)));
+}
+
+TEST(RunnerChecks, WelchDegreesOfFreedom) {
+  EXPECT_DOUBLE_EQ(runner::welchDegreesOfFreedom(1, 5, 1, 5), 10);       // equal errors: the sum of both
+  EXPECT_DOUBLE_EQ(runner::welchDegreesOfFreedom(1, 5, 2, 5), 25 / 3.4);  // the larger error dominates
+  EXPECT_DOUBLE_EQ(runner::welchDegreesOfFreedom(1, 5, 0, 1), 5);         // an exact side adds nothing
+  EXPECT_DOUBLE_EQ(runner::welchDegreesOfFreedom(-1, 5, 1, 5), 10);
+}
 
 TEST(RunnerChecks, IntervalVerdictAgainstAWindow) {
   using runner::Verdict;
-  EXPECT_EQ(runner::intervalVerdict(1.5, 0.1, 1.0, 2.0), Verdict::pass);    // [1.3, 1.7] inside
-  EXPECT_EQ(runner::intervalVerdict(1.1, 0.05, 1.0, 2.0), Verdict::pass);   // [1.0, 1.2]: bounds inclusive
-  EXPECT_EQ(runner::intervalVerdict(1.1, 0.06, 1.0, 2.0), Verdict::inconclusive);  // [0.98, 1.22] holds 1
-  EXPECT_EQ(runner::intervalVerdict(1.9, 0.1, 1.0, 2.0), Verdict::inconclusive);   // holds 2
-  EXPECT_EQ(runner::intervalVerdict(0.9, 0.1, 1.0, 2.0), Verdict::inconclusive);   // below, but [0.7, 1.1] holds 1
-  EXPECT_EQ(runner::intervalVerdict(0.7, 0.1, 1.0, 2.0), Verdict::fail);           // [0.5, 0.9] wholly below
-  EXPECT_EQ(runner::intervalVerdict(2.5, 0.2, 1.0, 2.0), Verdict::fail);           // [2.1, 2.9] wholly above
-  EXPECT_EQ(runner::intervalVerdict(1.5, 0.0, 1.0, 2.0), Verdict::pass);           // no scatter: the value decides
-  EXPECT_EQ(runner::intervalVerdict(0.5, 0.0, 1.0, 2.0), Verdict::fail);
-  EXPECT_EQ(runner::intervalVerdict(1.5, std::nan(""), 1.0, 2.0), Verdict::inconclusive);  // no standard error
-  EXPECT_EQ(runner::intervalVerdict(1.5, -0.1, 1.0, 2.0), Verdict::inconclusive);
-  EXPECT_EQ(runner::intervalVerdict(std::nan(""), 0.1, 1.0, 2.0), Verdict::fail);
-  EXPECT_EQ(runner::intervalVerdict(1.1, 0.2, 1.0, 1e9), Verdict::inconclusive);  // a one-sided bound
-  EXPECT_EQ(runner::intervalVerdict(1.5, 0.2, 1.0, 1e9), Verdict::pass);
+  const double many = 1e6;  // t = 1.96
+  EXPECT_EQ(runner::intervalVerdict(1.5, 0.1, many, 1.0, 2.0), Verdict::pass);           // [1.30, 1.70] inside
+  EXPECT_EQ(runner::intervalVerdict(1.1, 0.05, many, 1.0, 2.0), Verdict::pass);          // [1.002, 1.198]
+  EXPECT_EQ(runner::intervalVerdict(1.1, 0.06, many, 1.0, 2.0), Verdict::inconclusive);  // [0.982, 1.218] holds 1
+  EXPECT_EQ(runner::intervalVerdict(1.9, 0.1, many, 1.0, 2.0), Verdict::inconclusive);   // holds 2
+  EXPECT_EQ(runner::intervalVerdict(0.9, 0.1, many, 1.0, 2.0), Verdict::inconclusive);   // below, but holds 1
+  EXPECT_EQ(runner::intervalVerdict(0.7, 0.1, many, 1.0, 2.0), Verdict::fail);           // [0.50, 0.90] wholly below
+  EXPECT_EQ(runner::intervalVerdict(2.5, 0.2, many, 1.0, 2.0), Verdict::fail);           // [2.11, 2.89] wholly above
+  EXPECT_EQ(runner::intervalVerdict(1.5, 0.0, 0, 1.0, 2.0), Verdict::pass);              // no scatter: the value decides
+  EXPECT_EQ(runner::intervalVerdict(0.5, 0.0, 0, 1.0, 2.0), Verdict::fail);
+  EXPECT_EQ(runner::intervalVerdict(1.5, std::nan(""), many, 1.0, 2.0), Verdict::inconclusive);  // no standard error
+  EXPECT_EQ(runner::intervalVerdict(1.5, -0.1, many, 1.0, 2.0), Verdict::inconclusive);
+  EXPECT_EQ(runner::intervalVerdict(std::nan(""), 0.1, many, 1.0, 2.0), Verdict::fail);
+  EXPECT_EQ(runner::intervalVerdict(1.1, 0.2, many, 1.0, 1e9), Verdict::inconclusive);  // a one-sided bound
+  EXPECT_EQ(runner::intervalVerdict(1.5, 0.2, many, 1.0, 1e9), Verdict::pass);
+  // Few samples widen the interval: six flaps (5 dof) give [0.986, 2.014], which holds 1; two samples
+  // (1 dof) hold it by far; one sample has no spread to judge by.
+  EXPECT_EQ(runner::intervalVerdict(1.5, 0.2, 5, 1.0, 1e9), Verdict::inconclusive);
+  EXPECT_EQ(runner::intervalVerdict(1.6, 0.2, 5, 1.0, 1e9), Verdict::pass);
+  EXPECT_EQ(runner::intervalVerdict(3.0, 0.2, 1, 1.0, 1e9), Verdict::inconclusive);
+  EXPECT_EQ(runner::intervalVerdict(0.1, 0.02, 0, 1.0, 1e9), Verdict::inconclusive);
 }
 
-// Two labelled points, each with a mean force and its standard error.
-Table forceTable(double controlled, double controlled_se, double held, double held_se) {
-  Table t{{}, {"force_n", "force_n_stderr"}, {}};
-  t.rows.push_back(row(0, {}, {{"force_n", controlled}, {"force_n_stderr", controlled_se}}, "ok", "", "controlled"));
-  t.rows.push_back(row(1, {}, {{"force_n", held}, {"force_n_stderr", held_se}}, "ok", "", "held"));
+// Two labelled points, each with a mean force, its standard error and the flaps behind it.
+Table forceTable(double controlled, double controlled_se, double held, double held_se, std::int64_t flaps = 1000000,
+                 std::int64_t held_flaps = 0) {
+  Table t{{"flaps"}, {"force_n", "force_n_stderr"}, {}};
+  t.rows.push_back(row(0, {{"flaps", flaps}}, {{"force_n", controlled}, {"force_n_stderr", controlled_se}}, "ok", "",
+                       "controlled"));
+  t.rows.push_back(row(1, {{"flaps", held_flaps > 0 ? held_flaps : flaps}}, {{"force_n", held}, {"force_n_stderr", held_se}},
+                       "ok", "", "held"));
   return t;
 }
 
@@ -598,16 +627,18 @@ CheckSpec forceRatio(std::string type = "ratio") {
   c.expect_lo = 1.0;
   c.expect_hi = 1e9;
   c.uncertainty = "force_n_stderr";
+  c.samples = "flaps";
   return c;
 }
 
 TEST(RunnerChecks, ARatioWhoseIntervalHoldsTheBoundIsInconclusiveAndDoesNotCount) {
-  // 9.73 +- 0.14 over 9.50 +- 1.30: 1.024 +- 0.141 (relative errors in quadrature), [0.742, 1.306] holds 1.
+  // 9.73 +- 0.14 over 9.50 +- 1.30: 1.024 +- 0.141 (relative errors in quadrature); with many flaps
+  // t = 1.96, [0.748, 1.300] holds 1.
   const CheckOutcome o = runner::evaluateCheck(forceRatio(), forceTable(9.73, 0.14, 9.50, 1.30));
   EXPECT_FALSE(o.passed) << o.got;
   EXPECT_TRUE(o.inconclusive) << o.got;
   EXPECT_TRUE(o.counts());
-  EXPECT_EQ(o.got, "1.02421 +- 0.140928 (2 s.e.: [0.742355, 1.30607])");
+  EXPECT_EQ(o.got, "1.02421 +- 0.140928 (95%, 1.02211e+06 dof: [0.747997, 1.30042])");
   const std::string table = runner::formatCheckTable({o});
   EXPECT_TRUE(contains(table, "  inconclusive  ")) << table;
   EXPECT_TRUE(contains(table, "inconclusive: 'ratio check'")) << table;
@@ -632,10 +663,30 @@ TEST(RunnerChecks, ARatioWithSmallErrorsPassesOrFails) {
   EXPECT_EQ(o.got, "1.02421");
 }
 
+TEST(RunnerChecks, ARatioOfFewFlapsTakesStudentsTWithWelchsDegreesOfFreedom) {
+  // 1.30 +- 0.115 (6.26% a side) from two flaps a side: 2 s.e. would clear 1 ([1.07, 1.53]); Welch
+  // gives 2 dof (t = 4.30), so the interval holds 1.
+  const Table two = forceTable(1.3 * 10, 0.0626 * 13, 10, 0.0626 * 10, 2);
+  CheckOutcome o = runner::evaluateCheck(forceRatio(), two);
+  EXPECT_TRUE(o.inconclusive) << o.got;
+  EXPECT_TRUE(contains(o.got, "(95%, 2 dof: [")) << o.got;
+  // Six a side: 10 dof, t = 2.23: [1.044, 1.556] clears it.
+  o = runner::evaluateCheck(forceRatio(), forceTable(1.3 * 10, 0.0626 * 13, 10, 0.0626 * 10, 6));
+  EXPECT_TRUE(o.passed) << o.got;
+  EXPECT_TRUE(contains(o.got, "(95%, 10 dof: [1.04")) << o.got;
+  // Unequal counts, six and two: (2 e^2)^2 / (e^4 / 5 + e^4 / 1) = 3.3 dof.
+  o = runner::evaluateCheck(forceRatio(), forceTable(1.3 * 10, 0.0626 * 13, 10, 0.0626 * 10, 6, 2));
+  EXPECT_TRUE(contains(o.got, "(95%, 3.3 dof: [")) << o.got;
+  // A point of one sample has no interval.
+  o = runner::evaluateCheck(forceRatio(), forceTable(13, 0.1, 10, 0.1, 1));
+  EXPECT_TRUE(o.inconclusive) << o.got;
+  EXPECT_TRUE(contains(o.got, "(no interval: 0 dof)")) << o.got;
+}
+
 TEST(RunnerChecks, ADifferenceAddsItsErrorsInQuadrature) {
   CheckSpec c = forceRatio("difference");
   c.expect_lo = 0.0;
-  // 0.5 +- hypot(0.3, 0.4) = 0.5: [-0.5, 1.5] holds 0.
+  // 0.5 +- hypot(0.3, 0.4) = 0.5: [-0.48, 1.48] holds 0.
   CheckOutcome o = runner::evaluateCheck(c, forceTable(10.5, 0.3, 10.0, 0.4));
   EXPECT_TRUE(o.inconclusive) << o.got;
   EXPECT_TRUE(contains(o.got, "0.5 +- 0.5")) << o.got;
@@ -648,17 +699,19 @@ TEST(RunnerChecks, ARangeOverPointsWithErrors) {
   c.expect_lo = 9.0;
   c.expect_hi = 11.0;
   c.uncertainty = "force_n_stderr";
+  c.samples = "flaps";
   EXPECT_TRUE(runner::evaluateCheck(c, forceTable(10.0, 0.1, 10.5, 0.2)).passed);
-  const CheckOutcome inconclusive = runner::evaluateCheck(c, forceTable(10.0, 0.1, 10.5, 0.3));  // [9.9, 11.1]
+  const CheckOutcome inconclusive = runner::evaluateCheck(c, forceTable(10.0, 0.1, 10.5, 0.3));  // [9.91, 11.09]
   EXPECT_TRUE(inconclusive.inconclusive) << inconclusive.got;
   EXPECT_TRUE(contains(inconclusive.got, "standard errors up to 0.3")) << inconclusive.got;
   const CheckOutcome failed = runner::evaluateCheck(c, forceTable(10.0, 0.6, 12.0, 0.3));  // one wholly above
   EXPECT_FALSE(failed.passed);
   EXPECT_FALSE(failed.inconclusive);
   c.where = {{"label", std::string("held")}};
-  const CheckOutcome one = runner::evaluateCheck(c, forceTable(10.0, 0.1, 10.5, 0.3));
+  const CheckOutcome one = runner::evaluateCheck(c, forceTable(10.0, 0.1, 10.5, 0.3, 5));
   EXPECT_TRUE(one.inconclusive) << one.got;
-  EXPECT_TRUE(contains(one.got, "10.5 +- 0.3 (2 s.e.: [9.9, 11.1])")) << one.got;
+  EXPECT_TRUE(contains(one.got, "10.5 +- 0.3 (95%, 4 dof: [9.66707, 11.3329])")) << one.got;  // t(4) = 2.776
+  EXPECT_TRUE(runner::evaluateCheck(c, forceTable(10.0, 0.1, 10.5, 0.17, 5)).passed);  // [10.03, 10.97]
 }
 
 TEST(RunnerChecks, AMissingOrNonFiniteStandardErrorIsInconclusive) {

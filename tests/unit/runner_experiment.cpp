@@ -726,21 +726,36 @@ expect = [0, 1]
   EXPECT_NE(m.find("expected a non-empty string"), std::string::npos) << m;
 }
 
-TEST(RunnerExperiment, UncertaintyNamesAMetricOfARangeRatioOrDifference) {
-  const std::string head = "kind = \"oscillator\"\n[sweep]\ndt_s = [0.01, 0.02]\n[[check]]\nname = \"c\"\n";
-  const std::string range = head + "type = \"range\"\nmetric = \"max_abs_error_m\"\nexpect = [0, 1]\n";
-  EXPECT_EQ(load(range + "uncertainty = \"final_abs_error_m\"\n").checks[0].uncertainty, "final_abs_error_m");
+TEST(RunnerExperiment, UncertaintyNamesAMetricOfARangeRatioOrDifferenceAndItsSamples) {
+  const std::string head = "kind = \"control_fluid\"\n[sweep]\ncells = [32, 64]\n[[check]]\nname = \"c\"\n";
+  const std::string range = head + "type = \"range\"\nmetric = \"mean_up_force_n\"\nexpect = [0, 1]\n";
+  const std::string counted = "samples = \"force_cycles\"\n";
+  const Experiment e = load(range + "uncertainty = \"mean_up_force_n_stderr\"\n" + counted);
+  EXPECT_EQ(e.checks[0].uncertainty, "mean_up_force_n_stderr");
+  EXPECT_EQ(e.checks[0].samples, "force_cycles");
+  // The samples parameter joins the table's columns, so that the check can be judged from the table alone.
+  EXPECT_EQ(runner::sweepColumns(e), (std::vector<std::string>{"cells", "force_cycles"}));
   EXPECT_EQ(load(range).checks[0].uncertainty, "");
-  std::string m = errorOf(range + "uncertainty = \"final_abs_eror_m\"\n");
+  std::string m = errorOf(range + "uncertainty = \"mean_up_force_n_sterr\"\n" + counted);
   EXPECT_NE(m.find("check[0].uncertainty"), std::string::npos) << m;
-  EXPECT_NE(m.find("final_abs_error_m"), std::string::npos) << m;  // the close match
-  m = errorOf(head + "type = \"monotonic\"\nmetric = \"max_abs_error_m\"\naxis = \"dt_s\"\n"
-                     "uncertainty = \"final_abs_error_m\"\n");
+  EXPECT_NE(m.find("mean_up_force_n_stderr"), std::string::npos) << m;  // the close match
+  m = errorOf(head + "type = \"monotonic\"\nmetric = \"mean_up_force_n\"\naxis = \"cells\"\n"
+                     "uncertainty = \"mean_up_force_n_stderr\"\n" + counted);
   EXPECT_NE(m.find("belongs to range, ratio and difference checks"), std::string::npos) << m;
-  m = errorOf(head + "type = \"ratio\"\nmetric = \"max_abs_error_m\"\nnumerator_metric = \"final_abs_error_m\"\n"
-                     "numerator = { dt_s = 0.01 }\ndenominator = { dt_s = 0.02 }\nexpect = [0, 1]\n"
-                     "uncertainty = \"final_abs_error_m\"\n");
+  m = errorOf(head + "type = \"ratio\"\nmetric = \"mean_up_force_n\"\nnumerator_metric = \"mean_up_force_n_stderr\"\n"
+                     "numerator = { cells = 32 }\ndenominator = { cells = 64 }\nexpect = [0, 1]\n"
+                     "uncertainty = \"mean_up_force_n_stderr\"\n" + counted);
   EXPECT_NE(m.find("one metric's standard error"), std::string::npos) << m;
+  // The samples: required beside uncertainty, an integer parameter, and nowhere else.
+  m = errorOf(range + "uncertainty = \"mean_up_force_n_stderr\"\n");
+  EXPECT_NE(m.find("uncertainty needs samples"), std::string::npos) << m;
+  m = errorOf(range + "uncertainty = \"mean_up_force_n_stderr\"\nsamples = \"force_cycle\"\n");
+  EXPECT_NE(m.find("check[0].samples"), std::string::npos) << m;
+  EXPECT_NE(m.find("force_cycles"), std::string::npos) << m;  // the close match
+  m = errorOf(range + "uncertainty = \"mean_up_force_n_stderr\"\nsamples = \"flap_period_s\"\n");
+  EXPECT_NE(m.find("integer parameter"), std::string::npos) << m;
+  m = errorOf(range + counted);
+  EXPECT_NE(m.find("belongs to a check with uncertainty"), std::string::npos) << m;
 }
 
 TEST(RunnerExperiment, BaseRelationIsRatioOrDifferenceBesideABase) {
