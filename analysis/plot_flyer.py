@@ -51,10 +51,13 @@ def resolution(f):
 
 def angles_figure(points, png):
     fig, axes = style.subplots(3, 1, height=9, sharex=True)
+    # One setting for all points goes in the title, so that the legends stay inside their axes.
+    settings = {resolution(f) for f in points}
+    shared = settings.pop() if len(settings) == 1 else None
     for f in points:
         ts = f["timeseries"]
         t = ts["time_s"][...]
-        name = f"{text(f, 'label')} ({resolution(f)})"
+        name = text(f, "label") if shared else f"{text(f, 'label')} ({resolution(f)})"
         for k in ts:
             if k.startswith("pd_angle_deg_"):
                 axes[0].plot(t, ts[k][...], lw=0.8, ls=":", label=f"{name}: {k[len('pd_angle_deg_'):]} (PD)")
@@ -69,6 +72,8 @@ def angles_figure(points, png):
     axes[2].set_xlabel("time (s)")
     for ax in axes:
         ax.legend(fontsize=9, ncol=2)
+    if shared:
+        fig.suptitle(f"the driven flyer's joints and upward force ({shared})")
     style.save(fig, png)
 
 
