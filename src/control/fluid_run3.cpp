@@ -99,10 +99,16 @@ void FluidRunRecorder3::recordFluid(double time_s, const FluidController& contro
 
 std::vector<NamedValue> FluidRunRecorder3::measure(int frames_per_cycle, int force_cycles, int markers,
                                                    int forcing_iterations_most) const {
+  const PhaseMean maximising = lastCyclesPhaseMean(common_.objective(0), *sense_[0], +1, frames_per_cycle, force_cycles);
+  const PhaseMean minimising = lastCyclesPhaseMean(common_.objective(0), *sense_[0], -1, frames_per_cycle, force_cycles);
   return {
       {"mean_up_force_n", "N", lastCyclesMean(*body_fz_, frames_per_cycle, force_cycles)},
       {"mean_up_force_n_stderr", "N", lastCyclesStandardError(*body_fz_, frames_per_cycle, force_cycles)},
       {"mean_derivative_per_rad", "1/rad", lastCyclesMean(*derivative_[0], frames_per_cycle, force_cycles)},
+      {"mean_objective_maximising", "", maximising.mean},
+      {"mean_objective_maximising_stderr", "", maximising.standard_error},
+      {"mean_objective_minimising", "", minimising.mean},
+      {"mean_objective_minimising_stderr", "", minimising.standard_error},
       {"max_servo_residual_rad", "rad", common_.maxResidualRad()},
       {"forcing_iterations_most", "", double(forcing_iterations_most)},
       {"markers", "", double(markers)},

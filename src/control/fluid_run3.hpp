@@ -58,7 +58,8 @@ class FluidRunRecorder3 {
   const SeriesSet& series() const { return series_; }
   const GeomPoses3& geoms() const { return geoms_; }
   const FluidFrames3& fluid() const { return fluid_; }
-  // mean_up_force_n (+ _stderr) over the last `force_cycles` flaps of `frames_per_cycle` frames;
+  // mean_up_force_n (+ _stderr) over the last `force_cycles` flaps of `frames_per_cycle` frames, the first
+  // controlled joint's objective over the same flaps' maximising and minimising frames (+ _stderr);
   // `markers` and `forcing_iterations_most` as the kind reports them.
   std::vector<NamedValue> measure(int frames_per_cycle, int force_cycles, int markers,
                                   int forcing_iterations_most) const;

@@ -20,6 +20,7 @@ class FrameSeries {
   int frames() const { return int(time_->size()); }
   double maxResidualRad() const { return max_residual_; }
   // Per controlled joint i, its values so far.
+  const std::vector<double>& objective(int i) const { return *objective_[i]; }
   const std::vector<double>& effort(int i) const { return *effort_[i]; }
   const std::vector<double>& torque(int i) const { return *torque_[i]; }
   const std::vector<double>& drag(int i) const { return *drag_[i]; }

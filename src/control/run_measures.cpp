@@ -73,4 +73,27 @@ double lastCyclesStandardError(const std::vector<double>& v, int frames_per_cycl
   return std::sqrt(squares / double(cycles - 1) / double(cycles));
 }
 
+PhaseMean lastCyclesPhaseMean(const std::vector<double>& v, const std::vector<double>& sense, double sign,
+                              int frames_per_cycle, int cycles) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  const long n = long(frames_per_cycle) * cycles;
+  if (n < 1 || n > long(v.size()) || sense.size() != v.size()) return {nan, nan};
+  std::vector<double> means;  // each cycle's mean over its frames of the phase
+  for (long k = long(v.size()) - n; k < long(v.size()); k += frames_per_cycle) {
+    double sum = 0;
+    long count = 0;
+    for (long j = k; j < k + frames_per_cycle; ++j)
+      if (sense[j] * sign > 0) sum += v[j], ++count;
+    if (count == 0) return {nan, nan};
+    means.push_back(sum / double(count));
+  }
+  PhaseMean out;
+  for (double m : means) out.mean += m / double(cycles);
+  if (cycles < 2) return {out.mean, nan};
+  double squares = 0;
+  for (double m : means) squares += (m - out.mean) * (m - out.mean);
+  out.standard_error = std::sqrt(squares / double(cycles - 1) / double(cycles));
+  return out;
+}
+
 }  // namespace creaturelab::control

@@ -50,4 +50,14 @@ double lastCyclesMean(const std::vector<double>& v, int frames_per_cycle, int cy
 // sqrt(cycles), cycles taken as independent samples; NaN with fewer than two cycles or v shorter.
 double lastCyclesStandardError(const std::vector<double>& v, int frames_per_cycle, int cycles);
 
+// The same over one phase of the flap: v's mean over the frames of each of the last `cycles` cycles whose
+// `sense` has the sign of `sign` (the frames the controller maximises, sign > 0, or minimises, sign < 0),
+// those cycles' means averaged; the standard error as lastCyclesStandardError's from those means. NaN when
+// a cycle has no frame of the phase, sense is shorter than v, or (the error) with fewer than two cycles.
+struct PhaseMean {
+  double mean = 0, standard_error = 0;
+};
+PhaseMean lastCyclesPhaseMean(const std::vector<double>& v, const std::vector<double>& sense, double sign,
+                              int frames_per_cycle, int cycles);
+
 }  // namespace creaturelab::control

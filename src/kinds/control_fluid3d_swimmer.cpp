@@ -167,10 +167,10 @@ Result ControlFluid3dSwimmerKind::run(const Params& params) const {
   addSeries(result, recorder.series());
   addSeries(result, rise.series());
   addMetrics(result, rise.measure(density_ratio));
-  // The recorder's servo residual, forcing iterations and markers (its upward force and derivative are the
-  // flyer's readings over flap periods).
+  // The recorder's servo residual, forcing iterations and markers (its other readings are the flyer's, over
+  // flap periods).
   for (const auto& v : recorder.measure(1, 1, markers, controller.maxForcingIterations()))
-    if (v.name != "mean_up_force_n" && v.name != "mean_up_force_n_stderr" && v.name != "mean_derivative_per_rad")
+    if (v.name == "max_servo_residual_rad" || v.name == "forcing_iterations_most" || v.name == "markers")
       addMetrics(result, {v});
   return result;
 }

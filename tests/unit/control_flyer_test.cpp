@@ -85,6 +85,26 @@ TEST(FlapCycles, MeanOverWholeCycles) {
   EXPECT_TRUE(std::isnan(lastCyclesStandardError(v, 3, 2)));
 }
 
+// One phase of the flap: each cycle's mean over its frames of that sense, the cycles' means averaged (so a
+// cycle with more frames of the phase weighs no more), with their standard error.
+TEST(FlapCycles, PhaseMeanOverTheFramesOfOneSense) {
+  const std::vector<double> v = {100, 1, 2, 3, 10, 20, 30};
+  const std::vector<double> sense = {1, 1, 1, -1, 1, -1, -1};
+  // maximising: cycle (1, 2, 3) -> 1.5, cycle (10, 20, 30) -> 10; minimising: 3 and 25
+  const PhaseMean up = lastCyclesPhaseMean(v, sense, +1, 3, 2);
+  EXPECT_DOUBLE_EQ(up.mean, 5.75);
+  EXPECT_DOUBLE_EQ(up.standard_error, 4.25);
+  const PhaseMean down = lastCyclesPhaseMean(v, sense, -1, 3, 2);
+  EXPECT_DOUBLE_EQ(down.mean, 14.0);
+  EXPECT_DOUBLE_EQ(down.standard_error, 11.0);
+  EXPECT_DOUBLE_EQ(lastCyclesPhaseMean(v, sense, -1, 3, 1).mean, 25.0);
+  EXPECT_TRUE(std::isnan(lastCyclesPhaseMean(v, sense, -1, 3, 1).standard_error));
+  // a cycle without a frame of the phase, a sense series of another length, too few frames
+  EXPECT_TRUE(std::isnan(lastCyclesPhaseMean(v, std::vector<double>(7, 1.0), -1, 3, 2).mean));
+  EXPECT_TRUE(std::isnan(lastCyclesPhaseMean(v, {1, -1}, +1, 1, 1).mean));
+  EXPECT_TRUE(std::isnan(lastCyclesPhaseMean(v, sense, +1, 4, 2).mean));
+}
+
 // models/flyer.xml in a 4 m, 32^2 box with the floor source: inner joints PD-driven to a 30 deg,
 // 2 Hz sine, outer joints controlled (drag, max on the down-stroke) at `strength`.
 struct SmallFlyer {
