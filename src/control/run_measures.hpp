@@ -53,7 +53,7 @@ double lastCyclesStandardError(const std::vector<double>& v, int frames_per_cycl
 // The same over one phase of the flap: v's mean over the frames of each of the last `cycles` cycles whose
 // `sense` has the sign of `sign` (the frames the controller maximises, sign > 0, or minimises, sign < 0),
 // those cycles' means averaged; the standard error as lastCyclesStandardError's from those means. NaN when
-// a cycle has no frame of the phase, sense is shorter than v, or (the error) with fewer than two cycles.
+// a cycle has no frame of the phase, sense and v differ in length, or (the error) with fewer than two cycles.
 struct PhaseMean {
   double mean = 0, standard_error = 0;
 };

@@ -63,7 +63,7 @@ ControlFluid3dKind::ControlFluid3dKind() {
                                       "means (NaN with one flap)"},
       {"mean_derivative_per_rad", "1/rad", "first controlled joint: the controller's central difference of its "
                                           "objective (the objective's unit per rad), mean over the same flap periods"},
-      {"mean_objective_maximising", "", "first controlled joint: its objective (a drag in N) in the frames it is "
+      {"mean_objective_maximising", "", "first controlled joint: its objective (N for a drag) in the frames it is "
                                         "maximised, each of the last force_cycles flaps' mean averaged"},
       {"mean_objective_maximising_stderr", "", "standard error of mean_objective_maximising from its flaps' means"},
       {"mean_objective_minimising", "", "the same over the frames it is minimised"},
