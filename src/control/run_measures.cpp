@@ -50,6 +50,21 @@ double convergedFrame(const std::vector<std::vector<double>>& angles_deg, double
   return double(first);
 }
 
+namespace {
+// The mean of K cycles' means m_k and its standard error sqrt(sum (m_k - mean)^2 / (K - 1)) / sqrt(K);
+// the error NaN for K < 2.
+PhaseMean meanOfCycleMeans(const std::vector<double>& means) {
+  const double cycles = double(means.size());
+  PhaseMean out;
+  for (double m : means) out.mean += m / cycles;
+  if (means.size() < 2) return {out.mean, std::numeric_limits<double>::quiet_NaN()};
+  double squares = 0;
+  for (double m : means) squares += (m - out.mean) * (m - out.mean);
+  out.standard_error = std::sqrt(squares / (cycles - 1) / cycles);
+  return out;
+}
+}  // namespace
+
 double lastCyclesMean(const std::vector<double>& v, int frames_per_cycle, int cycles) {
   const long n = long(frames_per_cycle) * cycles;
   if (n < 1 || n > long(v.size())) return std::numeric_limits<double>::quiet_NaN();
@@ -67,10 +82,7 @@ double lastCyclesStandardError(const std::vector<double>& v, int frames_per_cycl
     for (long j = k; j < k + frames_per_cycle; ++j) sum += v[j];
     means.push_back(sum / double(frames_per_cycle));
   }
-  double mean = 0, squares = 0;
-  for (double m : means) mean += m / double(cycles);
-  for (double m : means) squares += (m - mean) * (m - mean);
-  return std::sqrt(squares / double(cycles - 1) / double(cycles));
+  return meanOfCycleMeans(means).standard_error;
 }
 
 PhaseMean lastCyclesPhaseMean(const std::vector<double>& v, const std::vector<double>& sense, double sign,
@@ -87,13 +99,7 @@ PhaseMean lastCyclesPhaseMean(const std::vector<double>& v, const std::vector<do
     if (count == 0) return {nan, nan};
     means.push_back(sum / double(count));
   }
-  PhaseMean out;
-  for (double m : means) out.mean += m / double(cycles);
-  if (cycles < 2) return {out.mean, nan};
-  double squares = 0;
-  for (double m : means) squares += (m - out.mean) * (m - out.mean);
-  out.standard_error = std::sqrt(squares / double(cycles - 1) / double(cycles));
-  return out;
+  return meanOfCycleMeans(means);
 }
 
 }  // namespace creaturelab::control
