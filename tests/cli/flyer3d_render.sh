@@ -8,9 +8,8 @@
 # a translation and a rotation channel each, a key per frame); bad input exits 2 with one line.
 # usage: flyer3d_render.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
-small=(params.cells=16 params.frames=12 params.warmup_frames=4 params.average_frames=4 params.flap_period_s=0.1
-       params.force_cycles=2 params.threads=1 params.fluid_threads=1)
 experiment=experiments/control/flyer3d.toml
+source "$(dirname "${BASH_SOURCE[0]}")/flyer3d_lib.sh"  # small
 run=$scratch/flyer3d  # the catalog's run name: check_figures picks lentine_q3d by it
 
 "$bin" run "$experiment" "${small[@]}" params.stored_fields=volume params.field_every=4 --out "$run" --jobs 2 \
