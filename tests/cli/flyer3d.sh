@@ -2,8 +2,8 @@
 # The control_fluid3d kind end to end on experiments/control/flyer3d.toml at 16 x 8 x 16 cells over two
 # 0.1 s readings (twelve frames): both cases written with the outer angles and the force per frame, the
 # controlled wings moved and the held ones not; with the controller off (strength 0 in both cases) the
-# two cases are one run, each ratio is exactly 1 and the §7.1 check and §3.2's two are inconclusive, never ok; bad input
-# (a body outside the fluid box, a twisting model's unknown joint) exits 2 with one line naming it.
+# two cases are one run, each ratio is exactly 1 and the §7.1 check and §3.2's two are inconclusive, never
+# ok; bad input (a body outside the fluid box, a twisting model's unknown joint) exits 2 with one line naming it.
 # usage: flyer3d.sh CREATURELAB SOURCE_DIR SCRATCH_DIR
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"  # strict mode, bin src scratch, an empty scratch, fail()
 source "$(dirname "${BASH_SOURCE[0]}")/checks_fail_lib.sh"  # status

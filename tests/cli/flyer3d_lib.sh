@@ -1,7 +1,7 @@
 # Sourced by flyer3d.sh and flyer3d_flesh.sh after lib.sh and checks_fail_lib.sh (uses bin, scratch, fail(),
-# status; the caller sets experiment): the driven flyer's small setting, 16 x 8 x 16 cells over two 0.1 s
-# readings (twelve frames), and its two helpers.
-# (the inner joints flap at 10 Hz, so that each 0.1 s reading holds both strokes)
+# status; the caller sets experiment), and by flyer3d_render.sh for `small`: the driven flyer's small setting,
+# 16 x 8 x 16 cells over two 0.1 s readings (twelve frames), the inner joints flapping at 10 Hz so that each
+# reading holds both strokes; the claim's checks; and two helpers.
 small=(params.cells=16 params.frames=12 params.warmup_frames=4 params.average_frames=4 params.flap_period_s=0.1
        "params.pd_pattern=inner_r = sine(0, 30, 10, 0); inner_l = sine(0, 30, 10, 0)"
        params.force_cycles=2 params.threads=1 params.fluid_threads=1)
@@ -42,7 +42,8 @@ flyer3d_off() {
     >"$scratch/off.out" 2>&1 || { cat "$scratch/off.out" >&2; fail "off: exit code $?, expected 0"; }
   local check
   for check in "${checks[@]}"; do
-    [[ $(status off "$check") == inconclusive ]] || { cat "$scratch/off.out" >&2; fail "off: '$check' not inconclusive"; }
+    [[ $(status off "$check") == inconclusive ]] \
+      || { cat "$scratch/off.out" >&2; fail "off: '$check' not inconclusive"; }
     grep -q "^$check .* 1 +- " "$scratch/off.out" || fail "off: '$check': the ratio is not exactly 1"
     echo "ok   $1: '$check' is inconclusive (ratio 1)"
   done
