@@ -14,8 +14,10 @@ flyer_phase.png and flyer_phase.txt: per point of six flaps or more, the force w
 over the flap's phase (eight bins from the inner pattern's zero) of the inner and outer angles, the
 upward force and the force's magnitude |F| (F_d, what the controller descends on), the upward force,
 |F| and its horizontal part over the down-strokes and the up-strokes (the sense the controller
-followed), and how often a controlled joint turns back between frames: where the controller gains
-on and loses to the held wings, and whether the |F| it gains is lift.
+followed), how often a controlled joint turns back between frames, and the derivative of F_d the
+controller stepped on (dF_d/d(angle), N/rad, the controlled joints' mean): where the controller gains
+on and loses to the held wings, whether the |F| it gains is lift, and which way its derivative pushed
+the wing in each part of the flap.
 flyer_vorticity.png: per point the vorticity with the bodies at the last flap's lowest and highest
 wing (Fig. 12 (a), (b) analogues; Fig. 11's animation is plot_control_fluid.py's frame series).
 The vorticity with the bodies and the frame series are plot_control_fluid.py's.
@@ -49,29 +51,58 @@ def resolution(f):
     return f"{grid}, {int(f.attrs['substeps'])} steps/frame, {text(f, 'advection')}"
 
 
+def legend_columns(labels):
+    """Two columns of legend entries, or one when the labels are too long to stand side by side."""
+    return 2 if max((len(x) for x in labels), default=0) <= 60 else 1
+
+
+def panels(n, labels, height_in):
+    """n panels sharing the x axis over an axis for a legend of `labels` (legend_below)."""
+    rows = -(-len(labels) // legend_columns(labels))
+    legend_in = 0.22 * rows + 0.3  # 9-point entries
+    fig, axes = style.subplots(n + 1, 1, height=height_in + legend_in,
+                               gridspec_kw={"height_ratios": [height_in / n] * n + [legend_in]})
+    for ax in axes[1:n]:
+        ax.sharex(axes[0])
+    for ax in axes[:n - 1]:
+        ax.tick_params(labelbottom=False)
+    return fig, axes
+
+
+def legend_below(legend_axis, source_axes):
+    """The legends of source_axes drawn together in panels()'s axis under the panels, so that a study's
+    many points do not crowd the panels."""
+    legend_axis.axis("off")
+    handles, labels = [], []
+    for ax in source_axes:
+        h, lab = ax.get_legend_handles_labels()
+        handles += h
+        labels += lab
+    legend_axis.legend(handles, labels, loc="center", ncol=legend_columns(labels), fontsize=9, frameon=False)
+
+
 def angles_figure(points, png):
-    fig, axes = style.subplots(3, 1, height=9, sharex=True)
-    # One setting for all points goes in the title, so that the legends stay inside their axes.
+    # One setting for all points goes in the title; a point has one colour in the three panels.
     settings = {resolution(f) for f in points}
     shared = settings.pop() if len(settings) == 1 else None
-    for f in points:
-        ts = f["timeseries"]
+    names = [text(f, "label") if shared else f"{text(f, 'label')} ({resolution(f)})" for f in points]
+    labels = [f"{name}: mean {float(f['metrics/mean_up_force_n'][()]):.2f} N" for name, f in zip(names, points)]
+    fig, axes = panels(3, labels, 9)
+    for i, (f, label) in enumerate(zip(points, labels)):
+        ts, colour = f["timeseries"], f"C{i % 10}"
         t = ts["time_s"][...]
-        name = text(f, "label") if shared else f"{text(f, 'label')} ({resolution(f)})"
         for k in ts:
             if k.startswith("pd_angle_deg_"):
-                axes[0].plot(t, ts[k][...], lw=0.8, ls=":", label=f"{name}: {k[len('pd_angle_deg_'):]} (PD)")
+                axes[0].plot(t, ts[k][...], lw=0.8, ls=":", color=colour)
         for j in [j.strip() for j in text(f, "controlled").split(",")]:
-            line, = axes[0].plot(t, ts[f"angle_deg_{j}"][...], lw=1, label=f"{name}: {j}")
-            axes[1].plot(t, ts[f"sense_{j}"][...], lw=0.8, color=line.get_color(), label=f"{name}: {j}")
-        axes[2].plot(t, ts["force_z_n_bodies"][...], lw=0.8,
-                     label=f"{name}: mean {float(f['metrics/mean_up_force_n'][()]):.2f} N")
-    axes[0].set_ylabel("joint angle (deg; + turns the wing down)")
+            axes[0].plot(t, ts[f"angle_deg_{j}"][...], lw=1, color=colour)
+            axes[1].plot(t, ts[f"sense_{j}"][...], lw=0.8, color=colour)
+        axes[2].plot(t, ts["force_z_n_bodies"][...], lw=0.8, color=colour, label=label)
+    axes[0].set_ylabel("joint angle (deg; + wing down)\ninner (PD) dotted, outer solid")
     axes[1].set_ylabel("sense (+1 max, -1 min)")
     axes[2].set_ylabel("fluid's upward force on all bodies (N)")
     axes[2].set_xlabel("time (s)")
-    for ax in axes:
-        ax.legend(fontsize=9, ncol=2)
+    legend_below(axes[3], [axes[2]])
     if shared:
         fig.suptitle(f"the driven flyer's joints and upward force ({shared})")
     style.save(fig, png)
@@ -181,7 +212,7 @@ def force_parts(ts, w):
 def phase_profile(f):
     """Phase bins' means over the force window: inner angle, outer angle (the controlled joints'
     mean), upward force, |F|; and the upward force, |F| and its horizontal part over down- and
-    up-strokes (sense > 0: down)."""
+    up-strokes (sense > 0: down); the controlled joints' mean derivative of F_d (N/rad)."""
     ts, w = f["timeseries"], force_window(f)
     joints = [j.strip() for j in text(f, "controlled").split(",")]
     inner = next(k for k in ts if k.startswith("pd_angle_deg_"))
@@ -189,6 +220,7 @@ def phase_profile(f):
     phase = np.floor((t % float(f.attrs["flap_period_s"])) / float(f.attrs["flap_period_s"]) * PHASE_BINS)
     phase = np.minimum(phase.astype(int), PHASE_BINS - 1)
     outer = np.mean([ts[f"angle_deg_{j}"][w] for j in joints], axis=0)
+    derivative = np.mean([ts[f"derivative_per_rad_{j}"][w] for j in joints], axis=0)
     force, magnitude, horizontal = force_parts(ts, w)
     down = ts[f"sense_{joints[0]}"][w] > 0
     bins = [phase == b for b in range(PHASE_BINS)]
@@ -198,7 +230,7 @@ def phase_profile(f):
     reversals = float(np.mean(np.sign(moving[1:]) != np.sign(moving[:-1]))) if len(moving) > 1 else 0.0
     return {"reversals": reversals, "inner": [ts[inner][w][m].mean() for m in bins],
             "outer": [outer[m].mean() for m in bins], "force": [force[m].mean() for m in bins],
-            "magnitude": [magnitude[m].mean() for m in bins],
+            "magnitude": [magnitude[m].mean() for m in bins], "derivative": [derivative[m].mean() for m in bins],
             "down": force[down].mean(), "up": force[~down].mean(),
             "down_abs": magnitude[down].mean(), "up_abs": magnitude[~down].mean(),
             "down_horizontal": horizontal[down].mean(), "up_horizontal": horizontal[~down].mean()}
@@ -212,13 +244,15 @@ def phase_outputs(points, png, path):
         return
     held = held_references(long)
     centres = (np.arange(PHASE_BINS) + 0.5) / PHASE_BINS
-    fig, axes = style.subplots(3, 1, height=10, sharex=True)
+    # one legend for the four panels (a point's colour is the same in each), below them
+    names = [f"{text(f, 'label')} ({resolution(f)})" for f in long]
+    fig, axes = panels(4, names + ["inner (PD), first point"], 12)
     with open(path, "w") as out:
         out.write("Phase means over each point's force window (phase 0: the inner pattern's zero, rising = "
                   "turning the wings down); the stroke split follows the sense the controller followed.\n")
         out.write(f"{'label':36s} {'setting':71s} down_force_n  up_force_n  (held: down, up)  "
                   f"down_abs_n  up_abs_n  (held: down, up)  down_horizontal_n  up_horizontal_n  reversals  "
-                  f"outer_deg by phase bin / force_n by phase bin\n")
+                  f"outer_deg by phase bin / force_n by phase bin / dF_d/d(angle) N/rad by phase bin\n")
         for f in long:
             prof = phase_profile(f)
             ref = held.get(window(f))
@@ -229,21 +263,22 @@ def phase_outputs(points, png, path):
                       f"{versus:16s}  {prof['down_abs']:10.3f}  {prof['up_abs']:8.3f}  {versus_abs:16s}  "
                       f"{prof['down_horizontal']:17.3f}  {prof['up_horizontal']:15.3f}  "
                       f"{prof['reversals']:9.2f}  " + " ".join(f"{a:6.1f}" for a in prof["outer"])
-                      + " / " + " ".join(f"{x:6.2f}" for x in prof["force"]) + "\n")
-            name = f"{text(f, 'label')} ({resolution(f)})"
-            line, = axes[1].plot(centres, prof["force"], marker="o", ms=3, lw=1, label=name)
-            axes[0].plot(centres, prof["outer"], marker="o", ms=3, lw=1, color=line.get_color(),
-                         label=f"{name}: outer")
-            axes[2].plot(centres, prof["magnitude"], marker="o", ms=3, lw=1, color=line.get_color(), label=name)
+                      + " / " + " ".join(f"{x:6.2f}" for x in prof["force"])
+                      + " / " + " ".join(f"{x:6.1f}" for x in prof["derivative"]) + "\n")
+            line, = axes[1].plot(centres, prof["force"], marker="o", ms=3, lw=1, label=names[long.index(f)])
+            axes[0].plot(centres, prof["outer"], marker="o", ms=3, lw=1, color=line.get_color())
+            axes[2].plot(centres, prof["magnitude"], marker="o", ms=3, lw=1, color=line.get_color())
+            axes[3].plot(centres, prof["derivative"], marker="o", ms=3, lw=1, color=line.get_color())
     inner = phase_profile(long[0])["inner"]
     axes[0].plot(centres, inner, color="k", ls=":", lw=1, label="inner (PD), first point")
     axes[0].set_ylabel("angle (deg; + turns the wing down)")
     axes[1].set_ylabel("fluid's upward force on all bodies (N)")
     axes[2].set_ylabel("|F| on all bodies (N; F_d, the objective)")
-    axes[2].set_xlabel("phase of the flap")
-    for ax in axes:
-        ax.legend(fontsize=9, ncol=2)
-    fig.suptitle("the driven flyer over a flap: phase means over the force window (§7.1)")
+    axes[3].axhline(0.0, color="k", lw=0.5)
+    axes[3].set_ylabel("dF_d / d(outer angle)\n(N/rad, what the controller steps on)")
+    axes[3].set_xlabel("phase of the flap")
+    legend_below(axes[4], [axes[1], axes[0]])
+    fig.suptitle("the driven flyer over a flap: phase means over the force window (§7.1); outer angles solid")
     style.save(fig, png)
 
 
