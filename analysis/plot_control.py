@@ -112,7 +112,6 @@ def angles_figure(points, png):
     grid = fig.add_gridspec(2, 2, height_ratios=[4.2, 0.22 * legend_rows])
     ax_angle, ax_obj = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
     key = fig.add_subplot(grid[1, :])
-    key.axis("off")
     for f in points:
         t = f["timeseries/time_s"][...]
         dofs = [k[len("angle_deg_"):] for k in f["timeseries"] if k.startswith("angle_deg_")]
@@ -131,8 +130,7 @@ def angles_figure(points, png):
     ax_obj.set_yscale("symlog", linthresh=1e-3)
     ax_angle.set_title("controlled angles")
     ax_obj.set_title("objectives J_i (colours as the angles)")
-    handles, labels = ax_angle.get_legend_handles_labels()
-    key.legend(handles, labels, ncol=ncol, loc="upper center", frameon=False)
+    style.legend_key(key, [ax_angle], ncol=ncol, loc="upper center")
     style.save(fig, png)
 
 

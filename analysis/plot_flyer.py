@@ -57,7 +57,7 @@ def legend_columns(labels):
 
 
 def panels(n, labels, height_in):
-    """n panels sharing the x axis over an axis for a legend of `labels` (legend_below)."""
+    """n panels sharing the x axis over an axis for a legend of `labels` (style.legend_key)."""
     rows = -(-len(labels) // legend_columns(labels))
     legend_in = 0.22 * rows + 0.3  # 9-point entries
     fig, axes = style.subplots(n + 1, 1, height=height_in + legend_in,
@@ -67,18 +67,6 @@ def panels(n, labels, height_in):
     for ax in axes[:n - 1]:
         ax.tick_params(labelbottom=False)
     return fig, axes
-
-
-def legend_below(legend_axis, source_axes):
-    """The legends of source_axes drawn together in panels()'s axis under the panels, so that a study's
-    many points do not crowd the panels."""
-    legend_axis.axis("off")
-    handles, labels = [], []
-    for ax in source_axes:
-        h, lab = ax.get_legend_handles_labels()
-        handles += h
-        labels += lab
-    legend_axis.legend(handles, labels, loc="center", ncol=legend_columns(labels), fontsize=9, frameon=False)
 
 
 def angles_figure(points, png):
@@ -102,7 +90,7 @@ def angles_figure(points, png):
     axes[1].set_ylabel("sense (+1 max, -1 min)")
     axes[2].set_ylabel("fluid's upward force on all bodies (N)")
     axes[2].set_xlabel("time (s)")
-    legend_below(axes[3], [axes[2]])
+    style.legend_key(axes[3], [axes[2]], ncol=legend_columns(labels))
     if shared:
         fig.suptitle(f"the driven flyer's joints and upward force ({shared})")
     style.save(fig, png)
@@ -253,7 +241,7 @@ def phase_outputs(points, png, path):
         out.write(f"{'label':36s} {'setting':71s} down_force_n  up_force_n  (held: down, up)  "
                   f"down_abs_n  up_abs_n  (held: down, up)  down_horizontal_n  up_horizontal_n  reversals  "
                   f"outer_deg by phase bin / force_n by phase bin / dF_d/d(angle) N/rad by phase bin\n")
-        for f in long:
+        for f, name in zip(long, names):
             prof = phase_profile(f)
             ref = held.get(window(f))
             ref_prof = phase_profile(ref) if ref is not None else None
@@ -265,7 +253,7 @@ def phase_outputs(points, png, path):
                       f"{prof['reversals']:9.2f}  " + " ".join(f"{a:6.1f}" for a in prof["outer"])
                       + " / " + " ".join(f"{x:6.2f}" for x in prof["force"])
                       + " / " + " ".join(f"{x:6.1f}" for x in prof["derivative"]) + "\n")
-            line, = axes[1].plot(centres, prof["force"], marker="o", ms=3, lw=1, label=names[long.index(f)])
+            line, = axes[1].plot(centres, prof["force"], marker="o", ms=3, lw=1, label=name)
             axes[0].plot(centres, prof["outer"], marker="o", ms=3, lw=1, color=line.get_color())
             axes[2].plot(centres, prof["magnitude"], marker="o", ms=3, lw=1, color=line.get_color())
             axes[3].plot(centres, prof["derivative"], marker="o", ms=3, lw=1, color=line.get_color())
@@ -277,7 +265,7 @@ def phase_outputs(points, png, path):
     axes[3].axhline(0.0, color="k", lw=0.5)
     axes[3].set_ylabel("dF_d / d(outer angle)\n(N/rad, what the controller steps on)")
     axes[3].set_xlabel("phase of the flap")
-    legend_below(axes[4], [axes[1], axes[0]])
+    style.legend_key(axes[4], [axes[1], axes[0]], ncol=legend_columns(names))
     fig.suptitle("the driven flyer over a flap: phase means over the force window (§7.1); outer angles solid")
     style.save(fig, png)
 

@@ -107,6 +107,18 @@ def subplots(nrows=1, ncols=1, width=WIDTH_IN, height=4.2, **kw):
     return plt.subplots(nrows, ncols, figsize=(min(width, WIDTH_IN * 1.15), height), layout="constrained", **kw)
 
 
+def legend_key(key_axis, source_axes, ncol=1, loc="center"):
+    """The legends of source_axes drawn together, without a frame, in key_axis: an axis of its own
+    below a figure's panels, so that a sweep's or a study's many lines do not crowd the panels."""
+    key_axis.axis("off")
+    handles, labels = [], []
+    for ax in source_axes:
+        h, lab = ax.get_legend_handles_labels()
+        handles += h
+        labels += lab
+    key_axis.legend(handles, labels, ncol=ncol, loc=loc, frameon=False)
+
+
 def shown_scale(fig, dpi=DPI):
     """Inches on the screen per figure inch where the report shows it (< 1: the PNG is wider than
     the page and is shrunk)."""
