@@ -103,10 +103,10 @@ std::vector<std::pair<std::string, double>> ControlFluid3dParams::initialRad() c
 }
 
 std::string ControlFluid3dParams::validate() const {
-  // With flesh, its vertices under the flesh's forcing regularisation.
+  // With flesh, its vertices.
   const auto probe = [&](const rigid::RigidData& data, const fluid3d::FluidParams3& box,
                          const coupling3d::RigidFluidParams3& c) {
-    return flesh ? buildMarkers3(data, box, fleshCoupling(), &flesh_params) : buildMarkers3(data, box, c, nullptr);
+    return buildMarkers3(data, box, c, flesh ? &flesh_params : nullptr);
   };
   const auto against = [&](const rigid::RigidModel& model) {
     return checkInBox3(*this, model, [&] { return coupling; }, probe);
@@ -114,15 +114,9 @@ std::string ControlFluid3dParams::validate() const {
   return validateControlInFluid(*this, noCheck, against, [&] { return checkFlapCycles(*this); });
 }
 
-coupling3d::RigidFluidParams3 ControlFluid3dParams::fleshCoupling() const {
-  coupling3d::RigidFluidParams3 c = coupling;
-  c.forcing_regularisation = flesh_forcing_regularisation;
-  return c;
-}
-
 control::CoupledFluidFactory ControlFluid3dParams::coupledFluid() const {
   if (!flesh) return control::spatialFluid(fluidParams(), coupling);
-  return control::fleshFluid(fluidParams(), fleshCoupling(), flesh_params);
+  return control::fleshFluid(fluidParams(), coupling, flesh_params);
 }
 
 CostEstimate ControlFluid3dKind::estimateCost(const Params& params) const {

@@ -92,9 +92,8 @@ struct ControlFluid3dParams {
   std::string stored_fields = "none";
   std::int64_t field_every = 10;
   // Lentine et al. 2010 Fig. 13: the creature wrapped in flesh (src/flesh/), its vertices the fluid's
-  // markers (coupling3d/flesh_fluid_coupling3.hpp), with the flesh's forcing regularisation.
+  // markers (coupling3d/flesh_fluid_coupling3.hpp).
   bool flesh = false;
-  double flesh_forcing_regularisation = 3e-2;
   flesh::FleshParams flesh_params;
   control::ObjectiveForce objective_force = control::ObjectiveForce::fluid_on_flesh;
 
@@ -130,10 +129,8 @@ struct ControlFluid3dParams {
   void describeFlesh(V& v) {
     v.boolean("flesh", flesh,
               "Fig. 13: the creature wrapped in flesh bound to its geoms, the flesh's vertices the fluid's markers "
-              "(with forcing = coupled, the flesh's backward Euler step inside the coupled solve)");
-    v.real("flesh_forcing_regularisation", flesh_forcing_regularisation, "", 0, 1,
-           "with flesh, the forcing's Tikhonov weight in place of forcing_regularisation (the vertices' own "
-           "vibrations need more than a rigid surface's)");
+              "(with forcing = coupled, the flesh's backward Euler step inside the coupled solve; projected needs "
+              "forcing_regularisation near 3e-2 to keep the flesh stable, and the force then depends on the step)");
     flesh_params.describe(v);
     describeObjectiveForce3(v, objective_force);
   }
@@ -169,8 +166,6 @@ struct ControlFluid3dParams {
   std::string validate() const;
   // The coupled fluid of the run: the geoms' surfaces as markers, or with flesh its vertices.
   control::CoupledFluidFactory coupledFluid() const;
-  // With flesh, the coupling with flesh_forcing_regularisation in place of forcing_regularisation.
-  coupling3d::RigidFluidParams3 fleshCoupling() const;
 };
 
 // The driven flyer of Lentine et al. 2010 §7.1 (Figs. 11-13, without flesh) in the 3-D fluid: the

@@ -54,7 +54,8 @@ void describeCoupling3(V& v, coupling3d::RigidFluidParams3& coupling, const char
   v.integer("max_forcing_iterations", coupling.max_forcing_iterations, 1, 10000,
             "projected and coupled forcing: CG iterations at most per step");
   v.real("forcing_regularisation", coupling.forcing_regularisation, "", 0, 1,
-         "projected forcing: Tikhonov weight on the marker forces (relative to the direct-forcing mass)");
+         "projected and coupled forcing: Tikhonov weight on the marker forces (relative to the direct-forcing "
+         "mass); the markers slip by about this fraction of their forcing at every step");
   v.real("origin_x_m", coupling.origin_m[0], "m", -1e4, 1e4, "world x of the fluid box's corner");
   v.real("origin_y_m", coupling.origin_m[1], "m", -1e4, 1e4, "world y of the fluid box's corner");
   v.real("origin_z_m", coupling.origin_m[2], "m", -1e4, 1e4, "world z of the fluid box's floor");

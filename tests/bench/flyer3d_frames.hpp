@@ -25,6 +25,7 @@ void timeFlyer3dFrames(benchmark::State& state, bool flesh, Counters&& counters)
   q.fluid.threads = int(state.range(0));
   q.fluid.cells_x = int(state.range(1));
   q.flesh = flesh;
+  if (flesh) q.coupling.forcing = coupling3d::Forcing3::coupled;  // flyer3d_flesh.toml's
   if (std::string e = q.validate(); !e.empty()) {
     state.SkipWithError(e.c_str());
     return;
