@@ -2,7 +2,7 @@
 // 83 s per frame for the swimmer with flesh (their frame: one animation frame; ours: one controller frame
 // of frame_s = 1/60 s, its derivative evaluations included). The setting is experiments/control/swimmer3d.toml's
 // (the control_fluid3d_swimmer kind's defaults with the mouth on the body, flesh = true: the flesh in the
-// coupled solve, bound at 200 Hz, and the flesh's forcing weight 3e-2) on range(1) cells along x, the evaluations on range(0) threads (the fluid of the frame's own
+// coupled solve, bound at 200 Hz) on range(1) cells along x, the evaluations on range(0) threads (the fluid of the frame's own
 // steps too); timed from rest. Reported as frames per CPU second of the process and per elapsed second
 // (bench::timeFrames).
 #include <benchmark/benchmark.h>
@@ -27,7 +27,6 @@ void BM_Swimmer3dFleshFrame(benchmark::State& state) {
   q.mouth_body = "body";
   q.flesh = true;
   q.flesh_params.binding_hz = 200.0;
-  q.coupling.forcing_regularisation = 0.03;
   if (std::string e = q.validate(); !e.empty()) {
     state.SkipWithError(e.c_str());
     return;
