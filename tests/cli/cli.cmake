@@ -14,6 +14,7 @@ creaturelab_cli_test(resume_kill)    # kill -9 mid-sweep, --resume, equal to an 
 creaturelab_cli_test(divergence)     # a diverging point: exit 3, recorded as failed
 creaturelab_cli_test(check_compare)  # check, baseline, compare (exit 1 and OUTSIDE on a 1% change)
 creaturelab_cli_test(h5py)           # /usr/bin/python3 + h5py reads index, columns, strings, links
+creaturelab_cli_test(study_claim)    # a refinement study's unrefined cases are its claim's points, key by key
 creaturelab_cli_test(show_list)      # --dry-run writes nothing; show; list
 creaturelab_cli_test(fluid_fields)   # /fields shape and chunks, XDMF sidecar, --jobs determinism
 creaturelab_cli_test(control)        # block_effort checks, figures, --jobs/threads determinism, bad MJCF and controller input
