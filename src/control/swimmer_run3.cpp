@@ -77,8 +77,10 @@ double densityRatio3(const rigid::RigidModel& model, double rho) {
   return volume > 0 ? mass / (rho * volume) : 0.0;
 }
 
-std::string stabilityHint3(double ratio) {
-  return " [creature mass / displaced fluid mass = " + std::to_string(ratio) +
+std::string stabilityHint3(double ratio, bool staggered) {
+  const std::string head = " [creature mass / displaced fluid mass = " + std::to_string(ratio);
+  if (!staggered) return head + "]";
+  return head +
          "; free bodies coupled explicitly (the staggered step) are unstable when too light for the fluid they "
          "move (added mass): use forcing = coupled (Eq. 9), or with projected forcing give the root's DOFs more "
          "armature with armature_added_mass, make the creature denser or hold its root]";

@@ -59,8 +59,9 @@ double geomVolume_m3(int type, const Vec3& size);
 // (rho x their volumes): the staggered coupling's added-mass stability depends on it.
 double densityRatio3(const rigid::RigidModel& model, double rho_kg_per_m3);
 
-// What a coupled blow-up likely means, for the failure message (exit 3).
-std::string stabilityHint3(double density_ratio);
+// What a coupled blow-up likely means, for the failure message (exit 3): the density ratio, and with the
+// staggered (projected) forcing its added-mass limit and the remedies.
+std::string stabilityHint3(double density_ratio, bool staggered);
 
 struct RiseSettings3 {
   int body = 0;                        // body whose subtree's centre of mass is tracked (> 0)

@@ -161,7 +161,7 @@ Result ControlFluid3dSwimmerKind::run(const Params& params) const {
     addSeries(result, recorder.series());
     addSeries(result, rise.series());
     throw RunFailure("control_fluid3d_swimmer at t = " + std::to_string(controller.data().time_s()) + " s: " + e.what() +
-                         control::stabilityHint3(density_ratio),
+                         control::stabilityHint3(density_ratio, q.coupling.forcing == coupling3d::Forcing3::projected),
                      result);
   }
   addSeries(result, recorder.series());
