@@ -28,7 +28,7 @@
 // undamped flesh on a sphere in a still fluid (tests/unit/flesh_fluid_test.cpp) grows at 1e-3 and 1e-2 and
 // decays at 3e-2, the markers then slipping by a few percent of their forcing at every step, so that a flow's
 // forces depend on the step. Forcing3::coupled answers the vertices' motion within the solve and runs the
-// flesh at the rigid body's 1e-3.
+// flyer's flesh in air at the rigid body's 1e-3.
 //
 // Momentum: the fluid receives dt Σ F at step n, the flesh's vertices and the bones −dt Σ F at step
 // n + 1 (the vertices' share through the flesh's step, the interior markers' through applyReaction),
